@@ -1,0 +1,150 @@
+//! The solve job: case → model → equilibrium → coefficients → [`Solution`].
+//!
+//! Lifetimes: a [`BearingModel`] (meshes, patterns, symbolic factorisations) is built once per geometry and
+//! mesh and can be reused for many operating points ([`solve_operating_point`]); sweeps warm-start each
+//! point from the previous one.
+
+use std::f64::consts::TAU;
+
+use crate::model::{Case, LoadSpec};
+
+use super::coefficients::{full_coefficients, reduce};
+use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel};
+use super::error::SolveError;
+use super::model::{BearingModel, OperatingPoint};
+use super::solution::{BearingFlows, Derived, PadField, PadResult, Solution};
+
+/// Solves a case from scratch.
+///
+/// # Errors
+/// See [`SolveError`].
+pub fn solve_case(case: &Case) -> Result<Solution, SolveError> {
+    let mut model = BearingModel::new(case)?;
+    solve_operating_point(&mut model, case, &OperatingPoint::isothermal(case), None, &NoCancel)
+}
+
+/// Solves an operating point on an existing model (the case must match the model's geometry and mesh).
+///
+/// # Errors
+/// See [`SolveError`].
+pub fn solve_operating_point(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    start: Option<&[f64]>,
+    cancel: &dyn Cancel,
+) -> Result<Solution, SolveError> {
+    let eq = solve_equilibrium(model, op, EquilibriumParams::default(), start, cancel)?;
+    Ok(assemble_solution(model, case, op, &eq))
+}
+
+fn wrap_deg(a: f64) -> f64 {
+    let x = a.rem_euclid(360.0);
+    if x > 180.0 { x - 360.0 } else { x }
+}
+
+/// Collects results from the converged films.
+#[must_use]
+pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPoint, eq: &Equilibrium) -> Solution {
+    let cb = model.assembled_clearance;
+    let r = model.journal_radius;
+    let e = [eq.u[0], eq.u[1]];
+    let load = [-eq.film_force[0], -eq.film_force[1]];
+    let wmag = load[0].hypot(load[1]);
+    let mut pads = Vec::with_capacity(model.pads.len());
+    let mut flows = BearingFlows::default();
+    let mut power = 0.0;
+    let mut torque = 0.0;
+    for (k, (pm, st)) in model.pads.iter().zip(&eq.pads).enumerate() {
+        let inp = op.film_inputs(k);
+        let film = &pm.film;
+        let f = film.flows(&inp);
+        let (drag, pw) = film.friction(&inp);
+        let (hmin, inode) = film.h_min();
+        let grid = &film.geom.grid;
+        let field = PadField {
+            s_m: grid.s.clone(),
+            theta_rad: grid.s.iter().map(|s| film.geom.theta_le + s / r).collect(),
+            z_m: grid.z.clone(),
+            half: grid.half,
+            periodic: grid.periodic,
+            pressure_pa: film.p.clone(),
+            film_thickness_m: film.h.node.clone(),
+            cavitated: film.cavitated.clone(),
+            viscosity_pa_s: match &op.nodal_viscosity[k] {
+                Some(v) => v.clone(),
+                None => vec![op.viscosity; film.p.len()],
+            },
+        };
+        flows.leading_edges_in += f.leading_edge_in;
+        flows.trailing_edges_out += f.trailing_edge_out;
+        flows.sides_out += f.sides_out;
+        flows.orifices_in += f.orifice_in;
+        flows.to_cavitation += f.to_cavitation;
+        power += pw;
+        torque += drag * r;
+        #[allow(clippy::cast_precision_loss)]
+        let cav_frac = film.cavitated.iter().filter(|&&c| c).count() as f64 / film.p.len() as f64;
+        pads.push(PadResult {
+            index: k,
+            tilt_rad: pm.dofs.iter().position(|d| *d == super::geometry::PadDof::Tilt).map(|i| st.q[i]),
+            pivot_displacement_m: pm.dofs.iter().position(|d| *d == super::geometry::PadDof::PivotRadial).map(|i| st.q[i]),
+            h_min_m: hmin,
+            h_min_angle_deg: film.geom.node_theta[inode].to_degrees(),
+            p_max_pa: film.p_max(),
+            force_n: [st.forces[0], st.forces[1]],
+            moment_nm: if pm.dofs.is_empty() { 0.0 } else { st.forces[2] },
+            flows_m3_per_s: f,
+            orifice_flows_m3_per_s: (0..film.geom.orifices.len()).map(|o| film.orifice_flow(o, &inp)).collect(),
+            friction_power_w: pw,
+            cavitated_fraction: cav_frac,
+            unloaded: st.unloaded,
+            field,
+        });
+    }
+    let inflow = flows.leading_edges_in + flows.orifices_in;
+    let outflow = flows.trailing_edges_out + flows.sides_out + flows.to_cavitation;
+    let scale = inflow.abs() + outflow.abs();
+    flows.mass_balance_error = if scale > 0.0 { (inflow - outflow) / scale } else { 0.0 };
+
+    let full = full_coefficients(model, eq);
+    let omega = case.operating.excitation_ratio * op.speed_rad_s;
+    let reduced = reduce(&full, omega);
+    let load_angle = match op.load {
+        LoadSpec::Force { angle_rad, magnitude_n } if magnitude_n > 0.0 => angle_rad,
+        _ => load[1].atan2(load[0]),
+    };
+    let ecc = e[0].hypot(e[1]) / cb;
+    let attitude = if ecc > 1e-12 { wrap_deg((e[1].atan2(e[0]) - load_angle).to_degrees()) } else { 0.0 };
+    let n_rev = op.speed_rad_s / TAU;
+    let sommerfeld = (wmag > 1e-9).then(|| op.viscosity * n_rev * model.length * 2.0 * r / wmag * (r / cb).powi(2));
+    Solution {
+        title: case.title.clone(),
+        eccentricity_ratio: ecc,
+        attitude_angle_deg: attitude,
+        journal_position_m: e,
+        load_n: load,
+        load_magnitude_n: wmag,
+        sommerfeld,
+        h_min_m: pads.iter().fold(f64::INFINITY, |m, p| m.min(p.h_min_m)),
+        p_max_pa: pads.iter().fold(0.0, |m, p| m.max(p.p_max_pa)),
+        pads,
+        friction_power_w: power,
+        friction_torque_nm: torque,
+        flows_m3_per_s: flows,
+        full,
+        reduced,
+        coordinates: eq.u.clone(),
+        report: eq.report.clone(),
+        derived: Derived {
+            assembled_clearance_m: cb,
+            pad_clearances_m: case.bearing.pads.iter().map(|p| p.clearance_m).collect(),
+            preloads: case.bearing.pads.iter().map(|p| p.preload).collect(),
+            speed_rad_s: op.speed_rad_s,
+            speed_rpm: op.speed_rad_s * 60.0 / TAU,
+            film_viscosity_pa_s: op.viscosity,
+            film_nodes: model.film_nodes(),
+        },
+        inputs: case.clone(),
+    }
+}

@@ -1,0 +1,340 @@
+//! Scene-driven, cached, steppable computation.
+//!
+//! A [`Request`] says what the views on screen need (the solution at the case's operating point, a speed
+//! sweep, a frequency-ratio sweep). The [`Pipeline`] computes it in stages, each cached under the inputs it
+//! depends on, so that a change which does not enter a stage never recomputes it:
+//!
+//! | stage          | depends on                                             |
+//! |----------------|--------------------------------------------------------|
+//! | `Model`        | bearing geometry, mesh                                 |
+//! | `Equilibrium`  | model inputs + lubricant, operating point (not ω/Ω), physics |
+//! | `Reduction`    | equilibrium + excitation ratio ω/Ω                     |
+//! | `FrequencySweep` | equilibrium + the list of ratios                     |
+//! | `SpeedSweep`   | model inputs + everything but the speed, + the speeds  |
+//!
+//! [`Pipeline::step`] does one unit of work (one stage, or one sweep point) and returns; the native worker
+//! loops over it on a thread, the web build calls it within a per-frame time budget. Execution counters
+//! ([`StageCounters`]) let tests assert what ran.
+
+use std::sync::Arc;
+
+use serde::Serialize;
+
+use crate::model::Case;
+
+use super::coefficients::{reduce, ReducedCoefficients};
+use super::equilibrium::Cancel;
+use super::error::SolveError;
+use super::job::solve_operating_point;
+use super::model::{BearingModel, OperatingPoint};
+use super::solution::Solution;
+
+/// What the caller wants computed.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Request {
+    pub case: Option<Case>,
+    /// Reduced coefficients at these excitation ratios ω/Ω.
+    pub frequency_ratios: Option<Vec<f64>>,
+    /// Solutions at these speeds [rpm] (everything else as in the case).
+    pub speeds_rpm: Option<Vec<f64>>,
+}
+
+/// One point of a speed sweep.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SpeedPoint {
+    pub speed_rpm: f64,
+    /// `Err` text when this point failed (touchdown, …).
+    pub result: Result<SweepValues, String>,
+}
+
+/// The scalar results a sweep keeps per point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SweepValues {
+    pub eccentricity_ratio: f64,
+    pub attitude_angle_deg: f64,
+    pub h_min_m: f64,
+    pub p_max_pa: f64,
+    pub friction_power_w: f64,
+    pub reduced: ReducedCoefficients,
+}
+
+impl SweepValues {
+    fn of(s: &Solution) -> Self {
+        Self {
+            eccentricity_ratio: s.eccentricity_ratio,
+            attitude_angle_deg: s.attitude_angle_deg,
+            h_min_m: s.h_min_m,
+            p_max_pa: s.p_max_pa,
+            friction_power_w: s.friction_power_w,
+            reduced: s.reduced,
+        }
+    }
+}
+
+/// Everything computed for a request.
+#[derive(Debug, Clone, Default)]
+pub struct Outcome {
+    pub solution: Option<Arc<Solution>>,
+    pub frequency_sweep: Option<Arc<Vec<(f64, ReducedCoefficients)>>>,
+    pub speed_sweep: Option<Arc<Vec<SpeedPoint>>>,
+}
+
+/// The stages, for counters and progress.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Stage {
+    Model,
+    Equilibrium,
+    Reduction,
+    FrequencySweep,
+    SpeedSweep,
+}
+
+/// How many times each stage ran (one per sweep point for the speed sweep).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct StageCounters {
+    pub model: usize,
+    pub equilibrium: usize,
+    pub reduction: usize,
+    pub frequency_sweep: usize,
+    pub speed_sweep_points: usize,
+}
+
+/// Result of one step.
+#[derive(Debug, Clone)]
+pub enum Step {
+    /// More work to do; the stage being worked on and its completed fraction.
+    Pending { stage: Stage, fraction: f64 },
+    Done(Outcome),
+}
+
+fn key<T: Serialize>(v: &T) -> String {
+    serde_json::to_string(v).unwrap_or_default()
+}
+
+/// Cache key of the model: geometry and mesh.
+fn model_key(c: &Case) -> String {
+    key(&(&c.bearing, &c.mesh))
+}
+
+/// Cache key of the equilibrium: everything but the excitation ratio and the title.
+fn equilibrium_key(c: &Case) -> String {
+    let mut o = c.operating.clone();
+    o.excitation_ratio = 0.0;
+    key(&(&c.bearing, &c.mesh, &c.lubricant, &o, &c.physics))
+}
+
+fn sweep_key(c: &Case, speeds: &[f64]) -> String {
+    let mut o = c.operating.clone();
+    o.excitation_ratio = 0.0;
+    o.speed_rad_s = 0.0;
+    key(&(&c.bearing, &c.mesh, &c.lubricant, &o, &c.physics, speeds))
+}
+
+struct SweepState {
+    key: String,
+    points: Vec<SpeedPoint>,
+    start: Option<Vec<f64>>,
+    model: BearingModel,
+}
+
+/// Cached, steppable solver.
+#[derive(Default)]
+pub struct Pipeline {
+    model: Option<(String, BearingModel)>,
+    equilibrium: Option<(String, Arc<Solution>)>,
+    reduction: Option<(String, Arc<Solution>)>,
+    frequency_sweep: Option<(String, Arc<Vec<(f64, ReducedCoefficients)>>)>,
+    speed_sweep: Option<SweepState>,
+    speed_done: Option<(String, Arc<Vec<SpeedPoint>>)>,
+    /// Last equilibrium coordinates, to warm-start the next solve of the same model.
+    warm: Option<Vec<f64>>,
+    pub counters: StageCounters,
+}
+
+impl Pipeline {
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Does one unit of work towards `req`.
+    ///
+    /// # Errors
+    /// The first stage that fails (the caller keeps its last good outcome).
+    pub fn step(&mut self, req: &Request, cancel: &dyn Cancel) -> Result<Step, SolveError> {
+        let Some(case) = &req.case else { return Ok(Step::Done(Outcome::default())) };
+        // Model.
+        let mk = model_key(case);
+        if self.model.as_ref().map(|m| &m.0) != Some(&mk) {
+            let m = BearingModel::new(case)?;
+            self.counters.model += 1;
+            self.model = Some((mk, m));
+            self.warm = None;
+            return Ok(Step::Pending { stage: Stage::Model, fraction: 1.0 });
+        }
+        // Equilibrium (with the full coefficients).
+        let ek = equilibrium_key(case);
+        if self.equilibrium.as_ref().map(|e| &e.0) != Some(&ek) {
+            let (_, model) = self.model.as_mut().ok_or_else(|| SolveError::Invalid("no model".into()))?;
+            let op = OperatingPoint::isothermal(case);
+            let sol = match solve_operating_point(model, case, &op, self.warm.as_deref(), cancel) {
+                Ok(s) => s,
+                Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
+                // A failed warm start retries cold before giving up.
+                Err(_) if self.warm.is_some() => {
+                    self.warm = None;
+                    solve_operating_point(model, case, &op, None, cancel)?
+                }
+                Err(e) => return Err(e),
+            };
+            self.counters.equilibrium += 1;
+            self.warm = Some(sol.coordinates.clone());
+            self.equilibrium = Some((ek, Arc::new(sol)));
+            self.reduction = None;
+            return Ok(Step::Pending { stage: Stage::Equilibrium, fraction: 1.0 });
+        }
+        let eq = self.equilibrium.as_ref().map(|e| e.1.clone()).ok_or_else(|| SolveError::Invalid("no equilibrium".into()))?;
+        // Reduction at the case's excitation ratio.
+        let rk = format!("{ek}|{}", case.operating.excitation_ratio);
+        if self.reduction.as_ref().map(|r| &r.0) != Some(&rk) {
+            let mut s = (*eq).clone();
+            s.reduced = reduce(&s.full, case.operating.excitation_ratio * case.operating.speed_rad_s);
+            s.title.clone_from(&case.title);
+            s.inputs = case.clone();
+            self.counters.reduction += 1;
+            self.reduction = Some((rk, Arc::new(s)));
+        }
+        // Frequency sweep.
+        if let Some(ratios) = &req.frequency_ratios {
+            let fk = format!("{ek}|{}", key(ratios));
+            if self.frequency_sweep.as_ref().map(|f| &f.0) != Some(&fk) {
+                let w = case.operating.speed_rad_s;
+                let v: Vec<(f64, ReducedCoefficients)> = ratios.iter().map(|&r| (r, reduce(&eq.full, r * w))).collect();
+                self.counters.frequency_sweep += 1;
+                self.frequency_sweep = Some((fk, Arc::new(v)));
+                return Ok(Step::Pending { stage: Stage::FrequencySweep, fraction: 1.0 });
+            }
+        }
+        // Speed sweep, one point per step.
+        if let Some(speeds) = &req.speeds_rpm {
+            let sk = sweep_key(case, speeds);
+            if self.speed_done.as_ref().map(|d| &d.0) != Some(&sk) {
+                if self.speed_sweep.as_ref().map(|s| &s.key) != Some(&sk) {
+                    let model = match &self.model {
+                        Some((_, m)) => m.clone(),
+                        None => BearingModel::new(case)?,
+                    };
+                    self.speed_sweep = Some(SweepState { key: sk.clone(), points: Vec::new(), start: None, model });
+                }
+                let st = self.speed_sweep.as_mut().ok_or_else(|| SolveError::Invalid("no sweep".into()))?;
+                let i = st.points.len();
+                let rpm = speeds[i];
+                let mut c = case.clone();
+                c.operating.speed_rad_s = rpm * std::f64::consts::TAU / 60.0;
+                let op = OperatingPoint::isothermal(&c);
+                let result = match solve_operating_point(&mut st.model, &c, &op, st.start.as_deref(), cancel) {
+                    Ok(s) => {
+                        st.start = Some(s.coordinates.clone());
+                        Ok(SweepValues::of(&s))
+                    }
+                    Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
+                    Err(e) => {
+                        st.start = None;
+                        Err(e.to_string())
+                    }
+                };
+                st.points.push(SpeedPoint { speed_rpm: rpm, result });
+                self.counters.speed_sweep_points += 1;
+                #[allow(clippy::cast_precision_loss)]
+                let fraction = st.points.len() as f64 / speeds.len() as f64;
+                if st.points.len() == speeds.len() {
+                    let done = std::mem::take(&mut st.points);
+                    self.speed_sweep = None;
+                    self.speed_done = Some((sk, Arc::new(done)));
+                }
+                return Ok(Step::Pending { stage: Stage::SpeedSweep, fraction });
+            }
+        }
+        Ok(Step::Done(self.outcome(req)))
+    }
+
+    /// Runs `step` until done.
+    ///
+    /// # Errors
+    /// As [`Self::step`].
+    pub fn run(&mut self, req: &Request, cancel: &dyn Cancel) -> Result<Outcome, SolveError> {
+        loop {
+            if let Step::Done(o) = self.step(req, cancel)? {
+                return Ok(o);
+            }
+        }
+    }
+
+    fn outcome(&self, req: &Request) -> Outcome {
+        Outcome {
+            solution: self.reduction.as_ref().map(|r| r.1.clone()),
+            frequency_sweep: req.frequency_ratios.as_ref().and(self.frequency_sweep.as_ref().map(|f| f.1.clone())),
+            speed_sweep: req.speeds_rpm.as_ref().and(self.speed_done.as_ref().map(|d| d.1.clone())),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bearing::NoCancel;
+    use crate::model::load_case;
+
+    fn case(set: &[&str]) -> Case {
+        let text = include_str!("../../cases/fillon-a.toml");
+        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+        load_case(&text.replace("fidelity = \"standard\"", "fidelity = \"preview\""), &set).unwrap().1
+    }
+
+    #[test]
+    fn stages_rerun_only_when_their_inputs_change() {
+        let mut p = Pipeline::new();
+        let mut req = Request { case: Some(case(&[])), frequency_ratios: Some(vec![0.5, 1.0, 2.0]), speeds_rpm: None };
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!(p.counters, StageCounters { model: 1, equilibrium: 1, reduction: 1, frequency_sweep: 1, speed_sweep_points: 0 });
+        // Same request: nothing runs.
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!(p.counters.equilibrium, 1);
+        assert_eq!(p.counters.reduction, 1);
+        // The title and the excitation ratio do not enter the equilibrium.
+        req.case = Some(case(&["title=\"renamed\"", "operating.excitation_ratio=0.5"]));
+        let o = p.run(&req, &NoCancel).unwrap();
+        assert_eq!((p.counters.model, p.counters.equilibrium, p.counters.reduction, p.counters.frequency_sweep), (1, 1, 2, 1));
+        assert_eq!(o.solution.unwrap().title, "renamed");
+        // The load changes the equilibrium and the sweep, not the model.
+        req.case = Some(case(&["operating.load_n=8000"]));
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!((p.counters.model, p.counters.equilibrium, p.counters.frequency_sweep), (1, 2, 2));
+        // The mesh changes everything.
+        req.case = Some(case(&["mesh.circumferential_elements=20"]));
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!((p.counters.model, p.counters.equilibrium), (2, 3));
+    }
+
+    #[test]
+    fn speed_sweep_runs_point_by_point_and_is_cached() {
+        let mut p = Pipeline::new();
+        let req = Request { case: Some(case(&[])), frequency_ratios: None, speeds_rpm: Some(vec![2000.0, 3000.0, 4000.0]) };
+        let mut steps = 0;
+        let out = loop {
+            steps += 1;
+            match p.step(&req, &NoCancel).unwrap() {
+                Step::Done(o) => break o,
+                Step::Pending { .. } => {}
+            }
+        };
+        // model, equilibrium, three sweep points, done.
+        assert_eq!(steps, 6);
+        let sweep = out.speed_sweep.unwrap();
+        assert_eq!(sweep.len(), 3);
+        let e: Vec<f64> = sweep.iter().map(|p| p.result.as_ref().unwrap().eccentricity_ratio).collect();
+        assert!(e[0] > e[1] && e[1] > e[2], "eccentricity falls with speed: {e:?}");
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!(p.counters.speed_sweep_points, 3);
+    }
+}

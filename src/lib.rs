@@ -1,0 +1,28 @@
+//! # tiltpad — a workbench for tilting-pad journal bearings with controllable lubrication
+//!
+//! ## Conventions (used everywhere in the solver)
+//! - **SI inside**: m, s, Pa, N, rad; temperatures in °C. Engineering units appear only at the edges (case
+//!   files, CLI, GUI) and then in the name (`speed_rpm`, `clearance_um`).
+//! - **Frame**: x horizontal, y vertical up; angles θ measured from +x counter-clockwise. The journal rotates
+//!   counter-clockwise, so its surface moves towards +θ; a pad's leading edge is at its smallest θ.
+//! - **Journal position** (e_x, e_y) is the displacement of the journal centre from the bearing centre.
+//! - **Film thickness** of pad k (see [`bearing::geometry`] for the derivation and sign conventions):
+//!   `h = Cp − (Cp − Cb) cos(θ − θp) − e_x cos θ − e_y sin θ − (Rp + t) δ sin(θ − θp) + ξ cos(θ − θp)`,
+//!   δ the pad tilt (positive moves the trailing edge towards the journal), ξ the pivot's radial
+//!   displacement (positive away from the journal).
+//! - **Loads**: the static load W acts on the journal; the film force balances it: `F_film + W = 0`.
+//!
+//! ## Module map
+//! - [`model`]: case files, validation, SI case.
+//! - [`mesh`], [`fem`]: pad grids, shape functions and quadrature, sparse assembly and factorisation.
+//! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow).
+//! - [`bearing`]: geometry of the film, equilibrium (Newton), dynamic coefficients, the solve job.
+//! - [`cli`]: batch runs (`tiltpad solve`, `tiltpad sweep`).
+
+pub mod bearing;
+pub mod fem;
+pub mod mesh;
+pub mod model;
+pub mod physics;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod cli;

@@ -1,0 +1,179 @@
+//! The resolved case, in SI units, validated. This is what the solver reads.
+//!
+//! Angles are radians measured from +x counter-clockwise (x horizontal, y vertical up); the journal surface
+//! moves towards +θ. Temperatures are °C (they only enter through differences and the viscosity law).
+
+use serde::Serialize;
+
+pub use super::file::{Cavitation, Fidelity};
+
+/// A complete, validated case in SI units.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Case {
+    pub title: String,
+    pub bearing: Bearing,
+    pub lubricant: Lubricant,
+    pub operating: Operating,
+    pub mesh: MeshSpec,
+    pub physics: Physics,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Bearing {
+    /// Journal radius R [m].
+    pub journal_radius_m: f64,
+    /// Axial length L [m].
+    pub length_m: f64,
+    /// Assembled radial clearance Cb [m].
+    pub assembled_clearance_m: f64,
+    pub pads: Vec<Pad>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum PadKind {
+    Tilting,
+    Fixed,
+}
+
+/// One pad (or fixed sector).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Pad {
+    pub kind: PadKind,
+    /// Leading-edge angle θ_le [rad].
+    pub leading_edge_rad: f64,
+    /// Arc β [rad]; a fixed sector of 2π is a periodic full bore.
+    pub arc_rad: f64,
+    /// Pivot angle θ_p = θ_le + α β [rad] (for fixed sectors: the lobe centre, where h = Cb).
+    pub pivot_rad: f64,
+    /// Pivot offset α.
+    pub offset: f64,
+    /// Machined pad clearance Cp [m].
+    pub clearance_m: f64,
+    /// Preload m = 1 − Cb/Cp.
+    pub preload: f64,
+    /// Pad thickness t [m].
+    pub thickness_m: f64,
+    /// Radial pivot stiffness [N/m]; `None` = rigid.
+    pub pivot_stiffness_n_per_m: Option<f64>,
+    pub density_kg_per_m3: f64,
+    pub youngs_modulus_pa: f64,
+    pub poisson_ratio: f64,
+    pub orifices: Vec<Orifice>,
+}
+
+impl Pad {
+    /// Pad bore radius Rp = R + Cp.
+    #[must_use]
+    pub fn bore_radius_m(&self, journal_radius_m: f64) -> f64 {
+        journal_radius_m + self.clearance_m
+    }
+    /// A 360° fixed sector is periodic in θ (no leading or trailing edge).
+    #[must_use]
+    pub fn is_full_circle(&self) -> bool {
+        (self.arc_rad - std::f64::consts::TAU).abs() < 1e-9
+    }
+    /// Trailing-edge angle [rad].
+    #[must_use]
+    pub fn trailing_edge_rad(&self) -> f64 {
+        self.leading_edge_rad + self.arc_rad
+    }
+}
+
+/// An injection orifice (capillary) through a pad.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Orifice {
+    /// Angle of the centre θ0 [rad].
+    pub angle_rad: f64,
+    /// Axial position of the centre from the mid-plane z0 [m].
+    pub axial_m: f64,
+    pub diameter_m: f64,
+    pub length_m: f64,
+}
+
+/// µ(T) = µ_ref exp(−η (T − T_ref)).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ViscosityLaw {
+    pub mu_ref_pa_s: f64,
+    pub t_ref_c: f64,
+    pub eta_per_k: f64,
+}
+
+impl ViscosityLaw {
+    /// Viscosity at temperature `t_c` [Pa·s].
+    #[must_use]
+    pub fn at(&self, t_c: f64) -> f64 {
+        self.mu_ref_pa_s * (-self.eta_per_k * (t_c - self.t_ref_c)).exp()
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Lubricant {
+    pub name: String,
+    pub viscosity: ViscosityLaw,
+    pub density_kg_per_m3: f64,
+    pub specific_heat_j_per_kg_k: f64,
+    pub conductivity_w_per_m_k: f64,
+}
+
+/// What fixes the journal position.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "mode", rename_all = "snake_case")]
+pub enum LoadSpec {
+    /// A static load on the journal: find the position.
+    Force { magnitude_n: f64, angle_rad: f64 },
+    /// A prescribed journal position: find the load.
+    Position { eccentricity_ratio: f64, angle_rad: f64 },
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Operating {
+    /// Journal angular speed Ω [rad/s].
+    pub speed_rad_s: f64,
+    pub load: LoadSpec,
+    pub supply_temperature_c: f64,
+    /// Temperature of the isothermal film.
+    pub film_temperature_c: f64,
+    /// Injection pressure at each pad's orifice entry [Pa] (one per pad).
+    pub injection_pressure_pa: Vec<f64>,
+    pub injection_temperature_c: f64,
+    /// ω/Ω for the reduced coefficients.
+    pub excitation_ratio: f64,
+}
+
+impl Operating {
+    /// Journal speed [rev/s].
+    #[must_use]
+    pub fn speed_rev_s(&self) -> f64 {
+        self.speed_rad_s / std::f64::consts::TAU
+    }
+}
+
+/// Resolved mesh density.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct MeshSpec {
+    pub fidelity: Fidelity,
+    pub circumferential_elements: usize,
+    pub axial_elements: usize,
+    pub orifice_elements: usize,
+    pub half_model: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Physics {
+    pub cavitation: Cavitation,
+    /// Film thickness below which an equilibrium counts as touchdown [m].
+    pub touchdown_film_m: f64,
+}
+
+impl Fidelity {
+    /// Default element counts (circumferential per pad, axial over the full length, across an orifice).
+    #[must_use]
+    pub fn elements(self) -> (usize, usize, usize) {
+        match self {
+            Self::Preview => (16, 8, 4),
+            Self::Standard => (36, 16, 6),
+            Self::Reference => (96, 48, 12),
+        }
+    }
+}

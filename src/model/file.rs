@@ -1,0 +1,249 @@
+//! The case file as the user writes it: TOML, engineering units in the key names.
+//!
+//! This is the persisted, editable form of a case (the workbench edits it, `--set` overrides it). It is
+//! converted to SI exactly once, by [`CaseFile::resolve`](super::resolve), which also validates every value.
+//! Optional keys are `Option`s so that a file round-trips without inventing values the user never wrote.
+//!
+//! Layout (see `cases/*.toml` for complete examples):
+//!
+//! ```toml
+//! title = "…"
+//! [bearing]            # journal_radius_mm, length_mm, assembled_clearance_um
+//! [bearing.pads]       # common pad data: count, arc_deg, pivot_deg, offset, preload | clearance_um | bore_radius_mm, …
+//! [[bearing.pads.orifice]]   # orifices on every pad: position_frac, axial_frac, diameter_mm, length_mm
+//! [[bearing.pad]]      # optional per-pad overrides of any [bearing.pads] value, one table per pad
+//! [lubricant]          # two-point viscosity law, density, c_p, conductivity
+//! [operating]          # speed_rpm, load_n + load_angle_deg (or eccentricity_ratio + eccentricity_angle_deg), …
+//! [mesh]               # fidelity or explicit element counts
+//! [physics]            # cavitation model, …
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+/// A whole case file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CaseFile {
+    /// Free text shown in the workbench and in result files.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub title: Option<String>,
+    pub bearing: BearingFile,
+    pub lubricant: LubricantFile,
+    pub operating: OperatingFile,
+    #[serde(default)]
+    pub mesh: MeshFile,
+    #[serde(default)]
+    pub physics: PhysicsFile,
+}
+
+/// `[bearing]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BearingFile {
+    /// Journal radius R.
+    pub journal_radius_mm: f64,
+    /// Axial length L of the pads.
+    pub length_mm: f64,
+    /// Assembled (bearing) radial clearance Cb.
+    pub assembled_clearance_um: f64,
+    /// Data shared by all pads.
+    pub pads: PadFile,
+    /// Optional per-pad overrides; when present their number is the pad count.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub pad: Vec<PadFile>,
+}
+
+/// Pad kind: a tilting pad, or a fixed (non-tilting) sector such as a lobe or a plain 360° bore.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum PadKindFile {
+    #[default]
+    Tilting,
+    Fixed,
+}
+
+/// One number or one number per pad.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum OneOrMany {
+    One(f64),
+    Many(Vec<f64>),
+}
+
+/// Pad data (`[bearing.pads]` for all pads, `[[bearing.pad]]` for one pad). Every value optional here;
+/// resolution takes the per-pad value, else the common one, else the documented default.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct PadFile {
+    /// Number of pads (only in `[bearing.pads]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub count: Option<usize>,
+    /// `tilting` (default) or `fixed`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kind: Option<PadKindFile>,
+    /// Pad arc β.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub arc_deg: Option<f64>,
+    /// Pivot angle(s) from +x, counter-clockwise: one list entry per pad, or one angle for the first pad
+    /// with the others evenly spaced.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_deg: Option<OneOrMany>,
+    /// Pivot offset α (fraction of the arc from the leading edge; 0.5 = centred).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub offset: Option<f64>,
+    /// Preload m = 1 − Cb/Cp (give exactly one of preload, clearance_um, bore_radius_mm).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preload: Option<f64>,
+    /// Machined pad clearance Cp.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub clearance_um: Option<f64>,
+    /// Pad bore radius Rp = R + Cp.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bore_radius_mm: Option<f64>,
+    /// Pad thickness t (pivot at Rp + t from the pad's centre of curvature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thickness_mm: Option<f64>,
+    /// Radial pivot stiffness; absent = rigid pivot.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_stiffness_n_per_m: Option<f64>,
+    /// Pad material density (default 7800, steel).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub density_kg_per_m3: Option<f64>,
+    /// Pad material Young's modulus (used by pad flexibility; default 200 GPa).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub youngs_modulus_gpa: Option<f64>,
+    /// Pad material Poisson ratio (default 0.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub poisson_ratio: Option<f64>,
+    /// Injection orifices (replace, not add to, the common list when given per pad).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub orifice: Option<Vec<OrificeFile>>,
+}
+
+/// `[[bearing.pads.orifice]]`: an injection orifice through the pad.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OrificeFile {
+    /// Circumferential position of the centre as a fraction of the pad arc from the leading edge.
+    pub position_frac: f64,
+    /// Axial position of the centre as a fraction of the length (0.5 = mid-plane, the default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axial_frac: Option<f64>,
+    /// Orifice diameter d0.
+    pub diameter_mm: f64,
+    /// Orifice (capillary) length l0.
+    pub length_mm: f64,
+}
+
+/// `[lubricant]`: viscosity µ(T) = µ1 exp(−η (T − T1)), with η from a second point or given.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LubricantFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    /// Dynamic viscosity µ1 at `viscosity_temperature_c`.
+    pub viscosity_pa_s: f64,
+    /// Temperature T1 of the first viscosity point.
+    pub viscosity_temperature_c: f64,
+    /// Second viscosity point µ2 …
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscosity2_pa_s: Option<f64>,
+    /// … at T2.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscosity2_temperature_c: Option<f64>,
+    /// Or the temperature coefficient η directly.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscosity_coefficient_per_k: Option<f64>,
+    pub density_kg_per_m3: f64,
+    pub specific_heat_j_per_kg_k: f64,
+    pub conductivity_w_per_m_k: f64,
+}
+
+/// `[operating]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct OperatingFile {
+    /// Journal speed; the journal surface moves towards +θ (counter-clockwise).
+    pub speed_rpm: f64,
+    /// Static load magnitude on the journal (give this, or `eccentricity_ratio`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_n: Option<f64>,
+    /// Load direction from +x, counter-clockwise (270 = downward). Default 270.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub load_angle_deg: Option<f64>,
+    /// Prescribed journal eccentricity ratio e/Cb ("given eccentricity, find load").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub eccentricity_ratio: Option<f64>,
+    /// Direction of the prescribed journal displacement (default 270).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub eccentricity_angle_deg: Option<f64>,
+    /// Oil supply temperature.
+    pub supply_temperature_c: f64,
+    /// Film temperature used by the isothermal model (default: the supply temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub film_temperature_c: Option<f64>,
+    /// Injection (orifice entry) pressure: one value for all pads or one per pad. Default 0 (orifices open to
+    /// ambient: they act as sinks).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub injection_pressure_bar: Option<OneOrMany>,
+    /// Temperature of the injected oil (default: the supply temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub injection_temperature_c: Option<f64>,
+    /// Excitation-to-running frequency ratio ω/Ω for the reduced coefficients (default 1, synchronous).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub excitation_ratio: Option<f64>,
+}
+
+/// Named mesh densities; explicit element counts override them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Fidelity {
+    Preview,
+    #[default]
+    Standard,
+    Reference,
+}
+
+/// `[mesh]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct MeshFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fidelity: Option<Fidelity>,
+    /// Elements along each pad's arc (before orifice refinement).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub circumferential_elements: Option<usize>,
+    /// Elements across the full axial length (half of them when the half model is used).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axial_elements: Option<usize>,
+    /// Elements across each orifice diameter (local refinement).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub orifice_elements: Option<usize>,
+    /// Model half the length with a symmetry plane: default when every orifice is on the mid-plane.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub half_model: Option<bool>,
+}
+
+/// Cavitation condition of the film.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Cavitation {
+    /// Reynolds / Swift–Stieber: p ≥ 0 with the Reynolds residual ≥ 0 and their product zero (a
+    /// complementarity problem solved exactly).
+    #[default]
+    Reynolds,
+    /// Gümbel (half-Sommerfeld): solve, then set negative pressures to zero.
+    Gumbel,
+}
+
+/// `[physics]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct PhysicsFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cavitation: Option<Cavitation>,
+    /// Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (surfaces in
+    /// contact through their roughness). Default: 1 % of the assembled clearance.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub touchdown_film_um: Option<f64>,
+}

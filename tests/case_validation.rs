@@ -1,0 +1,144 @@
+//! Every validation path: the error names the key, the value and the allowed range; nothing panics.
+
+mod common;
+
+use tiltpad::model::{load_case, CaseError};
+
+fn base() -> String {
+    std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap()
+}
+
+fn err(set: &[&str]) -> CaseError {
+    let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+    load_case(&base(), &set).expect_err("must be rejected")
+}
+
+fn assert_names(e: &CaseError, key: &str, fragments: &[&str]) {
+    assert_eq!(e.key(), Some(key), "{e}");
+    let msg = e.to_string();
+    for f in fragments {
+        assert!(msg.contains(f), "message `{msg}` lacks `{f}`");
+    }
+}
+
+#[test]
+fn shipped_cases_are_valid() {
+    for entry in std::fs::read_dir(common::case_path("")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            assert!(text.starts_with('#'), "{} must open with a comment citing its source", path.display());
+            load_case(&text, &[]).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        }
+    }
+}
+
+#[test]
+fn non_positive_clearances() {
+    assert_names(&err(&["bearing.assembled_clearance_um=0"]), "bearing.assembled_clearance_um", &["= 0", "(0,"]);
+    assert_names(&err(&["bearing.assembled_clearance_um=-5"]), "bearing.assembled_clearance_um", &["-5"]);
+    let e = err(&["bearing.pads.bore_radius_mm=", "bearing.pads.clearance_um=-1"]);
+    assert_names(&e, "bearing.pads.clearance_um", &["-1"]);
+}
+
+#[test]
+fn preload_must_be_below_one() {
+    let e = err(&["bearing.pads.bore_radius_mm=", "bearing.pads.preload=1.0"]);
+    assert_names(&e, "bearing.pads.preload", &["= 1", "[-1, 1)"]);
+    let e = err(&["bearing.pads.bore_radius_mm=", "bearing.pads.preload=1.5"]);
+    assert_names(&e, "bearing.pads.preload", &["1.5"]);
+    // A pad clearance smaller than the assembled clearance is a preload ≥ 1... no: m = 1 − Cb/Cp < 0 is
+    // allowed down to −1; a pad bore inside the journal is not.
+    let e = err(&["bearing.pads.bore_radius_mm=50.7"]);
+    assert_names(&e, "bearing.pads.bore_radius_mm", &["greater than the journal radius"]);
+    let e = err(&["bearing.pads.bore_radius_mm=", "bearing.pads.preload=0.2", "bearing.pads.clearance_um=120"]);
+    assert_names(&e, "bearing.pads", &["one of preload, clearance_um, bore_radius_mm"]);
+}
+
+#[test]
+fn overlapping_pads() {
+    let e = err(&["bearing.pads.pivot_deg=[60.0, 100.0, 204.0, 276.0, 348.0]"]);
+    assert_names(&e, "bearing.pads.pivot_deg", &["overlap", "pads 0 and 1"]);
+    let e = err(&["bearing.pads.arc_deg=80"]);
+    assert_names(&e, "bearing.pads.arc_deg", &["80", "(0, 72]"]);
+}
+
+#[test]
+fn orifice_outside_its_pad() {
+    let e = err(&["bearing.pads.orifice=[{position_frac = 0.02, diameter_mm = 5.0, length_mm = 5.0}]"]);
+    assert_names(&e, "bearing.pads.orifice[0].position_frac", &["outside its pad", "allowed position_frac in"]);
+    let e = err(&["bearing.pads.orifice=[{position_frac = 0.5, axial_frac = 0.97, diameter_mm = 5.0, length_mm = 5.0}]", "mesh.half_model=false"]);
+    assert_names(&e, "bearing.pads.orifice[0].axial_frac", &["outside its pad"]);
+    let e = err(&["bearing.pads.orifice=[{position_frac = 0.5, axial_frac = 0.3, diameter_mm = 5.0, length_mm = 5.0}]", "mesh.half_model=true"]);
+    assert_names(&e, "mesh.half_model", &["mid-plane"]);
+}
+
+#[test]
+fn nan_and_infinity() {
+    assert_names(&err(&["operating.speed_rpm=nan"]), "operating.speed_rpm", &["NaN", "finite"]);
+    assert_names(&err(&["operating.load_n=inf"]), "operating.load_n", &["inf"]);
+    assert_names(&err(&["lubricant.viscosity_pa_s=-inf"]), "lubricant.viscosity_pa_s", &["-inf"]);
+}
+
+#[test]
+fn unknown_keys() {
+    let e = err(&["bearing.pads.arc=60"]);
+    assert!(matches!(e, CaseError::UnknownKey { .. }), "{e:?}");
+    assert_names(&e, "bearing.pads.arc", &["unknown key", "arc_deg"]);
+    let e = err(&["operating.speed=3000"]);
+    assert_names(&e, "operating.speed", &["speed_rpm"]);
+    let e = err(&["thermal_model=1"]);
+    assert_names(&e, "thermal_model", &["unknown key"]);
+}
+
+#[test]
+fn missing_keys() {
+    let e = err(&["lubricant.density_kg_per_m3="]);
+    assert!(matches!(e, CaseError::MissingKey { .. }), "{e:?}");
+    assert_names(&e, "lubricant.density_kg_per_m3", &["missing"]);
+    let e = err(&["operating.load_n="]);
+    assert_names(&e, "operating.load_n", &["missing"]);
+    let e = err(&["bearing.pads.thickness_mm="]);
+    assert_names(&e, "bearing.pads.thickness_mm", &["missing"]);
+    let e = err(&["lubricant.viscosity2_pa_s="]);
+    assert_names(&e, "lubricant.viscosity2_pa_s", &["missing"]);
+}
+
+#[test]
+fn wrong_types_and_inconsistent_values() {
+    let e = err(&["operating.speed_rpm=\"fast\""]);
+    assert!(matches!(e, CaseError::WrongType { .. }), "{e:?}");
+    assert_names(&e, "operating.speed_rpm", &[]);
+    assert_names(&err(&["operating.injection_pressure_bar=[1.0, 2.0]"]), "operating.injection_pressure_bar", &["2 values for 5 pads"]);
+    assert_names(&err(&["operating.eccentricity_ratio=0.5"]), "operating.eccentricity_ratio", &["not both"]);
+    assert_names(&err(&["bearing.pads.count=0"]), "bearing.pads.count", &["[1, 24]"]);
+    assert_names(&err(&["lubricant.viscosity2_pa_s=0.05"]), "lubricant.viscosity2_pa_s", &["must fall with temperature"]);
+    assert_names(&err(&["mesh.axial_elements=15"]), "mesh.axial_elements", &["even"]);
+}
+
+#[test]
+fn bad_overrides_and_syntax() {
+    let set = vec!["speed".to_string()];
+    assert!(matches!(load_case(&base(), &set), Err(CaseError::BadOverride { .. })));
+    let set = vec!["operating.speed_rpm.x=1".to_string()];
+    assert!(matches!(load_case(&base(), &set), Err(CaseError::BadOverride { .. })));
+    assert!(matches!(load_case("[bearing\nx=1", &[]), Err(CaseError::Syntax { .. })));
+    // Per-pad overrides index the array of pad tables.
+    let text = base() + "\n[[bearing.pad]]\n[[bearing.pad]]\n[[bearing.pad]]\n[[bearing.pad]]\n[[bearing.pad]]\n";
+    let (_, c) = load_case(&text, &["bearing.pad.2.offset=0.5".to_string()]).unwrap();
+    assert_eq!(c.bearing.pads[2].offset, 0.5);
+    assert_eq!(c.bearing.pads[1].offset, 0.6);
+}
+
+#[test]
+fn units_are_converted_once() {
+    let (file, c) = load_case(&base(), &[]).unwrap();
+    assert!((c.bearing.journal_radius_m - 0.0508).abs() < 1e-15);
+    assert!((c.bearing.assembled_clearance_m - 102e-6).abs() < 1e-18);
+    assert!((c.bearing.pads[0].clearance_m - 121e-6).abs() < 1e-12);
+    assert!((c.bearing.pads[3].pivot_rad - 276_f64.to_radians()).abs() < 1e-15);
+    assert!((c.operating.speed_rad_s - 9000.0 * std::f64::consts::TAU / 60.0).abs() < 1e-9);
+    // The file round-trips through TOML.
+    let again = load_case(&file.to_toml().unwrap(), &[]).unwrap().1;
+    assert_eq!(again, c);
+}

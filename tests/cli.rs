@@ -1,0 +1,87 @@
+//! The command-line interface as a user runs it.
+
+mod common;
+
+use std::process::Command;
+
+fn tiltpad() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tiltpad"))
+}
+
+#[test]
+fn solve_writes_self_describing_json() {
+    let dir = std::env::temp_dir().join(format!("tiltpad-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("r.json");
+    let o = tiltpad()
+        .args(["solve", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--set", "operating.speed_rpm=7000", "--json"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("eccentricity") && text.contains("reduced coefficients"), "{text}");
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    for key in ["eccentricity_ratio", "attitude_angle_deg", "journal_position_m", "sommerfeld", "friction_power_w", "flows_m3_per_s", "report", "inputs"] {
+        assert!(j.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(j["reduced"]["k_n_per_m"].as_array().unwrap().len(), 2);
+    assert_eq!(j["reduced"]["c_ns_per_m"][1].as_array().unwrap().len(), 2);
+    let n = j["full"]["k"].as_array().unwrap().len();
+    assert_eq!(n, 2 + 5, "journal + five tilts");
+    assert_eq!(j["pads"].as_array().unwrap().len(), 5);
+    for p in j["pads"].as_array().unwrap() {
+        assert!(p["tilt_rad"].is_f64() && p["h_min_m"].as_f64().unwrap() > 0.0 && p["p_max_pa"].is_f64());
+    }
+    assert!(j["report"]["iterations"].as_u64().unwrap() > 0);
+    assert!(j["report"]["residual"].as_f64().unwrap() < 1e-6);
+    assert!(j["report"]["seconds"].as_f64().unwrap() > 0.0);
+    // The result describes itself: resolved inputs in SI, with the override applied.
+    assert!((j["inputs"]["speed_rpm"].as_f64().unwrap() - 7000.0).abs() < 1e-9);
+    assert!((j["inputs"]["assembled_clearance_m"].as_f64().unwrap() - 102e-6).abs() < 1e-15);
+    assert!((j["inputs"]["pad_clearances_m"][0].as_f64().unwrap() - 121e-6).abs() < 1e-12);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn sweep_writes_csv() {
+    let dir = std::env::temp_dir().join(format!("tiltpad-sweep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("s.csv");
+    let o = tiltpad()
+        .args(["sweep", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--param", "operating.speed_rpm", "--from", "6000", "--to", "10000", "--steps", "3", "--csv"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let csv = std::fs::read_to_string(&out).unwrap();
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(rows.len(), 4);
+    let ecc: Vec<f64> = rows[1..].iter().map(|r| r.split(',').nth(1).unwrap().parse().unwrap()).collect();
+    // Faster journal, thicker film: eccentricity falls with speed.
+    assert!(ecc[0] > ecc[1] && ecc[1] > ecc[2], "{ecc:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn invalid_case_is_a_clear_error() {
+    let o = tiltpad()
+        .args(["solve", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--set", "bearing.pads.bore_radius_mm=", "--set", "bearing.pads.preload=1.2"])
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("bearing.pads.preload") && err.contains("1.2") && err.contains("[-1, 1)"), "{err}");
+}
+
+#[test]
+fn touchdown_is_reported_not_nan() {
+    let o = tiltpad()
+        .args(["solve", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--set", "operating.load_n=5e6", "--set", "bearing.pads.orifice=[]"])
+        .output()
+        .unwrap();
+    assert!(!o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("touchdown"), "{err}");
+    assert!(!err.to_lowercase().contains("nan"), "{err}");
+}
