@@ -149,7 +149,7 @@ fn eval_pad(pm: &mut PadModel, k: usize, local: &[f64], warm: bool, ctx: &mut Ct
         ctx.report.warn(format!("pad {k}: {w}"));
     }
     let forces = pm.film.generalized_forces();
-    let lin = pm.film.linearize(&inp);
+    let lin = pm.film.linearize_stiffness(&inp);
     Ok((forces, lin))
 }
 
@@ -275,10 +275,16 @@ fn solve_tilt(pm: &mut PadModel, k: usize, base: &[f64], warm: f64, ctx: &mut Ct
         let rel = relative(r, scale);
         // A pad without any film pressure (fully diverging film) is not an equilibrium: the moment is zero
         // only because nothing acts on it. The true root lies towards larger δ (trailing edge closing).
-        let loaded = forces[0].hypot(forces[1]) > 1e-9 * ctx.force_scale;
+        let share = forces[0].hypot(forces[1]) / ctx.force_scale;
+        let loaded = share > 1e-9;
         let state = PadState { q: local[2..].to_vec(), forces, lin, unloaded: !loaded || kt <= 0.0, residual: rel };
         if rel <= ctx.params.pad_tol && loaded {
             return Ok(state);
+        }
+        // Pressure has appeared but the pad carries a vanishing share of the load: its tilt is not
+        // determined by the film, and any tilt in this thin band is as good as another.
+        if loaded && share < 1e-6 && r <= 0.0 {
+            return Ok(PadState { unloaded: true, residual: 0.0, ..state });
         }
         if r > 0.0 || !loaded {
             blo = d;
@@ -314,6 +320,16 @@ fn condensed_journal_stiffness(pm: &PadModel, st: &PadState) -> Matrix2<f64> {
         }
         None => kjj,
     }
+}
+
+/// Warns that the journal is held along a direction without static stiffness (reported as an axis, so ±d
+/// give one warning).
+fn warn_held(report: &mut SolveReport, dir: Vector2<f64>) {
+    let axis = dir[1].atan2(dir[0]).to_degrees().rem_euclid(180.0).round() % 180.0 + 0.0;
+    report.warn(format!(
+        "the bearing has no static stiffness along the {axis:.0}° axis: the journal is held at its start \
+         position in that direction (as for a guided rotor)"
+    ));
 }
 
 /// Newton step `K Δ = r` by singular values: directions without stiffness (σ < 1e-7 σ_max) are not moved
@@ -420,12 +436,7 @@ fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut
         let mut step = match journal_step(&kred, &r, tol) {
             Ok((step, held)) => {
                 if let Some(dir) = held {
-                    // Report the axis (angle modulo 180°), so ±d give one warning.
-                    let axis = dir[1].atan2(dir[0]).to_degrees().rem_euclid(180.0).round() % 180.0;
-                    ctx.report.warn(format!(
-                        "the bearing has no static stiffness along the {axis:.0}° axis: the journal is held at its \
-                         start position in that direction (as for a guided rotor)"
-                    ));
+                    warn_held(&mut ctx.report, dir);
                 }
                 step
             }
@@ -467,6 +478,194 @@ fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut
     }
     let r = Vector2::new(f[0] + w[0], f[1] + w[1]);
     Ok(Outer::Failed { journal, residual: r.norm() / ctx.force_scale, reason: format!("{} iterations", ctx.params.max_iterations) })
+}
+
+/// Evaluates every pad at the global coordinates `u` (one film solve each, no pad iteration).
+fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -> Result<Vec<PadState>, (usize, FilmError)> {
+    let floor = 1e-9 * ctx.force_scale;
+    let mut states = Vec::with_capacity(model.pads.len());
+    for k in 0..model.pads.len() {
+        let local = model.local(k, u);
+        let pm = &mut model.pads[k];
+        let (forces, lin) = eval_pad(pm, k, &local, true, ctx).map_err(|e| (k, e))?;
+        let q = local[2..].to_vec();
+        let sc = pad_scales(pm, &forces, floor);
+        let residual = q.iter().enumerate().map(|(d, qd)| relative(forces[2 + d] - pm.structural_stiffness[d] * qd, sc[d])).fold(0.0, f64::max);
+        let share = forces[0].hypot(forces[1]) / ctx.force_scale;
+        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load).
+        let unloaded = share < 1e-6;
+        states.push(PadState { q, forces, lin, unloaded, residual: if unloaded { 0.0 } else { residual } });
+    }
+    Ok(states)
+}
+
+/// Global residual `R(u)` (journal force balance, pad balances) and its merit (scaled sum of squares).
+fn coupled_residual(model: &BearingModel, u: &[f64], states: &[PadState], w: [f64; 2], force_scale: f64) -> (Vec<f64>, f64) {
+    let mut r = vec![0.0; model.n_dofs];
+    let mut merit = 0.0;
+    for st in states {
+        r[0] += st.forces[0];
+        r[1] += st.forces[1];
+    }
+    r[0] += w[0];
+    r[1] += w[1];
+    merit += (r[0] / force_scale).powi(2) + (r[1] / force_scale).powi(2);
+    for (pm, st) in model.pads.iter().zip(states) {
+        for (d, dof) in pm.dofs.iter().enumerate() {
+            let i = pm.offset + d;
+            r[i] = st.forces[2 + d] - pm.structural_stiffness[d] * u[i];
+            let scale = if *dof == PadDof::Tilt { force_scale * model.journal_radius } else { force_scale };
+            if !st.unloaded {
+                merit += (r[i] / scale).powi(2);
+            }
+        }
+    }
+    (r, merit)
+}
+
+/// Coupled Newton on all coordinates at once (one film solve per pad per iteration).
+///
+/// Safeguards: on a cold start and whenever a pad's own stiffness is not positive (far from its
+/// equilibrium the tilt moment is not monotone) that pad is placed with the safeguarded pad solve; pads that
+/// carry no load are held and placed the same way; the Newton system is solved in a basis of the journal
+/// directions that have stiffness plus the free pad coordinates, so a zero-stiffness journal direction (a
+/// two-pad bearing sideways) is held, as in the pad-assembly method.
+fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Outer, SolveError> {
+    let n = model.n_dofs;
+    let w = external_load(ctx.op, 1.0);
+    let cb = model.assembled_clearance;
+    let tol = ctx.params.force_tol * ctx.force_scale;
+    let failed = |u: &[f64], states: &[PadState], reason: &str, fs: f64| {
+        let f = states.iter().fold([0.0; 2], |a, p| [a[0] + p.forces[0], a[1] + p.forces[1]]);
+        Outer::Failed { journal: [u[0], u[1]], residual: (f[0] + w[0]).hypot(f[1] + w[1]) / fs, reason: reason.to_string() }
+    };
+    let mut u = u0.to_vec();
+    let mut states = if cold {
+        match solve_all_pads(model, [u[0], u[1]], &u, ctx) {
+            Ok((st, _)) => {
+                u = assemble_u(model, [u[0], u[1]], &st);
+                st
+            }
+            Err(_) => return Ok(Outer::Failed { journal: [u[0], u[1]], residual: f64::INFINITY, reason: "film closes at the start".into() }),
+        }
+    } else {
+        match eval_all(model, &u, ctx) {
+            Ok(st) => st,
+            Err(_) => return Ok(Outer::Failed { journal: [u[0], u[1]], residual: f64::INFINITY, reason: "film closes at the start".into() }),
+        }
+    };
+    for _ in 0..ctx.params.max_iterations {
+        if cancel.cancelled() {
+            return Err(SolveError::Cancelled);
+        }
+        // Place pads that Newton cannot handle: no positive stiffness of their own, or no load.
+        for k in 0..model.pads.len() {
+            let pm = &model.pads[k];
+            let nd = pm.dofs.len();
+            let own_ok = (0..nd).all(|d| states[k].lin.stiffness[(2 + d, 2 + d)] + pm.structural_stiffness[d] > 0.0);
+            if nd > 0 && (!own_ok || states[k].unloaded) && states[k].residual > ctx.params.pad_tol {
+                let off = pm.offset;
+                let q: Vec<f64> = u[off..off + nd].to_vec();
+                let st = solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx).map_err(|e| SolveError::Film { pad: k, source: e })?;
+                u[off..off + nd].copy_from_slice(&st.q);
+                let share = st.forces[0].hypot(st.forces[1]) / ctx.force_scale;
+                states[k] = PadState { unloaded: st.unloaded || share < 1e-6, residual: if share < 1e-6 { 0.0 } else { st.residual }, ..st };
+            }
+        }
+        ctx.report.iterations += 1;
+        let (r, merit) = coupled_residual(model, &u, &states, w, ctx.force_scale);
+        ctx.report.residual_history.push(r[0].hypot(r[1]) / ctx.force_scale);
+        let pads_ok = states.iter().all(|s| s.unloaded || s.residual <= ctx.params.pad_tol);
+        if r[0].hypot(r[1]) <= tol && pads_ok {
+            let f = states.iter().fold([0.0; 2], |a, p| [a[0] + p.forces[0], a[1] + p.forces[1]]);
+            return Ok(Outer::Converged(u, states, f));
+        }
+        // Basis: journal directions with stiffness, then the free pad coordinates.
+        let kred: Matrix2<f64> = model.pads.iter().zip(&states).map(|(pm, st)| condensed_journal_stiffness(pm, st)).sum();
+        // Pads are not in equilibrium yet, so a residual along a zero-stiffness direction is allowed here.
+        let (_, held) = match journal_step(&kred, &Vector2::new(r[0], r[1]), f64::INFINITY) {
+            Ok(x) => x,
+            Err(reason) => return Ok(failed(&u, &states, &reason, ctx.force_scale)),
+        };
+        if let Some(v) = held {
+            warn_held(&mut ctx.report, v);
+        }
+        let mut basis: Vec<Vec<f64>> = Vec::new();
+        match held {
+            Some(v) => {
+                let mut b = vec![0.0; n];
+                b[0] = -v[1];
+                b[1] = v[0];
+                basis.push(b);
+            }
+            None => {
+                for i in 0..2 {
+                    let mut b = vec![0.0; n];
+                    b[i] = 1.0;
+                    basis.push(b);
+                }
+            }
+        }
+        let mut k = DMatrix::<f64>::zeros(n, n);
+        for (pm, st) in model.pads.iter().zip(&states) {
+            let idx: Vec<usize> = [0, 1].into_iter().chain((0..pm.dofs.len()).map(|d| pm.offset + d)).collect();
+            for (a, &ga) in idx.iter().enumerate() {
+                for (b, &gb) in idx.iter().enumerate() {
+                    k[(ga, gb)] += st.lin.stiffness[(a, b)];
+                }
+            }
+            for d in 0..pm.dofs.len() {
+                k[(pm.offset + d, pm.offset + d)] += pm.structural_stiffness[d];
+                if !st.unloaded {
+                    let mut b = vec![0.0; n];
+                    b[pm.offset + d] = 1.0;
+                    basis.push(b);
+                }
+            }
+        }
+        let m = basis.len();
+        let bm = DMatrix::from_fn(n, m, |i, c| basis[c][i]);
+        let kr = bm.transpose() * &k * &bm;
+        let rr = bm.transpose() * nalgebra::DVector::from_column_slice(&r);
+        let Some(y) = kr.lu().solve(&rr).filter(|s| s.iter().all(|v| v.is_finite())) else {
+            return Ok(failed(&u, &states, "singular Jacobian", ctx.force_scale));
+        };
+        let step: Vec<f64> = (&bm * y).iter().copied().collect();
+        // Limit the journal step, and keep every film open with margin.
+        let js = step[0].hypot(step[1]);
+        let mut alpha = if js > ctx.params.max_step * cb { ctx.params.max_step * cb / js } else { 1.0 };
+        for (kk, pm) in model.pads.iter().enumerate() {
+            let dh = pm.film.nodal_thickness_delta(&model.local(kk, &step));
+            for (h, d) in pm.film.h.node.iter().zip(&dh) {
+                if *d < 0.0 {
+                    alpha = alpha.min(0.5 * h / -d);
+                }
+            }
+        }
+        let mut accepted = false;
+        for _ in 0..12 {
+            let trial: Vec<f64> = u.iter().zip(&step).map(|(a, d)| a + alpha * d).collect();
+            if let Ok(mut st2) = eval_all(model, &trial, ctx) {
+                for (a, b) in st2.iter_mut().zip(&states) {
+                    a.unloaded |= b.unloaded && a.forces[0].hypot(a.forces[1]) < 1e-6 * ctx.force_scale;
+                }
+                let (r2, m2) = coupled_residual(model, &trial, &st2, w, ctx.force_scale);
+                if m2 < (1.0 - 1e-4 * alpha) * merit || (r2[0].hypot(r2[1]) <= tol && m2 <= merit) {
+                    u = trial;
+                    states = st2;
+                    accepted = true;
+                    break;
+                }
+            }
+            alpha *= 0.5;
+        }
+        if !accepted {
+            // Leave the films at the last accepted point.
+            let _ = eval_all(model, &u, ctx);
+            return Ok(failed(&u, &states, "line search found no decrease", ctx.force_scale));
+        }
+    }
+    Ok(failed(&u, &states, "iteration limit", ctx.force_scale))
 }
 
 /// Walks the journal along the load direction from the centre in steps of 0.1 Cb until the residual along
@@ -525,6 +724,10 @@ pub fn solve_equilibrium(
         ctx.report.pad_residual = pads.iter().filter(|p| !p.unloaded).fold(0.0_f64, |m, p| m.max(p.residual));
         ctx.report.method = method.to_string();
         let mut pads = pads;
+        // Full linearisation (stiffness and damping) at the converged state: the films hold it.
+        for (k, p) in pads.iter_mut().enumerate() {
+            p.lin = model.pads[k].film.linearize(&op.film_inputs(k));
+        }
         for (k, p) in pads.iter_mut().enumerate() {
             // A pad whose load is a negligible share of the bearing's is "unloaded": its tilt sits where film
             // pressure just vanishes and is weakly determined.
@@ -577,6 +780,11 @@ pub fn solve_equilibrium(
             u
         }
     };
+    let cold = !matches!(start, Some(s) if s.len() == model.n_dofs);
+    match coupled_newton(model, &u0, cold, &mut ctx, cancel)? {
+        Outer::Converged(u, s, f) => return finish(model, u, s, f, ctx, "coupled Newton"),
+        Outer::Failed { reason, .. } => ctx.report.warn(format!("coupled Newton failed ({reason}); using pad assembly")),
+    }
     match newton_journal(model, &u0, 1.0, &mut ctx, cancel)? {
         Outer::Converged(u, s, f) => return finish(model, u, s, f, ctx, "Newton (pad assembly)"),
         Outer::Failed { reason, .. } => ctx.report.warn(format!("Newton from the initial guess failed ({reason}); trying a scan along the load")),

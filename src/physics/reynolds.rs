@@ -641,13 +641,25 @@ impl PadFilm {
     /// last solve; requires a preceding [`Self::solve`] with the same inputs).
     #[must_use]
     pub fn linearize(&mut self, inp: &FilmInputs<'_>) -> FilmLinearization {
+        self.linearize_impl(inp, true)
+    }
+
+    /// As [`Self::linearize`] but the stiffness only (the damping is returned as zeros): half the
+    /// back-substitutions, for Newton iterations.
+    #[must_use]
+    pub fn linearize_stiffness(&mut self, inp: &FilmInputs<'_>) -> FilmLinearization {
+        self.linearize_impl(inp, false)
+    }
+
+    fn linearize_impl(&mut self, inp: &FilmInputs<'_>, with_damping: bool) -> FilmLinearization {
         let g = &self.geom;
         let n = g.n_nodes();
         let m = g.n_dofs();
         let u = inp.surface_speed;
         let gumbel = self.solved_with == Some(Cavitation::Gumbel);
         let pg = if gumbel { &self.p_full } else { &self.p };
-        let mut rhs = vec![0.0; n * 2 * m];
+        let cols = if with_damping { 2 * m } else { m };
+        let mut rhs = vec![0.0; n * cols];
         for (e, nodes) in g.elements.iter().enumerate() {
             for (k, q) in g.qp[e].iter().enumerate() {
                 let h = self.h.qp[e][k];
@@ -666,7 +678,9 @@ impl PadFilm {
                     for (s, shape) in g.shapes.iter().enumerate() {
                         let phi = shape.qp[e][k];
                         rhs[s * n + nodes[a]] += phi * c;
-                        rhs[(m + s) * n + nodes[a]] += phi * d;
+                        if with_damping {
+                            rhs[(m + s) * n + nodes[a]] += phi * d;
+                        }
                     }
                 }
             }
@@ -693,9 +707,11 @@ impl PadFilm {
         for j in 0..m {
             for k in 0..m {
                 let dk = &rhs[k * n..(k + 1) * n];
-                let dc = &rhs[(m + k) * n..(m + k + 1) * n];
                 stiffness[(j, k)] = -g.sym * g.loads[j].iter().zip(dk).map(|(a, b)| a * b).sum::<f64>();
-                damping[(j, k)] = -g.sym * g.loads[j].iter().zip(dc).map(|(a, b)| a * b).sum::<f64>();
+                if with_damping {
+                    let dc = &rhs[(m + k) * n..(m + k + 1) * n];
+                    damping[(j, k)] = -g.sym * g.loads[j].iter().zip(dc).map(|(a, b)| a * b).sum::<f64>();
+                }
             }
         }
         FilmLinearization { stiffness, damping }
