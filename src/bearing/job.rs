@@ -38,6 +38,23 @@ pub fn solve_operating_point(
     Ok(assemble_solution(model, case, op, &eq))
 }
 
+/// A warning when the static (ω = 0) journal stiffness has a negative principal value: the equilibrium
+/// exists but is statically unstable (the journal would move away from it).
+fn static_stability_warning(k: &[[f64; 2]; 2]) -> Option<String> {
+    let (a, b, d) = (k[0][0], 0.5 * (k[0][1] + k[1][0]), k[1][1]);
+    let mean = 0.5 * (a + d);
+    let rad = (0.25 * (a - d) * (a - d) + b * b).sqrt();
+    let (lo, hi) = (mean - rad, mean + rad);
+    let scale = hi.abs().max(lo.abs());
+    (lo < -1e-6 * scale).then(|| {
+        format!(
+            "the equilibrium is statically unstable: the static stiffness has a negative principal value \
+             ({:.3e} N/m); the journal would move away from this position",
+            lo
+        )
+    })
+}
+
 fn wrap_deg(a: f64) -> f64 {
     let x = a.rem_euclid(360.0);
     if x > 180.0 { x - 360.0 } else { x }
@@ -104,12 +121,17 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
     }
     let inflow = flows.leading_edges_in + flows.orifices_in;
     let outflow = flows.trailing_edges_out + flows.sides_out + flows.to_cavitation;
-    let scale = inflow.abs() + outflow.abs();
+    // Relative to the throughput (a 360° bore has no edges: its in- and outflow are both ~0 net).
+    let scale = flows.leading_edges_in.abs() + flows.orifices_in.abs() + flows.trailing_edges_out.abs() + flows.sides_out.abs() + flows.to_cavitation.abs();
     flows.mass_balance_error = if scale > 0.0 { (inflow - outflow) / scale } else { 0.0 };
 
     let full = full_coefficients(model, eq);
     let omega = case.operating.excitation_ratio * op.speed_rad_s;
     let reduced = reduce(&full, omega);
+    let mut report = eq.report.clone();
+    if let Some(w) = static_stability_warning(&reduce(&full, 0.0).k_n_per_m) {
+        report.warnings.push(w);
+    }
     let load_angle = match op.load {
         LoadSpec::Force { angle_rad, magnitude_n } if magnitude_n > 0.0 => angle_rad,
         _ => load[1].atan2(load[0]),
@@ -135,7 +157,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
         full,
         reduced,
         coordinates: eq.u.clone(),
-        report: eq.report.clone(),
+        report,
         derived: Derived {
             assembled_clearance_m: cb,
             pad_clearances_m: case.bearing.pads.iter().map(|p| p.clearance_m).collect(),

@@ -90,7 +90,7 @@ pub struct BearingFlows {
     pub sides_out: f64,
     pub orifices_in: f64,
     pub to_cavitation: f64,
-    /// (in − out) / throughput of the consistent flows: the discrete mass balance.
+    /// (in − out) / (sum of the magnitudes of all flows), for the consistent flows: the discrete mass balance.
     pub mass_balance_error: f64,
 }
 

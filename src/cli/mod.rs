@@ -2,6 +2,7 @@
 //!
 //! Engineering units at this edge only; the JSON written by `solve --json` is SI with units in the key names.
 
+mod bench;
 mod summary;
 mod sweep;
 
@@ -52,6 +53,15 @@ pub enum Command {
         #[arg(long, value_name = "OUT")]
         csv: PathBuf,
     },
+    /// Measure time and error per fidelity level; writes docs/PERFORMANCE.md (run in --release).
+    Bench {
+        /// Repeated solves per measurement (the median is reported).
+        #[arg(long, default_value_t = 7)]
+        repeats: usize,
+        /// Project root (where `cases/` and `docs/` are).
+        #[arg(long, default_value = ".")]
+        root: PathBuf,
+    },
 }
 
 /// Reads and validates a case file with overrides.
@@ -94,5 +104,6 @@ pub fn run(command: Command) -> Result<()> {
             Ok(())
         }
         Command::Sweep { case, param, from, to, steps, set, csv } => sweep::run(&case, &param, from, to, steps, &set, &csv),
+        Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
     }
 }

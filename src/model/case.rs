@@ -171,9 +171,9 @@ impl Fidelity {
     #[must_use]
     pub fn elements(self) -> (usize, usize, usize) {
         match self {
-            Self::Preview => (16, 8, 4),
-            Self::Standard => (36, 16, 6),
-            Self::Reference => (96, 48, 12),
+            Self::Preview => (16, 8, 6),
+            Self::Standard => (36, 16, 12),
+            Self::Reference => (96, 48, 24),
         }
     }
 }

@@ -1,0 +1,271 @@
+//! `tiltpad bench`: the speed–accuracy table.
+//!
+//! For each shipped benchmark case and each fidelity level it measures the wall time of a complete solve
+//! (mesh build, equilibrium, full and synchronously reduced coefficients; median of repeated runs) and the
+//! relative error against a reference-fine solution (twice the reference level's element counts):
+//! eccentricity, reduced K and C (Frobenius norm of the 2×2 difference over the norm), p_max. It also
+//! measures the cost growth with the number of film nodes (fitted exponent) and writes
+//! `docs/PERFORMANCE.md`, `docs/performance-error-vs-time.svg` and `assets/fidelity.json` (what the
+//! workbench shows next to the fidelity selector). Run it in release: `cargo run --release -- bench`.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use anyhow::{Context, Result};
+use serde::Serialize;
+use web_time::Instant;
+
+use crate::bearing::{solve_case, Solution};
+use crate::model::{load_case, Case, Fidelity};
+
+use super::write_atomic;
+
+/// One measured level.
+#[derive(Debug, Clone, Serialize)]
+pub struct LevelRow {
+    pub case: String,
+    pub level: String,
+    pub film_nodes: usize,
+    pub median_ms: f64,
+    pub err_eccentricity: f64,
+    pub err_k: f64,
+    pub err_c: f64,
+    pub err_p_max: f64,
+}
+
+/// What the workbench reads to show the expected error and time of a level.
+#[derive(Debug, Clone, Serialize)]
+pub struct FidelityTable {
+    pub generated: String,
+    pub machine: String,
+    pub case: String,
+    pub rows: Vec<LevelRow>,
+}
+
+fn frob_rel(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> f64 {
+    let mut d = 0.0;
+    let mut n = 0.0;
+    for i in 0..2 {
+        for j in 0..2 {
+            d += (a[i][j] - b[i][j]).powi(2);
+            n += b[i][j].powi(2);
+        }
+    }
+    (d / n).sqrt()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    ((a - b) / b).abs()
+}
+
+/// Median wall time of `repeats` complete solves [ms], and the last solution.
+fn timed(case: &Case, repeats: usize) -> Result<(f64, Solution)> {
+    let mut times = Vec::with_capacity(repeats);
+    let mut last = None;
+    for _ in 0..repeats {
+        let t0 = Instant::now();
+        let s = solve_case(case)?;
+        times.push(t0.elapsed().as_secs_f64() * 1e3);
+        last = Some(s);
+    }
+    times.sort_by(f64::total_cmp);
+    let sol = last.context("no run")?;
+    Ok((times[times.len() / 2], sol))
+}
+
+fn with_mesh(text: &str, set: &[String]) -> Result<Case> {
+    Ok(load_case(text, set)?.1)
+}
+
+fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|t| t.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string()))
+        .unwrap_or_else(|| "unknown CPU".into());
+    let cores = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
+    let mem = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|t| t.lines().next().and_then(|l| l.split_whitespace().nth(1)).and_then(|k| k.parse::<f64>().ok()))
+        .map_or_else(String::new, |kb| format!(", {:.0} GiB", kb / 1024.0 / 1024.0));
+    format!("{cpu}, {cores} cores{mem}")
+}
+
+fn today() -> String {
+    std::process::Command::new("date")
+        .arg("+%Y-%m-%d %H:%M %Z")
+        .output()
+        .ok()
+        .map_or_else(|| "unknown date".into(), |o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+}
+
+/// Levels of one case against its reference-fine solution.
+fn levels(name: &str, text: &str, repeats: usize) -> Result<Vec<LevelRow>> {
+    let (nx, nz, no) = Fidelity::Reference.elements();
+    let fine = with_mesh(text, &[
+        "mesh.fidelity=\"reference\"".into(),
+        format!("mesh.circumferential_elements={}", 2 * nx),
+        format!("mesh.axial_elements={}", 2 * nz),
+        format!("mesh.orifice_elements={}", 2 * no),
+    ])?;
+    let truth = solve_case(&fine)?;
+    let mut rows = Vec::new();
+    for level in [Fidelity::Preview, Fidelity::Standard, Fidelity::Reference] {
+        let name_l = format!("{level:?}").to_lowercase();
+        let case = with_mesh(text, &[format!("mesh.fidelity=\"{name_l}\"")])?;
+        let (ms, s) = timed(&case, repeats)?;
+        rows.push(LevelRow {
+            case: name.to_string(),
+            level: name_l,
+            film_nodes: s.derived.film_nodes,
+            median_ms: ms,
+            err_eccentricity: rel(s.eccentricity_ratio, truth.eccentricity_ratio),
+            err_k: frob_rel(s.reduced.k_n_per_m, truth.reduced.k_n_per_m),
+            err_c: frob_rel(s.reduced.c_ns_per_m, truth.reduced.c_ns_per_m),
+            err_p_max: rel(s.p_max_pa, truth.p_max_pa),
+        });
+    }
+    rows.push(LevelRow {
+        case: name.to_string(),
+        level: "reference-fine (truth)".into(),
+        film_nodes: truth.derived.film_nodes,
+        median_ms: timed(&fine, 1)?.0,
+        err_eccentricity: 0.0,
+        err_k: 0.0,
+        err_c: 0.0,
+        err_p_max: 0.0,
+    });
+    Ok(rows)
+}
+
+/// Time vs film nodes for uniformly refined meshes, and the least-squares exponent of t ∝ nodes^a.
+fn growth(text: &str, repeats: usize) -> Result<(Vec<(usize, f64)>, f64)> {
+    let mut pts = Vec::new();
+    for (nx, nz, no) in [(12, 4, 3), (24, 8, 4), (48, 16, 6), (96, 32, 12), (192, 64, 24)] {
+        let case = with_mesh(text, &[
+            format!("mesh.circumferential_elements={nx}"),
+            format!("mesh.axial_elements={nz}"),
+            format!("mesh.orifice_elements={no}"),
+        ])?;
+        let (ms, s) = timed(&case, repeats)?;
+        pts.push((s.derived.film_nodes, ms));
+    }
+    #[allow(clippy::cast_precision_loss)]
+    let (xs, ys): (Vec<f64>, Vec<f64>) = pts.iter().map(|&(n, t)| ((n as f64).ln(), t.ln())).unzip();
+    #[allow(clippy::cast_precision_loss)]
+    let m = xs.len() as f64;
+    let (mx, my) = (xs.iter().sum::<f64>() / m, ys.iter().sum::<f64>() / m);
+    let sxy: f64 = xs.iter().zip(&ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = xs.iter().map(|x| (x - mx).powi(2)).sum();
+    Ok((pts, sxy / sxx))
+}
+
+/// Error vs time on log–log axes, one marker per level, one line per case.
+fn svg_plot(rows: &[LevelRow]) -> String {
+    let (w, h, pad) = (640.0, 400.0, 60.0);
+    let pts: Vec<&LevelRow> = rows.iter().filter(|r| r.err_k > 0.0).collect();
+    let err = |r: &LevelRow| r.err_eccentricity.max(r.err_k).max(r.err_c).max(r.err_p_max).max(1e-6);
+    let (tmin, tmax) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), r| (a.min(r.median_ms), b.max(r.median_ms)));
+    let (emin, emax) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), r| (a.min(err(r)), b.max(err(r))));
+    let (lt0, lt1) = ((tmin * 0.5).log10().floor(), (tmax * 2.0).log10().ceil());
+    let (le0, le1) = ((emin * 0.5).log10().floor(), (emax * 2.0).log10().ceil());
+    let x = |t: f64| pad + (t.log10() - lt0) / (lt1 - lt0) * (w - 1.5 * pad);
+    let y = |e: f64| h - pad - (e.log10() - le0) / (le1 - le0) * (h - 1.5 * pad);
+    let mut s = format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
+    let _ = writeln!(s, "<line x1=\"{pad}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"black\"/>", h - pad, w - 0.5 * pad, h - pad);
+    let _ = writeln!(s, "<line x1=\"{pad}\" y1=\"{}\" x2=\"{pad}\" y2=\"{}\" stroke=\"black\"/>", h - pad, 0.5 * pad);
+    #[allow(clippy::cast_possible_truncation)]
+    for d in lt0 as i32..=lt1 as i32 {
+        let t = 10f64.powi(d);
+        let _ = writeln!(s, "<text x=\"{:.1}\" y=\"{}\" text-anchor=\"middle\">{t} ms</text>", x(t), h - pad + 18.0);
+    }
+    #[allow(clippy::cast_possible_truncation)]
+    for d in le0 as i32..=le1 as i32 {
+        let e = 10f64.powi(d);
+        let _ = writeln!(s, "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">1e{d}</text>", pad - 6.0, y(e) + 4.0);
+    }
+    let _ = writeln!(s, "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wall time per solve (release)</text>", w / 2.0, h - 12.0);
+    let _ = writeln!(s, "<text x=\"14\" y=\"{}\" transform=\"rotate(-90 14 {})\" text-anchor=\"middle\">largest relative error (ε, K, C, p_max)</text>", h / 2.0, h / 2.0);
+    let colours = ["#440154", "#21918c", "#fde725", "#3b528b"];
+    let mut cases: Vec<&str> = pts.iter().map(|r| r.case.as_str()).collect();
+    cases.dedup();
+    for (ci, c) in cases.iter().enumerate() {
+        let col = colours[ci % colours.len()];
+        let line: Vec<String> = pts.iter().filter(|r| r.case == *c).map(|r| format!("{:.1},{:.1}", x(r.median_ms), y(err(r)))).collect();
+        let _ = writeln!(s, "<polyline points=\"{}\" fill=\"none\" stroke=\"{col}\" stroke-width=\"2\"/>", line.join(" "));
+        for r in pts.iter().filter(|r| r.case == *c) {
+            let _ = writeln!(s, "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{col}\"/><text x=\"{:.1}\" y=\"{:.1}\">{}</text>", x(r.median_ms), y(err(r)), x(r.median_ms) + 6.0, y(err(r)) - 6.0, r.level);
+        }
+        let _ = writeln!(s, "<text x=\"{}\" y=\"{}\" fill=\"{col}\">{c}</text>", w - 200.0, 30.0 + 16.0 * f64::from(u32::try_from(ci).unwrap_or(0)));
+    }
+    s.push_str("</svg>\n");
+    s
+}
+
+fn pct(x: f64) -> String {
+    if x == 0.0 { "—".into() } else { format!("{:.2} %", 100.0 * x) }
+}
+
+/// Runs the benchmark and writes the documents under `root`.
+///
+/// # Errors
+/// Case, solve and I/O errors.
+pub fn run(root: &Path, repeats: usize) -> Result<()> {
+    let mut rows = Vec::new();
+    let mut texts = Vec::new();
+    for name in ["compressor-bearing", "fillon-a", "test-rig"] {
+        let text = std::fs::read_to_string(root.join("cases").join(format!("{name}.toml")))?;
+        eprintln!("bench: {name}");
+        rows.extend(levels(name, &text, repeats)?);
+        texts.push((name, text));
+    }
+    eprintln!("bench: cost growth");
+    let (pts, exponent) = growth(&texts[0].1, repeats.min(3))?;
+    let machine = machine();
+    let date = today();
+    let mut md = String::new();
+    let _ = writeln!(md, "# Performance\n\nGenerated by `cargo run --release -- bench` on {date}.\nMachine: {machine}.\n");
+    let _ = writeln!(
+        md,
+        "Each time is the median of {repeats} complete solves in one process (mesh build, equilibrium, full and synchronously \
+         reduced coefficients), isothermal. Errors are relative to a reference-fine solution with twice the reference level's \
+         element counts (K, C: Frobenius norm of the reduced 2×2 difference over the norm).\n"
+    );
+    let _ = writeln!(md, "| case | level | film nodes | time | ε error | K error | C error | p_max error |\n|---|---|---|---|---|---|---|---|");
+    for r in &rows {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {} | {:.1} ms | {} | {} | {} | {} |",
+            r.case,
+            r.level,
+            r.film_nodes,
+            r.median_ms,
+            pct(r.err_eccentricity),
+            pct(r.err_k),
+            pct(r.err_c),
+            pct(r.err_p_max)
+        );
+    }
+    let _ = writeln!(md, "\n![error vs time](performance-error-vs-time.svg)\n");
+    let _ = writeln!(md, "## Targets (compressor bearing, 5 pads)\n\n| target | measured | status |\n|---|---|---|");
+    for (level, limit) in [("preview", 15.0), ("standard", 100.0)] {
+        if let Some(r) = rows.iter().find(|r| r.case == "compressor-bearing" && r.level == level) {
+            let status = if r.median_ms <= limit { "met".to_string() } else { format!("missed by {:.1} ms", r.median_ms - limit) };
+            let _ = writeln!(md, "| isothermal {level} ≤ {limit} ms | {:.1} ms | {status} |", r.median_ms);
+        }
+    }
+    let _ = writeln!(md, "| THD (BC1) standard ≤ 300 ms | — | thermal model not in this build |");
+    let _ = writeln!(md, "\n## Cost growth\n\nCompressor bearing, uniformly refined meshes:\n\n| film nodes | time |\n|---|---|");
+    for (n, t) in &pts {
+        let _ = writeln!(md, "| {n} | {t:.1} ms |");
+    }
+    #[allow(clippy::cast_precision_loss)]
+    let range = pts.last().map_or(0.0, |p| p.0 as f64) / pts.first().map_or(1.0, |p| p.0 as f64);
+    let _ = writeln!(md, "\nFitted t ∝ nodes^a over a {range:.0}× range: **a = {exponent:.2}** (sparse Cholesky of a 2-D grid with nested-dissection-like ordering grows as n^1.5 at worst; the coupled Newton needs a nearly constant number of film solves).");
+    write_atomic(&root.join("docs").join("PERFORMANCE.md"), md.as_bytes())?;
+    write_atomic(&root.join("docs").join("performance-error-vs-time.svg"), svg_plot(&rows).as_bytes())?;
+    let table = FidelityTable { generated: date, machine, case: "compressor-bearing".into(), rows: rows.iter().filter(|r| r.case == "compressor-bearing").cloned().collect() };
+    std::fs::create_dir_all(root.join("assets"))?;
+    write_atomic(&root.join("assets").join("fidelity.json"), serde_json::to_string_pretty(&table)?.as_bytes())?;
+    println!("wrote docs/PERFORMANCE.md, docs/performance-error-vs-time.svg, assets/fidelity.json");
+    Ok(())
+}
