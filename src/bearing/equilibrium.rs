@@ -43,11 +43,13 @@ pub struct EquilibriumParams {
     pub max_inner_iterations: usize,
     /// Largest journal step, as a fraction of the assembled clearance.
     pub max_step: f64,
+    /// Work budget: film solves per pad over all methods and fallbacks (bounds the time to fail).
+    pub max_film_solves_per_pad: usize,
 }
 
 impl Default for EquilibriumParams {
     fn default() -> Self {
-        Self { force_tol: 1e-9, pad_tol: 1e-10, max_iterations: 60, max_inner_iterations: 80, max_step: 0.4 }
+        Self { force_tol: 1e-9, pad_tol: 1e-10, max_iterations: 60, max_inner_iterations: 80, max_step: 0.4, max_film_solves_per_pad: 1500 }
     }
 }
 
@@ -136,10 +138,34 @@ struct Ctx<'a> {
     params: EquilibriumParams,
     force_scale: f64,
     report: SolveReport,
+    /// Film solves allowed in total.
+    budget: usize,
+}
+
+impl Ctx<'_> {
+    fn exhausted(&self) -> bool {
+        self.report.film_solves > self.budget
+    }
+
+    /// A film failure on pad k as a solve error; running out of the work budget is non-convergence.
+    fn film_error(&self, k: usize, e: FilmError) -> SolveError {
+        if self.exhausted() {
+            SolveError::NotConverged {
+                iterations: self.report.iterations,
+                residual: self.report.residual_history.last().copied().unwrap_or(1.0),
+                reason: format!("work budget of {} film solves exhausted", self.budget),
+            }
+        } else {
+            SolveError::Film { pad: k, source: e }
+        }
+    }
 }
 
 /// Evaluates pad k at local coordinates: forces and linearisation.
 fn eval_pad(pm: &mut PadModel, k: usize, local: &[f64], warm: bool, ctx: &mut Ctx<'_>) -> Result<(Vec<f64>, FilmLinearization), FilmError> {
+    if ctx.exhausted() {
+        return Err(FilmError::Input(format!("work budget of {} film solves exhausted", ctx.budget)));
+    }
     pm.film.set_coordinates(local)?;
     let inp = ctx.op.film_inputs(k);
     let info = pm.film.solve(&inp, warm)?;
@@ -416,9 +442,9 @@ fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut
             // Start from the centre if the guess closes a film.
             journal = [0.0, 0.0];
             u.iter_mut().for_each(|v| *v = 0.0);
-            solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| SolveError::Film { pad: k, source: e })?
+            solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| ctx.film_error(k, e))?
         }
-        Err((k, e)) => return Err(SolveError::Film { pad: k, source: e }),
+        Err((k, e)) => return Err(ctx.film_error(k, e)),
     };
     let tol = ctx.params.force_tol * ctx.force_scale;
     for _ in 0..ctx.params.max_iterations {
@@ -459,7 +485,7 @@ fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut
                     }
                 }
                 Err((_, FilmError::Contact { .. })) => {}
-                Err((k, e)) => return Err(SolveError::Film { pad: k, source: e }),
+                Err((k, e)) => return Err(ctx.film_error(k, e)),
             }
             alpha *= 0.5;
         }
@@ -566,7 +592,10 @@ fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ct
             if nd > 0 && (!own_ok || states[k].unloaded) && states[k].residual > ctx.params.pad_tol {
                 let off = pm.offset;
                 let q: Vec<f64> = u[off..off + nd].to_vec();
-                let st = solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx).map_err(|e| SolveError::Film { pad: k, source: e })?;
+                let st = match solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx) {
+                    Ok(st) => st,
+                    Err(e) => return Err(ctx.film_error(k, e)),
+                };
                 u[off..off + nd].copy_from_slice(&st.q);
                 let share = st.forces[0].hypot(st.forces[1]) / ctx.force_scale;
                 states[k] = PadState { unloaded: st.unloaded || share < 1e-6, residual: if share < 1e-6 { 0.0 } else { st.residual }, ..st };
@@ -716,7 +745,8 @@ pub fn solve_equilibrium(
     cancel: &dyn Cancel,
 ) -> Result<Equilibrium, SolveError> {
     let t0 = Instant::now();
-    let mut ctx = Ctx { op, params, force_scale: force_scale(model, op), report: SolveReport::default() };
+    let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
+    let mut ctx = Ctx { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), budget };
     let cb = model.assembled_clearance;
     let finish = |model: &mut BearingModel, u: Vec<f64>, pads: Vec<PadState>, f: [f64; 2], mut ctx: Ctx<'_>, method: &str| {
         let w = external_load(op, 1.0);
@@ -760,7 +790,7 @@ pub fn solve_equilibrium(
         u[1] = journal[1];
         let (states, f) = solve_all_pads(model, journal, &u, &mut ctx).map_err(|(k, e)| match e {
             FilmError::Contact { h_min_m, .. } => SolveError::Touchdown { pad: k, h_min_um: h_min_m * 1e6, eccentricity_ratio },
-            e => SolveError::Film { pad: k, source: e },
+            e => ctx.film_error(k, e),
         })?;
         let u = assemble_u(model, journal, &states);
         return finish(model, u, states, f, ctx, "prescribed journal position (pads solved)");

@@ -189,7 +189,8 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
             if kind == PadKind::Fixed {
                 return Err(inconsistent(&key, "a fixed sector has no pivot"));
             }
-            Some(Range::positive(1e15).check(&key, v)?)
+            // Real pivots are 1e7–1e10 N/m; below 1e5 N/m a pad would float millimetres off its seat.
+            Some(Range::closed(1e5, 1e14).check(&key, v)?)
         }
         None => None,
     };
