@@ -19,6 +19,10 @@
 //! - [`bearing`]: geometry of the film, equilibrium (Newton), dynamic coefficients, the solve job.
 //! - [`cli`]: batch runs (`tiltpad solve`, `tiltpad sweep`).
 
+// Library paths that user input reaches never unwrap; index loops are the clearest form for FE kernels.
+#![cfg_attr(not(test), warn(clippy::unwrap_used, clippy::expect_used))]
+#![allow(clippy::needless_range_loop)]
+
 pub mod bearing;
 pub mod fem;
 pub mod mesh;

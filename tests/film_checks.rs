@@ -104,8 +104,8 @@ fn analytic_stiffness_matches_finite_differences() {
             pm.film.solve(&inp, true).unwrap();
             f[side] = pm.film.generalized_forces();
         }
-        for i in 0..q0.len() {
-            let fd = -(f[0][i] - f[1][i]) / (2.0 * steps[j]);
+        for (i, (fp, fm)) in f[0].iter().zip(&f[1]).enumerate() {
+            let fd = -(fp - fm) / (2.0 * steps[j]);
             let scale = lin.stiffness[(i, i)].abs().max(lin.stiffness[(j, j)].abs()) * if i == j { 1.0 } else { 0.1 };
             let tol = 2e-3 * (lin.stiffness[(i, j)].abs().max(1e-3 * scale));
             assert!((fd - lin.stiffness[(i, j)]).abs() < tol.max(1e-4 * scale), "K[{i}][{j}]: analytic {:.6e} vs FD {fd:.6e}", lin.stiffness[(i, j)]);

@@ -71,11 +71,14 @@ impl SweepValues {
     }
 }
 
+/// Reduced coefficients at each excitation ratio ω/Ω of a frequency sweep.
+pub type FrequencySweep = Vec<(f64, ReducedCoefficients)>;
+
 /// Everything computed for a request.
 #[derive(Debug, Clone, Default)]
 pub struct Outcome {
     pub solution: Option<Arc<Solution>>,
-    pub frequency_sweep: Option<Arc<Vec<(f64, ReducedCoefficients)>>>,
+    pub frequency_sweep: Option<Arc<FrequencySweep>>,
     pub speed_sweep: Option<Arc<Vec<SpeedPoint>>>,
 }
 
@@ -143,7 +146,7 @@ pub struct Pipeline {
     model: Option<(String, BearingModel)>,
     equilibrium: Option<(String, Arc<Solution>)>,
     reduction: Option<(String, Arc<Solution>)>,
-    frequency_sweep: Option<(String, Arc<Vec<(f64, ReducedCoefficients)>>)>,
+    frequency_sweep: Option<(String, Arc<FrequencySweep>)>,
     speed_sweep: Option<SweepState>,
     speed_done: Option<(String, Arc<Vec<SpeedPoint>>)>,
     /// Last equilibrium coordinates, to warm-start the next solve of the same model.
@@ -209,7 +212,7 @@ impl Pipeline {
             let fk = format!("{ek}|{}", key(ratios));
             if self.frequency_sweep.as_ref().map(|f| &f.0) != Some(&fk) {
                 let w = case.operating.speed_rad_s;
-                let v: Vec<(f64, ReducedCoefficients)> = ratios.iter().map(|&r| (r, reduce(&eq.full, r * w))).collect();
+                let v: FrequencySweep = ratios.iter().map(|&r| (r, reduce(&eq.full, r * w))).collect();
                 self.counters.frequency_sweep += 1;
                 self.frequency_sweep = Some((fk, Arc::new(v)));
                 return Ok(Step::Pending { stage: Stage::FrequencySweep, fraction: 1.0 });

@@ -49,7 +49,7 @@ pub fn graded_nodes(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> 
         cum.push(cum[k] + dx / spacing(xm));
     }
     let total = cum[samples];
-    let n = (total.round() as usize).max(base_cells.min(1).max(1));
+    let n = (total.round() as usize).max(1);
     let mut nodes = Vec::with_capacity(n + 1);
     nodes.push(a);
     let mut k = 0;
