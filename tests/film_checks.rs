@@ -131,3 +131,40 @@ fn bearing_flows_are_consistent() {
         assert!(p.field.pressure_pa.iter().all(|v| v.is_finite() && *v >= 0.0));
     }
 }
+
+/// Central differences of the film force converge to the analytic stiffness at second order in the step
+/// (model.md §7: "show convergence with step size"), here on a tilting pad's moment and journal force.
+#[test]
+fn finite_differences_converge_to_analytic_stiffness() {
+    let case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);
+    let mut model = BearingModel::new(&case).unwrap();
+    let op = OperatingPoint::isothermal(&case);
+    let eq = solve_equilibrium(&mut model, &op, EquilibriumParams::default(), None, &NoCancel).unwrap();
+    let k = 3; // a loaded pad
+    let inp = op.film_inputs(k);
+    let q0 = model.local(k, &eq.u);
+    let pm = &mut model.pads[k];
+    pm.film.set_coordinates(&q0).unwrap();
+    pm.film.solve(&inp, true).unwrap();
+    let lin = pm.film.linearize(&inp);
+    // (force index, coordinate index, base step): journal y on F_y, tilt on the pad moment.
+    for (i, j, h0) in [(1usize, 1usize, 1e-6), (2, 2, 1e-5)] {
+        let mut errs = Vec::new();
+        for refine in 0..3 {
+            let h = h0 / 2f64.powi(refine);
+            let mut f = [0.0; 2];
+            for (side, sign) in [1.0, -1.0].iter().enumerate() {
+                let mut q = q0.clone();
+                q[j] += sign * h;
+                pm.film.set_coordinates(&q).unwrap();
+                pm.film.solve(&inp, true).unwrap();
+                f[side] = pm.film.generalized_forces()[i];
+            }
+            let fd = -(f[0] - f[1]) / (2.0 * h);
+            errs.push(((fd - lin.stiffness[(i, j)]) / lin.stiffness[(i, j)]).abs());
+        }
+        let order = (errs[0] / errs[2]).log2() / 2.0;
+        assert!(errs[2] < 1e-4, "K[{i}][{j}]: finest relative error {:.2e}", errs[2]);
+        assert!(order > 1.6, "K[{i}][{j}]: step-size convergence order {order:.2} (errors {errs:?})");
+    }
+}
