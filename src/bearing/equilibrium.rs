@@ -26,7 +26,7 @@ use serde::Serialize;
 use web_time::Instant;
 
 use crate::model::LoadSpec;
-use crate::physics::reynolds::{FilmError, FilmLinearization};
+use crate::physics::reynolds::{FilmError, FilmLinearization, FilmSolveInfo};
 
 use super::error::SolveError;
 use super::geometry::PadDof;
@@ -161,21 +161,33 @@ impl Ctx<'_> {
     }
 }
 
-/// Evaluates pad k at local coordinates: forces and linearisation.
-fn eval_pad(pm: &mut PadModel, k: usize, local: &[f64], warm: bool, ctx: &mut Ctx<'_>) -> Result<(Vec<f64>, FilmLinearization), FilmError> {
-    if ctx.exhausted() {
-        return Err(FilmError::Input(format!("work budget of {} film solves exhausted", ctx.budget)));
-    }
+/// One film solve of pad k at local coordinates: forces, stiffness and what the solve did. Touches only
+/// the pad, so pads can be evaluated in parallel.
+fn film_eval(pm: &mut PadModel, k: usize, local: &[f64], warm: bool, op: &OperatingPoint) -> Result<(Vec<f64>, FilmLinearization, FilmSolveInfo), FilmError> {
     pm.film.set_coordinates(local)?;
-    let inp = ctx.op.film_inputs(k);
+    let inp = op.film_inputs(k);
     let info = pm.film.solve(&inp, warm)?;
+    let forces = pm.film.generalized_forces();
+    let lin = pm.film.linearize_stiffness(&inp);
+    Ok((forces, lin, info))
+}
+
+/// Accounts for one film solve in the report.
+fn account(ctx: &mut Ctx<'_>, k: usize, info: FilmSolveInfo) {
     ctx.report.film_solves += 1;
     ctx.report.factorizations += info.factorizations;
     for w in info.warnings {
         ctx.report.warn(format!("pad {k}: {w}"));
     }
-    let forces = pm.film.generalized_forces();
-    let lin = pm.film.linearize_stiffness(&inp);
+}
+
+/// Evaluates pad k at local coordinates: forces and linearisation.
+fn eval_pad(pm: &mut PadModel, k: usize, local: &[f64], warm: bool, ctx: &mut Ctx<'_>) -> Result<(Vec<f64>, FilmLinearization), FilmError> {
+    if ctx.exhausted() {
+        return Err(FilmError::Input(format!("work budget of {} film solves exhausted", ctx.budget)));
+    }
+    let (forces, lin, info) = film_eval(pm, k, local, warm, ctx.op)?;
+    account(ctx, k, info);
     Ok((forces, lin))
 }
 
@@ -506,15 +518,59 @@ fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut
     Ok(Outer::Failed { journal, residual: r.norm() / ctx.force_scale, reason: format!("{} iterations", ctx.params.max_iterations) })
 }
 
+/// Film nodes above which pads are solved in parallel (below, thread start-up costs more than it saves).
+const PARALLEL_MIN_NODES: usize = 2500;
+
+/// Film solves of all pads at `u`, in parallel on native targets when the meshes are large enough.
+#[allow(clippy::type_complexity)]
+fn eval_films(model: &mut BearingModel, u: &[f64], op: &OperatingPoint) -> Vec<Result<(Vec<f64>, FilmLinearization, FilmSolveInfo), FilmError>> {
+    let locals: Vec<Vec<f64>> = (0..model.pads.len()).map(|k| model.local(k, u)).collect();
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(model.pads.len());
+        if threads > 1 && model.film_nodes() >= PARALLEL_MIN_NODES {
+            let chunk = model.pads.len().div_ceil(threads);
+            return std::thread::scope(|scope| {
+                let handles: Vec<_> = model
+                    .pads
+                    .chunks_mut(chunk)
+                    .enumerate()
+                    .map(|(c, pads)| {
+                        let locals = &locals;
+                        scope.spawn(move || {
+                            pads.iter_mut()
+                                .enumerate()
+                                .map(|(i, pm)| {
+                                    let k = c * chunk + i;
+                                    film_eval(pm, k, &locals[k], true, op)
+                                })
+                                .collect::<Vec<_>>()
+                        })
+                    })
+                    .collect();
+                handles
+                    .into_iter()
+                    .flat_map(|h| h.join().unwrap_or_else(|_| vec![Err(FilmError::Input("pad solve thread panicked".into()))]))
+                    .collect()
+            });
+        }
+    }
+    model.pads.iter_mut().enumerate().map(|(k, pm)| film_eval(pm, k, &locals[k], true, op)).collect()
+}
+
 /// Evaluates every pad at the global coordinates `u` (one film solve each, no pad iteration).
 fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -> Result<Vec<PadState>, (usize, FilmError)> {
+    if ctx.exhausted() {
+        return Err((0, FilmError::Input(format!("work budget of {} film solves exhausted", ctx.budget))));
+    }
     let floor = 1e-9 * ctx.force_scale;
+    let results = eval_films(model, u, ctx.op);
     let mut states = Vec::with_capacity(model.pads.len());
-    for k in 0..model.pads.len() {
-        let local = model.local(k, u);
-        let pm = &mut model.pads[k];
-        let (forces, lin) = eval_pad(pm, k, &local, true, ctx).map_err(|e| (k, e))?;
-        let q = local[2..].to_vec();
+    for (k, res) in results.into_iter().enumerate() {
+        let (forces, lin, info) = res.map_err(|e| (k, e))?;
+        account(ctx, k, info);
+        let pm = &model.pads[k];
+        let q = u[pm.offset..pm.offset + pm.dofs.len()].to_vec();
         let sc = pad_scales(pm, &forces, floor);
         let residual = q.iter().enumerate().map(|(d, qd)| relative(forces[2 + d] - pm.structural_stiffness[d] * qd, sc[d])).fold(0.0, f64::max);
         let share = forces[0].hypot(forces[1]) / ctx.force_scale;
