@@ -21,6 +21,9 @@ pub enum SolverError {
     NotPositiveDefinite,
     #[error("symbolic factorisation failed: {0}")]
     Symbolic(String),
+    /// The LU factorisation found no usable pivot (singular or non-finite matrix).
+    #[error("matrix is singular: {0}")]
+    Singular(String),
 }
 
 /// Lower-triangular CSC pattern with an element scatter map.
