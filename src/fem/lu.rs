@@ -141,17 +141,17 @@ impl GeneralPattern {
         }
     }
 
+    /// The entries `(column, value)` of row r.
+    #[must_use]
+    pub fn row_entries(&self, values: &[f64], r: usize) -> Vec<(usize, f64)> {
+        // The column of a position follows from the column pointers (binary search).
+        self.row_positions(r).iter().map(|&k| (self.col_ptr.partition_point(|&p| p <= k) - 1, values[k])).collect()
+    }
+
     /// `Σ_c A_rc x_c` for one row.
     #[must_use]
     pub fn row_dot(&self, values: &[f64], r: usize, x: &[f64]) -> f64 {
-        // The column of a position is found from the column pointer (binary search).
-        self.row_positions(r)
-            .iter()
-            .map(|&k| {
-                let c = self.col_ptr.partition_point(|&p| p <= k) - 1;
-                values[k] * x[c]
-            })
-            .sum()
+        self.row_entries(values, r).iter().map(|&(c, v)| v * x[c]).sum()
     }
 
     fn symbolic(&self) -> SymbolicSparseColMatRef<'_, usize> {
