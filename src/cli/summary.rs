@@ -140,10 +140,11 @@ pub fn summary_text(s: &Solution) -> String {
         let r = &t.report;
         let _ = writeln!(
             o,
-            "    thermal loop: {} outer iterations, viscosity change {:.1e} ({}), {:.1} ms ({:.1} ms equilibrium, {:.1} ms thermal)",
+            "    thermal loop: {} outer iterations ({}), {} equilibrium iterations, {} film solves, {:.1} ms ({:.1} ms equilibrium, {:.1} ms thermal)",
             r.outer_iterations,
-            r.viscosity_change.last().copied().unwrap_or(0.0),
             r.stop_reason,
+            r.equilibrium_iterations,
+            r.film_solves,
             r.seconds * 1e3,
             r.equilibrium_seconds * 1e3,
             r.thermal_seconds * 1e3

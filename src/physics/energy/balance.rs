@@ -120,7 +120,7 @@ impl FilmEnergy {
             pumping_power_w: st.pumping_power,
             injection_work_w: st.injection_work,
             dissipation_w: st.dissipation,
-            inlet_conduction_in_w: -g.sym * inp.dirichlet_reaction,
+            inlet_conduction_in_w: g.sym * inp.dirichlet_reaction,
             ..FilmHeat::default()
         };
         let (mut edges, mut leak) = (0.0, 0.0);
