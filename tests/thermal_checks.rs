@@ -7,7 +7,7 @@ use tiltpad::bearing::thermal_pad::PadThermal;
 use tiltpad::bearing::{BearingModel, OperatingPoint};
 use tiltpad::mesh::pad3d::PadMesh;
 use tiltpad::physics::energy::{FilmEnergy, Injection, Oil};
-use tiltpad::physics::pad_thermal::{PadConduction, PadMaterial};
+use tiltpad::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
 
 /// The energy equation integrates the injected flow with the Reynolds solver's own orifice quadrature: the
 /// flux field's nodal outflows add up to the orifice flows the film reports.
@@ -37,13 +37,18 @@ fn insulated_pad_takes_its_face_temperature() {
     let pad = &case.bearing.pads[2];
     let film = &model.pads[2].film;
     let mesh = PadMesh::extrude(&film.geom.grid, case.bearing.journal_radius_m, pad.leading_edge_rad, pad.bore_radius_m(case.bearing.journal_radius_m), pad.thickness_m, 4);
-    let mut pt = PadThermal::new(film, Some(PadConduction::new(mesh))).unwrap();
+    let mut solver = PadDirichletSolver::new(&mesh).unwrap();
+    let pt = PadThermal::new(film, Some(PadConduction::new(mesh))).unwrap();
     let face = vec![63.0; film.geom.n_nodes()];
-    let t = pt.solve_pad_bc1(&face, &PadMaterial { conductivity: 45.0, convection: 0.0, ambient_c: 20.0 }).unwrap().unwrap();
+    let t = pt.solve_pad_bc1(&mut solver, &face, &PadMaterial { conductivity: 45.0, convection: 0.0, ambient_c: 20.0 }).unwrap().unwrap();
     assert!(t.iter().all(|v| (v - 63.0).abs() < 1e-9), "{:?}", t.iter().fold(f64::MAX, |m, &v| m.min(v)));
     // With convection the pad lies between the surroundings and its face, hottest on the face.
     let mat = PadMaterial { conductivity: 45.0, convection: 100.0, ambient_c: 20.0 };
-    let t = pt.solve_pad_bc1(&face, &mat).unwrap().unwrap();
+    let t = pt.solve_pad_bc1(&mut solver, &face, &mat).unwrap().unwrap();
+    assert_eq!(solver.factorizations, 2, "a new material refactors");
+    let again = pt.solve_pad_bc1(&mut solver, &face, &mat).unwrap().unwrap();
+    assert_eq!(solver.factorizations, 2, "the same material reuses the factorisation");
+    assert_eq!(again, t);
     assert!(t.iter().all(|&v| v > 20.0 && v <= 63.0 + 1e-9));
     let cond = pt.conduction.as_ref().unwrap();
     // Heat to the surroundings is bounded by H∞ A (T_face − T∞).

@@ -81,7 +81,6 @@ pub struct PadThermal {
     pub conduction: Option<PadConduction>,
     film_only: System,
     coupled: Option<System>,
-    pad_dirichlet: Option<PadDirichletSolver>,
     /// Film temperature of the previous outer iteration.
     pub t_prev: Option<Vec<f64>>,
     /// Factorisations done (for reports).
@@ -156,7 +155,7 @@ impl PadThermal {
             FilmLayout { film_groups: 0, coupling_groups: None },
             None,
         )?;
-        Ok(Self { energy, conduction, film_only, coupled: None, pad_dirichlet: None, t_prev: None, factorizations: 0 })
+        Ok(Self { energy, conduction, film_only, coupled: None, t_prev: None, factorizations: 0 })
     }
 
     /// The film + pad system (built on first use).
@@ -176,19 +175,14 @@ impl PadThermal {
         self.coupled.as_mut().ok_or_else(|| SolverError::Singular("no pad system".into()))
     }
 
-    /// BC1, after convergence: the pad's temperatures with the film temperature `film_t` on its face.
-    /// `None` for a sector without a pad solid.
+    /// BC1, after convergence: the pad's temperatures with the film temperature `film_t` on its face, using
+    /// `solver` (shared by identical pads). `None` for a sector without a pad solid.
     ///
     /// # Errors
     /// A failed factorisation.
-    pub fn solve_pad_bc1(&mut self, film_t: &[f64], material: &PadMaterial) -> Result<Option<Vec<f64>>, SolverError> {
+    pub fn solve_pad_bc1(&self, solver: &mut PadDirichletSolver, film_t: &[f64], material: &PadMaterial) -> Result<Option<Vec<f64>>, SolverError> {
         let Some(c) = &self.conduction else { return Ok(None) };
-        if self.pad_dirichlet.is_none() {
-            self.pad_dirichlet = Some(PadDirichletSolver::new(&c.mesh)?);
-        }
-        let s = self.pad_dirichlet.as_mut().ok_or_else(|| SolverError::Singular("no pad solver".into()))?;
-        self.factorizations += 1;
-        c.solve_dirichlet(s, material, film_t).map(Some)
+        c.solve_dirichlet(solver, material, film_t).map(Some)
     }
 
     /// True if the pad has a solid to conduct heat.

@@ -180,7 +180,9 @@ impl PadConduction {
     }
 }
 
-/// BC1 pad solve: conduction + convection with the film-face nodes fixed, lower-triangular storage.
+/// BC1 pad solve: conduction + convection with the film-face nodes fixed, lower-triangular storage. The
+/// matrix depends only on the mesh and the material, so its numeric factorisation is kept until the material
+/// changes, and one solver serves every pad with the same mesh (identical pads).
 pub struct PadDirichletSolver {
     pattern: Pattern,
     solver: SpdSolver,
@@ -188,6 +190,10 @@ pub struct PadDirichletSolver {
     hex_pos: Vec<[usize; 64]>,
     values: Vec<f64>,
     work: Vec<f64>,
+    /// The material the current factorisation is for.
+    factored: Option<PadMaterial>,
+    /// Numeric factorisations done.
+    pub factorizations: usize,
 }
 
 impl std::fmt::Debug for PadDirichletSolver {
@@ -198,7 +204,15 @@ impl std::fmt::Debug for PadDirichletSolver {
 
 impl Clone for PadDirichletSolver {
     fn clone(&self) -> Self {
-        Self { pattern: self.pattern.clone(), solver: self.solver.clone(), hex_pos: self.hex_pos.clone(), values: self.values.clone(), work: self.work.clone() }
+        Self {
+            pattern: self.pattern.clone(),
+            solver: self.solver.clone(),
+            hex_pos: self.hex_pos.clone(),
+            values: self.values.clone(),
+            work: self.work.clone(),
+            factored: self.factored,
+            factorizations: self.factorizations,
+        }
     }
 }
 
@@ -247,7 +261,21 @@ impl PadDirichletSolver {
         let nnz = row_idx.len();
         let pattern = Pattern { n, col_ptr, row_idx, scatter: Vec::new(), diag };
         let solver = SpdSolver::new(&pattern)?;
-        Ok(Self { pattern, solver, hex_pos, values: vec![0.0; nnz], work: vec![0.0; nnz] })
+        Ok(Self { pattern, solver, hex_pos, values: vec![0.0; nnz], work: vec![0.0; nnz], factored: None, factorizations: 0 })
+    }
+}
+
+impl PadMesh {
+    /// True if two pad meshes have the same elements up to a rotation about the axis (identical pads; sizes
+    /// equal to 1e-9 relative, as grids built from different pad angles differ by round-off).
+    #[must_use]
+    pub fn same_shape(&self, o: &Self) -> bool {
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs());
+        self.n_film == o.n_film
+            && self.hexes == o.hexes
+            && self.free_faces == o.free_faces
+            && self.radii.iter().zip(&o.radii).all(|(&a, &b)| close(a, b))
+            && self.boxes.iter().zip(&o.boxes).all(|(a, b)| close(a.r0, b.r0) && close(a.dr, b.dr) && close(a.dtheta, b.dtheta) && close(a.z0, b.z0) && close(a.dz, b.dz))
     }
 }
 
@@ -258,25 +286,30 @@ impl PadConduction {
     /// A failed factorisation (never NaN temperatures).
     pub fn solve_dirichlet(&self, s: &mut PadDirichletSolver, mat: &PadMaterial, face: &[f64]) -> Result<Vec<f64>, SolverError> {
         let n = s.pattern.n;
-        s.values.fill(0.0);
-        let mut rhs = vec![0.0; n];
-        for (h, k) in self.conduction.iter().enumerate() {
-            for a in 0..8 {
-                for b in 0..8 {
-                    let p = s.hex_pos[h][8 * a + b];
-                    if p != usize::MAX {
-                        s.values[p] += mat.conductivity * k[a][b];
+        let refactor = s.factored != Some(*mat);
+        if refactor {
+            s.values.fill(0.0);
+            for (h, k) in self.conduction.iter().enumerate() {
+                for a in 0..8 {
+                    for b in 0..8 {
+                        let p = s.hex_pos[h][8 * a + b];
+                        if p != usize::MAX {
+                            s.values[p] += mat.conductivity * k[a][b];
+                        }
                     }
                 }
             }
         }
+        let mut rhs = vec![0.0; n];
         for (&(h, _), m) in self.mesh.free_faces.iter().zip(&self.faces) {
             let nodes = self.mesh.hexes[h];
             for a in 0..8 {
                 for b in 0..8 {
-                    let p = s.hex_pos[h][8 * a + b];
-                    if p != usize::MAX {
-                        s.values[p] += mat.convection * m[a][b];
+                    if refactor {
+                        let p = s.hex_pos[h][8 * a + b];
+                        if p != usize::MAX {
+                            s.values[p] += mat.convection * m[a][b];
+                        }
                     }
                     rhs[nodes[a]] += mat.convection * mat.ambient_c * m[a][b];
                 }
@@ -291,8 +324,13 @@ impl PadConduction {
         for i in 0..n {
             rhs[i] = if fixed[i] { known[i] } else { rhs[i] - k_known[i] };
         }
-        s.pattern.fix_rows(&s.values, &fixed, &mut s.work);
-        s.solver.factor(&s.pattern, &s.work)?;
+        if refactor {
+            s.factored = None;
+            s.pattern.fix_rows(&s.values, &fixed, &mut s.work);
+            s.solver.factor(&s.pattern, &s.work)?;
+            s.factored = Some(*mat);
+            s.factorizations += 1;
+        }
         s.solver.solve_in_place(&mut rhs);
         if rhs.iter().any(|v| !v.is_finite()) {
             return Err(SolverError::NotPositiveDefinite);
