@@ -150,7 +150,7 @@ fn thermal_table() {
     assert_eq!(c.thermal.model, tiltpad::model::ThermalModelKind::Thd);
     assert_eq!(c.thermal.pad_film_bc, tiltpad::model::PadFilmBc::Bc1);
     assert!((c.thermal.ambient_temperature_c - c.operating.supply_temperature_c).abs() < 1e-12);
-    assert_eq!(c.mesh.pad_radial_elements, 6);
+    assert_eq!(c.mesh.pad_radial_elements, 4);
     // BC2 needs its coefficient, and only BC2 takes one.
     assert_names(&err(&["thermal.pad_film_bc=\"bc2\""]), "thermal.h_oil_pad_w_per_m2_k", &["missing", "bc2"]);
     assert_names(&err(&["thermal.h_oil_pad_w_per_m2_k=4000"]), "thermal.h_oil_pad_w_per_m2_k", &["only used with"]);

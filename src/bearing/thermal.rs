@@ -490,7 +490,7 @@ pub fn solve_thd(
         if t_ok.is_none() && t_try.is_none() {
             // First (isothermal) equilibrium: decide once which pads are lightly loaded.
             for k in 0..n {
-                if shares[k] < LIGHT_PAD_SHARE && model.pads[k].dofs.len() > 0 {
+                if shares[k] < LIGHT_PAD_SHARE && !model.pads[k].dofs.is_empty() {
                     uniform[k] = true;
                     report.warnings.push(format!(
                         "pad {k} carries {:.1} % of the load: its Reynolds equation uses its mean film viscosity (the \

@@ -34,6 +34,8 @@ pub fn iso_point(xy: &[[f64; 2]; 4], xi: f64, eta: f64, wref: f64) -> Result<Qua
         y_eta += d[a].1 * xy[a][1];
     }
     let det = x_xi * y_eta - x_eta * y_xi;
+    // Written so that a NaN determinant is rejected too.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     if !(det > 0.0) {
         return Err(InvertedElement { det });
     }
