@@ -26,7 +26,7 @@ fn pad_max(s: &Solution) -> f64 {
 /// Not met (reported in docs/THERMAL.md): the model as published here is THD — rigid pads, no thermal or
 /// elastic deformation — and gives a maximum pad surface temperature about 9 °C below the measurement.
 #[test]
-#[ignore = "not met: the THD model (no pad/journal deformation) gives 67.3 °C vs the measured 76.5 °C (−9.2 °C); \
+#[ignore = "not met: the THD model (no pad/journal deformation) gives 67.2 °C vs the measured 76.5 °C (−9.3 °C); \
             published TEHD models give 72.9 °C"]
 fn fillon_a_max_pad_temperature_within_5_degrees_of_measurement() {
     let s = thd(&[]);
