@@ -17,7 +17,7 @@ use faer::sparse::linalg::lu::{factorize_symbolic_lu, LuRef, NumericLu, Symbolic
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par};
 
-use super::sparse::SolverError;
+use super::sparse::{CscGroups, SolverError};
 
 /// Full CSC pattern with element scatter maps and row index lists.
 #[derive(Debug, Clone)]
@@ -41,46 +41,17 @@ impl GeneralPattern {
     /// Builds the pattern of `n` nodes connected by the given node groups (every pair within a group couples).
     #[must_use]
     pub fn from_groups<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone) -> Self {
-        let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
-        for g in groups.clone() {
-            for &a in g {
-                for &b in g {
-                    cols[b].push(a);
-                }
-            }
+        let lens: Vec<usize> = groups.clone().into_iter().map(<[usize]>::len).collect();
+        let c = CscGroups::build(n, groups, |_, _| true);
+        let mut start = Vec::with_capacity(lens.len());
+        let mut at = 0;
+        for l in &lens {
+            start.push(at);
+            at += l * l;
         }
-        for (i, c) in cols.iter_mut().enumerate() {
-            c.push(i);
-        }
-        let mut col_ptr = Vec::with_capacity(n + 1);
-        let mut row_idx = Vec::new();
-        col_ptr.push(0);
-        for c in &mut cols {
-            c.sort_unstable();
-            c.dedup();
-            row_idx.extend_from_slice(c);
-            col_ptr.push(row_idx.len());
-        }
-        let find = |row: usize, col: usize| -> usize {
-            let slice = &row_idx[col_ptr[col]..col_ptr[col + 1]];
-            col_ptr[col] + slice.binary_search(&row).unwrap_or_else(|_| unreachable!("entry in pattern"))
-        };
-        let mut scatter = Vec::new();
-        let mut start = Vec::new();
-        let mut len = Vec::new();
-        for g in groups {
-            start.push(scatter.len());
-            len.push(g.len());
-            for &a in g {
-                for &b in g {
-                    scatter.push(find(a, b));
-                }
-            }
-        }
-        let diag = (0..n).map(|i| find(i, i)).collect();
         // Row lists.
         let mut counts = vec![0usize; n + 1];
-        for &r in &row_idx {
+        for &r in &c.row_idx {
             counts[r + 1] += 1;
         }
         for i in 0..n {
@@ -88,15 +59,15 @@ impl GeneralPattern {
         }
         let row_ptr = counts.clone();
         let mut fill = counts;
-        let mut row_pos = vec![0; row_idx.len()];
-        for c in 0..n {
-            for k in col_ptr[c]..col_ptr[c + 1] {
-                let r = row_idx[k];
+        let mut row_pos = vec![0; c.row_idx.len()];
+        for col in 0..n {
+            for k in c.col_ptr[col]..c.col_ptr[col + 1] {
+                let r = c.row_idx[k];
                 row_pos[fill[r]] = k;
                 fill[r] += 1;
             }
         }
-        Self { n, col_ptr, row_idx, scatter, start, len, row_ptr, row_pos, diag }
+        Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: c.scatter, start, len: lens, row_ptr, row_pos, diag: c.diag }
     }
 
     #[must_use]

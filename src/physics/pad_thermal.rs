@@ -222,44 +222,9 @@ impl PadDirichletSolver {
     /// # Errors
     /// If the symbolic factorisation fails.
     pub fn new(mesh: &PadMesh) -> Result<Self, SolverError> {
-        let n = mesh.n_nodes();
-        let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
-        for h in &mesh.hexes {
-            for &a in h {
-                for &b in h {
-                    if a >= b {
-                        cols[b].push(a);
-                    }
-                }
-            }
-        }
-        let mut col_ptr = vec![0];
-        let mut row_idx = Vec::new();
-        for c in &mut cols {
-            c.sort_unstable();
-            c.dedup();
-            row_idx.extend_from_slice(c);
-            col_ptr.push(row_idx.len());
-        }
-        let find = |r: usize, c: usize| col_ptr[c] + row_idx[col_ptr[c]..col_ptr[c + 1]].binary_search(&r).unwrap_or_else(|_| unreachable!("entry in pattern"));
-        let hex_pos = mesh
-            .hexes
-            .iter()
-            .map(|h| {
-                let mut m = [usize::MAX; 64];
-                for a in 0..8 {
-                    for b in 0..8 {
-                        if h[a] >= h[b] {
-                            m[8 * a + b] = find(h[a], h[b]);
-                        }
-                    }
-                }
-                m
-            })
-            .collect();
-        let diag = (0..n).map(|i| find(i, i)).collect();
-        let nnz = row_idx.len();
-        let pattern = Pattern { n, col_ptr, row_idx, scatter: Vec::new(), diag };
+        let (pattern, flat) = Pattern::from_groups(mesh.n_nodes(), mesh.hexes.iter().map(|h| &h[..]));
+        let hex_pos = flat.chunks_exact(64).map(|c| std::array::from_fn(|k| c[k])).collect();
+        let nnz = pattern.nnz();
         let solver = SpdSolver::new(&pattern)?;
         Ok(Self { pattern, solver, hex_pos, values: vec![0.0; nnz], work: vec![0.0; nnz], factored: None, factorizations: 0 })
     }
