@@ -3,11 +3,13 @@
 //! thermal systems in [`thermal_pad`]), dynamic coefficients ([`coefficients`]) and the solve job ([`job`])
 //! that turns a case into a [`Solution`].
 
+pub mod anderson;
 pub mod coefficients;
 pub mod equilibrium;
 pub mod error;
 pub mod geometry;
 pub mod job;
+pub mod mixing;
 pub mod model;
 pub mod pipeline;
 pub mod solution;

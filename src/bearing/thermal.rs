@@ -16,12 +16,6 @@
 //! dynamic coefficients are the film's perturbation at the converged state (temperatures frozen).
 //! ```
 //!
-//! ## Inlet mixing (model.md §3)
-//! In the groove ahead of pad k, the oil arriving hot is the previous pad's trailing-edge outflow `Q_te`
-//! (at its flow-weighted temperature) plus any back-flow out of pad k's own leading edge. A fraction λ of it
-//! (capped at the leading-edge inflow `Q_in`) enters pad k; fresh oil at the supply temperature makes up the
-//! rest: `Q_in T_in = carried T_hot + (Q_in − carried) T_supply`, `carried = min(λ Q_hot, Q_in)`.
-//!
 //! ## Lightly loaded pads
 //! The loop freezes the viscosity field at the film nodes while the equilibrium moves the pads. A lightly
 //! loaded pad (offset pivot, thick diverging film) can have a moment curve whose maximum barely reaches zero;
@@ -31,12 +25,8 @@
 //! (a uniform viscosity scales the pad's pressure and leaves its tilt root where the isothermal one is); the
 //! report says which. Otherwise the temperature step is halved back towards the last field that worked.
 //!
-//! ## Journal temperature
-//! Given, or: BC3 — zero net heat flux into the journal, `Σ ∫ q_j dA = 0`; BC1/BC2 (the film exchanges no
-//! heat with the journal) — the film-fraction-weighted mean film temperature (the thesis' rule; it then
-//! affects nothing but the report).
+//! Inlet mixing and the journal temperature: [`super::mixing`]; the acceleration: [`super::anderson`].
 
-use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 use web_time::Instant;
 
@@ -50,6 +40,8 @@ use crate::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial
 use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
+use super::anderson::{flatten, unflatten, Anderson};
+use super::mixing::inlet_and_journal;
 use super::thermal_pad::{PadTemperatures, PadThermal, ThermalSetup};
 
 /// History depth of the Anderson acceleration of the thermal loop.
@@ -257,127 +249,63 @@ fn setup(case: &Case, op: &OperatingPoint, k: usize, stabilisation: Stabilisatio
     }
 }
 
-/// Solves the groove mixing balances and the journal condition for all inlet temperatures and the journal
-/// temperature at once (module documentation). Returns (T_in per pad, T_j).
-fn mix(case: &Case, sols: &[PadTemperatures], upstream: &[usize]) -> Result<(Vec<f64>, f64), SolveError> {
-    let n = sols.len();
-    let t = &case.thermal;
-    let ts = case.operating.supply_temperature_c;
-    let mut a = DMatrix::<f64>::zeros(n + 1, n + 1);
-    let mut b = DVector::<f64>::zeros(n + 1);
-    for k in 0..n {
-        let s = &sols[k];
-        if let Some(ti) = t.inlet_temperature_c {
-            a[(k, k)] = 1.0;
-            b[k] = ti;
-            continue;
-        }
-        if s.q_in <= 0.0 {
-            a[(k, k)] = 1.0;
-            b[k] = ts;
-            continue;
-        }
-        let p = upstream[k];
-        let q_hot = sols[p].q_te + s.q_back;
-        let carried = (t.carry_over * q_hot).min(s.q_in);
-        let alpha = if q_hot > 0.0 { carried / q_hot } else { 0.0 };
-        // Q_in T_in − α (Q_te,p T_te,p + Q_back,k T_back,k) = (Q_in − carried) T_supply
-        a[(k, k)] += s.q_in;
-        let (te, bk) = (&sols[p].t_te, &s.t_back);
-        a[(k, p)] -= alpha * sols[p].q_te * te.c_in;
-        a[(k, n)] -= alpha * sols[p].q_te * te.c_j;
-        a[(k, k)] -= alpha * s.q_back * bk.c_in;
-        a[(k, n)] -= alpha * s.q_back * bk.c_j;
-        b[k] = (s.q_in - carried) * ts + alpha * (sols[p].q_te * te.c0 + s.q_back * bk.c0);
-    }
-    let journal_flux_slope: f64 = sols.iter().map(|s| s.journal_flux.c_j).sum();
-    if let Some(tj) = t.journal_temperature_c {
-        a[(n, n)] = 1.0;
-        b[n] = tj;
-    } else if matches!(t.pad_film_bc, PadFilmBc::Bc3) && journal_flux_slope.abs() > 0.0 {
-        // Σ_k J_k(T_in,k, T_j) = 0
-        for (k, s) in sols.iter().enumerate() {
-            a[(n, k)] += s.journal_flux.c_in;
-            b[n] -= s.journal_flux.c0;
-        }
-        a[(n, n)] = journal_flux_slope;
+/// Viscosity at the film nodes for temperatures `t`; `uniform`: the viscosity at their mean instead.
+fn nodal_viscosity(law: &crate::model::ViscosityLaw, t: &[f64], uniform: bool) -> Vec<f64> {
+    if uniform {
+        #[allow(clippy::cast_precision_loss)]
+        let mean = t.iter().sum::<f64>() / t.len().max(1) as f64;
+        vec![law.at(mean); t.len()]
     } else {
-        // T_j − Σ A_k mean_k / Σ A_k = 0
-        let total: f64 = sols.iter().map(|s| s.area).sum::<f64>().max(f64::MIN_POSITIVE);
-        a[(n, n)] = 1.0;
-        for (k, s) in sols.iter().enumerate() {
-            let w = s.area / total;
-            a[(n, k)] -= w * s.mean_film.c_in;
-            a[(n, n)] -= w * s.mean_film.c_j;
-            b[n] += w * s.mean_film.c0;
-        }
-    }
-    let x = a.lu().solve(&b).filter(|x| x.iter().all(|v| v.is_finite())).ok_or_else(|| {
-        SolveError::Invalid("the inlet mixing / journal balance is singular (no oil flows through the bearing?)".into())
-    })?;
-    Ok(((0..n).map(|k| x[k]).collect(), x[n]))
-}
-
-/// Anderson acceleration of the fixed point `T = G(T)` (Walker & Ni 2011, type II, depth `m`): with the
-/// residuals `f = G(T) − T` of the last iterations, `T⁺ = T + β f − (ΔT + β ΔF) γ`, `γ = argmin |f − ΔF γ|`.
-struct Anderson {
-    depth: usize,
-    beta: f64,
-    x: Vec<Vec<f64>>,
-    f: Vec<Vec<f64>>,
-}
-
-impl Anderson {
-    fn new(depth: usize, beta: f64) -> Self {
-        Self { depth, beta, x: Vec::new(), f: Vec::new() }
-    }
-    fn reset(&mut self) {
-        self.x.clear();
-        self.f.clear();
-    }
-    /// Next iterate from the current one `x` and its image `g`.
-    fn step(&mut self, x: &[f64], g: &[f64]) -> Vec<f64> {
-        let f: Vec<f64> = g.iter().zip(x).map(|(a, b)| a - b).collect();
-        self.x.push(x.to_vec());
-        self.f.push(f.clone());
-        if self.x.len() > self.depth + 1 {
-            self.x.remove(0);
-            self.f.remove(0);
-        }
-        let m = self.x.len() - 1;
-        let mut next: Vec<f64> = x.iter().zip(&f).map(|(a, b)| a + self.beta * b).collect();
-        if m == 0 {
-            return next;
-        }
-        let n = x.len();
-        let df = DMatrix::from_fn(n, m, |i, j| self.f[j + 1][i] - self.f[j][i]);
-        let rhs = DVector::from_column_slice(&f);
-        let Ok(gamma) = df.clone().svd(true, true).solve(&rhs, 1e-10) else { return next };
-        if gamma.iter().any(|v| !v.is_finite()) {
-            return next;
-        }
-        for j in 0..m {
-            for i in 0..n {
-                let dx = self.x[j + 1][i] - self.x[j][i];
-                next[i] -= gamma[j] * (dx + self.beta * df[(i, j)]);
-            }
-        }
-        next
+        t.iter().map(|&x| law.at(x)).collect()
     }
 }
 
-fn flatten(t: &[Vec<f64>]) -> Vec<f64> {
-    t.iter().flatten().copied().collect()
+/// Inexact early equilibria: while the viscosity field is still far from converged, solving the
+/// equilibrium to 1e-9 is wasted; the tolerance follows the last viscosity change (full precision once the
+/// change is within ten times the thermal tolerance, so the converged state is exact).
+fn equilibrium_params(last_change: f64, params: &ThermalParams) -> EquilibriumParams {
+    let full = EquilibriumParams::default();
+    if last_change.is_finite() && last_change > 10.0 * params.viscosity_tol {
+        EquilibriumParams { force_tol: (1e-3 * last_change).clamp(full.force_tol, 1e-4), pad_tol: (1e-4 * last_change).clamp(full.pad_tol, 1e-5), ..full }
+    } else {
+        full
+    }
 }
 
-fn unflatten(flat: &[f64], like: &[Vec<f64>]) -> Vec<Vec<f64>> {
-    let mut out = Vec::with_capacity(like.len());
-    let mut at = 0;
-    for v in like {
-        out.push(flat[at..at + v.len()].to_vec());
-        at += v.len();
+/// The equilibrium warm-started from `u`, retried from scratch if that fails.
+fn warm_equilibrium(model: &mut BearingModel, op: &OperatingPoint, params: EquilibriumParams, u: Option<&[f64]>, cancel: &dyn Cancel) -> Result<Equilibrium, SolveError> {
+    match solve_equilibrium(model, op, params, u, cancel) {
+        Err(SolveError::Cancelled) => Err(SolveError::Cancelled),
+        Err(_) if u.is_some() => solve_equilibrium(model, op, params, None, cancel),
+        r => r,
     }
-    out
+}
+
+/// Each pad's share of the total pad load.
+fn load_shares(eq: &Equilibrium) -> Vec<f64> {
+    let total: f64 = eq.pads.iter().map(|p| p.forces[0].hypot(p.forces[1])).sum::<f64>().max(f64::MIN_POSITIVE);
+    eq.pads.iter().map(|p| p.forces[0].hypot(p.forces[1]) / total).collect()
+}
+
+/// Thermal solves of every pad at the films' last state, then the inlet and journal temperatures:
+/// (per-pad solutions, T_in per pad, T_j, film temperatures).
+type FilmTemperatures = (Vec<PadTemperatures>, Vec<f64>, f64, Vec<Vec<f64>>);
+
+fn film_temperatures(model: &BearingModel, thermal: &mut ThermalModel, case: &Case, op: &OperatingPoint, params: &ThermalParams) -> Result<FilmTemperatures, SolveError> {
+    let n = model.pads.len();
+    let mut sols = Vec::with_capacity(n);
+    for k in 0..n {
+        let s = setup(case, op, k, params.stabilisation);
+        let inp = op.film_inputs(k);
+        let sol = thermal.pads[k].solve(&model.pads[k].film, &inp, &s).map_err(|e| SolveError::Invalid(format!("pad {k} thermal solve: {e}")))?;
+        sols.push(sol);
+    }
+    let (t_in, t_j) = inlet_and_journal(case, &sols, &thermal.upstream)?;
+    let t_new: Vec<Vec<f64>> = (0..n).map(|k| sols[k].film(t_in[k], t_j)).collect();
+    if t_new.iter().flatten().any(|v| !v.is_finite()) {
+        return Err(SolveError::Invalid("non-finite film temperature in the thermal loop".into()));
+    }
+    Ok((sols, t_in, t_j, t_new))
 }
 
 /// Largest relative viscosity change between two temperature fields.
@@ -420,7 +348,6 @@ pub fn solve_thd(
     let mut t_try: Option<Vec<Vec<f64>>> = None;
     let mut anderson = Anderson::new(ANDERSON_DEPTH, params.relaxation);
     let mut backtracks = 0;
-    let full = EquilibriumParams::default();
     let mut last_change = f64::INFINITY;
     // Pads whose film sees its mean viscosity only (see the module documentation), and the load shares of the
     // last equilibrium.
@@ -432,33 +359,14 @@ pub fn solve_thd(
         }
         report.outer_iterations += 1;
         for k in 0..n {
-            op.nodal_viscosity[k] = t_try.as_ref().map(|t| {
-                if uniform[k] {
-                    #[allow(clippy::cast_precision_loss)]
-                    let mean = t[k].iter().sum::<f64>() / t[k].len() as f64;
-                    vec![law.at(mean); t[k].len()]
-                } else {
-                    t[k].iter().map(|&x| law.at(x)).collect()
-                }
-            });
+            op.nodal_viscosity[k] = t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], uniform[k]));
         }
-        // Inexact early equilibria: while the viscosity field is still far from converged, solving the
-        // equilibrium to 1e-9 is wasted; the tolerance follows the last viscosity change (full precision once
-        // the change is within ten times the thermal tolerance, so the converged state is exact).
-        let eq_params = if last_change.is_finite() && last_change > 10.0 * params.viscosity_tol {
-            EquilibriumParams { force_tol: (1e-3 * last_change).clamp(full.force_tol, 1e-4), pad_tol: (1e-4 * last_change).clamp(full.pad_tol, 1e-5), ..full }
-        } else {
-            full
-        };
         let te = Instant::now();
-        let attempt = match solve_equilibrium(model, &op, eq_params, u.as_deref(), cancel) {
-            Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
-            Err(_) if u.is_some() => solve_equilibrium(model, &op, eq_params, None, cancel),
-            r => r,
-        };
+        let attempt = warm_equilibrium(model, &op, equilibrium_params(last_change, &params), u.as_deref(), cancel);
         report.equilibrium_seconds += te.elapsed().as_secs_f64();
         let eq = match attempt {
             Ok(eq) => eq,
+            Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
             Err(e) => {
                 let Some(tt) = &t_try else { return Err(e) };
                 let light: Vec<usize> = (0..n).filter(|&k| !uniform[k] && shares[k] < LIGHT_PAD_SHARE).collect();
@@ -485,8 +393,7 @@ pub fn solve_thd(
             }
         };
         backtracks = 0;
-        let total: f64 = eq.pads.iter().map(|p| p.forces[0].hypot(p.forces[1])).sum::<f64>().max(f64::MIN_POSITIVE);
-        shares = eq.pads.iter().map(|p| p.forces[0].hypot(p.forces[1]) / total).collect();
+        shares = load_shares(&eq);
         if t_ok.is_none() && t_try.is_none() {
             // First (isothermal) equilibrium: decide once which pads are lightly loaded.
             for k in 0..n {
@@ -505,18 +412,7 @@ pub fn solve_thd(
         u = Some(eq.u.clone());
         t_ok = t_try.take();
         let tt = Instant::now();
-        let mut sols = Vec::with_capacity(n);
-        for k in 0..n {
-            let s = setup(case, &op, k, params.stabilisation);
-            let inp = op.film_inputs(k);
-            let sol = thermal.pads[k].solve(&model.pads[k].film, &inp, &s).map_err(|e| SolveError::Invalid(format!("pad {k} thermal solve: {e}")))?;
-            sols.push(sol);
-        }
-        let (t_in, t_j) = mix(case, &sols, &thermal.upstream)?;
-        let t_new: Vec<Vec<f64>> = (0..n).map(|k| sols[k].film(t_in[k], t_j)).collect();
-        if t_new.iter().flatten().any(|v| !v.is_finite()) {
-            return Err(SolveError::Invalid("non-finite film temperature in the thermal loop".into()));
-        }
+        let (sols, t_in, t_j, t_new) = film_temperatures(model, thermal, case, &op, &params)?;
         let current = t_ok.as_ref().unwrap_or(&t_iso);
         let change = viscosity_change(&law, &t_new, current);
         report.viscosity_change.push(change);
