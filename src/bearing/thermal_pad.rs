@@ -87,6 +87,9 @@ pub struct PadThermal {
     pub factorizations: usize,
 }
 
+/// An unmodified Dirichlet row: its entries `(column, value)` and its three right-hand sides.
+type DirichletRow = (Vec<(usize, f64)>, [f64; 3]);
+
 /// The superposed solution of one pad (module documentation).
 #[derive(Debug, Clone)]
 pub struct PadTemperatures {
@@ -97,8 +100,8 @@ pub struct PadTemperatures {
     /// Columns ψ₀, ψ_in, ψ_j over all unknowns (film, then pad).
     cols: Vec<f64>,
     n: usize,
-    /// Leading-edge Dirichlet rows: entries of the unmodified row and its three right-hand sides.
-    dirichlet_rows: Vec<(Vec<(usize, f64)>, [f64; 3])>,
+    /// Leading-edge Dirichlet rows before they were replaced by identity rows.
+    dirichlet_rows: Vec<DirichletRow>,
     /// Oil flowing in through the leading edge [m³/s] (whole pad).
     pub q_in: f64,
     /// Out through the trailing edge [m³/s] (whole pad).
