@@ -1,8 +1,8 @@
 //! # tiltpad — a workbench for tilting-pad journal bearings with controllable lubrication
 //!
 //! ## Conventions (used everywhere in the solver)
-//! - **SI inside**: m, s, Pa, N, rad; temperatures in °C. Engineering units appear only at the edges (case
-//!   files, CLI, GUI) and then in the name (`speed_rpm`, `clearance_um`).
+//! - **SI inside**: m, s, Pa, N, rad, W; temperatures in °C. Engineering units appear only at the edges
+//!   (case files, CLI, GUI) and then in the name (`speed_rpm`, `clearance_um`).
 //! - **Frame**: x horizontal, y vertical up; angles θ measured from +x counter-clockwise. The journal rotates
 //!   counter-clockwise, so its surface moves towards +θ; a pad's leading edge is at its smallest θ.
 //! - **Journal position** (e_x, e_y) is the displacement of the journal centre from the bearing centre.
@@ -14,9 +14,13 @@
 //!
 //! ## Module map
 //! - [`model`]: case files, validation, SI case.
-//! - [`mesh`], [`fem`]: pad grids, shape functions and quadrature, sparse assembly and factorisation.
-//! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow).
-//! - [`bearing`]: geometry of the film, equilibrium (Newton), dynamic coefficients, the solve job.
+//! - [`mesh`], [`fem`]: pad grids and the pad solids extruded from them, shape functions and quadrature
+//!   (rectangles, isoparametric quadrilaterals, cylindrical hexahedra), sparse assembly, Cholesky and LU
+//!   factorisation, the SUPG advection–diffusion kernel.
+//! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow,
+//!   film energy, pad heat conduction).
+//! - [`bearing`]: geometry of the film, equilibrium (Newton), the thermal (THD) loop, dynamic coefficients,
+//!   the solve job.
 //! - [`cli`]: batch runs (`tiltpad solve`, `tiltpad sweep`).
 
 // Library paths that user input reaches never unwrap; index loops are the clearest form for FE kernels.

@@ -142,3 +142,28 @@ fn units_are_converted_once() {
     let again = load_case(&file.to_toml().unwrap(), &[]).unwrap().1;
     assert_eq!(again, c);
 }
+
+#[test]
+fn thermal_table() {
+    // Defaults: isothermal unless asked; documented values otherwise.
+    let (_, c) = load_case(&base(), &["thermal.model=\"thd\"".into()]).unwrap();
+    assert_eq!(c.thermal.model, tiltpad::model::ThermalModelKind::Thd);
+    assert_eq!(c.thermal.pad_film_bc, tiltpad::model::PadFilmBc::Bc1);
+    assert!((c.thermal.ambient_temperature_c - c.operating.supply_temperature_c).abs() < 1e-12);
+    assert_eq!(c.mesh.pad_radial_elements, 4);
+    // BC2 needs its coefficient, and only BC2 takes one.
+    assert_names(&err(&["thermal.pad_film_bc=\"bc2\""]), "thermal.h_oil_pad_w_per_m2_k", &["missing", "bc2"]);
+    assert_names(&err(&["thermal.h_oil_pad_w_per_m2_k=4000"]), "thermal.h_oil_pad_w_per_m2_k", &["only used with"]);
+    let (_, c) = load_case(&base(), &["thermal.pad_film_bc=\"bc2\"".into(), "thermal.h_oil_pad_w_per_m2_k=4000".into()]).unwrap();
+    assert_eq!(c.thermal.pad_film_bc, tiltpad::model::PadFilmBc::Bc2 { h_w_per_m2_k: 4000.0 });
+    // Ranges name key, value and the allowed interval.
+    assert_names(&err(&["thermal.carry_over=1.2"]), "thermal.carry_over", &["1.2", "[0, 1]"]);
+    assert_names(&err(&["thermal.pad_conductivity_w_per_m_k=0"]), "thermal.pad_conductivity_w_per_m_k", &["(0,"]);
+    assert_names(&err(&["thermal.convection_w_per_m2_k=-5"]), "thermal.convection_w_per_m2_k", &["-5"]);
+    assert_names(&err(&["thermal.journal_temperature_c=nan"]), "thermal.journal_temperature_c", &["finite"]);
+    assert_names(&err(&["mesh.pad_radial_elements=0"]), "mesh.pad_radial_elements", &["[1, 200]"]);
+    let e = err(&["thermal.model=\"hot\""]);
+    assert_names(&e, "thermal.model", &[]);
+    let e = err(&["thermal.pad_bc=\"bc1\""]);
+    assert!(matches!(e, CaseError::UnknownKey { .. }), "{e:?}");
+}

@@ -85,3 +85,40 @@ fn touchdown_is_reported_not_nan() {
     assert!(err.contains("touchdown"), "{err}");
     assert!(!err.to_lowercase().contains("nan"), "{err}");
 }
+
+#[test]
+fn thermal_solve_reports_temperatures_in_json_and_summary() {
+    let dir = std::env::temp_dir().join(format!("tiltpad-cli-thd-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("t.json");
+    let o = tiltpad()
+        .args(["solve", common::case_path("fillon-a.toml").to_str().unwrap(), "--set", "mesh.fidelity=\"preview\"", "--json"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("thermal (Bc1)") && text.contains("journal") && text.contains("closure"), "{text}");
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let film = j["t_max_film_c"].as_f64().unwrap();
+    let pad = j["t_max_pad_c"].as_f64().unwrap();
+    assert!(film > 40.0 && pad > 40.0 && pad <= film + 1e-9, "BC1: the pad is never hotter than the film ({pad} vs {film})");
+    let t = &j["thermal"];
+    assert!(t["report"]["outer_iterations"].as_u64().unwrap() > 1 && t["report"]["converged"].as_bool().unwrap());
+    assert!(t["energy_balance_closure"].as_f64().unwrap().abs() < 0.01);
+    assert_eq!(t["inlet_temperatures_c"].as_array().unwrap().len(), 4);
+    for key in ["journal_temperature_c", "t_mean_film_c", "heat_carried_by_oil_w", "heat_conducted_w", "heat_pads_to_surroundings_w"] {
+        assert!(t[key].is_f64(), "missing {key}");
+    }
+    assert!(j["pads"][2]["thermal"]["inlet_temperature_c"].is_f64());
+    // An isothermal solve says so.
+    let o = tiltpad()
+        .args(["solve", common::case_path("fillon-a.toml").to_str().unwrap(), "--set", "thermal.model=\"isothermal\"", "--json"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success());
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    assert!(j["t_max_film_c"].is_null() && j["thermal"].is_null());
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -19,6 +19,9 @@ pub enum SolveError {
     /// Newton (and its fallbacks) stopped without meeting the tolerance.
     #[error("equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})")]
     NotConverged { iterations: usize, residual: f64, reason: String },
+    /// The thermal loop stopped before the viscosity field converged.
+    #[error("thermal (THD) loop not converged after {iterations} outer iterations: largest relative viscosity change {viscosity_change:.2e}")]
+    ThermalNotConverged { iterations: usize, viscosity_change: f64 },
     #[error("solve cancelled")]
     Cancelled,
     #[error("{0}")]

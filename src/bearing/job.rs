@@ -6,21 +6,92 @@
 
 use std::f64::consts::TAU;
 
-use crate::model::{Case, LoadSpec};
+use crate::model::{Case, LoadSpec, ThermalModelKind};
 
 use super::coefficients::{full_coefficients, reduce};
 use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
-use super::solution::{BearingFlows, Derived, PadField, PadResult, Solution};
+use super::solution::{BearingFlows, Derived, PadField, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
+use super::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
 
-/// Solves a case from scratch.
+/// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
 ///
 /// # Errors
 /// See [`SolveError`].
 pub fn solve_case(case: &Case) -> Result<Solution, SolveError> {
     let mut model = BearingModel::new(case)?;
-    solve_operating_point(&mut model, case, &OperatingPoint::isothermal(case), None, &NoCancel)
+    let mut thermal = None;
+    solve_point(&mut model, &mut thermal, case, None, &NoCancel)
+}
+
+/// Solves a case on an existing model with the case's film model; the thermal model is built on first use
+/// and kept in `thermal` for the next call (sweeps).
+///
+/// # Errors
+/// See [`SolveError`].
+pub fn solve_point(
+    model: &mut BearingModel,
+    thermal: &mut Option<ThermalModel>,
+    case: &Case,
+    start: Option<&[f64]>,
+    cancel: &dyn Cancel,
+) -> Result<Solution, SolveError> {
+    match case.thermal.model {
+        ThermalModelKind::Isothermal => solve_operating_point(model, case, &OperatingPoint::isothermal(case), start, cancel),
+        ThermalModelKind::Thd => {
+            if thermal.is_none() {
+                *thermal = Some(ThermalModel::new(case, model)?);
+            }
+            let tm = thermal.as_mut().ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
+            let state = solve_thd(model, tm, case, ThermalParams::default(), start, cancel)?;
+            Ok(assemble_thd_solution(model, case, &state))
+        }
+    }
+}
+
+/// Collects results of a converged THD state: the solution at its equilibrium (coefficients at the
+/// converged viscosity field, temperatures frozen) plus the thermal fields.
+#[must_use]
+pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdState) -> Solution {
+    let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium);
+    let max = |v: &[f64]| v.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
+    let (mut t_area, mut area) = (0.0, 0.0);
+    for (p, st) in sol.pads.iter_mut().zip(&state.pads) {
+        let n_film = st.film_c.len();
+        let surface = st.pad_c.as_ref().map(|t| t[..n_film].to_vec());
+        p.field.film_temperature_c = Some(st.film_c.clone());
+        p.field.pad_surface_temperature_c.clone_from(&surface);
+        t_area += st.film_mean_c * st.oil_area_m2;
+        area += st.oil_area_m2;
+        p.thermal = Some(PadThermalResult {
+            inlet_temperature_c: st.inlet_temperature_c,
+            outlet_temperature_c: st.outlet_temperature_c,
+            film_t_max_c: max(&st.film_c),
+            film_t_mean_c: st.film_mean_c,
+            pad_t_max_c: st.pad_c.as_deref().map(max),
+            pad_surface_t_max_c: surface.as_deref().map(max),
+            heat: st.heat,
+            pad_to_surroundings_w: st.pad_to_surroundings_w,
+            solid: st.pad_c.as_ref().map(|t| PadSolidField { radii_m: st.pad_radii_m.clone(), temperature_c: t.clone() }),
+        });
+    }
+    let pad_max = state.pads.iter().filter_map(|p| p.pad_c.as_deref().map(max)).fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+    sol.thermal = Some(ThermalResult {
+        pad_film_bc: case.thermal.pad_film_bc,
+        journal_temperature_c: state.journal_temperature_c,
+        t_max_film_c: state.pads.iter().map(|p| max(&p.film_c)).fold(f64::NEG_INFINITY, f64::max),
+        t_mean_film_c: if area > 0.0 { t_area / area } else { state.journal_temperature_c },
+        t_max_pad_c: pad_max,
+        inlet_temperatures_c: state.pads.iter().map(|p| p.inlet_temperature_c).collect(),
+        heat: state.heat,
+        heat_carried_by_oil_w: state.heat.carried_by_oil(),
+        heat_conducted_w: state.heat.conducted_out(),
+        heat_pads_to_surroundings_w: state.pads.iter().map(|p| p.pad_to_surroundings_w).sum(),
+        energy_balance_closure: state.report.energy_balance_closure,
+        report: state.report.clone(),
+    });
+    sol
 }
 
 /// Solves an operating point on an existing model (the case must match the model's geometry and mesh).
@@ -92,6 +163,8 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
                 Some(v) => v.clone(),
                 None => vec![op.viscosity; film.p.len()],
             },
+            film_temperature_c: None,
+            pad_surface_temperature_c: None,
         };
         flows.leading_edges_in += f.leading_edge_in;
         flows.trailing_edges_out += f.trailing_edge_out;
@@ -117,6 +190,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             cavitated_fraction: cav_frac,
             unloaded: st.unloaded,
             field,
+            thermal: None,
         });
     }
     let inflow = flows.leading_edges_in + flows.orifices_in;
@@ -168,5 +242,6 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             film_nodes: model.film_nodes(),
         },
         inputs: case.clone(),
+        thermal: None,
     }
 }

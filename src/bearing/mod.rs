@@ -1,20 +1,26 @@
 //! The bearing: film geometry and coordinates ([`geometry`]), the model built once per mesh ([`model`]),
-//! static equilibrium ([`equilibrium`]), dynamic coefficients ([`coefficients`]) and the solve job
-//! ([`job`]) that turns a case into a [`Solution`].
+//! static equilibrium ([`equilibrium`]), the thermal (THD) loop around it ([`thermal`], with the per-pad
+//! thermal systems in [`thermal_pad`]), dynamic coefficients ([`coefficients`]) and the solve job ([`job`])
+//! that turns a case into a [`Solution`].
 
+pub mod anderson;
 pub mod coefficients;
 pub mod equilibrium;
 pub mod error;
 pub mod geometry;
 pub mod job;
+pub mod mixing;
 pub mod model;
 pub mod pipeline;
 pub mod solution;
+pub mod thermal;
+pub mod thermal_pad;
 
 pub use coefficients::{FullCoefficients, ReducedCoefficients};
 pub use equilibrium::{Cancel, EquilibriumParams, NoCancel, SolveReport};
 pub use error::SolveError;
-pub use job::{solve_case, solve_operating_point};
+pub use job::{solve_case, solve_operating_point, solve_point};
 pub use model::{BearingModel, OperatingPoint};
 pub use pipeline::{Outcome, Pipeline, Request, Stage, StageCounters, Step};
 pub use solution::Solution;
+pub use thermal::{ThermalModel, ThermalParams, ThermalReport};

@@ -8,7 +8,8 @@
 //! |----------------|--------------------------------------------------------|
 //! | `Model`        | bearing geometry, mesh                                 |
 //! | `Equilibrium`  | model inputs + lubricant, operating point (not ω/Ω), physics |
-//! | `Reduction`    | equilibrium + excitation ratio ω/Ω                     |
+//! | `Thermal`      | equilibrium inputs + `[thermal]` (THD cases only; warm-started from the isothermal equilibrium) |
+//! | `Reduction`    | equilibrium (or thermal) + excitation ratio ω/Ω        |
 //! | `FrequencySweep` | equilibrium + the list of ratios                     |
 //! | `SpeedSweep`   | model inputs + everything but the speed, + the speeds  |
 //!
@@ -25,9 +26,11 @@ use crate::model::Case;
 use super::coefficients::{reduce, ReducedCoefficients};
 use super::equilibrium::Cancel;
 use super::error::SolveError;
-use super::job::solve_operating_point;
+use super::job::{assemble_thd_solution, solve_operating_point, solve_point};
 use super::model::{BearingModel, OperatingPoint};
 use super::solution::Solution;
+use super::thermal::{solve_thd, ThermalModel, ThermalParams};
+use crate::model::ThermalModelKind;
 
 /// What the caller wants computed.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -87,6 +90,7 @@ pub struct Outcome {
 pub enum Stage {
     Model,
     Equilibrium,
+    Thermal,
     Reduction,
     FrequencySweep,
     SpeedSweep,
@@ -97,6 +101,8 @@ pub enum Stage {
 pub struct StageCounters {
     pub model: usize,
     pub equilibrium: usize,
+    /// THD solves (thermal loop around the equilibrium).
+    pub thermal: usize,
     pub reduction: usize,
     pub frequency_sweep: usize,
     pub speed_sweep_points: usize,
@@ -126,11 +132,16 @@ fn equilibrium_key(c: &Case) -> String {
     key(&(&c.bearing, &c.mesh, &c.lubricant, &o, &c.physics))
 }
 
+/// Cache key of the THD solution: the equilibrium's inputs plus the thermal settings.
+fn thermal_key(c: &Case) -> String {
+    format!("{}|{}", equilibrium_key(c), key(&c.thermal))
+}
+
 fn sweep_key(c: &Case, speeds: &[f64]) -> String {
     let mut o = c.operating.clone();
     o.excitation_ratio = 0.0;
     o.speed_rad_s = 0.0;
-    key(&(&c.bearing, &c.mesh, &c.lubricant, &o, &c.physics, speeds))
+    key(&(&c.bearing, &c.mesh, &c.lubricant, &o, &c.physics, &c.thermal, speeds))
 }
 
 struct SweepState {
@@ -138,6 +149,7 @@ struct SweepState {
     points: Vec<SpeedPoint>,
     start: Option<Vec<f64>>,
     model: BearingModel,
+    thermal: Option<ThermalModel>,
 }
 
 /// Cached, steppable solver.
@@ -145,6 +157,9 @@ struct SweepState {
 pub struct Pipeline {
     model: Option<(String, BearingModel)>,
     equilibrium: Option<(String, Arc<Solution>)>,
+    /// Thermal model (pad meshes, thermal systems) under the model key, and the THD solution.
+    thermal_model: Option<(String, ThermalModel)>,
+    thermal: Option<(String, Arc<Solution>)>,
     reduction: Option<(String, Arc<Solution>)>,
     frequency_sweep: Option<(String, Arc<FrequencySweep>)>,
     speed_sweep: Option<SweepState>,
@@ -196,7 +211,28 @@ impl Pipeline {
             self.reduction = None;
             return Ok(Step::Pending { stage: Stage::Equilibrium, fraction: 1.0 });
         }
-        let eq = self.equilibrium.as_ref().map(|e| e.1.clone()).ok_or_else(|| SolveError::Invalid("no equilibrium".into()))?;
+        let mut eq = self.equilibrium.as_ref().map(|e| e.1.clone()).ok_or_else(|| SolveError::Invalid("no equilibrium".into()))?;
+        let mut ek = ek;
+        // Thermal loop (THD cases), warm-started from the isothermal equilibrium.
+        if case.thermal.model == ThermalModelKind::Thd {
+            let tk = thermal_key(case);
+            if self.thermal.as_ref().map(|t| &t.0) != Some(&tk) {
+                let Self { model, thermal_model, .. } = self;
+                let (mkey, model) = model.as_mut().ok_or_else(|| SolveError::Invalid("no model".into()))?;
+                if thermal_model.as_ref().map(|t| &t.0) != Some(&*mkey) {
+                    *thermal_model = Some((mkey.clone(), ThermalModel::new(case, model)?));
+                }
+                let (_, tm) = thermal_model.as_mut().ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
+                let state = solve_thd(model, tm, case, ThermalParams::default(), Some(&eq.coordinates), cancel)?;
+                let sol = assemble_thd_solution(model, case, &state);
+                self.counters.thermal += 1;
+                self.thermal = Some((tk, Arc::new(sol)));
+                self.reduction = None;
+                return Ok(Step::Pending { stage: Stage::Thermal, fraction: 1.0 });
+            }
+            eq = self.thermal.as_ref().map(|t| t.1.clone()).ok_or_else(|| SolveError::Invalid("no thermal solution".into()))?;
+            ek = tk;
+        }
         // Reduction at the case's excitation ratio.
         let rk = format!("{ek}|{}", case.operating.excitation_ratio);
         if self.reduction.as_ref().map(|r| &r.0) != Some(&rk) {
@@ -227,15 +263,14 @@ impl Pipeline {
                         Some((_, m)) => m.clone(),
                         None => BearingModel::new(case)?,
                     };
-                    self.speed_sweep = Some(SweepState { key: sk.clone(), points: Vec::new(), start: None, model });
+                    self.speed_sweep = Some(SweepState { key: sk.clone(), points: Vec::new(), start: None, model, thermal: None });
                 }
                 let st = self.speed_sweep.as_mut().ok_or_else(|| SolveError::Invalid("no sweep".into()))?;
                 let i = st.points.len();
                 let rpm = speeds[i];
                 let mut c = case.clone();
                 c.operating.speed_rad_s = rpm * std::f64::consts::TAU / 60.0;
-                let op = OperatingPoint::isothermal(&c);
-                let result = match solve_operating_point(&mut st.model, &c, &op, st.start.as_deref(), cancel) {
+                let result = match solve_point(&mut st.model, &mut st.thermal, &c, st.start.as_deref(), cancel) {
                     Ok(s) => {
                         st.start = Some(s.coordinates.clone());
                         Ok(SweepValues::of(&s))
@@ -290,7 +325,9 @@ mod tests {
 
     fn case(set: &[&str]) -> Case {
         let text = include_str!("../../cases/fillon-a.toml");
-        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+        // These tests are about the isothermal stages; the thermal stage has its own test below.
+        let mut set: Vec<String> = std::iter::once("thermal.model=\"isothermal\"").chain(set.iter().copied()).map(str::to_string).collect();
+        set.dedup();
         load_case(&text.replace("fidelity = \"standard\"", "fidelity = \"preview\""), &set).unwrap().1
     }
 
@@ -299,7 +336,7 @@ mod tests {
         let mut p = Pipeline::new();
         let mut req = Request { case: Some(case(&[])), frequency_ratios: Some(vec![0.5, 1.0, 2.0]), speeds_rpm: None };
         p.run(&req, &NoCancel).unwrap();
-        assert_eq!(p.counters, StageCounters { model: 1, equilibrium: 1, reduction: 1, frequency_sweep: 1, speed_sweep_points: 0 });
+        assert_eq!(p.counters, StageCounters { model: 1, equilibrium: 1, thermal: 0, reduction: 1, frequency_sweep: 1, speed_sweep_points: 0 });
         // Same request: nothing runs.
         p.run(&req, &NoCancel).unwrap();
         assert_eq!(p.counters.equilibrium, 1);
@@ -339,5 +376,30 @@ mod tests {
         assert!(e[0] > e[1] && e[1] > e[2], "eccentricity falls with speed: {e:?}");
         p.run(&req, &NoCancel).unwrap();
         assert_eq!(p.counters.speed_sweep_points, 3);
+    }
+
+    #[test]
+    fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
+        let thd = |extra: &[&str]| {
+            let mut set = vec!["thermal.model=\"thd\""];
+            set.extend_from_slice(extra);
+            case(&set)
+        };
+        let mut p = Pipeline::new();
+        let mut req = Request { case: Some(thd(&[])), frequency_ratios: None, speeds_rpm: None };
+        let o = p.run(&req, &NoCancel).unwrap();
+        assert_eq!((p.counters.model, p.counters.equilibrium, p.counters.thermal, p.counters.reduction), (1, 1, 1, 1));
+        let s = o.solution.unwrap();
+        let t = s.thermal.as_ref().expect("thermal results");
+        assert!(t.report.converged && t.t_max_film_c > 40.0);
+        assert!(s.pads.iter().all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
+        // A thermal setting reruns only the thermal stage (and the reduction after it).
+        req.case = Some(thd(&["thermal.convection_w_per_m2_k=150"]));
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!((p.counters.model, p.counters.equilibrium, p.counters.thermal, p.counters.reduction), (1, 1, 2, 2));
+        // The excitation ratio reruns only the reduction.
+        req.case = Some(thd(&["thermal.convection_w_per_m2_k=150", "operating.excitation_ratio=0.5"]));
+        p.run(&req, &NoCancel).unwrap();
+        assert_eq!((p.counters.equilibrium, p.counters.thermal, p.counters.reduction), (1, 2, 3));
     }
 }

@@ -2,11 +2,13 @@
 
 use serde::Serialize;
 
-use crate::model::{Case, LoadSpec};
+use crate::model::{Case, LoadSpec, PadFilmBc};
+use crate::physics::energy::FilmHeat;
 use crate::physics::reynolds::PadFlows;
 
 use super::coefficients::{FullCoefficients, ReducedCoefficients};
 use super::equilibrium::SolveReport;
+use super::thermal::ThermalReport;
 
 /// Quantities derived from the inputs that a reader of a result file needs.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -39,6 +41,12 @@ pub struct PadField {
     pub cavitated: Vec<bool>,
     /// Viscosity at the nodes [Pa·s].
     pub viscosity_pa_s: Vec<f64>,
+    /// Film temperature (mean across the film) at the nodes [°C] (thermal model only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film_temperature_c: Option<Vec<f64>>,
+    /// Temperature of the pad's film-side surface at the nodes [°C] (thermal model with a pad solid).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pad_surface_temperature_c: Option<Vec<f64>>,
 }
 
 impl PadField {
@@ -80,6 +88,62 @@ pub struct PadResult {
     pub unloaded: bool,
     #[serde(skip)]
     pub field: PadField,
+    /// Thermal results (thermal model only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thermal: Option<PadThermalResult>,
+}
+
+/// The 3-D pad temperature field, stored compactly on the extruded film grid.
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct PadSolidField {
+    /// Layer radii from the film-side face (Rp) to the back (Rp + t) [m].
+    pub radii_m: Vec<f64>,
+    /// Temperatures [°C], `temperature_c[layer · n_film + film node]` (film nodes as in [`PadField`]).
+    pub temperature_c: Vec<f64>,
+}
+
+/// Thermal results of one pad.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PadThermalResult {
+    /// Leading-edge oil temperature (given or from the groove mixing).
+    pub inlet_temperature_c: f64,
+    /// Flow-weighted trailing-edge oil temperature.
+    pub outlet_temperature_c: f64,
+    pub film_t_max_c: f64,
+    /// Oil-filled area mean of the film temperature.
+    pub film_t_mean_c: f64,
+    /// Highest pad temperature anywhere in the pad, and on its film-side surface.
+    pub pad_t_max_c: Option<f64>,
+    pub pad_surface_t_max_c: Option<f64>,
+    pub heat: FilmHeat,
+    /// Heat the pad gives to its surroundings through its free faces [W].
+    pub pad_to_surroundings_w: f64,
+    #[serde(skip)]
+    pub solid: Option<PadSolidField>,
+}
+
+/// Thermal results of the bearing.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ThermalResult {
+    pub pad_film_bc: PadFilmBc,
+    pub journal_temperature_c: f64,
+    pub t_max_film_c: f64,
+    pub t_mean_film_c: f64,
+    /// Highest pad temperature (`None` without pad solids).
+    pub t_max_pad_c: Option<f64>,
+    pub inlet_temperatures_c: Vec<f64>,
+    /// The film energy balance of the whole bearing.
+    pub heat: FilmHeat,
+    /// Heat carried away by the oil [W] (edges, orifices, ruptured zones).
+    pub heat_carried_by_oil_w: f64,
+    /// Heat conducted out of the film [W] (into pads and journal, net of inflows by conduction).
+    pub heat_conducted_w: f64,
+    /// Heat the pads give to their surroundings [W]. With BC1 this heat is not part of the film's balance
+    /// (the adiabatic film and the pad's Dirichlet face are BC1's known inconsistency).
+    pub heat_pads_to_surroundings_w: f64,
+    /// (P − H − C)/P of the film energy balance.
+    pub energy_balance_closure: f64,
+    pub report: ThermalReport,
 }
 
 /// Whole-bearing flows [m³/s].
@@ -121,6 +185,8 @@ pub struct Solution {
     pub report: SolveReport,
     pub derived: Derived,
     pub inputs: Case,
+    /// Thermal results (`None` for the isothermal model).
+    pub thermal: Option<ThermalResult>,
 }
 
 impl Solution {

@@ -27,6 +27,7 @@ pub fn solution_json(s: &Solution) -> Value {
                 "friction_power_w": p.friction_power_w,
                 "cavitated_fraction": p.cavitated_fraction,
                 "unloaded": p.unloaded,
+                "thermal": p.thermal,
             })
         })
         .collect();
@@ -48,6 +49,9 @@ pub fn solution_json(s: &Solution) -> Value {
         "pads": pads,
         "coordinates": s.coordinates,
         "report": s.report,
+        "t_max_film_c": s.thermal.as_ref().map(|t| t.t_max_film_c),
+        "t_max_pad_c": s.thermal.as_ref().and_then(|t| t.t_max_pad_c),
+        "thermal": s.thermal,
         "inputs": {
             "case": s.inputs,
             "assembled_clearance_m": s.derived.assembled_clearance_m,
@@ -113,6 +117,42 @@ pub fn summary_text(s: &Solution) -> String {
     let _ = writeln!(o, "  reduced coefficients at ω = {:.1} rad/s (x, y):", r.omega_rad_s);
     let _ = writeln!(o, "    K [MN/m]   [{:>10.3} {:>10.3}]   C [kN·s/m] [{:>10.3} {:>10.3}]", r.k_n_per_m[0][0] * 1e-6, r.k_n_per_m[0][1] * 1e-6, r.c_ns_per_m[0][0] * 1e-3, r.c_ns_per_m[0][1] * 1e-3);
     let _ = writeln!(o, "               [{:>10.3} {:>10.3}]              [{:>10.3} {:>10.3}]", r.k_n_per_m[1][0] * 1e-6, r.k_n_per_m[1][1] * 1e-6, r.c_ns_per_m[1][0] * 1e-3, r.c_ns_per_m[1][1] * 1e-3);
+    if let Some(t) = &s.thermal {
+        let _ = writeln!(
+            o,
+            "  thermal ({:?}): film max {:.1} °C, mean {:.1} °C; pad max {}; journal {:.1} °C; inlets {} °C",
+            t.pad_film_bc,
+            t.t_max_film_c,
+            t.t_mean_film_c,
+            t.t_max_pad_c.map_or_else(|| "—".to_string(), |v| format!("{v:.1} °C")),
+            t.journal_temperature_c,
+            t.inlet_temperatures_c.iter().map(|v| format!("{v:.1}")).collect::<Vec<_>>().join(", ")
+        );
+        let _ = writeln!(
+            o,
+            "    heat: power in {:.1} W = carried by oil {:.1} W + conducted {:.1} W (closure {:+.2e}); pads to surroundings {:.1} W",
+            t.heat.power_in(),
+            t.heat_carried_by_oil_w,
+            t.heat_conducted_w,
+            t.energy_balance_closure,
+            t.heat_pads_to_surroundings_w
+        );
+        let r = &t.report;
+        let _ = writeln!(
+            o,
+            "    thermal loop: {} outer iterations ({}), {} equilibrium iterations, {} film solves, {:.1} ms ({:.1} ms equilibrium, {:.1} ms thermal)",
+            r.outer_iterations,
+            r.stop_reason,
+            r.equilibrium_iterations,
+            r.film_solves,
+            r.seconds * 1e3,
+            r.equilibrium_seconds * 1e3,
+            r.thermal_seconds * 1e3
+        );
+        for w in &r.warnings {
+            let _ = writeln!(o, "  warning: {w}");
+        }
+    }
     let rep = &s.report;
     let _ = writeln!(
         o,

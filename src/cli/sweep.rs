@@ -6,7 +6,7 @@ use std::path::Path;
 use anyhow::{bail, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::bearing::{solve_operating_point, BearingModel, NoCancel, OperatingPoint};
+use crate::bearing::{solve_point, BearingModel, NoCancel, ThermalModel};
 use crate::model::load_case;
 
 use super::write_atomic;
@@ -26,6 +26,7 @@ pub fn run(case: &Path, param: &str, from: f64, to: f64, steps: usize, set: &[St
         "value,eccentricity_ratio,attitude_angle_deg,h_min_um,p_max_mpa,friction_power_w,kxx_n_per_m,kxy_n_per_m,kyx_n_per_m,kyy_n_per_m,cxx_ns_per_m,cxy_ns_per_m,cyx_ns_per_m,cyy_ns_per_m,iterations,seconds,error\n",
     );
     let mut model: Option<(BearingModel, String)> = None;
+    let mut thermal: Option<ThermalModel> = None;
     let mut start: Option<Vec<f64>> = None;
     for i in 0..steps {
         #[allow(clippy::cast_precision_loss)]
@@ -37,11 +38,12 @@ pub fn run(case: &Path, param: &str, from: f64, to: f64, steps: usize, set: &[St
         let key = format!("{:?}{:?}", c.bearing, c.mesh);
         if model.as_ref().map(|m| &m.1) != Some(&key) {
             model = Some((BearingModel::new(&c)?, key));
+            thermal = None;
             start = None;
         }
         let Some((m, _)) = model.as_mut() else { unreachable!() };
         pb.set_message(format!("{param} = {v:.4}"));
-        match solve_operating_point(m, &c, &OperatingPoint::isothermal(&c), start.as_deref(), &NoCancel) {
+        match solve_point(m, &mut thermal, &c, start.as_deref(), &NoCancel) {
             Ok(s) => {
                 let (k, cc) = (s.reduced.k_n_per_m, s.reduced.c_ns_per_m);
                 let _ = writeln!(

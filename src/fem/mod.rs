@@ -1,8 +1,15 @@
-//! Finite-element building blocks: bilinear rectangles with Gauss quadrature, the sparsity pattern and a
-//! Cholesky solver whose symbolic factorisation is built once per pattern and reused.
+//! Finite-element building blocks: bilinear rectangles with Gauss quadrature, general (isoparametric)
+//! quadrilaterals, trilinear hexahedra in cylindrical coordinates, sparse patterns with a Cholesky solver (SPD
+//! systems) and an LU solver (non-symmetric systems), whose symbolic factorisations are built once per
+//! pattern and reused, and the SUPG-stabilised advection–diffusion kernel.
 
+pub mod hex8;
+pub mod lu;
 pub mod quad4;
+pub mod quad_iso;
 pub mod sparse;
+pub mod supg;
 
+pub use lu::{GeneralPattern, LuSolver};
 pub use quad4::{RectElement, GAUSS_2X2};
 pub use sparse::{Pattern, SpdSolver, SolverError};

@@ -21,6 +21,9 @@ pub enum SolverError {
     NotPositiveDefinite,
     #[error("symbolic factorisation failed: {0}")]
     Symbolic(String),
+    /// The LU factorisation found no usable pivot (singular or non-finite matrix).
+    #[error("matrix is singular: {0}")]
+    Singular(String),
 }
 
 /// Lower-triangular CSC pattern with an element scatter map.
@@ -40,45 +43,19 @@ impl Pattern {
     /// Builds the pattern of `n` nodes connected by 4-node elements.
     #[must_use]
     pub fn from_elements(n: usize, elements: &[[usize; 4]]) -> Self {
-        let mut cols: Vec<Vec<usize>> = vec![Vec::new(); n];
-        for e in elements {
-            for &a in e {
-                for &b in e {
-                    if a >= b {
-                        cols[b].push(a);
-                    }
-                }
-            }
-        }
-        let mut col_ptr = Vec::with_capacity(n + 1);
-        let mut row_idx = Vec::new();
-        col_ptr.push(0);
-        for c in &mut cols {
-            c.sort_unstable();
-            c.dedup();
-            row_idx.extend_from_slice(c);
-            col_ptr.push(row_idx.len());
-        }
-        let find = |row: usize, col: usize| -> usize {
-            let slice = &row_idx[col_ptr[col]..col_ptr[col + 1]];
-            col_ptr[col] + slice.binary_search(&row).unwrap_or_else(|_| unreachable!("entry in pattern"))
-        };
-        let scatter = elements
-            .iter()
-            .map(|e| {
-                let mut m = [usize::MAX; 16];
-                for a in 0..4 {
-                    for b in 0..4 {
-                        if e[a] >= e[b] {
-                            m[4 * a + b] = find(e[a], e[b]);
-                        }
-                    }
-                }
-                m
-            })
-            .collect();
-        let diag = (0..n).map(|i| find(i, i)).collect();
-        Self { n, col_ptr, row_idx, scatter, diag }
+        let (mut pattern, flat) = Self::from_groups(n, elements.iter().map(|e| &e[..]));
+        pattern.scatter = flat.chunks_exact(16).map(|c| std::array::from_fn(|k| c[k])).collect();
+        pattern
+    }
+
+    /// Builds the pattern of `n` nodes connected by groups of any size (every pair within a group couples),
+    /// and the value position of entry (a, b) of each group, row-major, `usize::MAX` above the diagonal;
+    /// the groups' blocks follow one another (group g starts after the `len²` entries of the ones before).
+    /// The returned pattern's `scatter` is empty.
+    #[must_use]
+    pub fn from_groups<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone) -> (Self, Vec<usize>) {
+        let c = CscGroups::build(n, groups, |row, col| row >= col);
+        (Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: Vec::new(), diag: c.diag }, c.scatter)
     }
 
     #[must_use]
@@ -117,6 +94,55 @@ impl Pattern {
                 };
             }
         }
+    }
+}
+
+/// A CSC structure built from node groups: the entries (row, col) of every pair within a group for which
+/// `keep(row, col)` holds, plus the whole diagonal; with each group's value positions (row-major,
+/// `usize::MAX` where `keep` is false) and the diagonal positions. Shared by the symmetric (lower triangle)
+/// and the general (full) patterns.
+pub(crate) struct CscGroups {
+    pub col_ptr: Vec<usize>,
+    pub row_idx: Vec<usize>,
+    pub scatter: Vec<usize>,
+    pub diag: Vec<usize>,
+}
+
+impl CscGroups {
+    pub(crate) fn build<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone, keep: impl Fn(usize, usize) -> bool) -> Self {
+        let mut cols: Vec<Vec<usize>> = (0..n).map(|i| vec![i]).collect();
+        for g in groups.clone() {
+            for &a in g {
+                for &b in g {
+                    if keep(a, b) {
+                        cols[b].push(a);
+                    }
+                }
+            }
+        }
+        let mut col_ptr = Vec::with_capacity(n + 1);
+        let mut row_idx = Vec::new();
+        col_ptr.push(0);
+        for c in &mut cols {
+            c.sort_unstable();
+            c.dedup();
+            row_idx.extend_from_slice(c);
+            col_ptr.push(row_idx.len());
+        }
+        let find = |row: usize, col: usize| -> usize {
+            let slice = &row_idx[col_ptr[col]..col_ptr[col + 1]];
+            col_ptr[col] + slice.binary_search(&row).unwrap_or_else(|_| unreachable!("entry in pattern"))
+        };
+        let mut scatter = Vec::new();
+        for g in groups {
+            for &a in g {
+                for &b in g {
+                    scatter.push(if keep(a, b) { find(a, b) } else { usize::MAX });
+                }
+            }
+        }
+        let diag = (0..n).map(|i| find(i, i)).collect();
+        Self { col_ptr, row_idx, scatter, diag }
     }
 }
 

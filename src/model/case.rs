@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-pub use super::file::{Cavitation, Fidelity};
+pub use super::file::{CavitatedFilmFile as CavitatedFilm, Cavitation, Fidelity, ThermalModelKind};
 
 /// A complete, validated case in SI units.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -16,6 +16,7 @@ pub struct Case {
     pub operating: Operating,
     pub mesh: MeshSpec,
     pub physics: Physics,
+    pub thermal: Thermal,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -157,6 +158,8 @@ pub struct MeshSpec {
     pub axial_elements: usize,
     pub orifice_elements: usize,
     pub half_model: bool,
+    /// Element layers through the pad thickness (pad conduction).
+    pub pad_radial_elements: usize,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -164,6 +167,38 @@ pub struct Physics {
     pub cavitation: Cavitation,
     /// Film thickness below which an equilibrium counts as touchdown [m].
     pub touchdown_film_m: f64,
+}
+
+/// Film–pad heat exchange (model.md §3).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum PadFilmBc {
+    /// Adiabatic film; pad surface = film temperature (Dirichlet). Film and pad decouple.
+    Bc1,
+    /// `S_loss = H (T − T_pad)` with a constant coefficient H [W/(m² K)].
+    Bc2 { h_w_per_m2_k: f64 },
+    /// Knight & Barrett parabola across the film; film and pad coupled.
+    Bc3,
+}
+
+/// Thermal model settings, SI (temperatures °C).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Thermal {
+    pub model: ThermalModelKind,
+    pub pad_film_bc: PadFilmBc,
+    /// H∞ on the pads' free faces [W/(m² K)].
+    pub convection_w_per_m2_k: f64,
+    /// T∞ [°C].
+    pub ambient_temperature_c: f64,
+    /// Pad conductivity [W/(m K)].
+    pub pad_conductivity_w_per_m_k: f64,
+    /// Hot-oil carry-over λ.
+    pub carry_over: f64,
+    /// Given leading-edge temperature [°C], else the mixing balance.
+    pub inlet_temperature_c: Option<f64>,
+    /// Given journal temperature [°C], else zero net heat flux.
+    pub journal_temperature_c: Option<f64>,
+    pub cavitated_film: CavitatedFilm,
 }
 
 impl Fidelity {
@@ -174,6 +209,18 @@ impl Fidelity {
             Self::Preview => (16, 8, 6),
             Self::Standard => (36, 16, 12),
             Self::Reference => (96, 48, 24),
+        }
+    }
+
+    /// Default element layers through the pad thickness (pad conduction). Graded layers converge at about
+    /// second order; on Fillon bearing A (BC3) 4 layers put the pad's maximum temperature within 0.005 K of
+    /// the 24-layer value (docs/THERMAL.md).
+    #[must_use]
+    pub fn pad_radial_elements(self) -> usize {
+        match self {
+            Self::Preview => 2,
+            Self::Standard => 4,
+            Self::Reference => 8,
         }
     }
 }

@@ -16,6 +16,7 @@
 //! [operating]          # speed_rpm, load_n + load_angle_deg (or eccentricity_ratio + eccentricity_angle_deg), …
 //! [mesh]               # fidelity or explicit element counts
 //! [physics]            # cavitation model, …
+//! [thermal]            # isothermal | thd, film–pad exchange (bc1/bc2/bc3), pad conduction, inlet mixing
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -34,6 +35,8 @@ pub struct CaseFile {
     pub mesh: MeshFile,
     #[serde(default)]
     pub physics: PhysicsFile,
+    #[serde(default)]
+    pub thermal: ThermalFile,
 }
 
 /// `[bearing]`
@@ -222,6 +225,9 @@ pub struct MeshFile {
     /// Model half the length with a symmetry plane: default when every orifice is on the mid-plane.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub half_model: Option<bool>,
+    /// Element layers through the pad thickness for pad heat conduction (thermal model).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_radial_elements: Option<usize>,
 }
 
 /// Cavitation condition of the film.
@@ -246,4 +252,74 @@ pub struct PhysicsFile {
     /// contact through their roughness). Default: 1 % of the assembled clearance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub touchdown_film_um: Option<f64>,
+}
+
+/// Which film model: isothermal (one viscosity at `operating.film_temperature_c`) or thermohydrodynamic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum ThermalModelKind {
+    #[default]
+    Isothermal,
+    /// Film energy equation, pad conduction and inlet mixing, iterated with the equilibrium.
+    Thd,
+}
+
+/// Heat exchange between the film and the pad's film-side surface (model.md §3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum PadFilmBcFile {
+    /// Adiabatic film; the pad surface takes the film temperature (decoupled). Laminar bearings.
+    #[default]
+    Bc1,
+    /// Convective exchange with a constant coefficient (`h_oil_pad_w_per_m2_k`).
+    Bc2,
+    /// Knight & Barrett parabolic profile across the film (coupled). Near the laminar limit.
+    Bc3,
+}
+
+/// How the thermal model treats cavitated zones.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum CavitatedFilmFile {
+    /// Oil striations filling the fraction of the gap that carries the flow entering the zone (default).
+    #[default]
+    Striated,
+    /// Full film everywhere, as the thesis assumes.
+    FullFilm,
+}
+
+/// `[thermal]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct ThermalFile {
+    /// `isothermal` (default) or `thd`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model: Option<ThermalModelKind>,
+    /// Film–pad exchange: `bc1` (default), `bc2`, `bc3`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_film_bc: Option<PadFilmBcFile>,
+    /// Exchange coefficient H_oil-pad for `bc2` (required there).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub h_oil_pad_w_per_m2_k: Option<f64>,
+    /// Free-convection coefficient H∞ on the pads' free faces (default 100).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub convection_w_per_m2_k: Option<f64>,
+    /// Temperature T∞ around the pads (default: the supply temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ambient_temperature_c: Option<f64>,
+    /// Pad material thermal conductivity (default 45, steel).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_conductivity_w_per_m_k: Option<f64>,
+    /// Hot-oil carry-over λ in the groove mixing balance (default 0.8).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub carry_over: Option<f64>,
+    /// Given leading-edge oil temperature (else from the groove mixing balance).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inlet_temperature_c: Option<f64>,
+    /// Given journal temperature (else from zero net heat flux to the journal).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub journal_temperature_c: Option<f64>,
+    /// Cavitated zones: `striated` (default) or `full_film`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cavitated_film: Option<CavitatedFilmFile>,
 }

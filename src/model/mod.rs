@@ -8,7 +8,10 @@ pub mod file;
 pub mod load;
 pub mod resolve;
 
-pub use case::{Bearing, Case, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadKind, Physics, ViscosityLaw};
+pub use case::{
+    Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics,
+    Thermal, ThermalModelKind, ViscosityLaw,
+};
 pub use error::CaseError;
 pub use file::CaseFile;
 pub use load::{load_case, parse_case_file};

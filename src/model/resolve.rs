@@ -7,10 +7,10 @@
 use std::f64::consts::{PI, TAU};
 
 use super::case::{
-    Bearing, Case, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadKind, Physics, ViscosityLaw,
+    Bearing, Case, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ViscosityLaw,
 };
 use super::error::{CaseError, Range};
-use super::file::{CaseFile, OneOrMany, PadFile, PadKindFile};
+use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
 
 const MM: f64 = 1e-3;
 const UM: f64 = 1e-6;
@@ -34,6 +34,7 @@ impl CaseFile {
             None => 0.01 * cb,
         };
         let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown };
+        let thermal = resolve_thermal(self, &operating)?;
         Ok(Case {
             title: self.title.clone().unwrap_or_default(),
             bearing,
@@ -41,6 +42,7 @@ impl CaseFile {
             operating,
             mesh,
             physics,
+            thermal,
         })
     }
 }
@@ -508,6 +510,7 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     let nx = count("mesh.circumferential_elements", m.circumferential_elements, nx0, 4, 2000)?;
     let nz = count("mesh.axial_elements", m.axial_elements, nz0, 2, 1000)?;
     let no = count("mesh.orifice_elements", m.orifice_elements, no0, 2, 64)?;
+    let nr = count("mesh.pad_radial_elements", m.pad_radial_elements, fidelity.pad_radial_elements(), 1, 200)?;
     let all_mid = bearing.pads.iter().flat_map(|p| &p.orifices).all(|o| o.axial_m.abs() < 1e-12);
     let half = match m.half_model {
         Some(true) if !all_mid => {
@@ -523,5 +526,35 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
             allowed: "an even number with the half model".into(),
         });
     }
-    Ok(MeshSpec { fidelity, circumferential_elements: nx, axial_elements: nz, orifice_elements: no, half_model: half })
+    Ok(MeshSpec { fidelity, circumferential_elements: nx, axial_elements: nz, orifice_elements: no, half_model: half, pad_radial_elements: nr })
+}
+
+/// `[thermal]`: documented defaults — isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply temperature,
+/// pad conductivity 45 W/(m K) (steel), carry-over λ = 0.8, inlet and journal temperatures computed,
+/// striated cavitated film.
+fn resolve_thermal(file: &CaseFile, operating: &Operating) -> Result<Thermal, CaseError> {
+    let t = &file.thermal;
+    let t_range = Range::closed(-60.0, 400.0);
+    let bc = t.pad_film_bc.unwrap_or_default();
+    let pad_film_bc = match (bc, t.h_oil_pad_w_per_m2_k) {
+        (PadFilmBcFile::Bc2, Some(h)) => PadFilmBc::Bc2 { h_w_per_m2_k: Range::positive(1e8).check("thermal.h_oil_pad_w_per_m2_k", h)? },
+        (PadFilmBcFile::Bc2, None) => {
+            return Err(missing("thermal.h_oil_pad_w_per_m2_k", "film–pad exchange coefficient for pad_film_bc = \"bc2\", W/(m² K)"))
+        }
+        (_, Some(_)) => return Err(inconsistent("thermal.h_oil_pad_w_per_m2_k", "only used with pad_film_bc = \"bc2\"")),
+        (PadFilmBcFile::Bc1, None) => PadFilmBc::Bc1,
+        (PadFilmBcFile::Bc3, None) => PadFilmBc::Bc3,
+    };
+    let opt_t = |key: &str, v: Option<f64>| -> Result<Option<f64>, CaseError> { v.map(|x| t_range.check(key, x)).transpose() };
+    Ok(Thermal {
+        model: t.model.unwrap_or_default(),
+        pad_film_bc,
+        convection_w_per_m2_k: Range::closed(0.0, 1e6).check("thermal.convection_w_per_m2_k", t.convection_w_per_m2_k.unwrap_or(100.0))?,
+        ambient_temperature_c: opt_t("thermal.ambient_temperature_c", t.ambient_temperature_c)?.unwrap_or(operating.supply_temperature_c),
+        pad_conductivity_w_per_m_k: Range::positive(1e4).check("thermal.pad_conductivity_w_per_m_k", t.pad_conductivity_w_per_m_k.unwrap_or(45.0))?,
+        carry_over: Range::closed(0.0, 1.0).check("thermal.carry_over", t.carry_over.unwrap_or(0.8))?,
+        inlet_temperature_c: opt_t("thermal.inlet_temperature_c", t.inlet_temperature_c)?,
+        journal_temperature_c: opt_t("thermal.journal_temperature_c", t.journal_temperature_c)?,
+        cavitated_film: t.cavitated_film.unwrap_or_default(),
+    })
 }

@@ -1,0 +1,58 @@
+//! Fillon, Bligoud & Frêne, "Experimental study of tilting-pad journal bearings — comparison with
+//! theoretical thermoelastohydrodynamic results", ASME J. Tribology 114 (1992) — bearing A (validation.md §3),
+//! as modelled in the thesis' Publication 3 (Table 1; model.md §13): four pads, load between pads, 4000 rpm,
+//! 10 kN. Measured maximum pad surface temperature 76.5 °C; Fillon's TEHD model 72.9 °C. Publication 3 computes
+//! the shaft temperature as the mean film temperature and reports about 52 °C.
+//!
+//! The case file holds the published thermal model (BC1, H∞ 100, pad κ 45, carry-over 0.85); nothing here is
+//! adjusted to the measurement.
+
+mod common;
+
+use tiltpad::bearing::Solution;
+
+fn thd(set: &[&str]) -> Solution {
+    let s = common::solve("fillon-a.toml", set);
+    let t = s.thermal.as_ref().expect("fillon-a.toml is a THD case");
+    assert!(t.report.converged, "{:?}", t.report);
+    assert!(t.energy_balance_closure.abs() < 0.01, "energy balance closure {:.2e}", t.energy_balance_closure);
+    s
+}
+
+fn pad_max(s: &Solution) -> f64 {
+    s.thermal.as_ref().and_then(|t| t.t_max_pad_c).expect("pad temperatures")
+}
+
+/// Not met (reported in docs/THERMAL.md): the model as published here is THD — rigid pads, no thermal or
+/// elastic deformation — and gives a maximum pad surface temperature about 9 °C below the measurement.
+#[test]
+#[ignore = "not met: the THD model (no pad/journal deformation) gives 67.2 °C vs the measured 76.5 °C (−9.3 °C); \
+            published TEHD models give 72.9 °C"]
+fn fillon_a_max_pad_temperature_within_5_degrees_of_measurement() {
+    let s = thd(&[]);
+    let t = pad_max(&s);
+    assert!((t - 76.5).abs() < 5.0, "max pad surface temperature {t:.1} °C vs measured 76.5 °C");
+}
+
+#[test]
+fn fillon_a_shaft_temperature_as_published() {
+    // Publication 3: the mean film temperature, "in this case equal to 52 degrees Celsius" (BC1 model).
+    let s = thd(&[]);
+    let t = s.thermal.as_ref().unwrap();
+    println!("journal {:.2} °C, film max {:.2} °C, pad max {:.2} °C", t.journal_temperature_c, t.t_max_film_c, pad_max(&s));
+    assert!((t.journal_temperature_c - 52.0).abs() < 1.0, "journal {:.2} °C", t.journal_temperature_c);
+    // BC1: the pad surface takes the film temperature, so the pad's hottest point is the film's.
+    assert!((pad_max(&s) - t.t_max_film_c).abs() < 1e-9);
+}
+
+#[test]
+fn fillon_a_temperatures_rise_with_speed() {
+    let mut last = f64::NEG_INFINITY;
+    for rpm in [1000, 2000, 3000, 4000] {
+        let s = thd(&[&format!("operating.speed_rpm={rpm}")]);
+        let t = pad_max(&s);
+        println!("{rpm} rpm: max pad temperature {t:.2} °C, journal {:.2} °C", s.thermal.as_ref().unwrap().journal_temperature_c);
+        assert!(t > last, "{rpm} rpm: {t:.2} °C after {last:.2} °C");
+        last = t;
+    }
+}
