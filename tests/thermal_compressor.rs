@@ -58,7 +58,10 @@ fn leading_edge_injection_lowers_the_average_film_temperature() {
 #[test]
 fn bc2_and_bc3_close_their_balance_and_the_pad_conducts_what_it_receives() {
     for bc in ["thermal.pad_film_bc=\"bc3\"", "thermal.pad_film_bc=\"bc2\""] {
-        let mut set = vec!["thermal.model=\"thd\"", "mesh.fidelity=\"preview\"", bc];
+        // Standard mesh: on the preview mesh the BC2 loop (H = 4000) cycles at a 1e-2 viscosity change, driven
+        // by the nearly cavitated top pad whose rupture line jumps by a node between outer iterations (the
+        // striated-film oil content it hands to the next pad jumps with it); see docs/THERMAL.md.
+        let mut set = vec!["thermal.model=\"thd\"", "mesh.fidelity=\"standard\"", bc];
         if bc.contains("bc2") {
             set.push("thermal.h_oil_pad_w_per_m2_k=4000");
         }

@@ -234,6 +234,11 @@ fn relative(r: f64, scale: f64) -> f64 {
 /// Newton on ξ around the tilt solve, with the tilt-condensed stiffness; `Q_ξ − k ξ` decreases with ξ.
 fn solve_pad(pm: &mut PadModel, k: usize, journal: [f64; 2], q: &[f64], ctx: &mut Ctx<'_>) -> Result<PadState, FilmError> {
     let floor = 1e-9 * ctx.force_scale;
+    if ctx.op.held_pads.get(k).copied().unwrap_or(false) && !pm.dofs.is_empty() {
+        let local: Vec<f64> = journal.iter().chain(q.iter()).copied().collect();
+        let (forces, lin) = eval_pad(pm, k, &local, true, ctx)?;
+        return Ok(PadState { q: q.to_vec(), forces, lin, unloaded: true, residual: 0.0 });
+    }
     match pm.dofs.as_slice() {
         [] => {
             let (forces, lin) = eval_pad(pm, k, &journal, true, ctx)?;
@@ -319,9 +324,10 @@ fn solve_tilt(pm: &mut PadModel, k: usize, base: &[f64], warm: f64, ctx: &mut Ct
         if rel <= ctx.params.pad_tol && loaded {
             return Ok(state);
         }
-        // Pressure has appeared but the pad carries a vanishing share of the load: its tilt is not
-        // determined by the film, and any tilt in this thin band is as good as another.
-        if loaded && share < 1e-6 && r <= 0.0 {
+        // Pressure has appeared but the pad carries a vanishing share of the load: its tilt is not determined
+        // by the film. Bisection goes on to the onset of pressure, so that the tilt of an unloaded pad is a
+        // deterministic, continuous function of the inputs (an outer thermal loop relies on that).
+        if loaded && share < 1e-6 && r <= 0.0 && (bhi - blo) <= 1e-8 * (hi - lo) {
             return Ok(PadState { unloaded: true, residual: 0.0, ..state });
         }
         if r > 0.0 || !loaded {
@@ -574,8 +580,9 @@ fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -> Result<Ve
         let sc = pad_scales(pm, &forces, floor);
         let residual = q.iter().enumerate().map(|(d, qd)| relative(forces[2 + d] - pm.structural_stiffness[d] * qd, sc[d])).fold(0.0, f64::max);
         let share = forces[0].hypot(forces[1]) / ctx.force_scale;
-        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load).
-        let unloaded = share < 1e-6;
+        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load); a held pad is
+        // treated as unloaded (its coordinates are not solved for).
+        let unloaded = share < 1e-6 || ctx.op.held_pads.get(k).copied().unwrap_or(false);
         states.push(PadState { q, forces, lin, unloaded, residual: if unloaded { 0.0 } else { residual } });
     }
     Ok(states)
@@ -794,6 +801,29 @@ fn scan_along_load(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Can
 /// # Errors
 /// Touchdown, non-convergence, film failures or cancellation.
 pub fn solve_equilibrium(
+    model: &mut BearingModel,
+    op: &OperatingPoint,
+    params: EquilibriumParams,
+    start: Option<&[f64]>,
+    cancel: &dyn Cancel,
+) -> Result<Equilibrium, SolveError> {
+    solve_equilibrium_inner(model, op, params, start, cancel).map_err(|e| match e {
+        // Every method failed with the films last seen close to contact: the load cannot be carried.
+        SolveError::NotConverged { .. } => {
+            let (pad, hmin) = min_film(model);
+            let cb = model.assembled_clearance;
+            if hmin < 0.05 * cb {
+                let e = model.pads.first().map_or(&[0.0, 0.0][..], |p| p.film.coordinates());
+                SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: e[0].hypot(e[1]) / cb }
+            } else {
+                e
+            }
+        }
+        e => e,
+    })
+}
+
+fn solve_equilibrium_inner(
     model: &mut BearingModel,
     op: &OperatingPoint,
     params: EquilibriumParams,

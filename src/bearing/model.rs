@@ -138,6 +138,9 @@ pub struct OperatingPoint {
     pub load: LoadSpec,
     /// Film thickness below which an equilibrium is touchdown [m].
     pub touchdown_film: f64,
+    /// Pads whose coordinates are held at their start values (an unloaded pad's tilt is not determined by
+    /// its film; an outer thermal loop holds it so that the pad does not flip between equivalent states).
+    pub held_pads: Vec<bool>,
 }
 
 impl OperatingPoint {
@@ -156,6 +159,7 @@ impl OperatingPoint {
             cavitation: case.physics.cavitation,
             load: o.load,
             touchdown_film: case.physics.touchdown_film_m,
+            held_pads: vec![false; case.bearing.pads.len()],
         }
     }
 

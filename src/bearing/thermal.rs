@@ -394,6 +394,15 @@ pub fn solve_thd(
         };
         backtracks = 0;
         shares = load_shares(&eq);
+        // An unloaded pad's tilt is not determined by its film: from the first equilibrium in which it is
+        // unloaded it is held for the rest of the loop, so that it cannot flip between equivalent states (each
+        // flip changes its cavitated extent, hence the oil it hands to the next pad's inlet).
+        for (k, p) in eq.pads.iter().enumerate() {
+            if p.unloaded && !op.held_pads[k] && !model.pads[k].dofs.is_empty() {
+                op.held_pads[k] = true;
+                report.warnings.push(format!("pad {k} is unloaded: its tilt is held from outer iteration {}", report.outer_iterations));
+            }
+        }
         if t_ok.is_none() && t_try.is_none() {
             // First (isothermal) equilibrium: decide once which pads are lightly loaded.
             for k in 0..n {

@@ -10,7 +10,7 @@
 //! integral of 1/spacing, so both ends are hit exactly and the spacing varies smoothly.
 
 /// Largest ratio between neighbouring cell sizes in a graded grid.
-pub const GROWTH: f64 = 1.4;
+pub const GROWTH: f64 = 1.25;
 
 /// A zone `[centre − half_width, centre + half_width]` to mesh with spacing `fine`.
 #[derive(Debug, Clone, Copy, PartialEq)]

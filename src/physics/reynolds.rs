@@ -332,6 +332,8 @@ pub struct PadFilm {
     solved_with: Option<Cavitation>,
     extra_h: Option<SampledField>,
     squeeze: Option<SampledField>,
+    /// Coordinates of the current thickness.
+    q: Vec<f64>,
 }
 
 impl PadFilm {
@@ -359,6 +361,7 @@ impl PadFilm {
             solved_with: None,
             extra_h: None,
             squeeze: None,
+            q: Vec::new(),
             geom,
         })
     }
@@ -366,6 +369,12 @@ impl PadFilm {
     /// Adds a thickness field independent of q (thermal growth, elastic deformation); `None` removes it.
     pub fn set_extra_thickness(&mut self, extra: Option<SampledField>) {
         self.extra_h = extra;
+    }
+
+    /// Generalised coordinates of the current film thickness (last [`Self::set_coordinates`]).
+    #[must_use]
+    pub fn coordinates(&self) -> &[f64] {
+        &self.q
     }
 
     /// Sets a squeeze velocity field ∂h/∂t [m/s] (quadrature-point values are used); `None` removes it.
@@ -383,6 +392,8 @@ impl PadFilm {
         if q.iter().any(|v| !v.is_finite()) {
             return Err(FilmError::Input(format!("non-finite coordinates {q:?}")));
         }
+        self.q.clear();
+        self.q.extend_from_slice(q);
         for (e, hq) in self.h.qp.iter_mut().enumerate() {
             for a in 0..4 {
                 let mut h = g.base.qp[e][a];
