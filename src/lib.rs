@@ -17,6 +17,9 @@
 //! - [`mesh`], [`fem`]: pad grids, shape functions and quadrature, sparse assembly and factorisation.
 //! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow).
 //! - [`bearing`]: geometry of the film, equilibrium (Newton), dynamic coefficients, the solve job.
+//! - [`scene`]: results → plain drawables for the workbench (colour fields, flowlines, the bearing outline,
+//!   plot series, result rows, exports); no GUI types, built and tested without the `gui` feature.
+//! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
 //! - [`cli`]: batch runs (`tiltpad solve`, `tiltpad sweep`).
 
 pub mod bearing;
@@ -24,5 +27,7 @@ pub mod fem;
 pub mod mesh;
 pub mod model;
 pub mod physics;
-#[cfg(not(target_arch = "wasm32"))]
+pub mod scene;
 pub mod cli;
+#[cfg(feature = "gui")]
+pub mod app;

@@ -1,0 +1,328 @@
+//! Editor groups for how the bearing runs and is modelled: lubricant, operating point, physics model,
+//! fidelity.
+
+use egui::Ui;
+
+use super::bearing::{pads_with_injection, per_pad_count};
+use super::widgets::{choice_ui, number_ui, optional_ui, per_pad_ui, EditOutput, Num};
+use crate::app::document::Document;
+use crate::model::file::{Cavitation, Fidelity, OneOrMany};
+
+#[allow(clippy::too_many_lines)]
+pub fn lubricant_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
+    let mut out = EditOutput::default();
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num {
+            key: "lubricant.viscosity_pa_s",
+            label: "Viscosity µ1",
+            unit: "Pa·s",
+            range: (0.002, 0.1),
+            decimals: 5,
+            tip: "Dynamic viscosity at the first catalogue temperature (ISO VG32 ≈ 0.028 Pa·s at 40 °C). Pressure and load capacity scale with µ.",
+        },
+        |f| f.lubricant.viscosity_pa_s,
+        |f, v| f.lubricant.viscosity_pa_s = v,
+    ));
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num { key: "lubricant.viscosity_temperature_c", label: "at temperature T1", unit: "°C", range: (20.0, 100.0), decimals: 1, tip: "Temperature of the first viscosity point." },
+        |f| f.lubricant.viscosity_temperature_c,
+        |f, v| f.lubricant.viscosity_temperature_c = v,
+    ));
+    if doc.file().lubricant.viscosity_coefficient_per_k.is_some() {
+        out.merge(number_ui(
+            ui,
+            doc,
+            &Num {
+                key: "lubricant.viscosity_coefficient_per_k",
+                label: "Temperature coefficient η",
+                unit: "1/K",
+                range: (0.0, 0.06),
+                decimals: 4,
+                tip: "µ(T) = µ1 exp(−η (T − T1)): how fast the oil thins with temperature (mineral oils ≈ 0.03 /K).",
+            },
+            |f| f.lubricant.viscosity_coefficient_per_k.unwrap_or(0.0),
+            |f, v| f.lubricant.viscosity_coefficient_per_k = Some(v),
+        ));
+    } else {
+        out.merge(number_ui(
+            ui,
+            doc,
+            &Num { key: "lubricant.viscosity2_pa_s", label: "Viscosity µ2", unit: "Pa·s", range: (0.001, 0.05), decimals: 5, tip: "Second catalogue viscosity point: with the first it fixes the exponential viscosity–temperature law." },
+            |f| f.lubricant.viscosity2_pa_s.unwrap_or(0.0),
+            |f, v| f.lubricant.viscosity2_pa_s = Some(v),
+        ));
+        out.merge(number_ui(
+            ui,
+            doc,
+            &Num { key: "lubricant.viscosity2_temperature_c", label: "at temperature T2", unit: "°C", range: (40.0, 120.0), decimals: 1, tip: "Temperature of the second viscosity point (e.g. 100 °C)." },
+            |f| f.lubricant.viscosity2_temperature_c.unwrap_or(0.0),
+            |f, v| f.lubricant.viscosity2_temperature_c = Some(v),
+        ));
+    }
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num { key: "lubricant.density_kg_per_m3", label: "Density ρ", unit: "kg/m³", range: (800.0, 950.0), decimals: 1, tip: "Oil density (thermal model: heat carried by the flow)." },
+        |f| f.lubricant.density_kg_per_m3,
+        |f, v| f.lubricant.density_kg_per_m3 = v,
+    ));
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num { key: "lubricant.specific_heat_j_per_kg_k", label: "Specific heat c_p", unit: "J/(kg·K)", range: (1700.0, 2200.0), decimals: 0, tip: "Heat capacity of the oil (thermal model)." },
+        |f| f.lubricant.specific_heat_j_per_kg_k,
+        |f, v| f.lubricant.specific_heat_j_per_kg_k = v,
+    ));
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num { key: "lubricant.conductivity_w_per_m_k", label: "Conductivity κ", unit: "W/(m·K)", range: (0.1, 0.16), decimals: 3, tip: "Thermal conductivity of the oil (thermal model)." },
+        |f| f.lubricant.conductivity_w_per_m_k,
+        |f, v| f.lubricant.conductivity_w_per_m_k = v,
+    ));
+    out
+}
+
+/// What fixes the journal position.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum LoadMode {
+    Force,
+    Position,
+}
+
+#[allow(clippy::too_many_lines)]
+pub fn operating_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
+    let mut out = EditOutput::default();
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num {
+            key: "operating.speed_rpm",
+            label: "Speed",
+            unit: "rpm",
+            range: (500.0, 15000.0),
+            decimals: 0,
+            tip: "Journal speed. Faster running drags more oil into the wedge: the journal rises towards the centre (smaller ε), power loss grows about with the square of speed.",
+        },
+        |f| f.operating.speed_rpm,
+        |f, v| f.operating.speed_rpm = v,
+    ));
+    let mode = if doc.file().operating.eccentricity_ratio.is_some() { LoadMode::Position } else { LoadMode::Force };
+    out.merge(choice_ui(
+        ui,
+        doc,
+        "operating.load_n",
+        "Journal position from",
+        "Either give the static load and find where the journal settles, or prescribe the journal position and find the load it carries.",
+        mode,
+        &[(LoadMode::Force, "load (find position)"), (LoadMode::Position, "eccentricity (find load)")],
+        |f, m| match m {
+            LoadMode::Force => {
+                f.operating.eccentricity_ratio = None;
+                f.operating.load_angle_deg = f.operating.eccentricity_angle_deg.take();
+                f.operating.load_n = Some(1000.0);
+            }
+            LoadMode::Position => {
+                f.operating.load_n = None;
+                f.operating.eccentricity_angle_deg = f.operating.load_angle_deg.take();
+                f.operating.eccentricity_ratio = Some(0.3);
+            }
+        },
+    ));
+    match mode {
+        LoadMode::Force => {
+            out.merge(number_ui(
+                ui,
+                doc,
+                &Num { key: "operating.load_n", label: "Load W", unit: "N", range: (0.0, 50000.0), decimals: 1, tip: "Static load on the journal (for example the rotor weight share). Specific loads of 0.5–3 MPa on the projected area L·D are usual." },
+                |f| f.operating.load_n.unwrap_or(0.0),
+                |f, v| f.operating.load_n = Some(v),
+            ));
+            out.merge(optional_ui(
+                ui,
+                doc,
+                &Num { key: "operating.load_angle_deg", label: "Load direction", unit: "°", range: (0.0, 360.0), decimals: 1, tip: "Direction of the load from +x, counter-clockwise: 270° is straight down." },
+                270.0,
+                |f| f.operating.load_angle_deg,
+                |f, v| f.operating.load_angle_deg = v,
+            ));
+        }
+        LoadMode::Position => {
+            out.merge(number_ui(
+                ui,
+                doc,
+                &Num { key: "operating.eccentricity_ratio", label: "Eccentricity ε", unit: "–", range: (0.0, 0.9), decimals: 3, tip: "Prescribed journal displacement divided by the assembled clearance." },
+                |f| f.operating.eccentricity_ratio.unwrap_or(0.0),
+                |f, v| f.operating.eccentricity_ratio = Some(v),
+            ));
+            out.merge(optional_ui(
+                ui,
+                doc,
+                &Num { key: "operating.eccentricity_angle_deg", label: "Displacement direction", unit: "°", range: (0.0, 360.0), decimals: 1, tip: "Direction of the prescribed displacement from +x, counter-clockwise." },
+                270.0,
+                |f| f.operating.eccentricity_angle_deg,
+                |f, v| f.operating.eccentricity_angle_deg = v,
+            ));
+        }
+    }
+    out.merge(number_ui(
+        ui,
+        doc,
+        &Num { key: "operating.supply_temperature_c", label: "Supply temperature", unit: "°C", range: (20.0, 70.0), decimals: 1, tip: "Temperature of the oil fed to the bearing." },
+        |f| f.operating.supply_temperature_c,
+        |f, v| f.operating.supply_temperature_c = v,
+    ));
+    let supply = doc.file().operating.supply_temperature_c;
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &Num {
+            key: "operating.film_temperature_c",
+            label: "Film temperature",
+            unit: "°C",
+            range: (20.0, 120.0),
+            decimals: 1,
+            tip: "The one temperature of the isothermal film (sets its viscosity). Unset: the supply temperature. A few tens of kelvin above supply is more realistic.",
+        },
+        supply,
+        |f| f.operating.film_temperature_c,
+        |f, v| f.operating.film_temperature_c = v,
+    ));
+    out.merge(injection_ui(ui, doc));
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &Num {
+            key: "operating.excitation_ratio",
+            label: "Excitation ratio ω/Ω",
+            unit: "–",
+            range: (0.0, 3.0),
+            decimals: 3,
+            tip: "Frequency at which the pad coordinates are condensed out of the coefficients, relative to the running speed. 1 = synchronous (unbalance response); sub-synchronous values matter for stability.",
+        },
+        1.0,
+        |f| f.operating.excitation_ratio,
+        |f, v| f.operating.excitation_ratio = v,
+    ));
+    out
+}
+
+/// Injection pressure: one for all pads, or one per pad.
+fn injection_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
+    let mut out = EditOutput::default();
+    let n = Num {
+        key: "operating.injection_pressure_bar",
+        label: "Injection pressure",
+        unit: "bar",
+        range: (0.0, 100.0),
+        decimals: 1,
+        tip: "Pressure at the orifice entry (controllable lubrication). 0: the orifice is open to ambient and acts as a sink where the film pressure is higher. High pressure lifts the pad and reverses the film flow upstream of the orifice.",
+    };
+    let per_pad = matches!(doc.file().operating.injection_pressure_bar, Some(OneOrMany::Many(_)));
+    let mut separate = per_pad;
+    ui.label("");
+    if ui.checkbox(&mut separate, "Injection pressure per pad").on_hover_text("Give each pad its own injection pressure (e.g. only the loaded pad injects).").changed() {
+        let count = per_pad_count(doc.file());
+        doc.edit(n.key, false, |f| {
+            f.operating.injection_pressure_bar = Some(if separate {
+                OneOrMany::Many(pads_with_injection(f))
+            } else {
+                OneOrMany::One(pads_with_injection(f).first().copied().unwrap_or(0.0))
+            });
+            if let (true, Some(OneOrMany::Many(v))) = (separate, &mut f.operating.injection_pressure_bar) {
+                v.resize(count, 0.0);
+            }
+        });
+        out.changed = true;
+    }
+    ui.end_row();
+    if separate {
+        let values = pads_with_injection(doc.file());
+        out.merge(per_pad_ui(ui, doc, &n, &values, |f, k, v| {
+            if let Some(OneOrMany::Many(l)) = &mut f.operating.injection_pressure_bar {
+                if let Some(x) = l.get_mut(k) {
+                    *x = v;
+                }
+            }
+        }));
+    } else {
+        out.merge(number_ui(
+            ui,
+            doc,
+            &n,
+            |f| match f.operating.injection_pressure_bar {
+                Some(OneOrMany::One(p)) => p,
+                _ => 0.0,
+            },
+            |f, v| f.operating.injection_pressure_bar = Some(OneOrMany::One(v)),
+        ));
+    }
+    out
+}
+
+pub fn physics_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
+    let mut out = EditOutput::default();
+    let cav = doc.file().physics.cavitation.unwrap_or_default();
+    out.merge(choice_ui(
+        ui,
+        doc,
+        "physics.cavitation",
+        "Cavitation",
+        "Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation).",
+        cav,
+        &[(Cavitation::Reynolds, "Reynolds (Swift–Stieber)"), (Cavitation::Gumbel, "Gümbel (half-Sommerfeld)")],
+        |f, c| f.physics.cavitation = Some(c),
+    ));
+    let cb = doc.file().bearing.assembled_clearance_um;
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &Num { key: "physics.touchdown_film_um", label: "Touchdown film", unit: "µm", range: (0.1, 10.0), decimals: 2, tip: "Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (contact through the surface roughness)." },
+        0.01 * cb,
+        |f| f.physics.touchdown_film_um,
+        |f, v| f.physics.touchdown_film_um = v,
+    ));
+    out
+}
+
+pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
+    let mut out = EditOutput::default();
+    let fid = doc.file().mesh.fidelity.unwrap_or_default();
+    out.merge(choice_ui(
+        ui,
+        doc,
+        "mesh.fidelity",
+        "Mesh fidelity",
+        "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks). Each orifice is refined further.",
+        fid,
+        &[(Fidelity::Preview, "preview"), (Fidelity::Standard, "standard"), (Fidelity::Reference, "reference")],
+        |f, v| f.mesh.fidelity = Some(v),
+    ));
+    let (nx, nz, no) = crate::model::Fidelity::elements(fid);
+    #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    for (key, label, default, get, set) in [
+        (
+            "mesh.circumferential_elements",
+            "Circumferential elements",
+            nx,
+            (|f: &crate::model::CaseFile| f.mesh.circumferential_elements) as fn(&crate::model::CaseFile) -> Option<usize>,
+            (|f: &mut crate::model::CaseFile, v: Option<usize>| f.mesh.circumferential_elements = v) as fn(&mut crate::model::CaseFile, Option<usize>),
+        ),
+        ("mesh.axial_elements", "Axial elements", nz, |f| f.mesh.axial_elements, |f, v| f.mesh.axial_elements = v),
+        ("mesh.orifice_elements", "Elements across an orifice", no, |f| f.mesh.orifice_elements, |f, v| f.mesh.orifice_elements = v),
+    ] {
+        out.merge(optional_ui(
+            ui,
+            doc,
+            &Num { key, label, unit: "", range: (2.0, 200.0), decimals: 0, tip: "Explicit element count, overriding the fidelity level." },
+            default as f64,
+            |f| get(f).map(|v| v as f64),
+            |f, v| set(f, v.map(|x| x.round().max(0.0) as usize)),
+        ));
+    }
+    out
+}

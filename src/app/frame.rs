@@ -1,0 +1,393 @@
+//! One frame of the workbench: menus and shortcuts, panels, the central view, the unsaved-changes guard,
+//! dropped files and exports.
+
+use egui::{Color32, Key, KeyboardShortcut, Modifiers, RichText, Ui};
+
+use super::editor::editor_ui;
+use super::files::{encode_png, FileEvent};
+use super::presets::PRESETS;
+use super::state::{CoefficientAxis, PadChoice, View};
+use super::views::{bearing_view, coefficients_view, field_view, placeholders, results_panel};
+use super::{Pending, Status, WorkbenchApp};
+use crate::scene::field::FieldKind;
+use crate::scene::{export, outline, plots, summary};
+
+const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
+const REDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::Z);
+const REDO_Y: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
+const SAVE: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::S);
+const OPEN: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::O);
+
+impl WorkbenchApp {
+    pub(super) fn frame_ui(&mut self, ui: &mut Ui) {
+        let ctx = ui.ctx().clone();
+        self.take_file_events();
+        self.take_dropped_files(&ctx);
+        self.take_shortcuts(&ctx);
+        self.guard_close(&ctx);
+        self.take_screenshot(&ctx);
+
+        egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
+        let edit = egui::Panel::left("editor")
+            .resizable(true)
+            .default_size(self.persisted.editor_width)
+            .show(ui, |ui| egui::ScrollArea::vertical().id_salt("editor-scroll").show(ui, |ui| editor_ui(ui, &mut self.doc)).inner)
+            .inner;
+        self.dragging = edit.dragging;
+        egui::Panel::right("results").resizable(true).default_size(330.0).show(ui, |ui| self.results_ui(ui));
+        egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
+        self.guard_ui(&ctx);
+        if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
+            let screen = ctx.content_rect();
+            ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("drop"))).text(
+                screen.center(),
+                egui::Align2::CENTER_CENTER,
+                "Drop a case file (.toml) to open it",
+                egui::FontId::proportional(24.0),
+                Color32::WHITE,
+            );
+        }
+        self.drive_solver();
+        if !self.is_idle() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
+    }
+
+    fn menu_ui(&mut self, ui: &mut Ui) {
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button("File", |ui| {
+                if ui.button("Open case…").clicked() {
+                    self.request(Pending::Open);
+                }
+                ui.menu_button("Open preset", |ui| {
+                    for (k, (name, _)) in PRESETS.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            self.request(Pending::Preset(k));
+                        }
+                    }
+                });
+                if ui.button("Save case").clicked() {
+                    self.save(false);
+                }
+                if ui.button("Save case as…").clicked() {
+                    self.save(true);
+                }
+                ui.separator();
+                if ui.button("Export view as PNG…").clicked() {
+                    ui.ctx().send_viewport_cmd(egui::ViewportCommand::Screenshot(self.screenshot_callback(ui.ctx())));
+                }
+                let solution = self.shown.as_ref().map(|s| s.solution.clone());
+                if ui.add_enabled(solution.is_some(), egui::Button::new("Export fields as CSV…")).clicked() {
+                    if let Some(s) = &solution {
+                        self.files.export(&self.export_name("fields", "csv"), "CSV", "csv", export::fields_csv(s).into_bytes());
+                    }
+                }
+                if ui.add_enabled(solution.is_some(), egui::Button::new("Export results as JSON…")).clicked() {
+                    if let Some(s) = &solution {
+                        self.files.export(&self.export_name("results", "json"), "JSON", "json", export::results_json(s).into_bytes());
+                    }
+                }
+            });
+            ui.menu_button("Edit", |ui| {
+                if ui.add_enabled(self.doc.can_undo(), egui::Button::new("Undo")).clicked() {
+                    self.doc.undo();
+                }
+                if ui.add_enabled(self.doc.can_redo(), egui::Button::new("Redo")).clicked() {
+                    self.doc.redo();
+                }
+                ui.checkbox(&mut self.persisted.preview_while_dragging, "Preview fidelity while dragging")
+                    .on_hover_text("Solve on the coarse preview mesh while a value is dragged, at the case's fidelity on release.");
+            });
+            ui.separator();
+            if ui.add_enabled(self.doc.can_undo(), egui::Button::new("⟲ Undo")).on_hover_text("Undo (Ctrl+Z)").clicked() {
+                self.doc.undo();
+            }
+            if ui.add_enabled(self.doc.can_redo(), egui::Button::new("⟳ Redo")).on_hover_text("Redo (Ctrl+Shift+Z)").clicked() {
+                self.doc.redo();
+            }
+            ui.separator();
+            let dirty = if self.doc.is_dirty() { " •" } else { "" };
+            ui.label(RichText::new(format!("{}{dirty}", self.doc.name)).strong()).on_hover_text("Case file (• = unsaved changes)");
+        });
+    }
+
+    fn export_name(&self, what: &str, ext: &str) -> String {
+        let stem = self.doc.name.trim_end_matches(".toml");
+        format!("{stem}-{what}.{ext}")
+    }
+
+    fn status_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            match &self.status {
+                Status::Idle => {
+                    ui.label(RichText::new("✔ Solved").color(Color32::from_rgb(120, 200, 120)));
+                }
+                Status::Solving { stage, fraction } => {
+                    ui.spinner();
+                    let what = stage.map_or("starting".to_string(), |s| format!("{s:?}").to_lowercase());
+                    ui.label(format!("Solving… ({what}{})", if *fraction < 1.0 { format!(" {:.0} %", 100.0 * fraction) } else { String::new() }));
+                }
+                Status::Failed(e) => {
+                    ui.label(RichText::new(format!("✖ Solve failed: {e}")).color(Color32::from_rgb(230, 90, 80)));
+                }
+            }
+            if let Err(e) = self.doc.validation() {
+                ui.separator();
+                ui.label(RichText::new(format!("Invalid case: {e}")).color(Color32::from_rgb(230, 90, 80)));
+            }
+            if let Some(n) = &self.notice {
+                ui.separator();
+                ui.label(n);
+            }
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                if !self.hide_timings {
+                    ui.label(RichText::new(format!("UI {:.1} ms/frame", self.frame_time_s * 1e3)).weak());
+                }
+            });
+        });
+    }
+
+    fn results_ui(&mut self, ui: &mut Ui) {
+        ui.heading("Results");
+        let Some(shown) = &self.shown else {
+            ui.label("No result yet.");
+            return;
+        };
+        if self.result_is_stale() {
+            ui.label(RichText::new("Showing the last valid result: it does not match the edited case.").color(Color32::from_rgb(230, 150, 60)));
+        }
+        let fidelity = format!("{:?}", shown.solution.inputs.mesh.fidelity).to_lowercase();
+        ui.label(RichText::new(format!("{} — {fidelity} mesh", shown.solution.title)).small());
+        let s = summary::summary(&shown.solution);
+        egui::ScrollArea::vertical().id_salt("results-scroll").show(ui, |ui| results_panel::results_panel_ui(ui, &s, self.hide_timings));
+    }
+
+    fn central_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            for v in View::ALL {
+                ui.selectable_value(&mut self.persisted.view, v, v.label());
+            }
+        });
+        ui.separator();
+        self.view_rect = Some(ui.available_rect_before_wrap());
+        let stale = self.result_is_stale();
+        match self.persisted.view {
+            View::Bearing => {
+                let case = self.shown.as_ref().map(|s| s.solution.inputs.clone()).or_else(|| self.doc.validation().as_ref().ok().cloned());
+                if let Some(case) = case {
+                    let o = outline::bearing_outline(&case, self.shown.as_ref().map(|s| s.solution.as_ref()));
+                    bearing_view::bearing_view_ui(ui, &o, stale);
+                }
+            }
+            View::Fields => self.fields_ui(ui),
+            View::Coefficients => self.coefficients_ui(ui),
+            v => placeholders::placeholder_ui(ui, v),
+        }
+    }
+
+    fn fields_ui(&mut self, ui: &mut Ui) {
+        let Some(shown) = self.shown.clone() else {
+            ui.label("Waiting for the first result…");
+            return;
+        };
+        let available = FieldKind::available(&shown.solution);
+        let n_pads = shown.solution.pads.len();
+        ui.horizontal(|ui| {
+            let label = ui.label("Field");
+            egui::ComboBox::from_id_salt("field-kind")
+                .selected_text(self.persisted.field.label())
+                .show_ui(ui, |ui| {
+                    for k in FieldKind::ALL {
+                        let ok = available.contains(&k);
+                        ui.add_enabled_ui(ok, |ui| ui.selectable_value(&mut self.persisted.field, k, k.label()))
+                            .response
+                            .on_disabled_hover_text("Needs the thermal model: not part of this result.")
+                            .on_hover_text(k.meaning());
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            let label = ui.label("Pads");
+            let text = match self.persisted.pads {
+                PadChoice::All => "all side by side".to_string(),
+                PadChoice::One(k) => format!("pad {k}"),
+            };
+            egui::ComboBox::from_id_salt("field-pads")
+                .selected_text(text)
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(&mut self.persisted.pads, PadChoice::All, "all side by side");
+                    for k in 0..n_pads {
+                        ui.selectable_value(&mut self.persisted.pads, PadChoice::One(k), format!("pad {k}"));
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            ui.checkbox(&mut self.persisted.flowlines, "Flowlines")
+                .on_hover_text("Streamlines of the mean film velocity: seeded on the leading edge and around each orifice (a source when injecting, a sink when not); they stop where the film cavitates.");
+        });
+        if let PadChoice::One(k) = self.persisted.pads {
+            if k >= n_pads {
+                self.persisted.pads = PadChoice::All;
+            }
+        }
+        let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
+        field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, kind, self.persisted.pads, self.persisted.flowlines);
+    }
+
+    fn coefficients_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            ui.label("Against");
+            ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::FrequencyRatio, "excitation frequency ratio ω/Ω");
+            ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::Speed, "speed (background sweep)");
+        });
+        let Some(shown) = self.shown.clone() else {
+            ui.label("Waiting for the first result…");
+            return;
+        };
+        let sol = &shown.solution;
+        let plot = match self.persisted.axis {
+            CoefficientAxis::FrequencyRatio => shown.frequency_sweep.as_ref().map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
+            CoefficientAxis::Speed => shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced)))),
+        };
+        match plot {
+            Some(p) => coefficients_view::coefficient_plots_ui(ui, &p),
+            None => {
+                ui.horizontal(|ui| {
+                    ui.spinner();
+                    ui.label("Sweeping in the background…");
+                });
+            }
+        }
+        ui.separator();
+        coefficients_view::matrix_table_ui(ui, &plots::matrix_table(&sol.full));
+    }
+
+    /// Runs an action that replaces the case, asking first when there are unsaved changes.
+    fn request(&mut self, action: Pending) {
+        if self.doc.is_dirty() {
+            self.pending = Some(action);
+        } else {
+            self.perform(action);
+        }
+    }
+
+    fn perform(&mut self, action: Pending) {
+        match action {
+            Pending::Preset(k) => {
+                if let Some((name, text)) = PRESETS.get(k) {
+                    self.load_text(name, None, text);
+                }
+            }
+            Pending::Open => self.files.open_case(),
+            Pending::Replace { name, path, text } => self.load_text(&name, path, &text),
+            Pending::Close => self.allow_close = true,
+        }
+    }
+
+    fn guard_ui(&mut self, ctx: &egui::Context) {
+        let Some(action) = self.pending.clone() else { return };
+        let modal = egui::Modal::new(egui::Id::unique("unsaved")).show(ctx, |ui| {
+            ui.heading("Unsaved changes");
+            ui.label(format!("{} has changes that are not saved. Discard them?", self.doc.name));
+            ui.horizontal(|ui| {
+                if ui.button("Discard changes").clicked() {
+                    self.pending = None;
+                    let close = matches!(action, Pending::Close);
+                    self.perform(action.clone());
+                    if close {
+                        ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                    }
+                }
+                if ui.button("Cancel").clicked() {
+                    self.pending = None;
+                }
+            });
+        });
+        if modal.should_close() {
+            self.pending = None;
+        }
+    }
+
+    fn guard_close(&mut self, ctx: &egui::Context) {
+        if ctx.input(|i| i.viewport().close_requested()) && self.doc.is_dirty() && !self.allow_close {
+            ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
+            self.pending = Some(Pending::Close);
+        }
+    }
+
+    fn save(&mut self, ask: bool) {
+        let path = if ask { None } else { self.doc.path.clone() };
+        let name = if self.doc.name.ends_with(".toml") { self.doc.name.clone() } else { format!("{}.toml", self.doc.name) };
+        self.files.save_case(self.doc.file(), &name, path.as_deref());
+    }
+
+    fn take_shortcuts(&mut self, ctx: &egui::Context) {
+        let (undo, redo, save, open) = ctx.input_mut(|i| {
+            (i.consume_shortcut(&UNDO), i.consume_shortcut(&REDO) || i.consume_shortcut(&REDO_Y), i.consume_shortcut(&SAVE), i.consume_shortcut(&OPEN))
+        });
+        if undo {
+            self.doc.undo();
+        }
+        if redo {
+            self.doc.redo();
+        }
+        if save {
+            self.save(false);
+        }
+        if open {
+            self.request(Pending::Open);
+        }
+    }
+
+    fn take_file_events(&mut self) {
+        for e in self.files.poll() {
+            match e {
+                FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
+                FileEvent::SavedCase { name, path, saved } => {
+                    if &saved == self.doc.file() {
+                        self.doc.mark_saved(name.clone(), path);
+                    }
+                    self.notice = Some(format!("Saved {name}"));
+                }
+                FileEvent::Exported { name } => self.notice = Some(format!("Exported {name}")),
+                FileEvent::Error(e) => self.notice = Some(e),
+            }
+        }
+    }
+
+    fn take_dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        if let Some(f) = dropped.into_iter().next() {
+            self.files.read_dropped(f);
+        }
+    }
+
+    fn screenshot_callback(&mut self, ctx: &egui::Context) -> egui::ScreenshotCallback {
+        let (tx, rx) = std::sync::mpsc::channel();
+        self.screenshot = Some(rx);
+        let ctx = ctx.clone();
+        egui::ScreenshotCallback::new(move |image| {
+            let _ = tx.send(image);
+            ctx.request_repaint();
+        })
+    }
+
+    fn take_screenshot(&mut self, ctx: &egui::Context) {
+        let Some(image) = self.screenshot.as_ref().and_then(|rx| rx.try_recv().ok()) else { return };
+        self.screenshot = None;
+        let ppp = ctx.pixels_per_point();
+        #[allow(clippy::cast_precision_loss)]
+        let whole = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(image.width() as f32, image.height() as f32) / ppp);
+        let region = self.view_rect.map_or(whole, |r| r.intersect(whole));
+        let cropped = if region.is_positive() { image.region(&region, Some(ppp)) } else { (*image).clone() };
+        let rgba: Vec<u8> = cropped.pixels.iter().flat_map(|c| c.to_array()).collect();
+        match encode_png(cropped.width(), cropped.height(), &rgba) {
+            Ok(bytes) => {
+                let name = self.export_name(&self.persisted.view.label().to_lowercase().replace(' ', "-"), "png");
+                self.files.export(&name, "PNG image", "png", bytes);
+            }
+            Err(e) => self.notice = Some(format!("PNG export failed: {e}")),
+        }
+    }
+}
