@@ -100,15 +100,15 @@ impl WorkbenchApp {
                     .on_hover_text("Solve on the coarse preview mesh while a value is dragged, at the case's fidelity on release.");
             });
             ui.separator();
-            if ui.add_enabled(self.doc.can_undo(), egui::Button::new("⟲ Undo")).on_hover_text("Undo (Ctrl+Z)").clicked() {
+            if ui.add_enabled(self.doc.can_undo(), egui::Button::new("Undo")).on_hover_text("Undo (Ctrl+Z)").clicked() {
                 self.doc.undo();
             }
-            if ui.add_enabled(self.doc.can_redo(), egui::Button::new("⟳ Redo")).on_hover_text("Redo (Ctrl+Shift+Z)").clicked() {
+            if ui.add_enabled(self.doc.can_redo(), egui::Button::new("Redo")).on_hover_text("Redo (Ctrl+Shift+Z)").clicked() {
                 self.doc.redo();
             }
             ui.separator();
-            let dirty = if self.doc.is_dirty() { " •" } else { "" };
-            ui.label(RichText::new(format!("{}{dirty}", self.doc.name)).strong()).on_hover_text("Case file (• = unsaved changes)");
+            let dirty = if self.doc.is_dirty() { " *" } else { "" };
+            ui.label(RichText::new(format!("{}{dirty}", self.doc.name)).strong()).on_hover_text("Case file (* = unsaved changes)");
         });
     }
 
@@ -121,7 +121,7 @@ impl WorkbenchApp {
         ui.horizontal(|ui| {
             match &self.status {
                 Status::Idle => {
-                    ui.label(RichText::new("✔ Solved").color(Color32::from_rgb(120, 200, 120)));
+                    ui.label(RichText::new("Solved").color(Color32::from_rgb(120, 200, 120)));
                 }
                 Status::Solving { stage, fraction } => {
                     ui.spinner();
@@ -129,7 +129,7 @@ impl WorkbenchApp {
                     ui.label(format!("Solving… ({what}{})", if *fraction < 1.0 { format!(" {:.0} %", 100.0 * fraction) } else { String::new() }));
                 }
                 Status::Failed(e) => {
-                    ui.label(RichText::new(format!("✖ Solve failed: {e}")).color(Color32::from_rgb(230, 90, 80)));
+                    ui.label(RichText::new(format!("Solve failed: {e}")).color(Color32::from_rgb(230, 90, 80)));
                 }
             }
             if let Err(e) = self.doc.validation() {

@@ -261,6 +261,22 @@ pub fn common_range(maps: &[PadMap]) -> (f64, f64) {
     if lo.is_finite() && hi.is_finite() { (lo, hi) } else { (0.0, 1.0) }
 }
 
+/// Round tick values (1, 2 or 5 × 10ⁿ apart) inside `[lo, hi]`, about `target` of them.
+#[must_use]
+#[allow(clippy::cast_possible_truncation)]
+pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> Vec<f64> {
+    let span = hi - lo;
+    if !(span.is_finite() && span > 0.0) || target == 0 {
+        return if lo.is_finite() { vec![lo] } else { Vec::new() };
+    }
+    let raw = span / target as f64;
+    let decade = 10f64.powf(raw.log10().floor());
+    let step = [1.0, 2.0, 5.0, 10.0].iter().map(|m| m * decade).find(|&st| st >= 0.75 * raw).unwrap_or(10.0 * decade);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last).map(|k| k as f64 * step).collect()
+}
+
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
@@ -321,6 +337,14 @@ pub(crate) mod tests {
         let last = (8 - 1) * 4;
         assert_eq!(&r.rgba[last..last + 3], &expect(0.03 * 15.0 / 16.0, 0.02 - 0.04 / 8.0));
         assert!(r.rgba[last + 1] > 180, "high end is yellow-green: {:?}", &r.rgba[last..last + 3]);
+    }
+
+    #[test]
+    fn ticks_are_round_and_inside() {
+        assert_eq!(nice_ticks(0.0, 1.98, 4), vec![0.0, 0.5, 1.0, 1.5]);
+        let t = nice_ticks(53.87, 181.2, 5);
+        assert_eq!(t, vec![60.0, 80.0, 100.0, 120.0, 140.0, 160.0, 180.0]);
+        assert_eq!(nice_ticks(2.0, 2.0, 4), vec![2.0]);
     }
 
     #[test]

@@ -122,7 +122,7 @@ pub fn bearing_outline(case: &Case, solution: Option<&Solution>) -> BearingOutli
         let back: Vec<Point> = thetas.iter().map(|&t| polar(rho_p(t) + pad.thickness_m, t)).collect();
         let tp = pad.pivot_rad;
         let contact = rho_p(tp) + pad.thickness_m;
-        let base = 0.08 * r;
+        let base = 0.1 * r;
         let half_angle = 0.6 * base / (contact + base);
         let pivot = [polar(contact, tp), polar(contact + base, tp - half_angle), polar(contact + base, tp + half_angle)];
         extent = extent.max(contact + base);

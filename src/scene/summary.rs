@@ -114,7 +114,7 @@ pub fn summary(s: &Solution) -> Summary {
             row("Orifices in", format!("{:.3}", f.orifices_in * M3S_TO_L_MIN), "l/min", "Net flow injected through the orifices (negative: oil leaves through the holes)."),
             row("Trailing edges out", format!("{:.3}", f.trailing_edges_out * M3S_TO_L_MIN), "l/min", "Oil carried out at the trailing edges (partly carried over to the next pad)."),
             row("Sides out", format!("{:.3}", f.sides_out * M3S_TO_L_MIN), "l/min", "Side leakage at the axial ends: this is the flow the supply must replace."),
-            row("Into cavitation", format!("{:.3}", f.to_cavitation * M3S_TO_L_MIN), "l/min", "Flow leaving the full film into cavitated (ruptured) regions."),
+            row("Into cavitation", format!("{:.3}", f.to_cavitation * M3S_TO_L_MIN), "l/min", "Net flow from the full film into cavitated (ruptured) regions; negative where more oil re-enters the full film at reformation than leaves it at rupture."),
             row("Mass balance", format!("{:.1e}", f.mass_balance_error), "–", "(in − out) / throughput of the discrete solution: should be round-off small."),
         ],
     };

@@ -309,7 +309,7 @@ pub fn orifices_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         out.merge(number_ui(
             ui,
             doc,
-            &Num { key: &keys[3], label: "Capillary length l0", unit: "mm", range: (1.0, 20.0), decimals: 3, tip: "Length of the capillary through the pad: its hydraulic resistance ∝ l0/d0⁴ throttles the injection." },
+            &Num { key: &keys[3], label: "Capillary length l0", unit: "mm", range: (1.0, 20.0), decimals: 3, tip: "Length of the capillary through the pad: its hydraulic resistance, proportional to l0/d0⁴, throttles the injection." },
             |f| get(f).map_or(0.0, |o| o.length_mm),
             |f, v| set(f, &|o| o.length_mm = v),
         ));

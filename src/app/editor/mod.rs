@@ -34,7 +34,7 @@ pub fn editor_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         }
     });
     if let Err(e) = doc.validation() {
-        ui.label(RichText::new(format!("⚠ Invalid case — {e}")).color(widgets::ERROR_COLOR))
+        ui.label(RichText::new(format!("Invalid case: {e}")).color(widgets::ERROR_COLOR))
             .on_hover_text("The views keep showing the last valid result until the case is valid again.");
     }
     for (title, group_ui, open) in GROUPS {

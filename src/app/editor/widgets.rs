@@ -63,7 +63,7 @@ pub fn label_ui(ui: &mut Ui, text: &str, tooltip: &str) -> egui::Response {
 pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
     if let Some(e) = doc.error_for(key) {
         ui.label("");
-        ui.label(RichText::new(format!("⚠ {e}")).color(ERROR_COLOR).small());
+        ui.label(RichText::new(format!("{e}")).color(ERROR_COLOR).small());
         ui.end_row();
     }
 }

@@ -62,12 +62,26 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
 /// Draws the cross-section into the available space.
 #[allow(clippy::too_many_lines)]
 pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, stale: bool) {
+    // Scale and colour notes, as text a screen reader finds.
+    ui.label(format!("To scale, except film thickness and journal displacement × {}", outline.exaggeration));
+    ui.horizontal_wrapped(|ui| {
+        if outline.pressure_scale_pa > 0.0 {
+            ui.colored_label(Color32::from_rgb(255, 160, 60), format!("Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)", outline.pressure_scale_pa * 1e-6));
+        }
+        ui.colored_label(H_MIN, "Minimum film thickness of each pad");
+        ui.colored_label(LOAD, "Static load W");
+        if outline.pads.iter().any(|p| p.injecting) {
+            ui.colored_label(INJECTION, "Injecting orifice");
+        }
+        if stale {
+            ui.colored_label(Color32::from_rgb(230, 150, 60), "Showing the last valid result");
+        }
+    });
     let size = ui.available_size();
     let (response, painter) = ui.allocate_painter(size, Sense::hover());
     let rect = response.rect;
     let to_screen = ScreenFromBearing::fit(rect.shrink(24.0), outline.extent_m);
     let map = |pts: &[Point]| -> Vec<Pos2> { pts.iter().map(|&p| to_screen.map(p)).collect() };
-    let text_color = ui.visuals().text_color();
     let font = FontId::proportional(13.0);
 
     // Bearing centre.
@@ -109,7 +123,7 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, stale: bool) {
         edge.push(film[0]);
         painter.add(Shape::line(edge, Stroke::new(1.0, Color32::from_gray(40))));
         for [a, b] in &pad.orifices {
-            let color = if pad.injecting { INJECTION } else { Color32::from_gray(30) };
+            let color = if pad.injecting { INJECTION } else { Color32::from_rgb(60, 55, 50) };
             let (a, b) = ([to_screen.map(a[0]), to_screen.map(a[1])], [to_screen.map(b[0]), to_screen.map(b[1])]);
             painter.add(Shape::convex_polygon(vec![a[0], a[1], b[1], b[0]], color, Stroke::NONE));
         }
@@ -132,21 +146,4 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, stale: bool) {
         painter.text(b + (b - a).normalized() * 14.0, Align2::CENTER_CENTER, format!("W = {w:.0} N"), font.clone(), LOAD);
     }
 
-    // Scale notes.
-    let mut y = rect.top() + 6.0;
-    let mut note = |text: String, color: Color32| {
-        painter.text(Pos2::new(rect.left() + 8.0, y), Align2::LEFT_TOP, text, FontId::proportional(12.0), color);
-        y += 16.0;
-    };
-    note(format!("To scale, except film and journal displacement × {}", outline.exaggeration), text_color);
-    if outline.pressure_scale_pa > 0.0 {
-        note(format!("Mid-plane pressure inside the journal: {:.2} MPa drawn at R/3", outline.pressure_scale_pa * 1e-6), Color32::from_rgb(255, 160, 60));
-    }
-    note("Red: minimum film thickness of each pad".into(), H_MIN);
-    if outline.pads.iter().any(|p| p.injecting) {
-        note("Blue: injecting orifice".into(), INJECTION);
-    }
-    if stale {
-        note("Showing the last valid result".into(), Color32::from_rgb(230, 150, 60));
-    }
 }

@@ -24,12 +24,12 @@ fn plot_ui(ui: &mut Ui, id: &str, title: &str, unit: &str, x_label: &str, series
         .show(ui, |p| {
             for (s, color) in series.iter().zip(COLORS) {
                 p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8));
-                p.points(Points::new(format!("{} points", s.name), s.points.clone()).color(color).radius(2.0));
+                p.points(Points::new(s.name.clone(), s.points.clone()).color(color).radius(2.0));
             }
             if let Some((x, values)) = current {
-                p.vline(VLine::new("case", x).color(Color32::from_gray(150)));
+                p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
                 for (v, color) in values.iter().zip(COLORS) {
-                    p.points(Points::new("case point", vec![[x, *v]]).color(color).shape(MarkerShape::Diamond).radius(6.0));
+                    p.points(Points::new("this case", vec![[x, *v]]).color(color).shape(MarkerShape::Diamond).radius(6.0));
                 }
             }
         });

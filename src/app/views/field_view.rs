@@ -7,12 +7,13 @@
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use egui::{Align2, Color32, ColorImage, FontId, Pos2, Rect, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
+use egui::{Align2, Color32, RichText, ColorImage, FontId, Pos2, Rect, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
 
 use crate::app::state::PadChoice;
 use crate::bearing::Solution;
-use crate::scene::field::{common_range, FieldKind, PadMap};
+use crate::scene::field::{common_range, nice_ticks, FieldKind, PadMap};
 use crate::scene::flowlines::{orifice_sites, pad_flowlines, Flowline, FlowlineParams};
+use crate::scene::summary::sig4;
 
 /// Texture width and height of a rasterised pad.
 const RASTER: (usize, usize) = (240, 160);
@@ -93,31 +94,22 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         PadChoice::All => maps.iter().collect(),
         PadChoice::One(k) => maps.iter().filter(|m| m.pad == k).collect(),
     };
+    ui.label(RichText::new("Rotation: left to right (s along the arc from the leading edge; z axial, +L/2 at the top)").small());
     let full = ui.available_rect_before_wrap();
     // The painted area; the readout is a real label below it (readable by screen readers and tests).
-    let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, 28.0));
-    let legend_w = 90.0;
-    let gap = 14.0;
-    let area = Rect::from_min_max(avail.min + Vec2::new(8.0, 40.0), avail.max - Vec2::new(legend_w, 24.0));
-    #[allow(clippy::cast_possible_truncation)]
-    let total_s: f32 = shown.iter().map(|m| m.arc_length_m() as f32).sum();
-    #[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss)]
-    let len = shown.iter().map(|m| m.length_m() as f32).fold(0.0, f32::max);
-    #[allow(clippy::cast_precision_loss)]
-    let gaps = gap * (shown.len().saturating_sub(1)) as f32;
-    let ppm = ((area.width() - gaps) / total_s).min(area.height() / len).max(1.0);
+    let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, 48.0));
+    let legend_w = 100.0;
+    let gap = 16.0;
+    let area = Rect::from_min_max(avail.min + Vec2::new(8.0, 22.0), avail.max - Vec2::new(legend_w, 24.0));
+    let rects = pack(area, &shown, gap);
     let response = ui.allocate_rect(avail, Sense::hover());
     let painter = ui.painter_at(avail);
     let text = ui.visuals().text_color();
     let small = FontId::proportional(11.0);
-    painter.text(avail.left_top() + Vec2::new(8.0, 4.0), Align2::LEFT_TOP, "rotation →   (s: along the arc from the leading edge; z: axial, +L/2 at the top)", small.clone(), text);
 
-    let mut x = area.left();
     let mut readout = None;
-    for map in shown {
-        #[allow(clippy::cast_possible_truncation)]
-        let rect = Rect::from_min_size(Pos2::new(x, area.top()), Vec2::new(ppm * map.arc_length_m() as f32, ppm * map.length_m() as f32));
-        x = rect.right() + gap;
+    let ppm = rects.first().map_or(1.0, |(r, m)| f64::from(r.width()) / m.arc_length_m());
+    for &(rect, map) in &rects {
         let tex = cache.textures.entry((kind, map.pad)).or_insert_with(|| {
             let r = map.raster(RASTER.0, RASTER.1, lo, hi);
             let image = ColorImage::from_rgba_unmultiplied([r.width, r.height], &r.rgba);
@@ -128,7 +120,7 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         let frame = ScreenFromPad { rect, s_len: map.arc_length_m(), z0: map.z_m[0], z_len: map.length_m() };
         for o in orifice_sites(solution, map.pad) {
             #[allow(clippy::cast_possible_truncation)]
-            let r = (o.radius_m * f64::from(ppm)) as f32;
+            let r = (o.radius_m * ppm) as f32;
             let color = if o.flow_m3_per_s > 0.0 { Color32::from_rgb(70, 160, 255) } else { Color32::WHITE };
             painter.circle_stroke(frame.map([o.s_m, o.z_m]), r, Stroke::new(1.5, color));
         }
@@ -138,17 +130,18 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
             }
         }
         painter.text(rect.center_top() - Vec2::new(0.0, 2.0), Align2::CENTER_BOTTOM, format!("Pad {}", map.pad), FontId::proportional(13.0), text);
-        painter.text(rect.left_bottom() + Vec2::new(0.0, 3.0), Align2::LEFT_TOP, format!("{:.0}°", map.theta_deg(0.0)), small.clone(), text);
-        painter.text(rect.right_bottom() + Vec2::new(0.0, 3.0), Align2::RIGHT_TOP, format!("{:.0}°", map.theta_deg(map.arc_length_m())), small.clone(), text);
+        painter.text(rect.left_bottom() + Vec2::new(0.0, 3.0), Align2::LEFT_TOP, format!("{:.0}°", map.theta_deg(0.0).rem_euclid(360.0)), small.clone(), text);
+        painter.text(rect.right_bottom() + Vec2::new(0.0, 3.0), Align2::RIGHT_TOP, format!("{:.0}°", map.theta_deg(map.arc_length_m()).rem_euclid(360.0)), small.clone(), text);
         if let Some(pos) = response.hover_pos().filter(|p| rect.contains(*p)) {
             let [s, z] = frame.unmap(pos);
             if let Some(v) = map.sample(s, z) {
-                readout = Some(Readout { pad: map.pad, theta_deg: map.theta_deg(s), z_mm: z * 1e3, value: v * scale, cavitated: map.cavitated_at(s, z) });
+                readout = Some(Readout { pad: map.pad, theta_deg: map.theta_deg(s).rem_euclid(360.0), z_mm: z * 1e3, value: v * scale, cavitated: map.cavitated_at(s, z) });
                 painter.circle_stroke(pos, 4.0, Stroke::new(1.0, Color32::WHITE));
             }
         }
     }
-    legend(&painter, Rect::from_min_size(Pos2::new(avail.right() - legend_w + 16.0, area.top()), Vec2::new(18.0, area.height().min(ppm * len).max(120.0))), kind, lo, hi);
+    let bottom = rects.iter().map(|(r, _)| r.bottom()).fold(area.top() + 160.0, f32::max);
+    legend(&painter, Rect::from_min_max(Pos2::new(avail.right() - legend_w + 12.0, area.top()), Pos2::new(avail.right() - legend_w + 30.0, bottom)), kind, lo, hi);
     let line = match &readout {
         Some(r) => format!(
             "Pad {}  θ = {:.1}°  z = {:+.1} mm   {} = {:.4} {unit}{}",
@@ -162,7 +155,36 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         None => "Hover over a pad to read the value under the cursor.".into(),
     };
     ui.label(line);
+    ui.label(format!("Colour scale: {} [{unit}] from {} to {} (viridis/inferno: perceptually uniform)", kind.label(), sig4(lo * scale), sig4(hi * scale)));
     readout
+}
+
+/// Lays the pads out to a common scale in the grid (columns × rows) that makes them largest.
+#[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation)]
+fn pack<'m>(area: Rect, maps: &[&'m PadMap], gap: f32) -> Vec<(Rect, &'m PadMap)> {
+    let n = maps.len().max(1);
+    let arc = maps.iter().map(|m| m.arc_length_m()).fold(0.0, f64::max) as f32;
+    let len = maps.iter().map(|m| m.length_m()).fold(0.0, f64::max) as f32;
+    if arc <= 0.0 || len <= 0.0 {
+        return Vec::new();
+    }
+    let label_h = 34.0;
+    let (cols, ppm) = (1..=n)
+        .map(|cols| {
+            let rows = n.div_ceil(cols);
+            let w = (area.width() - gap * (cols - 1) as f32) / (cols as f32 * arc);
+            let h = (area.height() - (label_h + gap) * (rows - 1) as f32) / (rows as f32 * len);
+            (cols, w.min(h))
+        })
+        .fold((1, 0.0_f32), |best, c| if c.1 > best.1 { c } else { best });
+    maps.iter()
+        .enumerate()
+        .map(|(k, m)| {
+            let (col, row) = ((k % cols) as f32, (k / cols) as f32);
+            let min = area.min + Vec2::new(col * (arc * ppm + gap), row * (len * ppm + label_h + gap));
+            (Rect::from_min_size(min, Vec2::new(ppm * m.arc_length_m() as f32, ppm * m.length_m() as f32)), *m)
+        })
+        .collect()
 }
 
 fn draw_flowline(painter: &egui::Painter, frame: &ScreenFromPad, line: &Flowline) {
@@ -199,12 +221,12 @@ fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64
     }
     painter.rect_stroke(rect, 0.0, Stroke::new(1.0, Color32::from_gray(160)), egui::StrokeKind::Outside);
     let color = Color32::from_gray(210);
-    for k in 0..=4 {
-        let t = k as f32 / 4.0;
-        let v = (lo + (hi - lo) * f64::from(t)) * scale;
+    let (lo_d, hi_d) = (lo * scale, hi * scale);
+    for v in nice_ticks(lo_d, hi_d, 5) {
+        let t = if hi_d > lo_d { ((v - lo_d) / (hi_d - lo_d)) as f32 } else { 0.5 };
         let y = rect.bottom() - t * rect.height();
         painter.line_segment([Pos2::new(rect.right(), y), Pos2::new(rect.right() + 4.0, y)], Stroke::new(1.0, color));
-        painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, crate::scene::summary::sig4(v), FontId::proportional(11.0), color);
+        painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, sig4(v), FontId::proportional(11.0), color);
     }
     painter.text(rect.center_top() - Vec2::new(0.0, 6.0), Align2::CENTER_BOTTOM, format!("{} [{unit}]", kind.label()), FontId::proportional(11.0), color);
 }

@@ -42,7 +42,7 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
         ui.label(RichText::new("No solver warnings").weak());
     } else {
         for w in &summary.warnings {
-            ui.label(RichText::new(format!("⚠ {w}")).color(Color32::from_rgb(230, 160, 60)));
+            ui.label(RichText::new(format!("Warning: {w}")).color(Color32::from_rgb(230, 160, 60)));
         }
     }
 }
