@@ -218,3 +218,63 @@ fn an_invalid_value_is_flagged_in_place_and_the_last_result_stays() {
     assert_eq!(h.get_all_by_label_contains("Showing the last valid result").count(), 2, "bearing view and results panel");
     snapshot(&mut h, "editor_invalid_value");
 }
+
+#[test]
+fn opening_a_preset_over_unsaved_changes_asks_first() {
+    let mut h = solved_app(None, |_| {});
+    spin_button(&h, "Load W").set_value_accesskit(2500.0);
+    h.run_steps(2);
+    assert!(h.state().doc.is_dirty());
+    h.get_by_label("File").click();
+    h.run_steps(2);
+    h.get_by_label("Open preset").hover();
+    h.run_steps(2);
+    h.get_by_label("test-rig.toml").click();
+    h.run_steps(2);
+    // The guard holds the preset back until the user decides.
+    h.get_by_label_contains("has changes that are not saved");
+    assert_eq!(h.state().doc.name, "compressor-bearing.toml");
+    h.get_by_label("Cancel").click();
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("has changes that are not saved").is_none());
+    assert_eq!(h.state().doc.file().operating.load_n, Some(2500.0));
+    // Again, and discard this time.
+    h.get_by_label("File").click();
+    h.run_steps(2);
+    h.get_by_label("Open preset").hover();
+    h.run_steps(2);
+    h.get_by_label("test-rig.toml").click();
+    h.run_steps(2);
+    h.get_by_label("Discard changes").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.name, "test-rig.toml");
+    assert!(!h.state().doc.is_dirty() && !h.state().doc.can_undo());
+    wait_for_solve(&mut h);
+    assert_eq!(h.state().shown.clone().unwrap().solution.pads.len(), 2);
+}
+
+/// A file dropped on the window, as the native integration hands it over.
+#[derive(Debug)]
+struct Dropped(std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+#[test]
+fn a_dropped_case_file_is_opened_and_solved() {
+    let mut h = solved_app(None, |_| {});
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("cases/fillon-a.toml");
+    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(path)));
+    h.run_steps(3);
+    assert_eq!(h.state().doc.name, "fillon-a.toml");
+    wait_for_solve(&mut h);
+    let s = h.state().shown.clone().unwrap().solution;
+    assert_eq!(s.pads.len(), 4);
+    assert!((s.load_magnitude_n - 10_000.0).abs() < 1e-3 * 10_000.0);
+}

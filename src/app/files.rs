@@ -205,3 +205,45 @@ pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>, S
     writer.finish().map_err(|e| e.to_string())?;
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::parse_case_file;
+
+    #[test]
+    fn saving_a_case_is_atomic_and_round_trips() {
+        let dir = std::env::temp_dir().join(format!("tiltpad-save-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("case.toml");
+        std::fs::write(&path, "old contents").unwrap();
+        let file = parse_case_file(include_str!("../../cases/test-rig.toml"), &[]).unwrap();
+        let files = Files::new(egui::Context::default());
+        files.save_case(&file, "case.toml", Some(&path));
+        match files.poll().as_slice() {
+            [FileEvent::SavedCase { name, path: Some(p), saved }] => {
+                assert_eq!(name, "case.toml");
+                assert_eq!(p, &path);
+                assert_eq!(saved, &file);
+            }
+            other => panic!("{other:?}"),
+        }
+        let back = parse_case_file(&std::fs::read_to_string(&path).unwrap(), &[]).unwrap();
+        assert_eq!(back, file);
+        // Only the target is left: the temporary file was renamed over it.
+        let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, vec![std::ffi::OsString::from("case.toml")]);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn png_encoding_round_trips() {
+        let rgba: Vec<u8> = (0..2 * 3 * 4).map(|i| u8::try_from(i * 10).unwrap()).collect();
+        let bytes = encode_png(2, 3, &rgba).unwrap();
+        let mut reader = png::Decoder::new(std::io::Cursor::new(bytes)).read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        assert_eq!((info.width, info.height), (2, 3));
+        assert_eq!(&buf[..info.buffer_size()], &rgba[..]);
+    }
+}

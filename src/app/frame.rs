@@ -176,8 +176,10 @@ impl WorkbenchApp {
             View::Bearing => {
                 let case = self.shown.as_ref().map(|s| s.solution.inputs.clone()).or_else(|| self.doc.validation().as_ref().ok().cloned());
                 if let Some(case) = case {
-                    let o = outline::bearing_outline(&case, self.shown.as_ref().map(|s| s.solution.as_ref()));
-                    bearing_view::bearing_view_ui(ui, &o, stale);
+                    let solution = self.shown.as_ref().map(|s| s.solution.as_ref());
+                    let o = outline::bearing_outline(&case, solution);
+                    let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
+                    bearing_view::bearing_view_ui(ui, &o, &pads, stale);
                 }
             }
             View::Fields => self.fields_ui(ui),

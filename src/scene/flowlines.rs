@@ -21,6 +21,8 @@
 //! (downstream from a source; upstream from a sink, then reversed so every line points downstream).
 //! A line stops when it leaves the pad, enters the cavitated region (where the full film has ruptured and
 //! the mean velocity of the ruptured film is not modelled), reaches a stagnation point, or enters a sink.
+//! An orifice open to ambient (no injection) holds its surroundings at p = 0, which the Reynolds
+//! condition marks as cavitated: traces drawn towards such a sink end at the rim of that zone.
 
 use crate::bearing::solution::{PadField, Solution};
 

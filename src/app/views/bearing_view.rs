@@ -4,6 +4,7 @@
 use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
 
 use crate::scene::outline::{BearingOutline, Point};
+use crate::scene::summary::PadRow;
 
 const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
 const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
@@ -61,7 +62,7 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
 
 /// Draws the cross-section into the available space.
 #[allow(clippy::too_many_lines)]
-pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, stale: bool) {
+pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], stale: bool) {
     // Scale and colour notes, as text a screen reader finds.
     ui.label(format!("To scale, except film thickness and journal displacement × {}", outline.exaggeration));
     ui.horizontal_wrapped(|ui| {
@@ -138,6 +139,24 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, stale: bool) {
             painter.circle_filled(a, 2.5, H_MIN);
             let away = (b - jc).normalized();
             painter.text(b + away * 30.0, Align2::CENTER_CENTER, format!("{:.1} µm", h * 1e6), FontId::proportional(11.0), H_MIN);
+        }
+    }
+    // Hovering a pad shows its results.
+    if let Some(pos) = response.hover_pos() {
+        let near = outline.pads.iter().map(|p| (p.index, to_screen.map(p.label_at).distance(pos))).min_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((k, _)) = near.filter(|n| n.1 < 40.0) {
+            if let Some(row) = pads.iter().find(|r| r.index == k) {
+                let tilt = row.tilt_mrad.map_or("fixed sector".into(), |t| format!("tilt {t:.4} mrad"));
+                let text = format!(
+                    "Pad {k}{}\n{tilt}\nh_min {:.2} µm, p_max {:.3} MPa\nfilm force {:.0} N, cavitated {:.0} %",
+                    if row.unloaded { " (unloaded)" } else { "" },
+                    row.h_min_um,
+                    row.p_max_mpa,
+                    row.load_n,
+                    row.cavitated_percent
+                );
+                response.clone().on_hover_text_at_pointer(text);
+            }
         }
     }
     if let Some((from, to, w)) = outline.load {
