@@ -9,6 +9,7 @@ use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
 use super::views::{bearing_view, coefficients_view, field_view, placeholders, results_panel};
 use super::{Pending, Status, WorkbenchApp};
+use crate::bearing::pipeline::Stage;
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
 
@@ -125,8 +126,15 @@ impl WorkbenchApp {
                 }
                 Status::Solving { stage, fraction } => {
                     ui.spinner();
-                    let what = stage.map_or("starting".to_string(), |s| format!("{s:?}").to_lowercase());
-                    ui.label(format!("Solving… ({what}{})", if *fraction < 1.0 { format!(" {:.0} %", 100.0 * fraction) } else { String::new() }));
+                    // The stage named is the one that just finished; say what runs now.
+                    let now = match stage {
+                        None => "building the model".to_string(),
+                        Some(Stage::Model) => "equilibrium".into(),
+                        Some(Stage::Equilibrium | Stage::Reduction) => "coefficients and sweeps".into(),
+                        Some(Stage::FrequencySweep) => "speed sweep".into(),
+                        Some(Stage::SpeedSweep) => format!("speed sweep {:.0} %", 100.0 * fraction),
+                    };
+                    ui.label(format!("Solving: {now}…"));
                 }
                 Status::Failed(e) => {
                     ui.label(RichText::new(format!("Solve failed: {e}")).color(Color32::from_rgb(230, 90, 80)));
@@ -142,7 +150,9 @@ impl WorkbenchApp {
             }
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if !self.hide_timings {
-                    ui.label(RichText::new(format!("UI {:.1} ms/frame", self.frame_time_s * 1e3)).weak());
+                    let peak = self.recent_frames_s.iter().copied().fold(0.0, f64::max);
+                    ui.label(RichText::new(format!("UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)", self.frame_time_s * 1e3, peak * 1e3)).weak())
+                        .on_hover_text("Time to build a frame on the UI thread (the solver runs elsewhere).");
                 }
             });
         });

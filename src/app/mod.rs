@@ -86,6 +86,8 @@ pub struct WorkbenchApp {
     pub notice: Option<String>,
     /// Smoothed duration of building a frame [s].
     pub frame_time_s: f64,
+    /// Durations of the last frames [s].
+    pub recent_frames_s: std::collections::VecDeque<f64>,
     /// Replace wall-clock times by dashes (reproducible screenshots).
     pub hide_timings: bool,
     /// Screen rectangle of the central view (for the PNG export).
@@ -125,6 +127,7 @@ impl WorkbenchApp {
             allow_close: false,
             notice: None,
             frame_time_s: 0.0,
+            recent_frames_s: std::collections::VecDeque::with_capacity(120),
             hide_timings: false,
             view_rect: None,
             screenshot: None,
@@ -182,7 +185,12 @@ impl WorkbenchApp {
 
     fn accept(&mut self, outcome: Outcome) {
         let Some(solution) = outcome.solution else { return };
-        let keep_speed = self.shown.as_ref().and_then(|s| s.speed_sweep.clone()).filter(|_| outcome.speed_sweep.is_none());
+        // A speed sweep of the same case survives a first-phase result (the sweep follows in phase two).
+        let keep_speed = self
+            .shown
+            .as_ref()
+            .filter(|s| outcome.speed_sweep.is_none() && s.solution.inputs == solution.inputs)
+            .and_then(|s| s.speed_sweep.clone());
         self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep, speed_sweep: outcome.speed_sweep.or(keep_speed) });
     }
 
@@ -214,6 +222,10 @@ impl eframe::App for WorkbenchApp {
         self.frame_ui(ui);
         let dt = start.elapsed().as_secs_f64();
         self.frame_time_s = if self.frame_time_s == 0.0 { dt } else { 0.9 * self.frame_time_s + 0.1 * dt };
+        if self.recent_frames_s.len() == 120 {
+            self.recent_frames_s.pop_front();
+        }
+        self.recent_frames_s.push_back(dt);
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

@@ -251,3 +251,60 @@ mod web {
         }
     }
 }
+
+#[cfg(all(test, not(target_arch = "wasm32")))]
+mod tests {
+    use super::*;
+    use crate::model::load_case;
+
+    fn request(speed_rpm: f64, sweep: bool) -> Request {
+        let set = [format!("operating.speed_rpm={speed_rpm}"), "mesh.fidelity=\"preview\"".to_string()];
+        let case = load_case(include_str!("../../cases/compressor-bearing.toml"), &set).unwrap().1;
+        Request { case: Some(case), frequency_ratios: Some(vec![0.5, 1.0]), speeds_rpm: sweep.then(|| vec![8000.0, 9000.0]) }
+    }
+
+    /// Polls until the latest job completes; returns every event seen.
+    fn run_until_done(w: &mut Worker) -> Vec<Event> {
+        let start = web_time::Instant::now();
+        let mut seen = Vec::new();
+        while w.busy() {
+            assert!(start.elapsed().as_secs() < 120, "worker did not finish");
+            seen.extend(w.poll(0.01));
+            std::thread::sleep(std::time::Duration::from_millis(2));
+        }
+        seen
+    }
+
+    #[test]
+    fn a_job_reports_progress_then_its_solution_then_the_speed_sweep() {
+        let mut w = Worker::new(egui::Context::default());
+        let job = w.submit(request(9000.0, true));
+        let events = run_until_done(&mut w);
+        assert!(events.iter().any(|e| matches!(e, Event::Progress { stage: Stage::Equilibrium, .. })));
+        let solved: Vec<(bool, bool)> = events
+            .iter()
+            .filter_map(|e| match e {
+                Event::Solved { job: j, outcome, complete } if *j == job => Some((*complete, outcome.speed_sweep.is_some())),
+                _ => None,
+            })
+            .collect();
+        // First the solution without the sweep, then the complete outcome with it.
+        assert_eq!(solved, vec![(false, false), (true, true)]);
+    }
+
+    #[test]
+    fn a_newer_job_supersedes_the_running_one() {
+        let mut w = Worker::new(egui::Context::default());
+        let first = w.submit(request(9000.0, true));
+        let second = w.submit(request(7000.0, false));
+        assert!(second > first);
+        let events = run_until_done(&mut w);
+        // Only the newest job's events reach the app, and its solution is at its speed.
+        assert!(events.iter().all(|e| event_job(e) == second));
+        let speed = events.iter().find_map(|e| match e {
+            Event::Solved { outcome, .. } => outcome.solution.as_ref().map(|s| s.derived.speed_rpm),
+            _ => None,
+        });
+        assert!((speed.unwrap() - 7000.0).abs() < 1e-9);
+    }
+}

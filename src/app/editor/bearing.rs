@@ -183,7 +183,7 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        "bearing.pads.preload",
+        "bearing.pads.clearance_input",
         "Pad geometry given by",
         "The pads' machined clearance Cp may be given as the preload m = 1 − Cb/Cp, as Cp itself or as the pad bore radius Rp = R + Cp.",
         mode,
@@ -249,6 +249,22 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         7800.0,
         |f| f.bearing.pads.density_kg_per_m3,
         |f, v| f.bearing.pads.density_kg_per_m3 = v,
+    ));
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &Num { key: "bearing.pads.youngs_modulus_gpa", label: "Young's modulus E", unit: "GPa", range: (70.0, 220.0), decimals: 1, tip: "Pad material stiffness, for the pad flexibility model (steel 200 GPa, brass about 100 GPa). Not used by rigid pads." },
+        200.0,
+        |f| f.bearing.pads.youngs_modulus_gpa,
+        |f, v| f.bearing.pads.youngs_modulus_gpa = v,
+    ));
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &Num { key: "bearing.pads.poisson_ratio", label: "Poisson ratio ν", unit: "–", range: (0.25, 0.35), decimals: 3, tip: "Pad material Poisson ratio, for the pad flexibility model." },
+        0.3,
+        |f| f.bearing.pads.poisson_ratio,
+        |f, v| f.bearing.pads.poisson_ratio = v,
     ));
     if !doc.file().bearing.pad.is_empty() {
         ui.label("");

@@ -11,6 +11,14 @@ use crate::model::file::{Cavitation, Fidelity, OneOrMany};
 #[allow(clippy::too_many_lines)]
 pub fn lubricant_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let mut out = EditOutput::default();
+    let label = ui.label("Name").on_hover_text("Oil name, for the record (e.g. ISO VG32).");
+    let mut name = doc.file().lubricant.name.clone().unwrap_or_default();
+    if ui.text_edit_singleline(&mut name).labelled_by(label.id).changed() {
+        doc.edit("lubricant.name", true, |f| f.lubricant.name = (!name.is_empty()).then(|| name.clone()));
+        out.changed = true;
+    }
+    ui.label("");
+    ui.end_row();
     out.merge(number_ui(
         ui,
         doc,
@@ -115,7 +123,7 @@ pub fn operating_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        "operating.load_n",
+        "operating.load_mode",
         "Journal position from",
         "Either give the static load and find where the journal settles, or prescribe the journal position and find the load it carries.",
         mode,
@@ -193,6 +201,14 @@ pub fn operating_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         |f, v| f.operating.film_temperature_c = v,
     ));
     out.merge(injection_ui(ui, doc));
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &Num { key: "operating.injection_temperature_c", label: "Injection temperature", unit: "°C", range: (20.0, 80.0), decimals: 1, tip: "Temperature of the injected oil: sets its viscosity in the orifice (and cools the film in the thermal model). Unset: the supply temperature." },
+        supply,
+        |f| f.operating.injection_temperature_c,
+        |f, v| f.operating.injection_temperature_c = v,
+    ));
     out.merge(optional_ui(
         ui,
         doc,
@@ -301,6 +317,33 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         fid,
         &[(Fidelity::Preview, "preview"), (Fidelity::Standard, "standard"), (Fidelity::Reference, "reference")],
         |f, v| f.mesh.fidelity = Some(v),
+    ));
+    #[derive(Clone, Copy, PartialEq)]
+    enum Half {
+        Auto,
+        On,
+        Off,
+    }
+    let half = match doc.file().mesh.half_model {
+        None => Half::Auto,
+        Some(true) => Half::On,
+        Some(false) => Half::Off,
+    };
+    out.merge(choice_ui(
+        ui,
+        doc,
+        "mesh.half_model",
+        "Half model",
+        "Model half the pad length with a symmetry plane (half the cost). Automatic: used when every orifice is on the mid-plane, the only case where the film is symmetric.",
+        half,
+        &[(Half::Auto, "automatic"), (Half::On, "half length"), (Half::Off, "full length")],
+        |f, h| {
+            f.mesh.half_model = match h {
+                Half::Auto => None,
+                Half::On => Some(true),
+                Half::Off => Some(false),
+            }
+        },
     ));
     let (nx, nz, no) = crate::model::Fidelity::elements(fid);
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]

@@ -1,7 +1,8 @@
 //! Editor rows: a label with its physical meaning as tooltip, a value, the unit, and the validation
 //! message in place when the case's first error concerns this key.
 //!
-//! Values are not clamped to their sensible range: a user may type anything, and the validation of the
+//! A typed value is taken when the user presses Enter or leaves the field (not at every keystroke, which
+//! would start a solve for each intermediate number). Values are not clamped to their sensible range: a user may type anything, and the validation of the
 //! case (the same checks as the CLI) says what is wrong, next to the field. The sensible range sets the
 //! drag speed and is shown in the tooltip.
 
@@ -69,7 +70,7 @@ pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
 }
 
 /// Paints an error frame around the next widgets when `key` is invalid.
-fn flag_scope(ui: &mut Ui, invalid: bool) {
+fn flag_invalid_ui(ui: &mut Ui, invalid: bool) {
     if invalid {
         let w = &mut ui.visuals_mut().widgets;
         for s in [&mut w.inactive, &mut w.hovered, &mut w.active] {
@@ -84,8 +85,8 @@ fn drag_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, label: egui::Response, 
     let invalid = doc.error_for(n.key).is_some();
     let r = ui
         .scope(|ui| {
-            flag_scope(ui, invalid);
-            ui.add(DragValue::new(&mut v).speed(n.speed()).max_decimals(n.decimals).min_decimals(0))
+            flag_invalid_ui(ui, invalid);
+            ui.add(DragValue::new(&mut v).speed(n.speed()).max_decimals(n.decimals).min_decimals(0).update_while_editing(false))
         })
         .inner
         .labelled_by(label.id)
@@ -154,8 +155,8 @@ pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, 
     let invalid = doc.error_for(key).is_some();
     let r = ui
         .scope(|ui| {
-            flag_scope(ui, invalid);
-            ui.add(DragValue::new(&mut v).speed(0.05))
+            flag_invalid_ui(ui, invalid);
+            ui.add(DragValue::new(&mut v).speed(0.05).update_while_editing(false))
         })
         .inner
         .labelled_by(label.id)

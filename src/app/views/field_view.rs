@@ -24,7 +24,8 @@ pub struct FieldCache {
     /// Identity of the solution the cache belongs to.
     solution: Option<Arc<Solution>>,
     maps: HashMap<FieldKind, (Vec<PadMap>, (f64, f64))>,
-    textures: HashMap<(FieldKind, usize), TextureHandle>,
+    /// Keyed by field, pad and whether the colour range is the pad's own (one pad shown) or common.
+    textures: HashMap<(FieldKind, usize, bool), TextureHandle>,
     flowlines: HashMap<usize, Vec<Flowline>>,
 }
 
@@ -84,7 +85,7 @@ impl ScreenFromPad {
 #[allow(clippy::too_many_lines)]
 pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solution>, kind: FieldKind, pads: PadChoice, flowlines: bool) -> Option<Readout> {
     cache.sync(solution);
-    let (maps, (lo, hi)) = cache.maps(solution, kind).clone();
+    let (maps, (mut lo, mut hi)) = cache.maps(solution, kind).clone();
     if maps.is_empty() {
         ui.label(format!("{} is not part of this result. {}", kind.label(), kind.meaning()));
         return None;
@@ -94,6 +95,11 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         PadChoice::All => maps.iter().collect(),
         PadChoice::One(k) => maps.iter().filter(|m| m.pad == k).collect(),
     };
+    // One pad alone gets its own colour range (more contrast); side by side, pads share one.
+    let own_range = shown.len() == 1;
+    if let (true, Some(m)) = (own_range, shown.first()) {
+        (lo, hi) = (m.min, m.max);
+    }
     ui.label(RichText::new("Rotation: left to right (s along the arc from the leading edge; z axial, +L/2 at the top)").small());
     let full = ui.available_rect_before_wrap();
     // The painted area; the readout is a real label below it (readable by screen readers and tests).
@@ -110,7 +116,7 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
     let mut readout = None;
     let ppm = rects.first().map_or(1.0, |(r, m)| f64::from(r.width()) / m.arc_length_m());
     for &(rect, map) in &rects {
-        let tex = cache.textures.entry((kind, map.pad)).or_insert_with(|| {
+        let tex = cache.textures.entry((kind, map.pad, own_range)).or_insert_with(|| {
             let r = map.raster(RASTER.0, RASTER.1, lo, hi);
             let image = ColorImage::from_rgba_unmultiplied([r.width, r.height], &r.rgba);
             ui.ctx().load_texture(format!("pad{}-{kind:?}", map.pad), image, TextureOptions::LINEAR)
@@ -141,7 +147,7 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         }
     }
     let bottom = rects.iter().map(|(r, _)| r.bottom()).fold(area.top() + 160.0, f32::max);
-    legend(&painter, Rect::from_min_max(Pos2::new(avail.right() - legend_w + 12.0, area.top()), Pos2::new(avail.right() - legend_w + 30.0, bottom)), kind, lo, hi);
+    legend(&painter, Rect::from_min_max(Pos2::new(avail.right() - legend_w + 12.0, area.top()), Pos2::new(avail.right() - legend_w + 30.0, bottom)), kind, lo, hi, text);
     let line = match &readout {
         Some(r) => format!(
             "Pad {}  θ = {:.1}°  z = {:+.1} mm   {} = {:.4} {unit}{}",
@@ -208,7 +214,7 @@ fn draw_flowline(painter: &egui::Painter, frame: &ScreenFromPad, line: &Flowline
 
 /// A vertical colour bar with ticks in display units.
 #[allow(clippy::cast_possible_truncation)]
-fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64) {
+fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64, text_color: Color32) {
     let (unit, scale) = kind.unit();
     let map = kind.colormap();
     let steps = 64;
@@ -220,7 +226,7 @@ fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64
         painter.rect_filled(band, 0.0, Color32::from_rgb(r, g, b));
     }
     painter.rect_stroke(rect, 0.0, Stroke::new(1.0, Color32::from_gray(160)), egui::StrokeKind::Outside);
-    let color = Color32::from_gray(210);
+    let color = text_color;
     let (lo_d, hi_d) = (lo * scale, hi * scale);
     for v in nice_ticks(lo_d, hi_d, 5) {
         let t = if hi_d > lo_d { ((v - lo_d) / (hi_d - lo_d)) as f32 } else { 0.5 };
