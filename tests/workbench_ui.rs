@@ -219,18 +219,23 @@ fn an_invalid_value_is_flagged_in_place_and_the_last_result_stays() {
     snapshot(&mut h, "editor_invalid_value");
 }
 
+/// Clicks File → Open preset → `name`.
+fn open_preset(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
+    h.get_by_label("File").click();
+    h.run_steps(2);
+    h.get_by_label("Open preset").hover();
+    h.run_steps(2);
+    h.get_by_label(name).click();
+    h.run_steps(2);
+}
+
 #[test]
 fn opening_a_preset_over_unsaved_changes_asks_first() {
     let mut h = solved_app(None, |_| {});
     spin_button(&h, "Load W").set_value_accesskit(2500.0);
     h.run_steps(2);
     assert!(h.state().doc.is_dirty());
-    h.get_by_label("File").click();
-    h.run_steps(2);
-    h.get_by_label("Open preset").hover();
-    h.run_steps(2);
-    h.get_by_label("test-rig.toml").click();
-    h.run_steps(2);
+    open_preset(&mut h, "test-rig.toml");
     // The guard holds the preset back until the user decides.
     h.get_by_label_contains("has changes that are not saved");
     assert_eq!(h.state().doc.name, "compressor-bearing.toml");
@@ -239,12 +244,7 @@ fn opening_a_preset_over_unsaved_changes_asks_first() {
     assert!(h.query_by_label_contains("has changes that are not saved").is_none());
     assert_eq!(h.state().doc.file().operating.load_n, Some(2500.0));
     // Again, and discard this time.
-    h.get_by_label("File").click();
-    h.run_steps(2);
-    h.get_by_label("Open preset").hover();
-    h.run_steps(2);
-    h.get_by_label("test-rig.toml").click();
-    h.run_steps(2);
+    open_preset(&mut h, "test-rig.toml");
     h.get_by_label("Discard changes").click();
     h.run_steps(2);
     assert_eq!(h.state().doc.name, "test-rig.toml");

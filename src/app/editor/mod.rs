@@ -24,15 +24,10 @@ const GROUPS: [(&str, GroupUi, bool); 7] = [
 
 /// Draws the editor; returns what changed.
 pub fn editor_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
-    let mut out = EditOutput::default();
-    ui.horizontal(|ui| {
-        let label = ui.label("Title");
-        let mut title = doc.file().title.clone().unwrap_or_default();
-        if ui.text_edit_singleline(&mut title).labelled_by(label.id).on_hover_text("Free text shown in results and exports").changed() {
-            doc.edit("title", true, |f| f.title = (!title.is_empty()).then(|| title.clone()));
-            out.changed = true;
-        }
-    });
+    let mut out = Grid::new("title")
+        .num_columns(3)
+        .show(ui, |ui| operation::text_ui(ui, doc, "title", "Title", "Free text shown in results and exports.", |f| f.title.clone(), |f, v| f.title = v))
+        .inner;
     if let Err(e) = doc.validation() {
         ui.label(RichText::new(format!("Invalid case: {e}")).color(widgets::ERROR_COLOR))
             .on_hover_text("The views keep showing the last valid result until the case is valid again.");

@@ -35,6 +35,41 @@ impl Num<'_> {
     }
 }
 
+/// A required number of the case file: how it shows and where it lives.
+#[derive(Clone, Copy)]
+pub struct Field {
+    pub num: Num<'static>,
+    pub get: fn(&CaseFile) -> f64,
+    pub set: fn(&mut CaseFile, f64),
+}
+
+/// An optional number of the case file, with the default that applies when it is absent.
+#[derive(Clone, Copy)]
+pub struct OptField {
+    pub num: Num<'static>,
+    pub default: f64,
+    pub get: fn(&CaseFile) -> Option<f64>,
+    pub set: fn(&mut CaseFile, Option<f64>),
+}
+
+/// Rows for a list of required numbers.
+pub fn fields_ui(ui: &mut Ui, doc: &mut Document, fields: &[Field]) -> EditOutput {
+    let mut out = EditOutput::default();
+    for f in fields {
+        out.merge(number_ui(ui, doc, &f.num, f.get, f.set));
+    }
+    out
+}
+
+/// Rows for a list of optional numbers.
+pub fn opt_fields_ui(ui: &mut Ui, doc: &mut Document, fields: &[OptField]) -> EditOutput {
+    let mut out = EditOutput::default();
+    for f in fields {
+        out.merge(optional_ui(ui, doc, &f.num, f.default, f.get, f.set));
+    }
+    out
+}
+
 /// What the editor did this frame.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct EditOutput {
