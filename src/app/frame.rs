@@ -13,6 +13,11 @@ use crate::bearing::pipeline::Stage;
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
 
+#[cfg(not(target_arch = "wasm32"))]
+const FRAME_TIME_MEANING: &str = "Time to build a frame on the UI thread; the solver runs on its own thread.";
+#[cfg(target_arch = "wasm32")]
+const FRAME_TIME_MEANING: &str = "Time to build a frame, including the solver steps run in it (the browser has no threads here): one solver stage may take longer than the per-frame budget.";
+
 const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
 const REDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), Key::Z);
 const REDO_Y: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Y);
@@ -152,7 +157,7 @@ impl WorkbenchApp {
                 if !self.hide_timings {
                     let peak = self.recent_frames_s.iter().copied().fold(0.0, f64::max);
                     ui.label(RichText::new(format!("UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)", self.frame_time_s * 1e3, peak * 1e3)).weak())
-                        .on_hover_text("Time to build a frame on the UI thread (the solver runs elsewhere).");
+                        .on_hover_text(FRAME_TIME_MEANING);
                 }
             });
         });

@@ -77,7 +77,7 @@ const OIL_PROPERTIES: [Field; 3] = [
 pub fn text_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, label: &str, tip: &str, get: fn(&CaseFile) -> Option<String>, set: fn(&mut CaseFile, Option<String>)) -> EditOutput {
     let label = ui.label(label).on_hover_text(tip);
     let mut text = get(doc.file()).unwrap_or_default();
-    let changed = ui.text_edit_singleline(&mut text).labelled_by(label.id).on_hover_text(tip).changed();
+    let changed = ui.add_sized([200.0, 20.0], egui::TextEdit::singleline(&mut text)).labelled_by(label.id).on_hover_text(tip).changed();
     if changed {
         doc.edit(key, true, |f| set(f, (!text.is_empty()).then(|| text.clone())));
     }
@@ -233,8 +233,9 @@ pub fn operating_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         set_load_mode,
     ));
     let (value, direction) = if mode == LoadMode::Force { LOAD } else { POSITION };
-    out.merge(fields_ui(ui, doc, &[value, SUPPLY]));
+    out.merge(fields_ui(ui, doc, &[value]));
     out.merge(opt_fields_ui(ui, doc, &[direction]));
+    out.merge(fields_ui(ui, doc, &[SUPPLY]));
     let supply = doc.file().operating.supply_temperature_c;
     out.merge(opt_fields_ui(ui, doc, &SUPPLY_DEFAULTED.map(|f| OptField { default: supply, ..f })));
     out.merge(injection_ui(ui, doc));

@@ -99,7 +99,10 @@ pub fn label_ui(ui: &mut Ui, text: &str, tooltip: &str) -> egui::Response {
 pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
     if let Some(e) = doc.error_for(key) {
         ui.label("");
-        ui.label(RichText::new(format!("{e}")).color(ERROR_COLOR).small());
+        ui.scope(|ui| {
+            ui.set_max_width(220.0);
+            ui.add(egui::Label::new(RichText::new(format!("{e}")).color(ERROR_COLOR).small()).wrap());
+        });
         ui.end_row();
     }
 }
