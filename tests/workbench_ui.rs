@@ -278,3 +278,36 @@ fn a_dropped_case_file_is_opened_and_solved() {
     assert_eq!(s.pads.len(), 4);
     assert!((s.load_magnitude_n - 10_000.0).abs() < 1e-3 * 10_000.0);
 }
+
+/// eframe's storage, in memory.
+#[derive(Default)]
+struct MemoryStorage(std::collections::HashMap<String, String>);
+
+impl eframe::Storage for MemoryStorage {
+    fn get_string(&self, key: &str) -> Option<String> {
+        self.0.get(key).cloned()
+    }
+    fn set_string(&mut self, key: &str, value: String) {
+        self.0.insert(key.to_string(), value);
+    }
+    fn remove_string(&mut self, key: &str) {
+        self.0.remove(key);
+    }
+    fn flush(&mut self) {}
+}
+
+#[test]
+fn the_edited_case_and_the_view_survive_a_restart() {
+    let mut h = solved_app(None, |p| p.view = View::Fields);
+    spin_button(&h, "Speed").set_value_accesskit(7500.0);
+    h.run_steps(2);
+    let mut storage = MemoryStorage::default();
+    eframe::App::save(h.state_mut(), &mut storage);
+    let restored: Persisted = eframe::get_value(&storage, eframe::APP_KEY).expect("persisted state");
+    assert_eq!(restored.view, View::Fields);
+    let ctx = egui::Context::default();
+    let app = WorkbenchApp::with_state(&ctx, restored);
+    assert_eq!(app.doc.file().operating.speed_rpm, 7500.0);
+    assert_eq!(app.doc.name, "compressor-bearing.toml");
+    assert!(app.doc.is_dirty(), "the restored edit is still unsaved");
+}

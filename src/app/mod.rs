@@ -109,7 +109,11 @@ impl WorkbenchApp {
         let (name, text) = presets::default_preset();
         let restored = persisted.case_toml.as_deref().and_then(|t| parse_case_file(t, &[]).ok());
         let doc = match restored {
-            Some(file) => Document::new(file, persisted.case_name.clone(), false),
+            Some(file) => {
+                let mut doc = Document::new(file, persisted.case_name.clone(), persisted.case_saved);
+                doc.path.clone_from(&persisted.case_path);
+                doc
+            }
             // The shipped default is compiled in and checked by a unit test: not user input.
             None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true),
         };
@@ -231,6 +235,8 @@ impl eframe::App for WorkbenchApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         self.persisted.case_toml = self.doc.file().to_toml().ok();
         self.persisted.case_name.clone_from(&self.doc.name);
+        self.persisted.case_path.clone_from(&self.doc.path);
+        self.persisted.case_saved = !self.doc.is_dirty();
         eframe::set_value(storage, eframe::APP_KEY, &self.persisted);
     }
 }

@@ -57,6 +57,9 @@ pub struct Persisted {
     /// The case as TOML (what the user was editing), and its display name.
     pub case_toml: Option<String>,
     pub case_name: String,
+    /// Where the case was last opened from or saved to (native), and whether it was unchanged since.
+    pub case_path: Option<std::path::PathBuf>,
+    pub case_saved: bool,
     pub view: View,
     pub field: FieldKind,
     pub pads: PadChoice,
@@ -72,6 +75,8 @@ impl Default for Persisted {
         Self {
             case_toml: None,
             case_name: String::new(),
+            case_path: None,
+            case_saved: false,
             view: View::Bearing,
             field: FieldKind::Pressure,
             pads: PadChoice::All,
