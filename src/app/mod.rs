@@ -9,7 +9,9 @@
 //!
 //! Solving is declarative: every frame the app derives the [`Request`] the screen needs from the current
 //! case and view; when it differs from the last one submitted, the worker gets it (cancelling the running
-//! job). The last valid result stays on screen while the case is invalid, solving or failed.
+//! job). While a value is dragged, requests are solved at preview fidelity and coalesced (the running one
+//! finishes, then the latest value is taken), so the picture follows the drag. The last valid result
+//! stays on screen while the case is invalid, solving or failed.
 
 pub mod document;
 pub mod editor;
@@ -167,7 +169,10 @@ impl WorkbenchApp {
     /// Submits the wanted request when it changed, and takes in the worker's events.
     fn drive_solver(&mut self) {
         if let Some(req) = self.wanted_request() {
-            if self.submitted.as_ref() != Some(&req) {
+            // While a value is dragged, let the running (preview) solve finish and then take the latest
+            // value, so results keep coming during the drag; otherwise a newer request cancels at once.
+            let hold = self.dragging && !self.is_idle();
+            if self.submitted.as_ref() != Some(&req) && !hold {
                 self.worker.submit(req.clone());
                 self.submitted = Some(req);
                 self.status = Status::Solving { stage: None, fraction: 0.0 };
