@@ -48,7 +48,6 @@ impl Document {
     }
 
     /// The validated SI case, or the first problem found.
-    #[must_use]
     pub fn validation(&self) -> &Result<Case, CaseError> {
         &self.validation
     }

@@ -14,7 +14,7 @@ pub enum FileEvent {
     /// A case file was read: display name, path (native), text.
     Opened { name: String, path: Option<std::path::PathBuf>, text: String },
     /// The case was saved under this name (and path, on native).
-    SavedCase { name: String, path: Option<std::path::PathBuf>, saved: crate::model::CaseFile },
+    SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile> },
     /// An export was written.
     Exported { name: String },
     Error(String),
@@ -95,14 +95,14 @@ impl Files {
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(p) = path {
             let event = match crate::cli::write_atomic(p, text.as_bytes()) {
-                Ok(()) => FileEvent::SavedCase { name: display_name(p), path: Some(p.to_path_buf()), saved: file.clone() },
+                Ok(()) => FileEvent::SavedCase { name: display_name(p), path: Some(p.to_path_buf()), saved: Box::new(file.clone()) },
                 Err(e) => FileEvent::Error(format!("{e:#}")),
             };
             let _ = self.tx.send(event);
             return;
         }
         let _ = path;
-        let saved = file.clone();
+        let saved = Box::new(file.clone());
         self.save_bytes(name, "Case (TOML)", "toml", text.into_bytes(), move |name, path| FileEvent::SavedCase { name, path, saved });
     }
 
@@ -224,7 +224,7 @@ mod tests {
             [FileEvent::SavedCase { name, path: Some(p), saved }] => {
                 assert_eq!(name, "case.toml");
                 assert_eq!(p, &path);
-                assert_eq!(saved, &file);
+                assert_eq!(**saved, file);
             }
             other => panic!("{other:?}"),
         }

@@ -362,7 +362,7 @@ impl WorkbenchApp {
             match e {
                 FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
                 FileEvent::SavedCase { name, path, saved } => {
-                    if &saved == self.doc.file() {
+                    if *saved == *self.doc.file() {
                         self.doc.mark_saved(name.clone(), path);
                     }
                     self.notice = Some(format!("Saved {name}"));

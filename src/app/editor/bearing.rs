@@ -2,7 +2,7 @@
 
 use egui::Ui;
 
-use super::widgets::{choice_ui, count_ui, error_row_ui, fields_ui, number_ui, opt_fields_ui, per_pad_ui, EditOutput, Field, Num, OptField};
+use super::widgets::{choice_ui, Pick, count_ui, error_row_ui, fields_ui, number_ui, opt_fields_ui, per_pad_ui, EditOutput, Field, Num, OptField};
 use crate::app::document::Document;
 use crate::model::file::{OneOrMany, OrificeFile, PadKindFile};
 use crate::model::CaseFile;
@@ -225,9 +225,7 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        "bearing.pads.kind",
-        "Pad kind",
-        "Tilting pads rotate freely about their pivots (no cross-coupled stiffness from a symmetric bearing); fixed sectors do not tilt (lobed or plain bearings).",
+        Pick { key: "bearing.pads.kind", label: "Pad kind", tip: "Tilting pads rotate freely about their pivots (no cross-coupled stiffness from a symmetric bearing); fixed sectors do not tilt (lobed or plain bearings)." },
         kind,
         &[(PadKindFile::Tilting, "tilting"), (PadKindFile::Fixed, "fixed sector")],
         |f, k| f.bearing.pads.kind = Some(k),
@@ -239,9 +237,7 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        "bearing.pads.clearance_input",
-        "Pad geometry given by",
-        "The pads' machined clearance Cp may be given as the preload m = 1 − Cb/Cp, as Cp itself or as the pad bore radius Rp = R + Cp.",
+        Pick { key: "bearing.pads.clearance_input", label: "Pad geometry given by", tip: "The pads' machined clearance Cp may be given as the preload m = 1 − Cb/Cp, as Cp itself or as the pad bore radius Rp = R + Cp." },
         mode,
         &[(ClearanceMode::Preload, "preload"), (ClearanceMode::Clearance, "pad clearance"), (ClearanceMode::BoreRadius, "pad bore radius")],
         set_clearance_mode,

@@ -4,7 +4,7 @@
 use egui::Ui;
 
 use super::bearing::{pads_with_injection, per_pad_count};
-use super::widgets::{choice_ui, fields_ui, number_ui, opt_fields_ui, optional_ui, per_pad_ui, EditOutput, Field, Num, OptField};
+use super::widgets::{choice_ui, Pick, fields_ui, number_ui, opt_fields_ui, optional_ui, per_pad_ui, EditOutput, Field, Num, OptField};
 use crate::app::document::Document;
 use crate::model::file::{Cavitation, Fidelity, OneOrMany};
 use crate::model::CaseFile;
@@ -225,9 +225,7 @@ pub fn operating_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        "operating.load_mode",
-        "Journal position from",
-        "Either give the static load and find where the journal settles, or prescribe the journal position and find the load it carries.",
+        Pick { key: "operating.load_mode", label: "Journal position from", tip: "Either give the static load and find where the journal settles, or prescribe the journal position and find the load it carries." },
         mode,
         &[(LoadMode::Force, "load (find position)"), (LoadMode::Position, "eccentricity (find load)")],
         set_load_mode,
@@ -290,9 +288,7 @@ pub fn physics_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let mut out = choice_ui(
         ui,
         doc,
-        "physics.cavitation",
-        "Cavitation",
-        "Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation).",
+        Pick { key: "physics.cavitation", label: "Cavitation", tip: "Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation)." },
         cav,
         &[(Cavitation::Reynolds, "Reynolds (Swift–Stieber)"), (Cavitation::Gumbel, "Gümbel (half-Sommerfeld)")],
         |f, c| f.physics.cavitation = Some(c),
@@ -331,9 +327,7 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let mut out = choice_ui(
         ui,
         doc,
-        "mesh.fidelity",
-        "Mesh fidelity",
-        "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks). Each orifice is refined further.",
+        Pick { key: "mesh.fidelity", label: "Mesh fidelity", tip: "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks). Each orifice is refined further." },
         fid,
         &[(Fidelity::Preview, "preview"), (Fidelity::Standard, "standard"), (Fidelity::Reference, "reference")],
         |f, v| f.mesh.fidelity = Some(v),
@@ -346,9 +340,7 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        "mesh.half_model",
-        "Half model",
-        "Model half the pad length with a symmetry plane (half the cost). Automatic: used when every orifice is on the mid-plane, the only case where the film is symmetric.",
+        Pick { key: "mesh.half_model", label: "Half model", tip: "Model half the pad length with a symmetry plane (half the cost). Automatic: used when every orifice is on the mid-plane, the only case where the film is symmetric." },
         half,
         &[(Half::Auto, "automatic"), (Half::On, "half length"), (Half::Off, "full length")],
         |f, h| {

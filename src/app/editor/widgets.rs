@@ -226,8 +226,17 @@ pub fn per_pad_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, values: &[f64], 
     out
 }
 
+/// A choice of the case file: its key (for undo grouping and errors), label and meaning.
+#[derive(Debug, Clone, Copy)]
+pub struct Pick {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub tip: &'static str,
+}
+
 /// A choice among named options.
-pub fn choice_ui<T: PartialEq + Copy>(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, tip: &str, current: T, options: &[(T, &str)], set: impl FnOnce(&mut CaseFile, T)) -> EditOutput {
+pub fn choice_ui<T: PartialEq + Copy>(ui: &mut Ui, doc: &mut Document, pick: Pick, current: T, options: &[(T, &str)], set: impl FnOnce(&mut CaseFile, T)) -> EditOutput {
+    let Pick { key, label: text, tip } = pick;
     let label = label_ui(ui, text, tip);
     let mut chosen = current;
     let name = options.iter().find(|o| o.0 == current).map_or("?", |o| o.1);

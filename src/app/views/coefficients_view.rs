@@ -13,7 +13,16 @@ const COLORS: [Color32; 4] = [
     Color32::from_rgb(204, 121, 167),
 ];
 
-fn plot_ui(ui: &mut Ui, id: &str, title: &str, unit: &str, x_label: &str, series: &[crate::scene::plots::Series], current: Option<(f64, [f64; 4])>, height: f32) {
+/// What a plot shows: its id, title, unit and abscissa.
+struct PlotSpec<'a> {
+    id: &'a str,
+    title: &'a str,
+    unit: &'a str,
+    x_label: &'a str,
+}
+
+fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Series], current: Option<(f64, [f64; 4])>, height: f32) {
+    let PlotSpec { id, title, unit, x_label } = *spec;
     ui.label(RichText::new(format!("{title} [{unit}]")).strong());
     Plot::new(id)
         .height(height)
@@ -38,8 +47,9 @@ fn plot_ui(ui: &mut Ui, id: &str, title: &str, unit: &str, x_label: &str, series
 /// The two plots.
 pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot) {
     let h = ((ui.available_height() - 300.0) / 2.0).max(150.0);
-    plot_ui(ui, "stiffness", "Reduced stiffness K", "MN/m", plot.x_label, &plot.stiffness, plot.current.map(|c| (c.0, c.1)), h);
-    plot_ui(ui, "damping", "Reduced damping C", "kN·s/m", plot.x_label, &plot.damping, plot.current.map(|c| (c.0, c.2)), h);
+    let spec = |id, title, unit| PlotSpec { id, title, unit, x_label: plot.x_label };
+    plot_ui(ui, &spec("stiffness", "Reduced stiffness K", "MN/m"), &plot.stiffness, plot.current.map(|c| (c.0, c.1)), h);
+    plot_ui(ui, &spec("damping", "Reduced damping C", "kN·s/m"), &plot.damping, plot.current.map(|c| (c.0, c.2)), h);
     for (x, why) in &plot.failures {
         ui.label(RichText::new(format!("No solution at {x:.0}: {why}")).color(Color32::from_rgb(230, 120, 60)));
     }
