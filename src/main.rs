@@ -32,7 +32,7 @@ fn run_workbench() -> Result<(), ()> {
         ..Default::default()
     };
     eframe::run_native("tiltpad", options, Box::new(|cc| Ok(Box::new(tiltpad::app::WorkbenchApp::new(cc))))).map_err(|e| {
-        eprintln!("error: cannot open the workbench window: {e}");
+        eprintln!("error: cannot open the workbench window: {e}\n(the command line works without a display: tiltpad solve CASE, tiltpad sweep …)");
     })
 }
 

@@ -15,8 +15,8 @@ pub enum FileEvent {
     Opened { name: String, path: Option<std::path::PathBuf>, text: String },
     /// The case was saved under this name (and path, on native).
     SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile> },
-    /// An export was written.
-    Exported { name: String },
+    /// An export was written (to `path`, when known).
+    Exported { name: String, path: Option<std::path::PathBuf> },
     Error(String),
 }
 
@@ -68,6 +68,10 @@ impl Files {
 
     /// Asks for a case file to open.
     pub fn open_case(&self) {
+        if !dialogs_available() {
+            let _ = self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus): drop a case file on the window instead.".into()));
+            return;
+        }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
         spawn(async move {
             let picked = rfd::AsyncFileDialog::new().add_filter("Case (TOML)", &["toml"]).set_title("Open a case").pick_file().await;
@@ -108,10 +112,21 @@ impl Files {
 
     /// Exports bytes under a suggested name.
     pub fn export(&self, name: &str, filter: &str, extension: &str, bytes: Vec<u8>) {
-        self.save_bytes(name, filter, extension, bytes, |name, _| FileEvent::Exported { name });
+        self.save_bytes(name, filter, extension, bytes, |name, path| FileEvent::Exported { name, path });
     }
 
     fn save_bytes(&self, name: &str, filter: &str, extension: &str, bytes: Vec<u8>, done: impl FnOnce(String, Option<std::path::PathBuf>) -> FileEvent + Send + 'static) {
+        #[cfg(not(target_arch = "wasm32"))]
+        if !dialogs_available() {
+            // Without a dialog, write into the working directory under the suggested name.
+            let path = std::path::PathBuf::from(name);
+            let event = match crate::cli::write_atomic(&path, &bytes) {
+                Ok(()) => done(name.to_string(), std::fs::canonicalize(&path).ok()),
+                Err(e) => FileEvent::Error(format!("{e:#}")),
+            };
+            let _ = self.tx.send(event);
+            return;
+        }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
         let dialog = rfd::AsyncFileDialog::new().add_filter(filter, &[extension]).set_file_name(name);
         spawn(async move {
@@ -122,6 +137,11 @@ impl Files {
             }
         });
     }
+}
+
+/// Native dialogs go through the XDG desktop portal, which needs a session bus; the browser always has one.
+fn dialogs_available() -> bool {
+    cfg!(target_arch = "wasm32") || std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some()
 }
 
 /// Writes through a dialog's handle: atomically on native, as a download on the web.

@@ -362,12 +362,14 @@ impl WorkbenchApp {
             match e {
                 FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
                 FileEvent::SavedCase { name, path, saved } => {
+                    self.notice = Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
                     if *saved == *self.doc.file() {
-                        self.doc.mark_saved(name.clone(), path);
+                        self.doc.mark_saved(name, path);
                     }
-                    self.notice = Some(format!("Saved {name}"));
                 }
-                FileEvent::Exported { name } => self.notice = Some(format!("Exported {name}")),
+                FileEvent::Exported { name, path } => {
+                    self.notice = Some(format!("Exported {}", path.map_or(name, |p| p.display().to_string())));
+                }
                 FileEvent::Error(e) => self.notice = Some(e),
             }
         }
