@@ -182,29 +182,18 @@ impl PadMap {
         self.z_m.last().copied().unwrap_or(0.0) - self.z_m.first().copied().unwrap_or(0.0)
     }
 
-    fn at(&self, i: usize, j: usize) -> f64 {
-        self.values[i * self.z_m.len() + j]
-    }
-
     /// Bilinear interpolation of the nodal values at (s, z) — exactly the finite-element interpolant on
     /// the bilinear elements of the solver; `None` outside the pad.
     #[must_use]
     pub fn sample(&self, s: f64, z: f64) -> Option<f64> {
-        let (i, fs) = locate(&self.s_m, s)?;
-        let (j, fz) = locate(&self.z_m, z)?;
-        let v00 = self.at(i, j);
-        let v10 = self.at(i + 1, j);
-        let v01 = self.at(i, j + 1);
-        let v11 = self.at(i + 1, j + 1);
-        Some((1.0 - fs) * ((1.0 - fz) * v00 + fz * v01) + fs * ((1.0 - fz) * v10 + fz * v11))
+        bilinear(&self.s_m, &self.z_m, |k| self.values[k], s, z)
     }
 
-    /// Whether the element containing (s, z) has a cavitated node.
+    /// Whether (s, z) lies in the cavitated (ruptured) film: the interpolated cavitation indicator is at
+    /// least one half, so the boundary runs midway between full and cavitated nodes.
     #[must_use]
     pub fn cavitated_at(&self, s: f64, z: f64) -> bool {
-        let (Some((i, _)), Some((j, _))) = (locate(&self.s_m, s), locate(&self.z_m, z)) else { return false };
-        let n = self.z_m.len();
-        [(i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)].iter().any(|&(a, b)| self.cavitated[a * n + b])
+        bilinear(&self.s_m, &self.z_m, |k| f64::from(u8::from(self.cavitated[k])), s, z).is_some_and(|c| c >= 0.5)
     }
 
     /// Angle of an arc-length position [deg].
@@ -214,7 +203,7 @@ impl PadMap {
     }
 
     /// Rasterises the map: `width × height` RGBA pixels, row 0 at z = +L/2 (top), column 0 at the leading
-    /// edge (left); values coloured on `[lo, hi]`.
+    /// edge (left); values coloured on `[lo, hi]`; the cavitated film hatched with thin light diagonals.
     #[must_use]
     #[allow(clippy::cast_precision_loss)]
     pub fn raster(&self, width: usize, height: usize, lo: f64, hi: f64) -> Raster {
@@ -226,12 +215,26 @@ impl PadMap {
             for col in 0..width {
                 let s = s_end * (col as f64 + 0.5) / width as f64;
                 let v = self.sample(s, z).unwrap_or(lo);
-                let [r, g, b] = map.rgb_in(v, lo, hi);
+                let [r, g, b] = if (row + col) % HATCH_PERIOD == 0 && self.cavitated_at(s, z) { HATCH } else { map.rgb_in(v, lo, hi) };
                 rgba.extend_from_slice(&[r, g, b, 255]);
             }
         }
         Raster { width, height, rgba }
     }
+}
+
+/// Pixels between the hatch lines of cavitated regions, and their colour.
+pub const HATCH_PERIOD: usize = 6;
+pub const HATCH: [u8; 3] = [200, 200, 200];
+
+/// Bilinear interpolation of nodal values `f(i · z.len() + j)` on the tensor grid `s × z` at (x, y);
+/// `None` outside.
+pub(crate) fn bilinear(s: &[f64], z: &[f64], f: impl Fn(usize) -> f64, x: f64, y: f64) -> Option<f64> {
+    let (i, fs) = locate(s, x)?;
+    let (j, fz) = locate(z, y)?;
+    let n = z.len();
+    let v = |a: usize, b: usize| f(a * n + b);
+    Some((1.0 - fs) * ((1.0 - fz) * v(i, j) + fz * v(i, j + 1)) + fs * ((1.0 - fz) * v(i + 1, j) + fz * v(i + 1, j + 1)))
 }
 
 /// Cell index and fraction of `x` on ascending nodes (the last cell includes its right end).
@@ -337,6 +340,22 @@ pub(crate) mod tests {
         let last = (8 - 1) * 4;
         assert_eq!(&r.rgba[last..last + 3], &expect(0.03 * 15.0 / 16.0, 0.02 - 0.04 / 8.0));
         assert!(r.rgba[last + 1] > 180, "high end is yellow-green: {:?}", &r.rgba[last..last + 3]);
+    }
+
+    #[test]
+    fn the_cavitated_film_is_hatched() {
+        let mut f = half_field();
+        // The trailing-edge column cavitated: its half-cell is hatched, the leading edge is not.
+        for j in 0..3 {
+            f.cavitated[2 * 3 + j] = true;
+        }
+        let m = PadMap::from_field(&f, 0, FieldKind::Pressure, 0.05).unwrap();
+        assert!(m.cavitated_at(0.029, 0.0) && !m.cavitated_at(0.015, 0.0));
+        let r = m.raster(30, 12, m.min, m.max);
+        let px = |row: usize, col: usize| [r.rgba[4 * (row * 30 + col)], r.rgba[4 * (row * 30 + col) + 1], r.rgba[4 * (row * 30 + col) + 2]];
+        let hatched = |c0: usize, c1: usize| (0..12).flat_map(|row| (c0..c1).map(move |col| (row, col))).filter(|&(row, col)| px(row, col) == HATCH).count();
+        assert!(hatched(27, 30) > 0, "the cavitated strip has hatch lines");
+        assert_eq!(hatched(0, 15), 0, "the full film has none");
     }
 
     #[test]

@@ -26,7 +26,7 @@
 
 use crate::bearing::solution::{PadField, Solution};
 
-use super::field::{full_rows, full_values, locate};
+use super::field::{bilinear, full_rows, full_values, locate};
 
 /// Where a flowline starts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -141,11 +141,7 @@ impl VelocityField {
     }
 
     fn interpolate(&self, values: &[f64], s: f64, z: f64) -> Option<f64> {
-        let (i, fs) = locate(&self.s_m, s)?;
-        let (j, fz) = locate(&self.z_m, z)?;
-        let n = self.z_m.len();
-        let v = |a: usize, b: usize| values[a * n + b];
-        Some((1.0 - fs) * ((1.0 - fz) * v(i, j) + fz * v(i, j + 1)) + fs * ((1.0 - fz) * v(i + 1, j) + fz * v(i + 1, j + 1)))
+        bilinear(&self.s_m, &self.z_m, |k| values[k], s, z)
     }
 
     /// Mean velocity at (s, z) [m/s], `None` outside the pad.

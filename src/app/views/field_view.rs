@@ -161,7 +161,12 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         None => "Hover over a pad to read the value under the cursor.".into(),
     };
     ui.label(line);
-    ui.label(format!("Colour scale: {} [{unit}] from {} to {} (viridis/inferno: perceptually uniform)", kind.label(), sig4(lo * scale), sig4(hi * scale)));
+    ui.label(format!(
+        "Colour scale: {} [{unit}] from {} to {} (perceptually uniform). Hatched: cavitated film (ruptured, p = 0).",
+        kind.label(),
+        sig4(lo * scale),
+        sig4(hi * scale)
+    ));
     readout
 }
 
