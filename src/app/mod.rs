@@ -13,6 +13,7 @@
 //! finishes, then the latest value is taken), so the picture follows the drag. The last valid result
 //! stays on screen while the case is invalid, solving or failed.
 
+mod actions;
 pub mod document;
 pub mod editor;
 pub mod files;
