@@ -2,7 +2,9 @@
 //! marked, and the full coefficient matrices as a table.
 
 use egui::{Color32, Grid, RichText, ScrollArea, Ui};
-use egui_plot::{Legend, Line, MarkerShape, Plot, Points, VLine};
+use egui_plot::{GridInput, GridMark, Legend, Line, MarkerShape, Plot, Points, VLine};
+
+use crate::scene::field::nice_ticks;
 
 use crate::scene::plots::{CoefficientPlot, MatrixTable};
 
@@ -30,6 +32,8 @@ fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Seri
         .x_axis_label(x_label)
         .y_axis_label(unit)
         .allow_scroll(false)
+        .x_grid_spacer(round_grid)
+        .y_grid_spacer(round_grid)
         .show(ui, |p| {
             for (s, color) in series.iter().zip(COLORS) {
                 p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8));
@@ -42,6 +46,22 @@ fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Seri
                 }
             }
         });
+}
+
+/// Grid lines at round values (1, 2 or 5 × 10ⁿ apart, about five labelled), with fainter lines at a
+/// fifth of that step: the default decade grid leaves a 0–90 MN/m axis with a single label.
+#[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss, clippy::needless_pass_by_value)]
+fn round_grid(input: GridInput) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    let ticks = nice_ticks(lo, hi, 5);
+    let step = match ticks.as_slice() {
+        [a, b, ..] => b - a,
+        _ => return ticks.into_iter().map(|value| GridMark { value, step_size: (hi - lo).abs().max(1e-12) }).collect(),
+    };
+    let minor = step / 5.0;
+    let (first, last) = ((lo / minor).ceil() as i64, (hi / minor).floor() as i64);
+    let minors = (first..=last).map(|k| k as f64 * minor).filter(|v| ((v / step) - (v / step).round()).abs() > 1e-6);
+    ticks.iter().map(|&value| GridMark { value, step_size: step }).chain(minors.map(|value| GridMark { value, step_size: minor })).collect()
 }
 
 /// The two plots.
