@@ -21,6 +21,9 @@
 //!   film energy, pad heat conduction).
 //! - [`bearing`]: geometry of the film, equilibrium (Newton), the thermal (THD) loop, dynamic coefficients,
 //!   the solve job.
+//! - [`scene`]: results → plain drawables for the workbench (colour fields, flowlines, the bearing outline,
+//!   plot series, result rows, exports); no GUI types, built and tested without the `gui` feature.
+//! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
 //! - [`cli`]: batch runs (`tiltpad solve`, `tiltpad sweep`).
 
 // Library paths that user input reaches never unwrap; index loops are the clearest form for FE kernels.
@@ -32,5 +35,7 @@ pub mod fem;
 pub mod mesh;
 pub mod model;
 pub mod physics;
-#[cfg(not(target_arch = "wasm32"))]
+pub mod scene;
 pub mod cli;
+#[cfg(feature = "gui")]
+pub mod app;

@@ -1,15 +1,43 @@
-//! tiltpad entry point: the CLI (`tiltpad solve`, `tiltpad sweep`).
+//! tiltpad entry point.
+//!
+//! Native: without arguments the workbench opens on the default case; `tiltpad solve …` and
+//! `tiltpad sweep …` run the command-line batch jobs. Web (`wasm32`): the workbench starts on the page's
+//! canvas (see `web/`).
 
-use clap::Parser;
-
+#[cfg(not(target_arch = "wasm32"))]
 fn main() {
+    use clap::Parser;
+
     let cli = tiltpad::cli::Cli::parse();
     let Some(command) = cli.command else {
-        eprintln!("usage: tiltpad solve CASE [--set key=value]... [--json OUT]\n       tiltpad sweep CASE --param KEY --from A --to B --steps N --csv OUT");
-        std::process::exit(2);
+        #[cfg(feature = "gui")]
+        std::process::exit(i32::from(run_workbench().is_err()));
+        #[cfg(not(feature = "gui"))]
+        {
+            eprintln!("usage: tiltpad solve CASE [--set key=value]... [--json OUT]\n       tiltpad sweep CASE --param KEY --from A --to B --steps N --csv OUT");
+            std::process::exit(2);
+        }
     };
     if let Err(e) = tiltpad::cli::run(command) {
         eprintln!("error: {e:#}");
         std::process::exit(1);
     }
+}
+
+/// Opens the workbench window; returns when it is closed.
+#[cfg(all(not(target_arch = "wasm32"), feature = "gui"))]
+fn run_workbench() -> Result<(), ()> {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default().with_title("tiltpad — tilting-pad bearing workbench").with_inner_size([1400.0, 860.0]),
+        ..Default::default()
+    };
+    eframe::run_native("tiltpad", options, Box::new(|cc| Ok(Box::new(tiltpad::app::WorkbenchApp::new(cc))))).map_err(|e| {
+        eprintln!("error: cannot open the workbench window: {e}\n(the command line works without a display: tiltpad solve CASE, tiltpad sweep …)");
+    })
+}
+
+#[cfg(target_arch = "wasm32")]
+fn main() {
+    #[cfg(feature = "gui")]
+    tiltpad::app::web::start();
 }

@@ -629,6 +629,8 @@ fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ct
         Outer::Failed { journal: [u[0], u[1]], residual: (f[0] + w[0]).hypot(f[1] + w[1]) / fs, reason: reason.to_string() }
     };
     let mut u = u0.to_vec();
+    // Unloaded pads already re-examined in this solve.
+    let mut rechecked = vec![false; model.pads.len()];
     let mut states = if cold {
         match solve_all_pads(model, [u[0], u[1]], &u, ctx) {
             Ok((st, _)) => {
@@ -669,8 +671,33 @@ fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ct
         ctx.report.residual_history.push(r[0].hypot(r[1]) / ctx.force_scale);
         let pads_ok = states.iter().all(|s| s.unloaded || s.residual <= ctx.params.pad_tol);
         if r[0].hypot(r[1]) <= tol && pads_ok {
-            let f = states.iter().fold([0.0; 2], |a, p| [a[0] + p.forces[0], a[1] + p.forces[1]]);
-            return Ok(Outer::Converged(u, states, f));
+            // Before accepting, give every unloaded (not held) pad the safeguarded search: a pad without
+            // film pressure is in equilibrium only trivially, and from a warm start (a sweep, an edit) it may
+            // sit in its pressure-free range although a loaded equilibrium exists at this operating point.
+            let mut loaded_again = false;
+            for k in 0..model.pads.len() {
+                let held = ctx.op.held_pads.get(k).copied().unwrap_or(false);
+                if !states[k].unloaded || held || model.pads[k].dofs.is_empty() || rechecked[k] {
+                    continue;
+                }
+                rechecked[k] = true;
+                let (off, nd) = (model.pads[k].offset, model.pads[k].dofs.len());
+                let q: Vec<f64> = u[off..off + nd].to_vec();
+                let st = match solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx) {
+                    Ok(st) => st,
+                    Err(e) => return Err(ctx.film_error(k, e)),
+                };
+                let share = st.forces[0].hypot(st.forces[1]) / ctx.force_scale;
+                u[off..off + nd].copy_from_slice(&st.q);
+                loaded_again |= share >= 1e-6;
+                states[k] = PadState { unloaded: st.unloaded || share < 1e-6, residual: if share < 1e-6 { 0.0 } else { st.residual }, ..st };
+            }
+            let (r2, _) = coupled_residual(model, &u, &states, w, ctx.force_scale);
+            if !loaded_again && r2[0].hypot(r2[1]) <= tol {
+                let f = states.iter().fold([0.0; 2], |a, p| [a[0] + p.forces[0], a[1] + p.forces[1]]);
+                return Ok(Outer::Converged(u, states, f));
+            }
+            continue;
         }
         // Basis: journal directions with stiffness, then the free pad coordinates.
         let kred: Matrix2<f64> = model.pads.iter().zip(&states).map(|(pm, st)| condensed_journal_stiffness(pm, st)).sum();

@@ -1,21 +1,30 @@
 //! Command-line interface for batch runs: `tiltpad solve`, `tiltpad sweep`.
 //!
 //! Engineering units at this edge only; the JSON written by `solve --json` is SI with units in the key names.
+//! The result documents ([`solution_json`], [`summary_text`]) build on every target (the web workbench
+//! exports them too); the commands themselves are native only.
 
 mod bench;
 mod summary;
+#[cfg(not(target_arch = "wasm32"))]
 mod sweep;
 
+#[cfg(not(target_arch = "wasm32"))]
 use std::path::{Path, PathBuf};
 
+#[cfg(not(target_arch = "wasm32"))]
 use anyhow::{Context, Result};
+#[cfg(not(target_arch = "wasm32"))]
 use clap::{Parser, Subcommand};
 
+#[cfg(not(target_arch = "wasm32"))]
 use crate::bearing::solve_case;
+#[cfg(not(target_arch = "wasm32"))]
 use crate::model::{load_case, Case, CaseFile};
 
 pub use summary::{solution_json, summary_text};
 
+#[cfg(not(target_arch = "wasm32"))]
 #[derive(Debug, Parser)]
 #[command(name = "tiltpad", version, about = "Tilting-pad journal bearing workbench (solver CLI)")]
 pub struct Cli {
@@ -23,6 +32,7 @@ pub struct Cli {
     pub command: Option<Command>,
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Solve one case and print a summary.
@@ -64,6 +74,7 @@ pub enum Command {
     },
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Reads and validates a case file with overrides.
 ///
 /// # Errors
@@ -73,6 +84,7 @@ pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
     load_case(&text, set).with_context(|| format!("invalid case {}", path.display()))
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Writes a file atomically (temporary file in the same folder, then rename).
 ///
 /// # Errors
@@ -86,6 +98,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     Ok(())
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 /// Runs a CLI command.
 ///
 /// # Errors

@@ -1,0 +1,271 @@
+//! Editor rows: a label with its physical meaning as tooltip, a value, the unit, and the validation
+//! message in place when the case's first error concerns this key.
+//!
+//! A typed value is taken when the user presses Enter or leaves the field (not at every keystroke, which
+//! would start a solve for each intermediate number). Values are not clamped to their sensible range: a user may type anything, and the validation of the
+//! case (the same checks as the CLI) says what is wrong, next to the field. The sensible range sets the
+//! drag speed and is shown in the tooltip.
+
+use egui::{Color32, DragValue, RichText, Ui};
+
+use crate::app::document::Document;
+use crate::model::CaseFile;
+
+/// A numeric case value as the editor shows it.
+#[derive(Debug, Clone, Copy)]
+pub struct Num<'a> {
+    /// Dotted key as written in the case file.
+    pub key: &'a str,
+    pub label: &'a str,
+    pub unit: &'a str,
+    /// Sensible range (for dragging and the tooltip, not enforced).
+    pub range: (f64, f64),
+    pub decimals: usize,
+    /// Physical meaning.
+    pub tip: &'a str,
+}
+
+impl Num<'_> {
+    fn tooltip(&self) -> String {
+        format!("{}\n\nTypical: {} – {} {}\nCase key: {}", self.tip, self.range.0, self.range.1, self.unit, self.key)
+    }
+
+    fn speed(&self) -> f64 {
+        (self.range.1 - self.range.0) / 400.0
+    }
+}
+
+/// A required number of the case file: how it shows and where it lives.
+#[derive(Clone, Copy)]
+pub struct Field {
+    pub num: Num<'static>,
+    pub get: fn(&CaseFile) -> f64,
+    pub set: fn(&mut CaseFile, f64),
+}
+
+/// An optional number of the case file, with the default that applies when it is absent.
+#[derive(Clone, Copy)]
+pub struct OptField {
+    pub num: Num<'static>,
+    pub default: f64,
+    pub get: fn(&CaseFile) -> Option<f64>,
+    pub set: fn(&mut CaseFile, Option<f64>),
+}
+
+/// Rows for a list of required numbers.
+pub fn fields_ui(ui: &mut Ui, doc: &mut Document, fields: &[Field]) -> EditOutput {
+    let mut out = EditOutput::default();
+    for f in fields {
+        out.merge(number_ui(ui, doc, &f.num, f.get, f.set));
+    }
+    out
+}
+
+/// Rows for a list of optional numbers.
+pub fn opt_fields_ui(ui: &mut Ui, doc: &mut Document, fields: &[OptField]) -> EditOutput {
+    let mut out = EditOutput::default();
+    for f in fields {
+        out.merge(optional_ui(ui, doc, &f.num, f.default, f.get, f.set));
+    }
+    out
+}
+
+/// What the editor did this frame.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct EditOutput {
+    pub changed: bool,
+    /// A value is being dragged (the app may solve at preview fidelity meanwhile).
+    pub dragging: bool,
+    /// A drag ended this frame.
+    pub drag_released: bool,
+}
+
+impl EditOutput {
+    pub fn merge(&mut self, other: Self) {
+        self.changed |= other.changed;
+        self.dragging |= other.dragging;
+        self.drag_released |= other.drag_released;
+    }
+}
+
+pub const ERROR_COLOR: Color32 = Color32::from_rgb(230, 80, 70);
+
+/// The label cell of a row.
+pub fn label_ui(ui: &mut Ui, text: &str, tooltip: &str) -> egui::Response {
+    ui.label(text).on_hover_text(tooltip)
+}
+
+/// The validation message under a row, when the case's error concerns `key`.
+pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
+    if let Some(e) = doc.error_for(key) {
+        ui.label("");
+        ui.scope(|ui| {
+            ui.set_max_width(220.0);
+            ui.add(egui::Label::new(RichText::new(format!("{e}")).color(ERROR_COLOR).small()).wrap());
+        });
+        ui.end_row();
+    }
+}
+
+/// Paints an error frame around the next widgets when `key` is invalid.
+fn flag_invalid_ui(ui: &mut Ui, invalid: bool) {
+    if invalid {
+        let w = &mut ui.visuals_mut().widgets;
+        for s in [&mut w.inactive, &mut w.hovered, &mut w.active] {
+            s.bg_stroke = egui::Stroke::new(1.5, ERROR_COLOR);
+        }
+    }
+}
+
+/// A drag value for `value`, labelled by `label`; returns what happened.
+fn drag_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, label: egui::Response, value: f64, set: impl FnOnce(&mut CaseFile, f64)) -> EditOutput {
+    let mut v = value;
+    let invalid = doc.error_for(n.key).is_some();
+    let r = ui
+        .scope(|ui| {
+            flag_invalid_ui(ui, invalid);
+            ui.add(DragValue::new(&mut v).speed(n.speed()).max_decimals(n.decimals).min_decimals(0).update_while_editing(false))
+        })
+        .inner
+        .labelled_by(label.id)
+        .on_hover_text(n.tooltip());
+    let mut out = EditOutput { dragging: r.dragged(), drag_released: r.drag_stopped(), ..EditOutput::default() };
+    if r.changed() && v.to_bits() != value.to_bits() {
+        let continuing = r.dragged() && !r.drag_started();
+        doc.edit(n.key, continuing, |f| set(f, v));
+        out.changed = true;
+    }
+    if r.drag_stopped() {
+        doc.end_gesture();
+    }
+    out
+}
+
+/// A required number: label, value, unit, and the error in place.
+pub fn number_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, get: impl Fn(&CaseFile) -> f64, set: impl FnOnce(&mut CaseFile, f64)) -> EditOutput {
+    let label = label_ui(ui, n.label, &n.tooltip());
+    let value = get(doc.file());
+    let out = drag_ui(ui, doc, n, label, value, set);
+    ui.label(n.unit);
+    ui.end_row();
+    error_row_ui(ui, doc, n.key);
+    out
+}
+
+/// An optional number: a checkbox gives it a value; unchecked, the documented default applies.
+pub fn optional_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    n: &Num<'_>,
+    default: f64,
+    get: impl Fn(&CaseFile) -> Option<f64>,
+    set: impl Fn(&mut CaseFile, Option<f64>),
+) -> EditOutput {
+    let current = get(doc.file());
+    let mut on = current.is_some();
+    let mut out = EditOutput::default();
+    let label = ui
+        .horizontal(|ui| {
+            if ui.checkbox(&mut on, "").on_hover_text(format!("Give {} explicitly (unchecked: {default} {})", n.label, n.unit)).changed() {
+                let value = on.then(|| current.unwrap_or(default));
+                doc.edit(n.key, false, |f| set(f, value));
+                out.changed = true;
+            }
+            label_ui(ui, n.label, &n.tooltip())
+        })
+        .inner;
+    match get(doc.file()) {
+        Some(v) => out.merge(drag_ui(ui, doc, n, label, v, |f, x| set(f, Some(x)))),
+        None => {
+            let text = absent_meaning(n.key).map_or_else(|| format!("{default} (default)"), |m| format!("{m} (default)"));
+            ui.label(RichText::new(text).weak()).labelled_by(label.id);
+        }
+    }
+    ui.label(n.unit);
+    ui.end_row();
+    error_row_ui(ui, doc, n.key);
+    out
+}
+
+/// What leaving out a key means, for keys whose absence is not a default number.
+fn absent_meaning(key: &str) -> Option<&'static str> {
+    match key {
+        "bearing.pads.pivot_stiffness_n_per_m" => Some("rigid pivot"),
+        "thermal.inlet_temperature_c" => Some("from the groove mixing"),
+        "thermal.journal_temperature_c" => Some("from zero net heat flux"),
+        _ => None,
+    }
+}
+
+/// An integer count (pads, elements).
+pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, tip: &str, value: usize, set: impl FnOnce(&mut CaseFile, usize)) -> EditOutput {
+    let label = label_ui(ui, text, tip);
+    let mut v = value;
+    let invalid = doc.error_for(key).is_some();
+    let r = ui
+        .scope(|ui| {
+            flag_invalid_ui(ui, invalid);
+            ui.add(DragValue::new(&mut v).speed(0.05).update_while_editing(false))
+        })
+        .inner
+        .labelled_by(label.id)
+        .on_hover_text(tip);
+    let mut out = EditOutput { dragging: r.dragged(), drag_released: r.drag_stopped(), ..EditOutput::default() };
+    if v != value {
+        doc.edit(key, r.dragged() && !r.drag_started(), |f| set(f, v));
+        out.changed = true;
+    }
+    ui.label("");
+    ui.end_row();
+    error_row_ui(ui, doc, key);
+    out
+}
+
+/// A list of one number per pad, in a wrapping row of small fields named "pad k".
+pub fn per_pad_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, values: &[f64], set: impl Fn(&mut CaseFile, usize, f64)) -> EditOutput {
+    let mut out = EditOutput::default();
+    label_ui(ui, n.label, &n.tooltip());
+    ui.horizontal_wrapped(|ui| {
+        for (k, &value) in values.iter().enumerate() {
+            let pad_label = ui.label(format!("pad {k}"));
+            out.merge(drag_ui(ui, doc, n, pad_label, value, |f, x| set(f, k, x)));
+        }
+    });
+    ui.label(n.unit);
+    ui.end_row();
+    error_row_ui(ui, doc, n.key);
+    out
+}
+
+/// A choice of the case file: its key (for undo grouping and errors), label and meaning.
+#[derive(Debug, Clone, Copy)]
+pub struct Pick {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub tip: &'static str,
+}
+
+/// A choice among named options.
+pub fn choice_ui<T: PartialEq + Copy>(ui: &mut Ui, doc: &mut Document, pick: Pick, current: T, options: &[(T, &str)], set: impl FnOnce(&mut CaseFile, T)) -> EditOutput {
+    let Pick { key, label: text, tip } = pick;
+    let label = label_ui(ui, text, tip);
+    let mut chosen = current;
+    let name = options.iter().find(|o| o.0 == current).map_or("?", |o| o.1);
+    egui::ComboBox::from_id_salt(key).selected_text(name).show_ui(ui, |ui| {
+        for (value, name) in options {
+            ui.selectable_value(&mut chosen, *value, *name);
+        }
+    })
+    .response
+    .labelled_by(label.id)
+    .on_hover_text(tip);
+    let mut out = EditOutput::default();
+    if chosen != current {
+        doc.edit(key, false, |f| set(f, chosen));
+        out.changed = true;
+    }
+    ui.label("");
+    ui.end_row();
+    error_row_ui(ui, doc, key);
+    out
+}

@@ -1,0 +1,269 @@
+//! Files: open and save case TOML, export the current view (PNG), the fields (CSV) and the results
+//! (JSON), through native dialogs or the browser.
+//!
+//! Dialogs never block the UI: on native they run on a short-lived thread (rfd's blocking dialog), on the
+//! web in a future (rfd's async dialog; saving becomes a download). Their outcome comes back as a
+//! [`FileEvent`] over a channel. Saving on native is atomic: the bytes go to a temporary file in the same
+//! folder, which is then renamed over the target.
+
+use std::sync::mpsc::{channel, Receiver, Sender};
+
+/// What came back from a dialog.
+#[derive(Debug)]
+pub enum FileEvent {
+    /// A case file was read: display name, path (native), text.
+    Opened { name: String, path: Option<std::path::PathBuf>, text: String },
+    /// The case was saved under this name (and path, on native).
+    SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile> },
+    /// An export was written (to `path`, when known).
+    Exported { name: String, path: Option<std::path::PathBuf> },
+    Error(String),
+}
+
+/// Dialog runner and its event channel.
+pub struct Files {
+    tx: Sender<FileEvent>,
+    rx: Receiver<FileEvent>,
+    repaint: egui::Context,
+}
+
+impl Files {
+    #[must_use]
+    pub fn new(repaint: egui::Context) -> Self {
+        let (tx, rx) = channel();
+        Self { tx, rx, repaint }
+    }
+
+    /// Events since the last call.
+    pub fn poll(&self) -> Vec<FileEvent> {
+        self.rx.try_iter().collect()
+    }
+
+    /// Reads a file dropped on the window (asynchronously on the web).
+    pub fn read_dropped(&self, file: egui::DroppedFileHandle) {
+        let name = display_name(file.path());
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let event = match file.bytes().map(String::from_utf8) {
+                Ok(Ok(text)) => FileEvent::Opened { name, path: Some(file.path().to_path_buf()), text },
+                Ok(Err(_)) => FileEvent::Error(format!("{name} is not UTF-8 text")),
+                Err(e) => FileEvent::Error(format!("cannot read {name}: {e}")),
+            };
+            let _ = self.tx.send(event);
+        }
+        #[cfg(target_arch = "wasm32")]
+        {
+            let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
+            spawn(async move {
+                let event = match file.bytes_async().await.map(String::from_utf8) {
+                    Ok(Ok(text)) => FileEvent::Opened { name, path: None, text },
+                    Ok(Err(_)) => FileEvent::Error(format!("{name} is not UTF-8 text")),
+                    Err(e) => FileEvent::Error(format!("cannot read {name}: {e}")),
+                };
+                let _ = tx.send(event);
+                repaint.request_repaint();
+            });
+        }
+    }
+
+    /// Asks for a case file to open.
+    pub fn open_case(&self) {
+        if !dialogs_available() {
+            let _ = self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus): drop a case file on the window instead.".into()));
+            return;
+        }
+        let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
+        spawn(async move {
+            let picked = rfd::AsyncFileDialog::new().add_filter("Case (TOML)", &["toml"]).set_title("Open a case").pick_file().await;
+            if let Some(handle) = picked {
+                let bytes = handle.read().await;
+                let event = match String::from_utf8(bytes) {
+                    Ok(text) => FileEvent::Opened { name: handle.file_name(), path: handle_path(&handle), text },
+                    Err(_) => FileEvent::Error(format!("{} is not UTF-8 text", handle.file_name())),
+                };
+                let _ = tx.send(event);
+                repaint.request_repaint();
+            }
+        });
+    }
+
+    /// Saves the case: straight to `path` when known (native), else through a save dialog.
+    pub fn save_case(&self, file: &crate::model::CaseFile, name: &str, path: Option<&std::path::Path>) {
+        let text = match file.to_toml() {
+            Ok(t) => t,
+            Err(e) => {
+                let _ = self.tx.send(FileEvent::Error(format!("cannot write the case as TOML: {e}")));
+                return;
+            }
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(p) = path {
+            let event = match crate::cli::write_atomic(p, text.as_bytes()) {
+                Ok(()) => FileEvent::SavedCase { name: display_name(p), path: Some(p.to_path_buf()), saved: Box::new(file.clone()) },
+                Err(e) => FileEvent::Error(format!("{e:#}")),
+            };
+            let _ = self.tx.send(event);
+            return;
+        }
+        let _ = path;
+        let saved = Box::new(file.clone());
+        self.save_bytes(name, "Case (TOML)", "toml", text.into_bytes(), move |name, path| FileEvent::SavedCase { name, path, saved });
+    }
+
+    /// Exports bytes under a suggested name.
+    pub fn export(&self, name: &str, filter: &str, extension: &str, bytes: Vec<u8>) {
+        self.save_bytes(name, filter, extension, bytes, |name, path| FileEvent::Exported { name, path });
+    }
+
+    fn save_bytes(&self, name: &str, filter: &str, extension: &str, bytes: Vec<u8>, done: impl FnOnce(String, Option<std::path::PathBuf>) -> FileEvent + Send + 'static) {
+        #[cfg(not(target_arch = "wasm32"))]
+        if !dialogs_available() {
+            // Without a dialog, write into the working directory under the suggested name.
+            let path = std::path::PathBuf::from(name);
+            let event = match crate::cli::write_atomic(&path, &bytes) {
+                Ok(()) => done(name.to_string(), std::fs::canonicalize(&path).ok()),
+                Err(e) => FileEvent::Error(format!("{e:#}")),
+            };
+            let _ = self.tx.send(event);
+            return;
+        }
+        let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
+        let dialog = rfd::AsyncFileDialog::new().add_filter(filter, &[extension]).set_file_name(name);
+        spawn(async move {
+            if let Some(handle) = dialog.save_file().await {
+                let event = write_handle(&handle, &bytes).await.map_or_else(FileEvent::Error, |()| done(handle.file_name(), handle_path(&handle)));
+                let _ = tx.send(event);
+                repaint.request_repaint();
+            }
+        });
+    }
+}
+
+/// Native dialogs go through the XDG desktop portal, which needs a session bus; the browser always has one.
+fn dialogs_available() -> bool {
+    cfg!(target_arch = "wasm32") || std::env::var_os("DBUS_SESSION_BUS_ADDRESS").is_some()
+}
+
+/// Writes through a dialog's handle: atomically on native, as a download on the web.
+async fn write_handle(handle: &rfd::FileHandle, bytes: &[u8]) -> Result<(), String> {
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        crate::cli::write_atomic(handle.path(), bytes).map_err(|e| format!("{e:#}"))
+    }
+    #[cfg(target_arch = "wasm32")]
+    {
+        handle.write(bytes).await.map_err(|e| e.to_string())
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+#[allow(clippy::unnecessary_wraps)]
+fn handle_path(handle: &rfd::FileHandle) -> Option<std::path::PathBuf> {
+    Some(handle.path().to_path_buf())
+}
+
+#[cfg(target_arch = "wasm32")]
+fn handle_path(_: &rfd::FileHandle) -> Option<std::path::PathBuf> {
+    None
+}
+
+/// File name for display.
+#[must_use]
+pub fn display_name(path: &std::path::Path) -> String {
+    path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned())
+}
+
+/// Runs a dialog future without blocking the UI.
+#[cfg(not(target_arch = "wasm32"))]
+fn spawn(fut: impl std::future::Future<Output = ()> + Send + 'static) {
+    let spawned = std::thread::Builder::new().name("tiltpad-file-dialog".into()).spawn(move || pollster_block_on(fut));
+    if let Err(e) = spawned {
+        log::error!("cannot start a file dialog thread: {e}");
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+fn spawn(fut: impl std::future::Future<Output = ()> + 'static) {
+    wasm_bindgen_futures::spawn_local(fut);
+}
+
+/// A minimal executor for one dialog future on its own thread (the portal dialog is async).
+#[cfg(not(target_arch = "wasm32"))]
+fn pollster_block_on<F: std::future::Future>(fut: F) -> F::Output {
+    use std::sync::Arc;
+    use std::task::{Context, Poll, Wake, Waker};
+
+    struct ThreadWaker(std::thread::Thread);
+    impl Wake for ThreadWaker {
+        fn wake(self: Arc<Self>) {
+            self.0.unpark();
+        }
+    }
+    let waker = Waker::from(Arc::new(ThreadWaker(std::thread::current())));
+    let mut cx = Context::from_waker(&waker);
+    let mut fut = std::pin::pin!(fut);
+    loop {
+        match fut.as_mut().poll(&mut cx) {
+            Poll::Ready(v) => return v,
+            Poll::Pending => std::thread::park(),
+        }
+    }
+}
+
+/// Encodes RGBA pixels as PNG.
+///
+/// # Errors
+/// If the encoder fails (it does not for valid sizes).
+pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>, String> {
+    let mut out = Vec::new();
+    let (w, h) = (u32::try_from(width).map_err(|e| e.to_string())?, u32::try_from(height).map_err(|e| e.to_string())?);
+    let mut enc = png::Encoder::new(&mut out, w, h);
+    enc.set_color(png::ColorType::Rgba);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header().map_err(|e| e.to_string())?;
+    writer.write_image_data(rgba).map_err(|e| e.to_string())?;
+    writer.finish().map_err(|e| e.to_string())?;
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::parse_case_file;
+
+    #[test]
+    fn saving_a_case_is_atomic_and_round_trips() {
+        let dir = std::env::temp_dir().join(format!("tiltpad-save-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("case.toml");
+        std::fs::write(&path, "old contents").unwrap();
+        let file = parse_case_file(include_str!("../../cases/test-rig.toml"), &[]).unwrap();
+        let files = Files::new(egui::Context::default());
+        files.save_case(&file, "case.toml", Some(&path));
+        match files.poll().as_slice() {
+            [FileEvent::SavedCase { name, path: Some(p), saved }] => {
+                assert_eq!(name, "case.toml");
+                assert_eq!(p, &path);
+                assert_eq!(**saved, file);
+            }
+            other => panic!("{other:?}"),
+        }
+        let back = parse_case_file(&std::fs::read_to_string(&path).unwrap(), &[]).unwrap();
+        assert_eq!(back, file);
+        // Only the target is left: the temporary file was renamed over it.
+        let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, vec![std::ffi::OsString::from("case.toml")]);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn png_encoding_round_trips() {
+        let rgba: Vec<u8> = (0..2 * 3 * 4).map(|i| u8::try_from(i * 10).unwrap()).collect();
+        let bytes = encode_png(2, 3, &rgba).unwrap();
+        let mut reader = png::Decoder::new(std::io::Cursor::new(bytes)).read_info().unwrap();
+        let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut buf).unwrap();
+        assert_eq!((info.width, info.height), (2, 3));
+        assert_eq!(&buf[..info.buffer_size()], &rgba[..]);
+    }
+}

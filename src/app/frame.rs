@@ -1,0 +1,270 @@
+//! One frame of the workbench: the menu bar, the panels, the status bar and the central view.
+
+use egui::{Color32, RichText, Ui};
+
+use super::editor::editor_ui;
+use super::presets::PRESETS;
+use super::state::{CoefficientAxis, PadChoice, View};
+use super::views::{bearing_view, coefficients_view, field_view, placeholders, results_panel};
+use super::{Pending, Status, WorkbenchApp};
+use crate::bearing::pipeline::Stage;
+use crate::scene::field::FieldKind;
+use crate::scene::{export, outline, plots, summary};
+
+#[cfg(not(target_arch = "wasm32"))]
+const FRAME_TIME_MEANING: &str = "Time to build a frame on the UI thread; the solver runs on its own thread.";
+#[cfg(target_arch = "wasm32")]
+const FRAME_TIME_MEANING: &str = "Time to build a frame, including the solver steps run in it (the browser has no threads here): one solver stage may take longer than the per-frame budget.";
+
+impl WorkbenchApp {
+    pub(super) fn frame_ui(&mut self, ui: &mut Ui) {
+        let ctx = ui.ctx().clone();
+        self.take_file_events();
+        self.take_dropped_files(&ctx);
+        self.take_shortcuts(&ctx);
+        self.guard_close(&ctx);
+        self.take_screenshot(&ctx);
+
+        egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
+        let edit = egui::Panel::left("editor")
+            .resizable(true)
+            .default_size(self.persisted.editor_width)
+            .show(ui, |ui| egui::ScrollArea::vertical().id_salt("editor-scroll").show(ui, |ui| editor_ui(ui, &mut self.doc)).inner)
+            .inner;
+        self.dragging = edit.dragging;
+        egui::Panel::right("results").resizable(true).default_size(330.0).show(ui, |ui| self.results_ui(ui));
+        egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
+        self.guard_ui(&ctx);
+        if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
+            let screen = ctx.content_rect();
+            ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("drop"))).text(
+                screen.center(),
+                egui::Align2::CENTER_CENTER,
+                "Drop a case file (.toml) to open it",
+                egui::FontId::proportional(24.0),
+                Color32::WHITE,
+            );
+        }
+        self.drive_solver();
+        if !self.is_idle() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
+    }
+
+    fn menu_ui(&mut self, ui: &mut Ui) {
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button("File", |ui| {
+                if ui.button("Open case…").clicked() {
+                    self.request(Pending::Open);
+                }
+                ui.menu_button("Open preset", |ui| {
+                    for (k, (name, _)) in PRESETS.iter().enumerate() {
+                        if ui.button(*name).clicked() {
+                            self.request(Pending::Preset(k));
+                        }
+                    }
+                });
+                if ui.button("Save case").clicked() {
+                    self.save_case(false);
+                }
+                if ui.button("Save case as…").clicked() {
+                    self.save_case(true);
+                }
+                ui.separator();
+                if ui.button("Export view as PNG…").clicked() {
+                    ui.ctx().send_viewport_cmd(egui::ViewportCommand::Screenshot(self.screenshot_callback(ui.ctx())));
+                }
+                let solution = self.shown.as_ref().map(|s| s.solution.clone());
+                if ui.add_enabled(solution.is_some(), egui::Button::new("Export fields as CSV…")).clicked() {
+                    if let Some(s) = &solution {
+                        self.files.export(&self.export_name("fields", "csv"), "CSV", "csv", export::fields_csv(s).into_bytes());
+                    }
+                }
+                if ui.add_enabled(solution.is_some(), egui::Button::new("Export results as JSON…")).clicked() {
+                    if let Some(s) = &solution {
+                        self.files.export(&self.export_name("results", "json"), "JSON", "json", export::results_json(s).into_bytes());
+                    }
+                }
+            });
+            ui.menu_button("Edit", |ui| {
+                if ui.add_enabled(self.doc.can_undo(), egui::Button::new("Undo")).clicked() {
+                    self.doc.undo();
+                }
+                if ui.add_enabled(self.doc.can_redo(), egui::Button::new("Redo")).clicked() {
+                    self.doc.redo();
+                }
+                ui.checkbox(&mut self.persisted.preview_while_dragging, "Preview fidelity while dragging")
+                    .on_hover_text("Solve on the coarse preview mesh while a value is dragged, at the case's fidelity on release.");
+            });
+            ui.separator();
+            if ui.add_enabled(self.doc.can_undo(), egui::Button::new("Undo")).on_hover_text("Undo (Ctrl+Z)").clicked() {
+                self.doc.undo();
+            }
+            if ui.add_enabled(self.doc.can_redo(), egui::Button::new("Redo")).on_hover_text("Redo (Ctrl+Shift+Z)").clicked() {
+                self.doc.redo();
+            }
+            ui.separator();
+            let dirty = if self.doc.is_dirty() { " *" } else { "" };
+            ui.label(RichText::new(format!("{}{dirty}", self.doc.name)).strong()).on_hover_text("Case file (* = unsaved changes)");
+        });
+    }
+
+    fn status_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            match &self.status {
+                Status::Idle => {
+                    ui.label(RichText::new("Solved").color(Color32::from_rgb(120, 200, 120)));
+                }
+                Status::Solving { stage, fraction } => {
+                    ui.spinner();
+                    // The stage named is the one that just finished; say what runs now.
+                    let now = match stage {
+                        None => "building the model".to_string(),
+                        Some(Stage::Model) => "equilibrium".into(),
+                        Some(Stage::Thermal) => "thermal equilibrium done; coefficients and sweeps".into(),
+                        Some(Stage::Equilibrium | Stage::Reduction) => "coefficients and sweeps".into(),
+                        Some(Stage::FrequencySweep) => "speed sweep".into(),
+                        Some(Stage::SpeedSweep) => format!("speed sweep {:.0} %", 100.0 * fraction),
+                    };
+                    ui.label(format!("Solving: {now}…"));
+                }
+                Status::Failed(e) => {
+                    ui.label(RichText::new(format!("Solve failed: {e}")).color(Color32::from_rgb(230, 90, 80)));
+                }
+            }
+            if let Err(e) = self.doc.validation() {
+                ui.separator();
+                ui.label(RichText::new(format!("Invalid case: {e}")).color(Color32::from_rgb(230, 90, 80)));
+            }
+            if let Some(n) = &self.notice {
+                ui.separator();
+                ui.label(n);
+            }
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                if !self.hide_timings {
+                    let peak = self.recent_frames_s.iter().copied().fold(0.0, f64::max);
+                    ui.label(RichText::new(format!("UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)", self.frame_time_s * 1e3, peak * 1e3)).weak())
+                        .on_hover_text(FRAME_TIME_MEANING);
+                }
+            });
+        });
+    }
+
+    fn results_ui(&mut self, ui: &mut Ui) {
+        ui.heading("Results");
+        let Some(shown) = &self.shown else {
+            ui.label("No result yet.");
+            return;
+        };
+        if self.result_is_stale() {
+            ui.label(RichText::new("Showing the last valid result: it does not match the edited case.").color(Color32::from_rgb(230, 150, 60)));
+        }
+        let fidelity = format!("{:?}", shown.solution.inputs.mesh.fidelity).to_lowercase();
+        ui.label(RichText::new(format!("{} — {fidelity} mesh", shown.solution.title)).small());
+        let s = summary::summary(&shown.solution);
+        egui::ScrollArea::vertical().id_salt("results-scroll").show(ui, |ui| results_panel::results_panel_ui(ui, &s, self.hide_timings));
+    }
+
+    fn central_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            for v in View::ALL {
+                ui.selectable_value(&mut self.persisted.view, v, v.label());
+            }
+        });
+        ui.separator();
+        self.view_rect = Some(ui.available_rect_before_wrap());
+        let stale = self.result_is_stale();
+        match self.persisted.view {
+            View::Bearing => {
+                let case = self.shown.as_ref().map(|s| s.solution.inputs.clone()).or_else(|| self.doc.validation().as_ref().ok().cloned());
+                if let Some(case) = case {
+                    let solution = self.shown.as_ref().map(|s| s.solution.as_ref());
+                    let o = outline::bearing_outline(&case, solution);
+                    let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
+                    bearing_view::bearing_view_ui(ui, &o, &pads, stale);
+                }
+            }
+            View::Fields => self.fields_ui(ui),
+            View::Coefficients => self.coefficients_ui(ui),
+            v => placeholders::placeholder_ui(ui, v),
+        }
+    }
+
+    fn fields_ui(&mut self, ui: &mut Ui) {
+        let Some(shown) = self.shown.clone() else {
+            ui.label("Waiting for the first result…");
+            return;
+        };
+        let available = FieldKind::available(&shown.solution);
+        let n_pads = shown.solution.pads.len();
+        ui.horizontal(|ui| {
+            let label = ui.label("Field");
+            egui::ComboBox::from_id_salt("field-kind")
+                .selected_text(self.persisted.field.label())
+                .show_ui(ui, |ui| {
+                    for k in FieldKind::ALL {
+                        let ok = available.contains(&k);
+                        ui.add_enabled_ui(ok, |ui| ui.selectable_value(&mut self.persisted.field, k, k.label()))
+                            .response
+                            .on_disabled_hover_text("Needs the thermal model: not part of this result.")
+                            .on_hover_text(k.meaning());
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            let label = ui.label("Pads");
+            let text = match self.persisted.pads {
+                PadChoice::All => "all side by side".to_string(),
+                PadChoice::One(k) => format!("pad {k}"),
+            };
+            egui::ComboBox::from_id_salt("field-pads")
+                .selected_text(text)
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(&mut self.persisted.pads, PadChoice::All, "all side by side");
+                    for k in 0..n_pads {
+                        ui.selectable_value(&mut self.persisted.pads, PadChoice::One(k), format!("pad {k}"));
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            ui.checkbox(&mut self.persisted.flowlines, "Flowlines")
+                .on_hover_text("Streamlines of the mean film velocity: seeded on the leading edge and around each orifice (a source when injecting, a sink when not); they stop where the film cavitates.");
+        });
+        if let PadChoice::One(k) = self.persisted.pads {
+            if k >= n_pads {
+                self.persisted.pads = PadChoice::All;
+            }
+        }
+        let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
+        field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, kind, self.persisted.pads, self.persisted.flowlines);
+    }
+
+    fn coefficients_ui(&mut self, ui: &mut Ui) {
+        ui.horizontal(|ui| {
+            ui.label("Against");
+            ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::FrequencyRatio, "excitation frequency ratio ω/Ω");
+            ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::Speed, "speed (background sweep)");
+        });
+        let Some(shown) = self.shown.clone() else {
+            ui.label("Waiting for the first result…");
+            return;
+        };
+        let sol = &shown.solution;
+        let plot = match self.persisted.axis {
+            CoefficientAxis::FrequencyRatio => shown.frequency_sweep.as_ref().map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
+            CoefficientAxis::Speed => shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced)))),
+        };
+        match plot {
+            Some(p) => coefficients_view::coefficient_plots_ui(ui, &p),
+            None => {
+                ui.horizontal(|ui| {
+                    ui.spinner();
+                    ui.label("Sweeping in the background…");
+                });
+            }
+        }
+        ui.separator();
+        coefficients_view::matrix_table_ui(ui, &plots::matrix_table(&sol.full));
+    }
+}

@@ -1,0 +1,248 @@
+//! The workbench: an eframe app that edits a case, solves it in the background and shows the result.
+//!
+//! Layout: a menu bar; the editor on the left; the results panel on the right; a status bar; the views
+//! (bearing cross-section, pad fields with flowlines, coefficients, and placeholders for what later
+//! versions add) in the centre.
+//!
+//! State is split by lifetime: [`state::Persisted`] (the case and view settings, saved by eframe between
+//! sessions) and the runtime state in [`WorkbenchApp`] (worker, shown result, caches, dialogs).
+//!
+//! Solving is declarative: every frame the app derives the [`Request`] the screen needs from the current
+//! case and view; when it differs from the last one submitted, the worker gets it (cancelling the running
+//! job). While a value is dragged, requests are solved at preview fidelity and coalesced (the running one
+//! finishes, then the latest value is taken), so the picture follows the drag. The last valid result
+//! stays on screen while the case is invalid, solving or failed.
+
+mod actions;
+pub mod document;
+pub mod editor;
+pub mod files;
+mod frame;
+pub mod presets;
+pub mod state;
+pub mod views;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
+pub mod worker;
+
+use std::sync::Arc;
+
+use web_time::Instant;
+
+use crate::bearing::pipeline::{Outcome, Request, SpeedPoint, Stage};
+use crate::bearing::{ReducedCoefficients, Solution};
+use crate::model::{parse_case_file, Case, Fidelity};
+use crate::scene::plots::{frequency_ratios, sweep_speeds};
+use document::Document;
+use files::Files;
+use state::{CoefficientAxis, Persisted, View};
+use views::field_view::FieldCache;
+use worker::{Event, Worker};
+
+/// Per-frame time the web build may spend solving [s].
+const WEB_SOLVE_BUDGET_S: f64 = 0.012;
+/// Frequency ratios of the background sweep.
+const RATIOS: (f64, f64, usize) = (0.0, 3.0, 31);
+/// Points of the background speed sweep.
+const SPEED_POINTS: usize = 11;
+
+/// The result on screen.
+#[derive(Clone)]
+pub struct Shown {
+    pub solution: Arc<Solution>,
+    pub frequency_sweep: Option<Arc<Vec<(f64, ReducedCoefficients)>>>,
+    pub speed_sweep: Option<Arc<Vec<SpeedPoint>>>,
+}
+
+/// What the solver is doing.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Status {
+    Idle,
+    Solving { stage: Option<Stage>, fraction: f64 },
+    Failed(String),
+}
+
+/// An action that would discard unsaved changes, waiting for the user's answer.
+#[derive(Debug, Clone)]
+pub enum Pending {
+    Preset(usize),
+    Open,
+    Replace { name: String, path: Option<std::path::PathBuf>, text: String },
+    Close,
+}
+
+/// The eframe app.
+pub struct WorkbenchApp {
+    pub persisted: Persisted,
+    pub doc: Document,
+    worker: Worker,
+    files: Files,
+    submitted: Option<Request>,
+    pub shown: Option<Shown>,
+    pub status: Status,
+    /// A value is being dragged in the editor.
+    dragging: bool,
+    field_cache: FieldCache,
+    pending: Option<Pending>,
+    allow_close: bool,
+    /// Messages for the status bar (file saved, errors of dialogs).
+    pub notice: Option<String>,
+    /// Smoothed duration of building a frame [s].
+    pub frame_time_s: f64,
+    /// Durations of the last frames [s].
+    pub recent_frames_s: std::collections::VecDeque<f64>,
+    /// Replace wall-clock times by dashes (reproducible screenshots).
+    pub hide_timings: bool,
+    /// Screen rectangle of the central view (for the PNG export).
+    view_rect: Option<egui::Rect>,
+    screenshot: Option<std::sync::mpsc::Receiver<Arc<egui::ColorImage>>>,
+}
+
+impl WorkbenchApp {
+    /// The app as eframe creates it: the persisted state if any, else the default case.
+    #[must_use]
+    pub fn new(cc: &eframe::CreationContext<'_>) -> Self {
+        let persisted: Option<Persisted> = cc.storage.and_then(|s| eframe::get_value(s, eframe::APP_KEY));
+        Self::with_state(&cc.egui_ctx, persisted.unwrap_or_default())
+    }
+
+    /// The app with given persisted state (tests start from `Persisted::default()`).
+    #[must_use]
+    pub fn with_state(ctx: &egui::Context, persisted: Persisted) -> Self {
+        let (name, text) = presets::default_preset();
+        let restored = persisted.case_toml.as_deref().and_then(|t| parse_case_file(t, &[]).ok());
+        let doc = match restored {
+            Some(file) => {
+                let mut doc = Document::new(file, persisted.case_name.clone(), persisted.case_saved);
+                doc.path.clone_from(&persisted.case_path);
+                doc
+            }
+            // The shipped default is compiled in and checked by a unit test: not user input.
+            None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true),
+        };
+        Self {
+            persisted,
+            doc,
+            worker: Worker::new(ctx.clone()),
+            files: Files::new(ctx.clone()),
+            submitted: None,
+            shown: None,
+            status: Status::Idle,
+            dragging: false,
+            field_cache: FieldCache::default(),
+            pending: None,
+            allow_close: false,
+            notice: None,
+            frame_time_s: 0.0,
+            recent_frames_s: std::collections::VecDeque::with_capacity(120),
+            hide_timings: false,
+            view_rect: None,
+            screenshot: None,
+        }
+    }
+
+    /// Loads a case text as the document (after the unsaved-changes guard).
+    pub fn load_text(&mut self, name: &str, path: Option<std::path::PathBuf>, text: &str) {
+        match parse_case_file(text, &[]) {
+            Ok(file) => {
+                self.doc.replace(file, name, path);
+                self.notice = Some(format!("Opened {name}"));
+            }
+            Err(e) => self.notice = Some(format!("Cannot open {name}: {e}")),
+        }
+    }
+
+    /// Nothing is being solved and no result is pending.
+    #[must_use]
+    pub fn is_idle(&self) -> bool {
+        !self.worker.busy()
+    }
+
+    /// The request the screen needs now, if the case is valid.
+    fn wanted_request(&self) -> Option<Request> {
+        let case = self.doc.validation().as_ref().ok()?;
+        let case = if self.dragging && self.persisted.preview_while_dragging { preview(case) } else { case.clone() };
+        let speeds = (self.persisted.view == View::Coefficients && self.persisted.axis == CoefficientAxis::Speed)
+            .then(|| sweep_speeds(case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU, SPEED_POINTS));
+        Some(Request { frequency_ratios: Some(frequency_ratios(RATIOS.0, RATIOS.1, RATIOS.2)), speeds_rpm: speeds, case: Some(case) })
+    }
+
+    /// Submits the wanted request when it changed, and takes in the worker's events.
+    fn drive_solver(&mut self) {
+        if let Some(req) = self.wanted_request() {
+            // While a value is dragged, let the running (preview) solve finish and then take the latest
+            // value, so results keep coming during the drag; otherwise a newer request cancels at once.
+            let hold = self.dragging && !self.is_idle();
+            if self.submitted.as_ref() != Some(&req) && !hold {
+                self.worker.submit(req.clone());
+                self.submitted = Some(req);
+                self.status = Status::Solving { stage: None, fraction: 0.0 };
+            }
+        }
+        for event in self.worker.poll(WEB_SOLVE_BUDGET_S) {
+            match event {
+                Event::Progress { stage, fraction, .. } => self.status = Status::Solving { stage: Some(stage), fraction },
+                Event::Solved { outcome, complete, .. } => {
+                    self.accept(outcome);
+                    if complete {
+                        self.status = Status::Idle;
+                    }
+                }
+                Event::Failed { error, .. } => self.status = Status::Failed(error),
+            }
+        }
+    }
+
+    fn accept(&mut self, outcome: Outcome) {
+        let Some(solution) = outcome.solution else { return };
+        // A speed sweep of the same case survives a first-phase result (the sweep follows in phase two).
+        let keep_speed = self
+            .shown
+            .as_ref()
+            .filter(|s| outcome.speed_sweep.is_none() && s.solution.inputs == solution.inputs)
+            .and_then(|s| s.speed_sweep.clone());
+        self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep, speed_sweep: outcome.speed_sweep.or(keep_speed) });
+    }
+
+    /// The case of the shown result differs from the edited one (invalid, solving or failed).
+    #[must_use]
+    pub fn result_is_stale(&self) -> bool {
+        match (&self.shown, self.doc.validation()) {
+            (Some(s), Ok(case)) => s.solution.inputs != *case,
+            (Some(_), Err(_)) => true,
+            (None, _) => false,
+        }
+    }
+}
+
+/// The case at preview fidelity (explicit element counts dropped), for fast solves while dragging.
+fn preview(case: &Case) -> Case {
+    let mut c = case.clone();
+    let (nx, nz, no) = Fidelity::Preview.elements();
+    c.mesh.fidelity = Fidelity::Preview;
+    c.mesh.circumferential_elements = nx;
+    c.mesh.axial_elements = nz;
+    c.mesh.orifice_elements = no;
+    c
+}
+
+impl eframe::App for WorkbenchApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let start = Instant::now();
+        self.frame_ui(ui);
+        let dt = start.elapsed().as_secs_f64();
+        self.frame_time_s = if self.frame_time_s == 0.0 { dt } else { 0.9 * self.frame_time_s + 0.1 * dt };
+        if self.recent_frames_s.len() == 120 {
+            self.recent_frames_s.pop_front();
+        }
+        self.recent_frames_s.push_back(dt);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        self.persisted.case_toml = self.doc.file().to_toml().ok();
+        self.persisted.case_name.clone_from(&self.doc.name);
+        self.persisted.case_path.clone_from(&self.doc.path);
+        self.persisted.case_saved = !self.doc.is_dirty();
+        eframe::set_value(storage, eframe::APP_KEY, &self.persisted);
+    }
+}

@@ -1,0 +1,89 @@
+//! What the workbench remembers between sessions (eframe storage: a file on native, local storage on
+//! the web) — the case being edited and the view settings. Runtime state (the worker, results,
+//! textures, dialogs) lives in [`super::WorkbenchApp`] and is never persisted.
+
+use serde::{Deserialize, Serialize};
+
+use crate::scene::field::FieldKind;
+
+/// The central view.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub enum View {
+    #[default]
+    Bearing,
+    Fields,
+    Coefficients,
+    PadDeformation,
+    Frf,
+    Rotor,
+}
+
+impl View {
+    pub const ALL: [Self; 6] = [Self::Bearing, Self::Fields, Self::Coefficients, Self::PadDeformation, Self::Frf, Self::Rotor];
+
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Bearing => "Bearing",
+            Self::Fields => "Pad fields",
+            Self::Coefficients => "Coefficients",
+            Self::PadDeformation => "Pad deformation",
+            Self::Frf => "FRF",
+            Self::Rotor => "Rotor",
+        }
+    }
+}
+
+/// Which pads the field view shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub enum PadChoice {
+    #[default]
+    All,
+    One(usize),
+}
+
+/// Abscissa of the coefficient plots.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub enum CoefficientAxis {
+    #[default]
+    FrequencyRatio,
+    Speed,
+}
+
+/// Persisted settings and the edited case.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Persisted {
+    /// The case as TOML (what the user was editing), and its display name.
+    pub case_toml: Option<String>,
+    pub case_name: String,
+    /// Where the case was last opened from or saved to (native), and whether it was unchanged since.
+    pub case_path: Option<std::path::PathBuf>,
+    pub case_saved: bool,
+    pub view: View,
+    pub field: FieldKind,
+    pub pads: PadChoice,
+    pub flowlines: bool,
+    pub axis: CoefficientAxis,
+    /// Solve at preview fidelity while a value is dragged, at the case's fidelity on release.
+    pub preview_while_dragging: bool,
+    pub editor_width: f32,
+}
+
+impl Default for Persisted {
+    fn default() -> Self {
+        Self {
+            case_toml: None,
+            case_name: String::new(),
+            case_path: None,
+            case_saved: false,
+            view: View::Bearing,
+            field: FieldKind::Pressure,
+            pads: PadChoice::All,
+            flowlines: true,
+            axis: CoefficientAxis::FrequencyRatio,
+            preview_while_dragging: true,
+            editor_width: 360.0,
+        }
+    }
+}

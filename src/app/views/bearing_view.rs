@@ -1,0 +1,168 @@
+//! The bearing cross-section: journal, pads with their tilt, pivots, orifices, load, minimum film
+//! thickness, and the mid-plane pressure around each pad — drawn from [`BearingOutline`].
+
+use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
+
+use crate::scene::outline::{BearingOutline, Point};
+use crate::scene::summary::PadRow;
+
+const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
+const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
+const PRESSURE_FILL: Color32 = Color32::from_rgba_premultiplied(200, 110, 20, 170);
+const INJECTION: Color32 = Color32::from_rgb(70, 160, 255);
+const H_MIN: Color32 = Color32::from_rgb(235, 60, 60);
+const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
+
+/// Maps the bearing frame (metres, y up) to the screen (points, y down).
+#[derive(Debug, Clone, Copy)]
+pub struct ScreenFromBearing {
+    centre: Pos2,
+    points_per_m: f32,
+}
+
+impl ScreenFromBearing {
+    #[must_use]
+    pub fn fit(rect: Rect, extent_m: f64) -> Self {
+        #[allow(clippy::cast_possible_truncation)]
+        let points_per_m = (0.5 * rect.width().min(rect.height()) / extent_m as f32).max(1e-3);
+        Self { centre: rect.center(), points_per_m }
+    }
+
+    #[must_use]
+    #[allow(clippy::cast_possible_truncation)]
+    pub fn map(&self, p: Point) -> Pos2 {
+        Pos2::new(self.centre.x + self.points_per_m * p[0] as f32, self.centre.y - self.points_per_m * p[1] as f32)
+    }
+}
+
+/// A filled band between two polylines of equal length (pads, pressure), as a triangle mesh
+/// (the bands are not convex, so a polygon fill would be wrong).
+fn band(a: &[Pos2], b: &[Pos2], color: Color32) -> Shape {
+    let mut mesh = Mesh::default();
+    for (p, q) in a.iter().zip(b) {
+        mesh.colored_vertex(*p, color);
+        mesh.colored_vertex(*q, color);
+    }
+    #[allow(clippy::cast_possible_truncation)]
+    for i in 0..a.len().min(b.len()).saturating_sub(1) as u32 {
+        let k = 2 * i;
+        mesh.add_triangle(k, k + 1, k + 2);
+        mesh.add_triangle(k + 1, k + 3, k + 2);
+    }
+    Shape::mesh(mesh)
+}
+
+fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
+    painter.line_segment([from, to], stroke);
+    let dir = (to - from).normalized();
+    let n = Vec2::new(-dir.y, dir.x);
+    let head = 10.0;
+    painter.add(Shape::convex_polygon(vec![to, to - dir * head + n * head * 0.45, to - dir * head - n * head * 0.45], stroke.color, Stroke::NONE));
+}
+
+/// Draws the cross-section into the available space.
+#[allow(clippy::too_many_lines)]
+pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], stale: bool) {
+    // Scale and colour notes, as text a screen reader finds.
+    ui.label(format!("To scale, except film thickness and journal displacement × {}", outline.exaggeration));
+    ui.horizontal_wrapped(|ui| {
+        if outline.pressure_scale_pa > 0.0 {
+            ui.colored_label(Color32::from_rgb(255, 160, 60), format!("Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)", outline.pressure_scale_pa * 1e-6));
+        }
+        ui.colored_label(H_MIN, "Minimum film thickness of each pad");
+        ui.colored_label(LOAD, "Static load W");
+        if outline.pads.iter().any(|p| p.injecting) {
+            ui.colored_label(INJECTION, "Injecting orifice");
+        }
+        if stale {
+            ui.colored_label(Color32::from_rgb(230, 150, 60), "Showing the last valid result");
+        }
+    });
+    let size = ui.available_size();
+    let (response, painter) = ui.allocate_painter(size, Sense::hover());
+    let rect = response.rect;
+    let to_screen = ScreenFromBearing::fit(rect.shrink(24.0), outline.extent_m);
+    let map = |pts: &[Point]| -> Vec<Pos2> { pts.iter().map(|&p| to_screen.map(p)).collect() };
+    let font = FontId::proportional(13.0);
+
+    // Bearing centre.
+    let c0 = to_screen.map([0.0, 0.0]);
+    painter.line_segment([c0 - Vec2::X * 8.0, c0 + Vec2::X * 8.0], Stroke::new(1.0, Color32::GRAY));
+    painter.line_segment([c0 - Vec2::Y * 8.0, c0 + Vec2::Y * 8.0], Stroke::new(1.0, Color32::GRAY));
+
+    // Journal.
+    let journal = map(&outline.journal);
+    painter.add(Shape::convex_polygon(journal.clone(), JOURNAL_FILL, Stroke::new(1.0, Color32::from_gray(200))));
+    let jc = to_screen.map(outline.journal_centre);
+    painter.circle_filled(jc, 3.0, Color32::WHITE);
+    // Direction of rotation: counter-clockwise, an arc with an arrowhead.
+    let r_rot = 0.22 * to_screen.points_per_m * outline.journal_radius_m as f32;
+    let arc: Vec<Pos2> = (0..=24).map(|i| {
+        let a = 0.35 + 1.1 * std::f32::consts::PI * i as f32 / 24.0;
+        jc + Vec2::new(a.cos(), -a.sin()) * r_rot
+    }).collect();
+    painter.add(Shape::line(arc.clone(), Stroke::new(1.5, Color32::from_gray(220))));
+    if let [.., a, b] = arc.as_slice() {
+        arrow(&painter, *a, *b + (*b - *a) * 0.01, Stroke::new(1.5, Color32::from_gray(220)));
+    }
+    painter.text(jc + Vec2::new(0.0, -r_rot - 4.0), Align2::CENTER_BOTTOM, "Ω", font.clone(), Color32::from_gray(230));
+
+    for pad in &outline.pads {
+        // Pressure inside the journal, from its surface inwards.
+        if !pad.pressure.is_empty() {
+            let n = pad.pressure.len() / 2;
+            let outer = map(&pad.pressure[..n]);
+            let inner: Vec<Pos2> = map(&pad.pressure[n..]).into_iter().rev().collect();
+            painter.add(band(&outer, &inner, PRESSURE_FILL));
+            painter.add(Shape::line(inner, Stroke::new(1.0, Color32::from_rgb(255, 160, 60))));
+        }
+        let film = map(&pad.film_surface);
+        let back = map(&pad.back);
+        painter.add(band(&film, &back, if pad.fixed { Color32::from_gray(120) } else { PAD_FILL }));
+        let mut edge = film.clone();
+        edge.extend(back.iter().rev());
+        edge.push(film[0]);
+        painter.add(Shape::line(edge, Stroke::new(1.0, Color32::from_gray(40))));
+        for [a, b] in &pad.orifices {
+            let color = if pad.injecting { INJECTION } else { Color32::from_rgb(60, 55, 50) };
+            let (a, b) = ([to_screen.map(a[0]), to_screen.map(a[1])], [to_screen.map(b[0]), to_screen.map(b[1])]);
+            painter.add(Shape::convex_polygon(vec![a[0], a[1], b[1], b[0]], color, Stroke::NONE));
+        }
+        if !pad.fixed {
+            let tri = map(&pad.pivot);
+            painter.add(Shape::convex_polygon(tri, Color32::from_gray(70), Stroke::new(1.0, Color32::from_gray(20))));
+        }
+        painter.text(to_screen.map(pad.label_at), Align2::CENTER_CENTER, pad.index.to_string(), font.clone(), Color32::BLACK);
+        if let Some((j, p, h)) = pad.h_min {
+            let (a, b) = (to_screen.map(j), to_screen.map(p));
+            painter.line_segment([a, b], Stroke::new(2.5, H_MIN));
+            painter.circle_filled(a, 2.5, H_MIN);
+            let away = (b - jc).normalized();
+            painter.text(b + away * 30.0, Align2::CENTER_CENTER, format!("{:.1} µm", h * 1e6), FontId::proportional(11.0), H_MIN);
+        }
+    }
+    // Hovering a pad shows its results.
+    if let Some(pos) = response.hover_pos() {
+        let near = outline.pads.iter().map(|p| (p.index, to_screen.map(p.label_at).distance(pos))).min_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((k, _)) = near.filter(|n| n.1 < 40.0) {
+            if let Some(row) = pads.iter().find(|r| r.index == k) {
+                let tilt = row.tilt_mrad.map_or("fixed sector".into(), |t| format!("tilt {t:.4} mrad"));
+                let text = format!(
+                    "Pad {k}{}\n{tilt}\nh_min {:.2} µm, p_max {:.3} MPa\nfilm force {:.0} N, cavitated {:.0} %",
+                    if row.unloaded { " (unloaded)" } else { "" },
+                    row.h_min_um,
+                    row.p_max_mpa,
+                    row.load_n,
+                    row.cavitated_percent
+                );
+                response.clone().on_hover_text_at_pointer(text);
+            }
+        }
+    }
+    if let Some((from, to, w)) = outline.load {
+        let (a, b) = (to_screen.map(from), to_screen.map(to));
+        arrow(&painter, a, b, Stroke::new(3.0, LOAD));
+        painter.text(b + (b - a).normalized() * 14.0, Align2::CENTER_CENTER, format!("W = {w:.0} N"), font.clone(), LOAD);
+    }
+
+}

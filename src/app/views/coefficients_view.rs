@@ -1,0 +1,110 @@
+//! Reduced stiffness and damping against ω/Ω or speed (from a background sweep), the case's own point
+//! marked, and the full coefficient matrices as a table.
+
+use egui::{Color32, Grid, RichText, ScrollArea, Ui};
+use egui_plot::{GridInput, GridMark, Legend, Line, MarkerShape, Plot, Points, VLine};
+
+use crate::scene::field::nice_ticks;
+
+use crate::scene::plots::{CoefficientPlot, MatrixTable};
+
+const COLORS: [Color32; 4] = [
+    Color32::from_rgb(86, 180, 233),
+    Color32::from_rgb(230, 159, 0),
+    Color32::from_rgb(0, 158, 115),
+    Color32::from_rgb(204, 121, 167),
+];
+
+/// What a plot shows: its id, title, unit and abscissa.
+struct PlotSpec<'a> {
+    id: &'a str,
+    title: &'a str,
+    unit: &'a str,
+    x_label: &'a str,
+}
+
+fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Series], current: Option<(f64, [f64; 4])>, height: f32) {
+    let PlotSpec { id, title, unit, x_label } = *spec;
+    ui.label(RichText::new(format!("{title} [{unit}]")).strong());
+    Plot::new(id)
+        .height(height)
+        .legend(Legend::default())
+        .x_axis_label(x_label)
+        .y_axis_label(unit)
+        .allow_scroll(false)
+        .x_grid_spacer(round_grid)
+        .y_grid_spacer(round_grid)
+        .x_axis_formatter(|mark, _| tick_label(mark.value, mark.step_size))
+        .y_axis_formatter(|mark, _| tick_label(mark.value, mark.step_size))
+        .show(ui, |p| {
+            for (s, color) in series.iter().zip(COLORS) {
+                p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8));
+                p.points(Points::new(s.name.clone(), s.points.clone()).color(color).radius(2.0));
+            }
+            if let Some((x, values)) = current {
+                p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
+                for (v, color) in values.iter().zip(COLORS) {
+                    p.points(Points::new("this case", vec![[x, *v]]).color(color).shape(MarkerShape::Diamond).radius(6.0));
+                }
+            }
+        });
+}
+
+/// A tick label with as many decimals as its grid step needs (0.5 steps show "0.5", not "0" twice).
+#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+fn tick_label(value: f64, step: f64) -> String {
+    let decimals = if step >= 1.0 || step <= 0.0 { 0 } else { (-step.log10()).ceil().clamp(0.0, 12.0) as usize };
+    format!("{value:.decimals$}")
+}
+
+/// Grid lines at round values (1, 2 or 5 × 10ⁿ apart, about five labelled), with fainter lines at a
+/// fifth of that step: the default decade grid leaves a 0–90 MN/m axis with a single label.
+#[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss, clippy::needless_pass_by_value)]
+fn round_grid(input: GridInput) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    let ticks = nice_ticks(lo, hi, 5);
+    let step = match ticks.as_slice() {
+        [a, b, ..] => b - a,
+        _ => return ticks.into_iter().map(|value| GridMark { value, step_size: (hi - lo).abs().max(1e-12) }).collect(),
+    };
+    let minor = step / 5.0;
+    let (first, last) = ((lo / minor).ceil() as i64, (hi / minor).floor() as i64);
+    let minors = (first..=last).map(|k| k as f64 * minor).filter(|v| ((v / step) - (v / step).round()).abs() > 1e-6);
+    ticks.iter().map(|&value| GridMark { value, step_size: step }).chain(minors.map(|value| GridMark { value, step_size: minor })).collect()
+}
+
+/// The two plots.
+pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot) {
+    let h = ((ui.available_height() - 300.0) / 2.0).max(150.0);
+    let spec = |id, title, unit| PlotSpec { id, title, unit, x_label: plot.x_label };
+    plot_ui(ui, &spec("stiffness", "Reduced stiffness K", "MN/m"), &plot.stiffness, plot.current.map(|c| (c.0, c.1)), h);
+    plot_ui(ui, &spec("damping", "Reduced damping C", "kN·s/m"), &plot.damping, plot.current.map(|c| (c.0, c.2)), h);
+    for (x, why) in &plot.failures {
+        ui.label(RichText::new(format!("No solution at {x:.0}: {why}")).color(Color32::from_rgb(230, 120, 60)));
+    }
+}
+
+/// The full matrices.
+pub fn matrix_table_ui(ui: &mut Ui, table: &MatrixTable) {
+    ui.label(RichText::new("Full coefficients over journal and pad coordinates (SI: force or moment per unit of the column coordinate)").strong());
+    ScrollArea::both().id_salt("matrices").show(ui, |ui| {
+        for (name, m) in [("K (stiffness)", &table.k), ("C (damping)", &table.c), ("M (pad inertia)", &table.m)] {
+            ui.label(name);
+            Grid::new(name).striped(true).show(ui, |ui| {
+                ui.label("");
+                for h in &table.headers {
+                    ui.label(RichText::new(h).small());
+                }
+                ui.end_row();
+                for (h, row) in table.headers.iter().zip(m) {
+                    ui.label(RichText::new(h).small());
+                    for v in row {
+                        ui.label(RichText::new(format!("{v:.3e}")).monospace().small());
+                    }
+                    ui.end_row();
+                }
+            });
+            ui.add_space(6.0);
+        }
+    });
+}

@@ -1,0 +1,8 @@
+//! The views of the central area and the results panel. Each reads drawables from [`crate::scene`];
+//! none computes physics.
+
+pub mod bearing_view;
+pub mod coefficients_view;
+pub mod field_view;
+pub mod placeholders;
+pub mod results_panel;

@@ -1,0 +1,48 @@
+//! The results panel: the scalar results in display units with their meaning, per-pad results, and the
+//! solver report with its warnings — shown plainly, including when the result is stale or failed.
+
+use egui::{Color32, Grid, RichText, Ui};
+
+use crate::scene::summary::Summary;
+
+/// Draws the summary; `hide_timings` replaces wall-clock times (for reproducible screenshots).
+pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
+    for group in &summary.groups {
+        egui::CollapsingHeader::new(RichText::new(group.title).strong()).default_open(true).show(ui, |ui| {
+            Grid::new(group.title).num_columns(3).striped(true).show(ui, |ui| {
+                for row in &group.rows {
+                    ui.label(row.label).on_hover_text(row.meaning);
+                    let value = if hide_timings && row.unit == "ms" { "—".to_string() } else { row.value.clone() };
+                    ui.label(RichText::new(value).monospace()).on_hover_text(row.meaning);
+                    ui.label(row.unit);
+                    ui.end_row();
+                }
+            });
+        });
+    }
+    egui::CollapsingHeader::new(RichText::new("Pads").strong()).default_open(true).show(ui, |ui| {
+        Grid::new("pads").striped(true).show(ui, |ui| {
+            for h in ["pad", "tilt [mrad]", "h_min [µm]", "p_max [MPa]", "load [N]", "orifice [l/min]", "cavitated"] {
+                ui.label(RichText::new(h).small());
+            }
+            ui.end_row();
+            for p in &summary.pads {
+                ui.label(format!("{}{}", p.index, if p.unloaded { " (unloaded)" } else { "" }));
+                ui.label(p.tilt_mrad.map_or("fixed".into(), |t| format!("{t:.4}")));
+                ui.label(format!("{:.2}", p.h_min_um));
+                ui.label(format!("{:.3}", p.p_max_mpa));
+                ui.label(format!("{:.0}", p.load_n));
+                ui.label(p.orifice_flow_l_min.map_or("–".into(), |q| format!("{q:.3}")));
+                ui.label(format!("{:.0} %", p.cavitated_percent));
+                ui.end_row();
+            }
+        });
+    });
+    if summary.warnings.is_empty() {
+        ui.label(RichText::new("No solver warnings").weak());
+    } else {
+        for w in &summary.warnings {
+            ui.label(RichText::new(format!("Warning: {w}")).color(Color32::from_rgb(230, 160, 60)));
+        }
+    }
+}

@@ -1,0 +1,23 @@
+//! Results → plain drawables. The workbench's views draw what this module computes; nothing here knows
+//! about egui, so every picture can be built and tested without a GPU (`cargo test --lib
+//! --no-default-features` runs these tests).
+//!
+//! - [`colormap`]: perceptually uniform colour maps (viridis, inferno) as small tables.
+//! - [`field`]: a pad's scalar fields unwrapped onto (s, z), mirrored for half models, sampled and rasterised.
+//! - [`flowlines`]: streamlines of the film's mean velocity (Couette + Poiseuille, orifices as sources or sinks).
+//! - [`outline`]: the bearing cross-section to scale with an exaggerated clearance.
+//! - [`plots`]: reduced coefficients against frequency ratio or speed, the full-matrix table.
+//! - [`summary`]: the results panel's rows in display units.
+//! - [`export`]: CSV of the nodal fields, JSON of the results.
+//!
+//! Positions are SI (metres, radians) in the solver's bearing frame or a pad's (s, z) frame; a view maps
+//! them to the screen. Display units appear only in values meant to be read (legends, rows, plot series),
+//! and their names say so.
+
+pub mod colormap;
+pub mod export;
+pub mod field;
+pub mod flowlines;
+pub mod outline;
+pub mod plots;
+pub mod summary;

@@ -1,0 +1,212 @@
+//! The results panel as rows of text in display units, with what each quantity means.
+//!
+//! Conversion to engineering units happens here, once, and every row says its unit. Quantities the
+//! solution does not have (the maximum temperature of an isothermal solve) say so instead of showing a
+//! number.
+
+use crate::bearing::solution::Solution;
+
+/// One labelled value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    pub label: &'static str,
+    pub value: String,
+    pub unit: &'static str,
+    /// Physical meaning, for a tooltip.
+    pub meaning: &'static str,
+}
+
+/// A titled group of rows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Group {
+    pub title: &'static str,
+    pub rows: Vec<Row>,
+}
+
+/// Per-pad results in display units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PadRow {
+    pub index: usize,
+    pub tilt_mrad: Option<f64>,
+    pub h_min_um: f64,
+    pub p_max_mpa: f64,
+    pub load_n: f64,
+    /// Net orifice flow into the film [l/min]; negative = oil leaves through the hole.
+    pub orifice_flow_l_min: Option<f64>,
+    pub cavitated_percent: f64,
+    pub unloaded: bool,
+}
+
+/// Everything the results panel shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Summary {
+    pub groups: Vec<Group>,
+    pub pads: Vec<PadRow>,
+    pub warnings: Vec<String>,
+}
+
+const M3S_TO_L_MIN: f64 = 60_000.0;
+
+fn row(label: &'static str, value: String, unit: &'static str, meaning: &'static str) -> Row {
+    Row { label, value, unit, meaning }
+}
+
+/// Four significant figures, without scientific notation for ordinary magnitudes.
+#[must_use]
+pub fn sig4(x: f64) -> String {
+    if !x.is_finite() {
+        return format!("{x}");
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let mag = x.abs().log10().floor();
+    if !(-4.0..6.0).contains(&mag) {
+        return format!("{x:.3e}");
+    }
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let decimals = (3.0 - mag).max(0.0) as usize;
+    format!("{x:.decimals$}")
+}
+
+/// Builds the summary of a solution.
+#[must_use]
+#[allow(clippy::too_many_lines)]
+pub fn summary(s: &Solution) -> Summary {
+    let f = &s.flows_m3_per_s;
+    let r = &s.report;
+    let operating = Group {
+        title: "Operating point",
+        rows: vec![
+            row("Speed", sig4(s.derived.speed_rpm), "rpm", "Journal speed Ω."),
+            row("Load", sig4(s.load_magnitude_n), "N", "Static load carried by the film, equal and opposite to the film force."),
+            row("Eccentricity ε", format!("{:.4}", s.eccentricity_ratio), "–", "Journal displacement from the bearing centre divided by the assembled clearance Cb."),
+            row(
+                "Attitude angle",
+                format!("{:.2}", s.attitude_angle_deg),
+                "°",
+                "Angle from the load direction to the journal displacement, positive in the direction of rotation. Zero for a symmetric load-on-pad tilting-pad bearing.",
+            ),
+            row("Journal x, y", format!("{:.2}, {:.2}", s.journal_position_m[0] * 1e6, s.journal_position_m[1] * 1e6), "µm", "Journal centre displacement in the bearing frame (y up)."),
+            row("h_min", format!("{:.2}", s.h_min_m * 1e6), "µm", "Smallest film thickness on any pad: the margin against metal contact."),
+            row("p_max", format!("{:.3}", s.p_max_pa * 1e-6), "MPa", "Largest film pressure on any pad (babbitt fatigue limit is typically a few MPa)."),
+            match &s.thermal {
+                Some(t) => row(
+                    "T_max",
+                    match t.t_max_pad_c {
+                        Some(tp) => format!("{:.1} film, {tp:.1} pad", t.t_max_film_c),
+                        None => format!("{:.1} film", t.t_max_film_c),
+                    },
+                    "°C",
+                    "Largest film temperature and largest pad (surface or body) temperature from the thermal model.",
+                ),
+                None => row(
+                    "T_max",
+                    "— (isothermal)".into(),
+                    "°C",
+                    "Largest film or pad temperature. The isothermal model uses one film temperature; switch the physics to THD to compute temperatures.",
+                ),
+            },
+            row("Power loss", sig4(s.friction_power_w), "W", "Viscous shear power dissipated in the films (friction loss)."),
+            row("Friction torque", sig4(s.friction_torque_nm), "N·m", "Drag torque of the films on the journal."),
+            row(
+                "Sommerfeld S",
+                s.sommerfeld.map_or_else(|| "— (no load)".into(), sig4),
+                "–",
+                "S = µ N L D / W (R/Cb)², with the film viscosity and the assembled clearance: the bearing's duty in one number (large S = lightly loaded).",
+            ),
+            row("Film viscosity", sig4(s.derived.film_viscosity_pa_s * 1e3), "mPa·s", "Viscosity of the isothermal film, from the lubricant's law at the film temperature."),
+        ],
+    };
+    let flows = Group {
+        title: "Flows",
+        rows: vec![
+            row("Leading edges in", format!("{:.3}", f.leading_edges_in * M3S_TO_L_MIN), "l/min", "Oil drawn into the films at the pads' leading edges."),
+            row("Orifices in", format!("{:.3}", f.orifices_in * M3S_TO_L_MIN), "l/min", "Net flow injected through the orifices (negative: oil leaves through the holes)."),
+            row("Trailing edges out", format!("{:.3}", f.trailing_edges_out * M3S_TO_L_MIN), "l/min", "Oil carried out at the trailing edges (partly carried over to the next pad)."),
+            row("Sides out", format!("{:.3}", f.sides_out * M3S_TO_L_MIN), "l/min", "Side leakage at the axial ends: this is the flow the supply must replace."),
+            row("Into cavitation", format!("{:.3}", f.to_cavitation * M3S_TO_L_MIN), "l/min", "Net flow from the full film into cavitated (ruptured) regions; negative where more oil re-enters the full film at reformation than leaves it at rupture."),
+            row("Mass balance", format!("{:.1e}", f.mass_balance_error), "–", "(in − out) / throughput of the discrete solution: should be round-off small."),
+        ],
+    };
+    let k = s.reduced.k_n_per_m;
+    let c = s.reduced.c_ns_per_m;
+    let coeffs = Group {
+        title: "Reduced coefficients",
+        rows: vec![
+            row("ω/Ω", sig4(s.inputs.operating.excitation_ratio), "–", "Excitation frequency ratio used for the reduction of the pad coordinates."),
+            row("Kxx, Kxy", format!("{}, {}", sig4(k[0][0] * 1e-6), sig4(k[0][1] * 1e-6)), "MN/m", "Stiffness: force in x per displacement in x, y."),
+            row("Kyx, Kyy", format!("{}, {}", sig4(k[1][0] * 1e-6), sig4(k[1][1] * 1e-6)), "MN/m", "Stiffness: force in y per displacement in x, y."),
+            row("Cxx, Cxy", format!("{}, {}", sig4(c[0][0] * 1e-3), sig4(c[0][1] * 1e-3)), "kN·s/m", "Damping: force in x per velocity in x, y."),
+            row("Cyx, Cyy", format!("{}, {}", sig4(c[1][0] * 1e-3), sig4(c[1][1] * 1e-3)), "kN·s/m", "Damping: force in y per velocity in x, y."),
+        ],
+    };
+    let solver = Group {
+        title: "Solver report",
+        rows: vec![
+            row("Method", r.method.clone(), "", "How equilibrium was found: coupled Newton on journal and pad coordinates; pad assembly (nested Newton), a scan along the load and load continuation as fallbacks."),
+            row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations."),
+            row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations."),
+            row("Residual", format!("{:.1e} (pads {:.1e})", r.residual, r.pad_residual), "–", "Final force residual relative to the force scale, and the largest pad residual."),
+            row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the equilibrium and coefficient solve."),
+            row("Film nodes", s.derived.film_nodes.to_string(), "", "Finite-element nodes over all pads (mesh fidelity)."),
+        ],
+    };
+    let pads = s
+        .pads
+        .iter()
+        .map(|p| PadRow {
+            index: p.index,
+            tilt_mrad: p.tilt_rad.map(|t| t * 1e3),
+            h_min_um: p.h_min_m * 1e6,
+            p_max_mpa: p.p_max_pa * 1e-6,
+            load_n: p.force_n[0].hypot(p.force_n[1]),
+            orifice_flow_l_min: (!p.orifice_flows_m3_per_s.is_empty()).then(|| p.orifice_flows_m3_per_s.iter().sum::<f64>() * M3S_TO_L_MIN),
+            cavitated_percent: 100.0 * p.cavitated_fraction,
+            unloaded: p.unloaded,
+        })
+        .collect();
+    let mut groups = vec![operating, flows];
+    let mut warnings = r.warnings.clone();
+    if let Some(t) = &s.thermal {
+        groups.push(thermal_group(t));
+        warnings.extend(t.report.warnings.iter().cloned());
+    }
+    groups.extend([coeffs, solver]);
+    Summary { groups, pads, warnings }
+}
+
+/// The thermal results (THD solves only).
+fn thermal_group(t: &crate::bearing::solution::ThermalResult) -> Group {
+    let inlets: Vec<String> = t.inlet_temperatures_c.iter().map(|v| format!("{v:.1}")).collect();
+    let rep = &t.report;
+    Group {
+        title: "Thermal (THD)",
+        rows: vec![
+            row("Film-pad condition", format!("{:?}", t.pad_film_bc), "", "How heat passes between film and pad: BC1 adiabatic film, BC2 exchange coefficient, BC3 Knight & Barrett parabola."),
+            row("Film T max, mean", format!("{:.1}, {:.1}", t.t_max_film_c, t.t_mean_film_c), "°C", "Hottest and mean film temperature (averaged across the film thickness)."),
+            row("Pad T max", t.t_max_pad_c.map_or_else(|| "—".into(), |v| format!("{v:.1}")), "°C", "Hottest point of the pads (the babbitt limit is ~120–130 °C)."),
+            row("Journal T", format!("{:.1}", t.journal_temperature_c), "°C", "Journal surface temperature: given, or from zero net heat flux into the journal."),
+            row("Inlet T per pad", inlets.join(", "), "°C", "Leading-edge oil temperature of each pad from the groove mixing of hot carried-over oil with fresh supply."),
+            row("Heat to oil, conducted", format!("{}, {}", sig4(t.heat_carried_by_oil_w), sig4(t.heat_conducted_w)), "W", "Friction power leaves as enthalpy of the oil and by conduction into pads and journal."),
+            row("Energy balance", format!("{:.1e}", t.energy_balance_closure), "–", "(power − heat to oil − heat conducted) / power: the discrete energy balance, should be small."),
+            row("Thermal loop", format!("{} iterations, {:.0} ms", rep.outer_iterations, rep.seconds * 1e3), "", "Outer iterations of equilibrium + temperatures until the viscosity field converged, and their wall time."),
+            row("Viscosity change", rep.viscosity_change.last().map_or_else(|| "—".into(), |v| format!("{v:.1e}")), "–", "Largest nodal relative viscosity change of the last outer iteration (converged below 1e-4)."),
+        ],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn four_significant_figures() {
+        assert_eq!(sig4(1918.0), "1918");
+        assert_eq!(sig4(9000.0), "9000");
+        assert_eq!(sig4(0.012345), "0.01235");
+        assert_eq!(sig4(123.456), "123.5");
+        assert_eq!(sig4(2.5e7), "2.500e7");
+        assert_eq!(sig4(0.0), "0");
+    }
+}

@@ -1,0 +1,333 @@
+//! The workbench driven headlessly (egui_kittest): every view rendered on a fixed case and compared with
+//! the PNGs under `tests/snapshots/` (CPU rendering through wgpu: Mesa lavapipe or llvmpipe), and the
+//! editor driven as a user would — change a value, wait for the background solve, check the displayed
+//! result; type an invalid value, check the message and that the last result stays.
+//!
+//! Create or refresh the snapshots with `UPDATE_SNAPSHOTS=1 cargo test --test workbench_ui`.
+#![cfg(feature = "gui")]
+
+use std::time::{Duration, Instant};
+
+use egui::accesskit::Role;
+use egui_kittest::kittest::{NodeT, Queryable};
+use egui_kittest::{Harness, SnapshotOptions};
+use tiltpad::app::state::{CoefficientAxis, PadChoice, Persisted, View};
+use tiltpad::app::WorkbenchApp;
+use tiltpad::scene::field::FieldKind;
+
+const SIZE: [f32; 2] = [1400.0, 860.0];
+
+/// The app on a shipped case (the compressor bearing unless `preset_toml` is given), solved.
+fn solved_app(preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
+    let mut persisted = Persisted::default();
+    if let Some(text) = preset_toml {
+        persisted.case_toml = Some(text.to_string());
+        persisted.case_name = "test case".into();
+    }
+    setup(&mut persisted);
+    let mut h = Harness::builder().with_size(SIZE).build_eframe(move |cc| {
+        let mut app = WorkbenchApp::with_state(&cc.egui_ctx, persisted);
+        app.hide_timings = true;
+        app
+    });
+    wait_for_solve(&mut h);
+    h
+}
+
+/// Steps frames until the worker is idle with a result on screen, then lets the UI settle.
+fn wait_for_solve(h: &mut Harness<'_, WorkbenchApp>) {
+    let start = Instant::now();
+    // The first frames submit the job; then wait for the worker.
+    h.step();
+    h.step();
+    while !(h.state().is_idle() && h.state().shown.is_some()) {
+        assert!(start.elapsed() < Duration::from_secs(180), "solve did not finish: {:?}", h.state().status);
+        std::thread::sleep(Duration::from_millis(10));
+        h.step();
+    }
+    h.run_steps(3);
+}
+
+/// The text of a label (AccessKit keeps a label's text in its value).
+fn text_of(n: &egui_kittest::Node<'_>) -> String {
+    n.value().or_else(|| n.accesskit_node().label()).unwrap_or_default()
+}
+
+fn snapshot(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
+    h.snapshot_options(name, &SnapshotOptions::new().threshold(1.0).max_failed_pixels(40));
+}
+
+#[test]
+fn bearing_view_shows_the_solved_compressor_bearing() {
+    let mut h = solved_app(None, |_| {});
+    let s = h.state().shown.clone().unwrap().solution;
+    // The compressor bearing at 9000 rpm, 1918 N: a moderately loaded LOP bearing.
+    assert!(s.eccentricity_ratio > 0.1 && s.eccentricity_ratio < 0.6, "{}", s.eccentricity_ratio);
+    h.get_by_label_contains("To scale, except film");
+    snapshot(&mut h, "bearing_view");
+}
+
+#[test]
+fn field_view_shows_pressure_of_all_pads_with_flowlines_and_a_hover_readout() {
+    let mut h = solved_app(None, |p| p.view = View::Fields);
+    snapshot(&mut h, "fields_pressure_all_pads");
+    // Hover over the loaded pad (pad 3, the fourth map): the readout names the pad and a pressure.
+    let s = h.state().shown.clone().unwrap().solution;
+    let p_max_mpa = s.pads[3].p_max_pa * 1e-6;
+    h.get_by_label_contains("Hover over a pad");
+    let below = h.get_by_label_contains("Rotation: left to right").rect();
+    // Sweep the cursor over the maps (rows of pads under the note) until it is over pad 3.
+    let mut found = None;
+    for k in 0..400 {
+        let (col, row) = (k % 40, k / 40);
+        let pos = egui::pos2(below.left() + 20.0 + 14.0 * col as f32, below.bottom() + 40.0 + 30.0 * row as f32);
+        h.hover_at(pos);
+        h.run_steps(2);
+        if let Some(n) = h.query_by_label_contains("Pad 3  θ") {
+            found = Some(text_of(&n));
+            break;
+        }
+    }
+    let text = found.expect("a readout for pad 3");
+    assert!(text.contains("pressure ="), "{text}");
+    let value: f64 = text.split("pressure = ").nth(1).unwrap().split_whitespace().next().unwrap().parse().unwrap();
+    assert!(value >= 0.0 && value <= p_max_mpa * 1.0001, "{value} vs p_max {p_max_mpa}");
+}
+
+#[test]
+fn film_thickness_view_of_one_pad() {
+    let mut h = solved_app(None, |p| {
+        p.view = View::Fields;
+        p.field = FieldKind::FilmThickness;
+        p.pads = PadChoice::One(3);
+        p.flowlines = false;
+    });
+    h.get_by_label_contains("Colour scale: Film thickness [µm]");
+    snapshot(&mut h, "fields_film_thickness_pad3");
+}
+
+/// Fillon's bearing A runs the thermal model (THD, BC1): the film temperature map of all pads, T_max and
+/// the thermal group in the results.
+#[test]
+fn film_temperature_view_of_a_thermal_solve() {
+    let mut h = solved_app(Some(include_str!("../cases/fillon-a.toml")), |p| {
+        p.view = View::Fields;
+        p.field = FieldKind::FilmTemperature;
+        p.pads = PadChoice::All;
+        p.flowlines = false;
+    });
+    let s = h.state().shown.clone().unwrap().solution;
+    let t = s.thermal.as_ref().expect("a THD solution");
+    // Hotter than the 40 °C supply, well below a babbitt limit.
+    assert!(t.t_max_film_c > 55.0 && t.t_max_film_c < 100.0, "{}", t.t_max_film_c);
+    h.get_by_label_contains("Colour scale: Film temperature");
+    h.get_by_label_contains(&format!("{:.1} film", t.t_max_film_c));
+    h.get_by_label_contains("Thermal (THD)");
+    snapshot(&mut h, "fields_film_temperature_fillon");
+}
+
+/// The test rig with 17 bar on the lower pad (Publication 4, Fig. 6): the flow reverses upstream of the
+/// orifice. With injection off, the orifice is a sink.
+#[test]
+fn flowlines_show_the_injection_source_and_the_sink() {
+    let rig = include_str!("../cases/test-rig.toml").replace("injection_pressure_bar = [10.0, 0.0]", "injection_pressure_bar = [17.0, 0.0]");
+    let rig: &'static str = Box::leak(rig.into_boxed_str());
+    let mut h = solved_app(Some(rig), |p| {
+        p.view = View::Fields;
+        p.pads = PadChoice::All;
+    });
+    let s = h.state().shown.clone().unwrap().solution;
+    assert!(s.pads[0].orifice_flows_m3_per_s[0] > 0.0, "lower pad injects");
+    assert!(s.pads[1].orifice_flows_m3_per_s[0] < 0.0, "upper pad's open orifice drains");
+    snapshot(&mut h, "flowlines_test_rig_17bar");
+}
+
+#[test]
+fn coefficient_view_plots_the_frequency_sweep_and_the_full_matrices() {
+    let mut h = solved_app(None, |p| p.view = View::Coefficients);
+    let shown = h.state().shown.clone().unwrap();
+    let sweep = shown.frequency_sweep.unwrap();
+    assert_eq!(sweep.len(), 31);
+    // The synchronous point of the sweep is the case's own reduced coefficients.
+    let sync = sweep.iter().find(|(r, _)| (*r - 1.0).abs() < 1e-12).unwrap().1;
+    assert_eq!(sync.k_n_per_m, shown.solution.reduced.k_n_per_m);
+    h.get_by_label_contains("Reduced stiffness K [MN/m]");
+    assert_eq!(h.get_all_by_label("pad3.tilt [rad]").count(), 6, "row and column header in K, C and M");
+    snapshot(&mut h, "coefficients_frequency");
+}
+
+#[test]
+fn coefficient_view_against_speed_runs_a_background_sweep() {
+    let mut h = solved_app(None, |p| {
+        p.view = View::Coefficients;
+        p.axis = CoefficientAxis::Speed;
+    });
+    let sweep = h.state().shown.clone().unwrap().speed_sweep.expect("speed sweep");
+    assert_eq!(sweep.len(), 11);
+    // 4500 … 13 500 rpm. A point where the solver fails is listed in the view, not hidden.
+    let ecc: Vec<f64> = sweep.iter().filter_map(|p| p.result.as_ref().ok()).map(|v| v.eccentricity_ratio).collect();
+    assert_eq!(ecc.len(), 11, "every point converges: {sweep:?}");
+    assert!(ecc.windows(2).all(|w| w[1] < w[0]), "the journal rises with speed: {ecc:?}");
+    for p in sweep.iter().filter(|p| p.result.is_err()) {
+        h.get_by_label_contains(&format!("No solution at {:.0}", p.speed_rpm));
+    }
+    snapshot(&mut h, "coefficients_speed");
+}
+
+#[test]
+fn placeholder_views_say_what_they_will_show() {
+    let mut h = solved_app(None, |p| p.view = View::Rotor);
+    h.get_by_label_contains("Campbell diagram");
+    h.get_by_label("Pad deformation").click();
+    h.run();
+    h.get_by_label_contains("bending modes");
+    h.get_by_label("FRF").click();
+    h.run();
+    h.get_by_label_contains("Bode plots");
+    snapshot(&mut h, "placeholder_frf");
+}
+
+fn spin_button<'a>(h: &'a Harness<'_, WorkbenchApp>, label: &'a str) -> egui_kittest::Node<'a> {
+    h.get_by_role_and_label(Role::SpinButton, label)
+}
+
+#[test]
+fn editing_the_speed_resolves_and_updates_the_results() {
+    let mut h = solved_app(None, |_| {});
+    let before = h.state().shown.clone().unwrap().solution;
+    h.get_by_label(&format!("{:.4}", before.eccentricity_ratio));
+    spin_button(&h, "Speed").set_value_accesskit(6000.0);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.file().operating.speed_rpm, 6000.0);
+    wait_for_solve(&mut h);
+    let after = h.state().shown.clone().unwrap().solution;
+    assert!((after.derived.speed_rpm - 6000.0).abs() < 1e-9);
+    // Slower: less oil dragged into the wedge, the journal sinks.
+    assert!(after.eccentricity_ratio > before.eccentricity_ratio + 0.01, "{} → {}", before.eccentricity_ratio, after.eccentricity_ratio);
+    assert!(after.h_min_m < before.h_min_m);
+    // The results panel shows the new numbers, not the old.
+    h.get_by_label(&format!("{:.4}", after.eccentricity_ratio));
+    assert!(h.query_by_label(&format!("{:.4}", before.eccentricity_ratio)).is_none());
+    assert!(!h.state().result_is_stale());
+    // Undo brings the old case and result back.
+    h.get_by_label("Undo").click();
+    h.run_steps(2);
+    wait_for_solve(&mut h);
+    assert!((h.state().shown.clone().unwrap().solution.eccentricity_ratio - before.eccentricity_ratio).abs() < 1e-6);
+}
+
+#[test]
+fn an_invalid_value_is_flagged_in_place_and_the_last_result_stays() {
+    let mut h = solved_app(None, |_| {});
+    let before = h.state().shown.clone().unwrap().solution;
+    spin_button(&h, "Pad length L").set_value_accesskit(-5.0);
+    h.run_steps(3);
+    // The message sits in the editor, naming the key and the allowed range.
+    // In place under the field, at the top of the editor and in the status bar.
+    let messages: Vec<String> = h.get_all_by_label_contains("`bearing.length_mm` = -5 is out of range").map(|n| text_of(&n)).collect();
+    assert_eq!(messages.len(), 3, "{messages:?}");
+    let msg = &messages[0];
+    assert!(msg.contains("(0, 10000]"), "{msg}");
+    // Nothing new is solved; the old result stays on screen, marked as not matching the case.
+    std::thread::sleep(Duration::from_millis(200));
+    h.run_steps(3);
+    let shown = h.state().shown.clone().unwrap().solution;
+    assert!(std::sync::Arc::ptr_eq(&shown, &before));
+    assert!(h.state().result_is_stale());
+    h.get_by_label(&format!("{:.4}", before.eccentricity_ratio));
+    assert_eq!(h.get_all_by_label_contains("Showing the last valid result").count(), 2, "bearing view and results panel");
+    snapshot(&mut h, "editor_invalid_value");
+}
+
+/// Clicks File → Open preset → `name`.
+fn open_preset(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
+    h.get_by_label("File").click();
+    h.run_steps(2);
+    h.get_by_label("Open preset").hover();
+    h.run_steps(2);
+    h.get_by_label(name).click();
+    h.run_steps(2);
+}
+
+#[test]
+fn opening_a_preset_over_unsaved_changes_asks_first() {
+    let mut h = solved_app(None, |_| {});
+    spin_button(&h, "Load W").set_value_accesskit(2500.0);
+    h.run_steps(2);
+    assert!(h.state().doc.is_dirty());
+    open_preset(&mut h, "test-rig.toml");
+    // The guard holds the preset back until the user decides.
+    h.get_by_label_contains("has changes that are not saved");
+    assert_eq!(h.state().doc.name, "compressor-bearing.toml");
+    h.get_by_label("Cancel").click();
+    h.run_steps(2);
+    assert!(h.query_by_label_contains("has changes that are not saved").is_none());
+    assert_eq!(h.state().doc.file().operating.load_n, Some(2500.0));
+    // Again, and discard this time.
+    open_preset(&mut h, "test-rig.toml");
+    h.get_by_label("Discard changes").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.name, "test-rig.toml");
+    assert!(!h.state().doc.is_dirty() && !h.state().doc.can_undo());
+    wait_for_solve(&mut h);
+    assert_eq!(h.state().shown.clone().unwrap().solution.pads.len(), 2);
+}
+
+/// A file dropped on the window, as the native integration hands it over.
+#[derive(Debug)]
+struct Dropped(std::path::PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+#[test]
+fn a_dropped_case_file_is_opened_and_solved() {
+    let mut h = solved_app(None, |_| {});
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("cases/fillon-a.toml");
+    h.input_mut().dropped_files.push(std::sync::Arc::new(Dropped(path)));
+    h.run_steps(3);
+    assert_eq!(h.state().doc.name, "fillon-a.toml");
+    wait_for_solve(&mut h);
+    let s = h.state().shown.clone().unwrap().solution;
+    assert_eq!(s.pads.len(), 4);
+    assert!((s.load_magnitude_n - 10_000.0).abs() < 1e-3 * 10_000.0);
+}
+
+/// eframe's storage, in memory.
+#[derive(Default)]
+struct MemoryStorage(std::collections::HashMap<String, String>);
+
+impl eframe::Storage for MemoryStorage {
+    fn get_string(&self, key: &str) -> Option<String> {
+        self.0.get(key).cloned()
+    }
+    fn set_string(&mut self, key: &str, value: String) {
+        self.0.insert(key.to_string(), value);
+    }
+    fn remove_string(&mut self, key: &str) {
+        self.0.remove(key);
+    }
+    fn flush(&mut self) {}
+}
+
+#[test]
+fn the_edited_case_and_the_view_survive_a_restart() {
+    let mut h = solved_app(None, |p| p.view = View::Fields);
+    spin_button(&h, "Speed").set_value_accesskit(7500.0);
+    h.run_steps(2);
+    let mut storage = MemoryStorage::default();
+    eframe::App::save(h.state_mut(), &mut storage);
+    let restored: Persisted = eframe::get_value(&storage, eframe::APP_KEY).expect("persisted state");
+    assert_eq!(restored.view, View::Fields);
+    let ctx = egui::Context::default();
+    let app = WorkbenchApp::with_state(&ctx, restored);
+    assert_eq!(app.doc.file().operating.speed_rpm, 7500.0);
+    assert_eq!(app.doc.name, "compressor-bearing.toml");
+    assert!(app.doc.is_dirty(), "the restored edit is still unsaved");
+}

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Builds the web workbench into web/pkg/ (serve web/ with any static file server, e.g.
+# `python3 -m http.server -d web 8080`, and open http://127.0.0.1:8080).
+#
+# Needs the wasm target and the wasm-bindgen CLI matching the wasm-bindgen crate (=0.2.130); installs
+# them when missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rustup target add wasm32-unknown-unknown
+if [[ "$(wasm-bindgen --version 2>/dev/null)" != "wasm-bindgen 0.2.130" ]]; then
+  cargo install wasm-bindgen-cli --version 0.2.130
+fi
+cargo build --release --target wasm32-unknown-unknown --bin tiltpad
+target_dir="${CARGO_TARGET_DIR:-target}"
+wasm-bindgen --target web --no-typescript --out-dir web/pkg "$target_dir/wasm32-unknown-unknown/release/tiltpad.wasm"
+echo "built web/pkg/ — serve web/ and open index.html"
