@@ -106,6 +106,23 @@ fn film_thickness_view_of_one_pad() {
     snapshot(&mut h, "fields_film_thickness_pad3");
 }
 
+/// The fidelity selector shows what the chosen level costs and how accurate it is (measured by the bench).
+#[test]
+fn fidelity_group_shows_the_expected_error_and_time() {
+    // A tall window, so that the opened group is inside the editor's visible area.
+    let mut h = Harness::builder().with_size([1400.0, 2600.0]).build_eframe(|cc| {
+        let mut app = WorkbenchApp::with_state(&cc.egui_ctx, Persisted::default());
+        app.hide_timings = true;
+        app
+    });
+    wait_for_solve(&mut h);
+    h.get_by_label("Fidelity").click();
+    h.run_steps(2);
+    let note = h.get_by_label_contains("Expected (compressor bearing)");
+    let text = text_of(&note);
+    assert!(text.contains("isothermal:") && text.contains(" ms, ε ±"), "{text}");
+}
+
 /// Fillon's bearing A runs the thermal model (THD, BC1): the film temperature map of all pads, T_max and
 /// the thermal group in the results.
 #[test]

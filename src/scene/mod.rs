@@ -9,6 +9,7 @@
 //! - [`plots`]: reduced coefficients against frequency ratio or speed, the full-matrix table.
 //! - [`summary`]: the results panel's rows in display units.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
+//! - [`fidelity`]: the measured time and error of each fidelity level (from `tiltpad bench`).
 //!
 //! Positions are SI (metres, radians) in the solver's bearing frame or a pad's (s, z) frame; a view maps
 //! them to the screen. Display units appear only in values meant to be read (legends, rows, plot series),
@@ -16,6 +17,7 @@
 
 pub mod colormap;
 pub mod export;
+pub mod fidelity;
 pub mod field;
 pub mod flowlines;
 pub mod outline;

@@ -352,6 +352,17 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
             }
         },
     ));
+    // What this level costs and how accurate it is (measured by `tiltpad bench`).
+    if let Some(table) = crate::scene::fidelity::shipped() {
+        let name = format!("{fid:?}").to_lowercase();
+        let lines = table.describe(&name);
+        if !lines.is_empty() {
+            ui.label("");
+            ui.label(egui::RichText::new(format!("Expected ({}):\n{}", "compressor bearing", lines.join("\n"))).weak().small())
+                .on_hover_text(format!("Measured by `tiltpad bench` on {} ({}): median wall time of a complete solve and the error against a reference-fine mesh. Other bearings scale with their number of film nodes.", table.machine, table.generated));
+            ui.end_row();
+        }
+    }
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     for (key, label, level, get, set) in COUNTS {
         let num = Num { key, label, unit: "", range: (2.0, 200.0), decimals: 0, tip: "Explicit element count, overriding the fidelity level." };
