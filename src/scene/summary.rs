@@ -51,6 +51,12 @@ fn row(label: &'static str, value: String, unit: &'static str, meaning: &'static
     Row { label, value, unit, meaning }
 }
 
+/// A relative residual or balance: round-off (below 1e-12) is shown as such, not as its noise digits.
+#[must_use]
+pub fn small(x: f64) -> String {
+    if x.abs() < 1e-12 { "< 1e-12".into() } else { format!("{x:.1e}") }
+}
+
 /// Four significant figures, without scientific notation for ordinary magnitudes.
 #[must_use]
 pub fn sig4(x: f64) -> String {
@@ -126,7 +132,7 @@ pub fn summary(s: &Solution) -> Summary {
             row("Trailing edges out", format!("{:.3}", f.trailing_edges_out * M3S_TO_L_MIN), "l/min", "Oil carried out at the trailing edges (partly carried over to the next pad)."),
             row("Sides out", format!("{:.3}", f.sides_out * M3S_TO_L_MIN), "l/min", "Side leakage at the axial ends: this is the flow the supply must replace."),
             row("Into cavitation", format!("{:.3}", f.to_cavitation * M3S_TO_L_MIN), "l/min", "Net flow from the full film into cavitated (ruptured) regions; negative where more oil re-enters the full film at reformation than leaves it at rupture."),
-            row("Mass balance", format!("{:.1e}", f.mass_balance_error), "–", "(in − out) / throughput of the discrete solution: should be round-off small."),
+            row("Mass balance", small(f.mass_balance_error), "–", "(in − out) / throughput of the discrete solution: should be round-off small."),
         ],
     };
     let k = s.reduced.k_n_per_m;
@@ -147,7 +153,7 @@ pub fn summary(s: &Solution) -> Summary {
             row("Method", r.method.clone(), "", "How equilibrium was found: coupled Newton on journal and pad coordinates; pad assembly (nested Newton), a scan along the load and load continuation as fallbacks."),
             row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations."),
             row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations."),
-            row("Residual", format!("{:.1e} (pads {:.1e})", r.residual, r.pad_residual), "–", "Final force residual relative to the force scale, and the largest pad residual."),
+            row("Residual", format!("{} (pads {})", small(r.residual), small(r.pad_residual)), "–", "Final force residual relative to the force scale, and the largest pad residual."),
             row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the equilibrium and coefficient solve."),
             row("Film nodes", s.derived.film_nodes.to_string(), "", "Finite-element nodes over all pads (mesh fidelity)."),
         ],
@@ -189,8 +195,9 @@ fn thermal_group(t: &crate::bearing::solution::ThermalResult) -> Group {
             row("Journal T", format!("{:.1}", t.journal_temperature_c), "°C", "Journal surface temperature: given, or from zero net heat flux into the journal."),
             row("Inlet T per pad", inlets.join(", "), "°C", "Leading-edge oil temperature of each pad from the groove mixing of hot carried-over oil with fresh supply."),
             row("Heat to oil, conducted", format!("{}, {}", sig4(t.heat_carried_by_oil_w), sig4(t.heat_conducted_w)), "W", "Friction power leaves as enthalpy of the oil and by conduction into pads and journal."),
-            row("Energy balance", format!("{:.1e}", t.energy_balance_closure), "–", "(power − heat to oil − heat conducted) / power: the discrete energy balance, should be small."),
-            row("Thermal loop", format!("{} iterations, {:.0} ms", rep.outer_iterations, rep.seconds * 1e3), "", "Outer iterations of equilibrium + temperatures until the viscosity field converged, and their wall time."),
+            row("Energy balance", small(t.energy_balance_closure), "–", "(power − heat to oil − heat conducted) / power: the discrete energy balance, should be small."),
+            row("Thermal loop", rep.outer_iterations.to_string(), "iterations", "Outer iterations of equilibrium + temperatures until the viscosity field converged."),
+            row("Thermal loop time", format!("{:.0}", rep.seconds * 1e3), "ms", "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing)."),
             row("Viscosity change", rep.viscosity_change.last().map_or_else(|| "—".into(), |v| format!("{v:.1e}")), "–", "Largest nodal relative viscosity change of the last outer iteration (converged below 1e-4)."),
         ],
     }
@@ -199,6 +206,12 @@ fn thermal_group(t: &crate::bearing::solution::ThermalResult) -> Group {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn round_off_is_shown_as_such() {
+        assert_eq!(small(-7.9e-17), "< 1e-12");
+        assert_eq!(small(4.4e-6), "4.4e-6");
+    }
 
     #[test]
     fn four_significant_figures() {
