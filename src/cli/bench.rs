@@ -197,8 +197,8 @@ fn svg_plot(rows: &[LevelRow]) -> String {
         let _ = writeln!(s, "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">1e{d}</text>", pad - 6.0, y(e) + 4.0);
     }
     let _ = writeln!(s, "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wall time per solve (release)</text>", w / 2.0, h - 12.0);
-    let _ = writeln!(s, "<text x=\"14\" y=\"{}\" transform=\"rotate(-90 14 {})\" text-anchor=\"middle\">largest relative error (ε, K, C, p_max)</text>", h / 2.0, h / 2.0);
-    let colours = ["#440154", "#21918c", "#fde725", "#3b528b"];
+    let _ = writeln!(s, "<text x=\"14\" y=\"{}\" transform=\"rotate(-90 14 {})\" text-anchor=\"middle\">largest relative error (ε, K, C, p_max, T_max)</text>", h / 2.0, h / 2.0);
+    let colours = ["#440154", "#21918c", "#d07000", "#3b528b"];
     let mut cases: Vec<&str> = pts.iter().map(|r| r.case.as_str()).collect();
     cases.dedup();
     for (ci, c) in cases.iter().enumerate() {
@@ -286,6 +286,19 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     #[allow(clippy::cast_precision_loss)]
     let range = pts.last().map_or(0.0, |p| p.0 as f64) / pts.first().map_or(1.0, |p| p.0 as f64);
     let _ = writeln!(md, "\nFitted t ∝ nodes^a over a {range:.0}× range: **a = {exponent:.2}** (sparse Cholesky of a 2-D grid with nested-dissection-like ordering grows as n^1.5 at worst; the coupled Newton needs a nearly constant number of film solves).");
+    let _ = writeln!(
+        md,
+        "\n## Notes\n\n\
+         - Equilibrium: a coupled Newton over journal and pad coordinates (one film solve per pad per iteration, analytic \
+           Jacobian), about 6 iterations; the nested pad-assembly method, a scan along the load and load continuation are \
+           fallbacks. Symbolic factorisations and sparsity patterns are built once per mesh.\n\
+         - Measured choices (profiled with `perf`): the sparse Cholesky takes ~40 % of an isothermal solve; faer's simplicial \
+           variant is faster up to ~1000 nodes per pad, the supernodal one from ~4600 (reference: 259 vs 307 ms), so the \
+           variant follows the pad size. Orifice integrals use sub-cells only on the hole's rim (model build 15 % → ~2 %).\n\
+         - Pads are solved on scoped threads when the film has at least 2500 nodes (native only, none on wasm); on this \
+           2-core machine that saves 2 % at standard and 7 % at reference fidelity (the rest of a solve is serial).\n\
+         - THD: about 80 % of a BC1 solve is its equilibria; BC3 couples film and pad in one LU system (see docs/THERMAL.md)."
+    );
     write_atomic(&root.join("docs").join("PERFORMANCE.md"), md.as_bytes())?;
     write_atomic(&root.join("docs").join("performance-error-vs-time.svg"), svg_plot(&rows).as_bytes())?;
     let table = FidelityTable {
