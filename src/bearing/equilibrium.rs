@@ -525,6 +525,7 @@ fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut
 }
 
 /// Film nodes above which pads are solved in parallel (below, thread start-up costs more than it saves).
+#[cfg(not(target_arch = "wasm32"))]
 const PARALLEL_MIN_NODES: usize = 2500;
 
 /// Film solves of all pads at `u`, in parallel on native targets when the meshes are large enough.

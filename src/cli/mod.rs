@@ -4,6 +4,7 @@
 //! The result documents ([`solution_json`], [`summary_text`]) build on every target (the web workbench
 //! exports them too); the commands themselves are native only.
 
+#[cfg(not(target_arch = "wasm32"))]
 mod bench;
 mod summary;
 #[cfg(not(target_arch = "wasm32"))]
