@@ -123,6 +123,7 @@ impl WorkbenchApp {
                         None => "building the model".to_string(),
                         Some(Stage::Model) => "equilibrium".into(),
                         Some(Stage::Thermal) => "thermal equilibrium done; coefficients and sweeps".into(),
+                        Some(Stage::Equilibrium) if *fraction < 1.0 => "equilibrium".into(),
                         Some(Stage::Equilibrium | Stage::Reduction) => "coefficients and sweeps".into(),
                         Some(Stage::FrequencySweep) => "speed sweep".into(),
                         Some(Stage::SpeedSweep) => format!("speed sweep {:.0} %", 100.0 * fraction),

@@ -231,6 +231,11 @@ impl eframe::App for WorkbenchApp {
         let start = Instant::now();
         self.frame_ui(ui);
         let dt = start.elapsed().as_secs_f64();
+        // The web build solves inside frames: say so in the browser console when one runs long.
+        #[cfg(target_arch = "wasm32")]
+        if dt > 0.033 {
+            log::info!("slow frame: {:.1} ms ({})", dt * 1e3, if self.worker.busy() { "solving" } else { "idle" });
+        }
         self.frame_time_s = if self.frame_time_s == 0.0 { dt } else { 0.9 * self.frame_time_s + 0.1 * dt };
         if self.recent_frames_s.len() == 120 {
             self.recent_frames_s.pop_front();

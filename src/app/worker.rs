@@ -6,7 +6,9 @@
 //!   [`Cancel`] hook compares the job's id with the latest submitted id, so even a long equilibrium stops
 //!   within one film solve.
 //! - Web (no threads): the app calls [`Worker::poll`] every frame and the pipeline steps until a time
-//!   budget is spent; one step is one stage (a preview solve of the compressor bearing takes 10–20 ms).
+//!   budget is spent; one step is one stage, or the part of an equilibrium solve that fits the budget (the
+//!   coupled Newton suspends between iterations, [`crate::bearing::Cancel::suspend`], and the next frame
+//!   resumes from its iterate). The thermal loop and sweep points are not split.
 //!
 //! A job runs in two phases: first the solution and the frequency sweep (what most views need, so they
 //! update as soon as possible), then the speed sweep if the coefficient view asked for it.
@@ -212,6 +214,23 @@ mod web {
 
     use super::{Event, Running, Superseded};
     use crate::bearing::pipeline::Pipeline;
+    use crate::bearing::Cancel;
+
+    /// Cancels a superseded job, and suspends the equilibrium once the frame's budget is spent.
+    struct Budgeted {
+        superseded: Superseded,
+        start: Instant,
+        budget_s: f64,
+    }
+
+    impl Cancel for Budgeted {
+        fn cancelled(&self) -> bool {
+            self.superseded.cancelled()
+        }
+        fn suspend(&self) -> bool {
+            self.start.elapsed().as_secs_f64() >= self.budget_s
+        }
+    }
 
     pub struct Stepper {
         pipeline: Pipeline,
@@ -234,7 +253,7 @@ mod web {
             let start = Instant::now();
             let mut events = Vec::new();
             while let Some(running) = self.running.as_mut() {
-                let cancel = Superseded { latest: latest.clone(), job: running.job };
+                let cancel = Budgeted { superseded: Superseded { latest: latest.clone(), job: running.job }, start, budget_s };
                 let (event, finished) = running.step(&mut self.pipeline, &cancel);
                 events.extend(event);
                 if finished {

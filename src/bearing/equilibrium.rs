@@ -45,11 +45,14 @@ pub struct EquilibriumParams {
     pub max_step: f64,
     /// Work budget: film solves per pad over all methods and fallbacks (bounds the time to fail).
     pub max_film_solves_per_pad: usize,
+    /// Resuming a suspended cold start ([`SolveError::Suspended`]): the pads before this index are already
+    /// placed in `start` (0: an ordinary solve).
+    pub placed_pads: usize,
 }
 
 impl Default for EquilibriumParams {
     fn default() -> Self {
-        Self { force_tol: 1e-9, pad_tol: 1e-10, max_iterations: 60, max_inner_iterations: 80, max_step: 0.4, max_film_solves_per_pad: 1500 }
+        Self { force_tol: 1e-9, pad_tol: 1e-10, max_iterations: 60, max_inner_iterations: 80, max_step: 0.4, max_film_solves_per_pad: 1500, placed_pads: 0 }
     }
 }
 
@@ -106,9 +109,24 @@ pub struct Equilibrium {
     pub report: SolveReport,
 }
 
-/// Something that can stop a solve (a superseded job).
+/// Something that can stop a solve (a superseded job) or ask it to hand its work back for now.
 pub trait Cancel {
+    /// Stop: the result is no longer wanted.
     fn cancelled(&self) -> bool;
+    /// Pause at the next safe point (the web build, which has no threads, when a frame's time budget is
+    /// spent): the coupled Newton returns [`SolveError::Suspended`] with its current iterate after at least
+    /// one iteration, and the caller resumes by warm-starting from it.
+    fn suspend(&self) -> bool {
+        false
+    }
+}
+
+/// Forwards cancellation but never suspends (solves that cannot be resumed: fallbacks, thermal, sweeps).
+pub struct NoSuspend<'a>(pub &'a dyn Cancel);
+impl Cancel for NoSuspend<'_> {
+    fn cancelled(&self) -> bool {
+        self.0.cancelled()
+    }
 }
 
 /// Never cancels.
@@ -633,22 +651,36 @@ fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ct
     // Unloaded pads already re-examined in this solve.
     let mut rechecked = vec![false; model.pads.len()];
     let mut states = if cold {
-        match solve_all_pads(model, [u[0], u[1]], &u, ctx) {
-            Ok((st, _)) => {
-                u = assemble_u(model, [u[0], u[1]], &st);
-                st
+        // Place every pad at the starting journal position (those placed before a suspension again: from
+        // their placed coordinates that costs one film solve each).
+        let mut st = Vec::with_capacity(model.pads.len());
+        for k in 0..model.pads.len() {
+            if k > ctx.params.placed_pads && cancel.suspend() {
+                return Err(SolveError::Suspended { coordinates: u, placed_pads: k, report: Box::new(std::mem::take(&mut ctx.report)) });
             }
-            Err(_) => return Ok(Outer::Failed { journal: [u[0], u[1]], residual: f64::INFINITY, reason: "film closes at the start".into() }),
+            let (off, nd) = (model.pads[k].offset, model.pads[k].dofs.len());
+            let q: Vec<f64> = u[off..off + nd].to_vec();
+            match solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx) {
+                Ok(p) => {
+                    u[off..off + nd].copy_from_slice(&p.q);
+                    st.push(p);
+                }
+                Err(_) => return Ok(Outer::Failed { journal: [u[0], u[1]], residual: f64::INFINITY, reason: "film closes at the start".into() }),
+            }
         }
+        st
     } else {
         match eval_all(model, &u, ctx) {
             Ok(st) => st,
             Err(_) => return Ok(Outer::Failed { journal: [u[0], u[1]], residual: f64::INFINITY, reason: "film closes at the start".into() }),
         }
     };
-    for _ in 0..ctx.params.max_iterations {
+    for it in 0..ctx.params.max_iterations {
         if cancel.cancelled() {
             return Err(SolveError::Cancelled);
+        }
+        if it > 0 && cancel.suspend() {
+            return Err(SolveError::Suspended { coordinates: u, placed_pads: 0, report: Box::new(std::mem::take(&mut ctx.report)) });
         }
         // Place pads that Newton cannot handle: no positive stiffness of their own, or no load.
         for k in 0..model.pads.len() {
@@ -924,11 +956,20 @@ fn solve_equilibrium_inner(
             u
         }
     };
-    let cold = !matches!(start, Some(s) if s.len() == model.n_dofs);
-    match coupled_newton(model, &u0, cold, &mut ctx, cancel)? {
+    let cold = params.placed_pads > 0 || !matches!(start, Some(s) if s.len() == model.n_dofs);
+    let newton = match coupled_newton(model, &u0, cold, &mut ctx, cancel) {
+        Err(SolveError::Suspended { coordinates, placed_pads, mut report }) => {
+            report.seconds = t0.elapsed().as_secs_f64();
+            return Err(SolveError::Suspended { coordinates, placed_pads, report });
+        }
+        r => r?,
+    };
+    match newton {
         Outer::Converged(u, s, f) => return finish(model, u, s, f, ctx, "coupled Newton"),
         Outer::Failed { reason, .. } => ctx.report.warn(format!("coupled Newton failed ({reason}); using pad assembly")),
     }
+    // The fallbacks run to the end once started (their state is not a single iterate to resume from).
+    let cancel = &NoSuspend(cancel);
     match newton_journal(model, &u0, 1.0, &mut ctx, cancel)? {
         Outer::Converged(u, s, f) => return finish(model, u, s, f, ctx, "Newton (pad assembly)"),
         Outer::Failed { reason, .. } => ctx.report.warn(format!("Newton from the initial guess failed ({reason}); trying a scan along the load")),

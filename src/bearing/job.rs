@@ -105,7 +105,22 @@ pub fn solve_operating_point(
     start: Option<&[f64]>,
     cancel: &dyn Cancel,
 ) -> Result<Solution, SolveError> {
-    let eq = solve_equilibrium(model, op, EquilibriumParams::default(), start, cancel)?;
+    solve_operating_point_with(model, case, op, start, EquilibriumParams::default(), cancel)
+}
+
+/// [`solve_operating_point`] with explicit solver settings (e.g. resuming a suspended cold start).
+///
+/// # Errors
+/// As [`solve_operating_point`].
+pub fn solve_operating_point_with(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    start: Option<&[f64]>,
+    params: EquilibriumParams,
+    cancel: &dyn Cancel,
+) -> Result<Solution, SolveError> {
+    let eq = solve_equilibrium(model, op, params, start, cancel)?;
     Ok(assemble_solution(model, case, op, &eq))
 }
 

@@ -17,7 +17,7 @@ pub mod thermal;
 pub mod thermal_pad;
 
 pub use coefficients::{FullCoefficients, ReducedCoefficients};
-pub use equilibrium::{Cancel, EquilibriumParams, NoCancel, SolveReport};
+pub use equilibrium::{Cancel, EquilibriumParams, NoCancel, NoSuspend, SolveReport};
 pub use error::SolveError;
 pub use job::{solve_case, solve_operating_point, solve_point};
 pub use model::{BearingModel, OperatingPoint};

@@ -24,9 +24,9 @@ use serde::Serialize;
 use crate::model::Case;
 
 use super::coefficients::{reduce, ReducedCoefficients};
-use super::equilibrium::Cancel;
+use super::equilibrium::{Cancel, EquilibriumParams, NoSuspend, SolveReport};
 use super::error::SolveError;
-use super::job::{assemble_thd_solution, solve_operating_point, solve_point};
+use super::job::{assemble_thd_solution, solve_operating_point, solve_operating_point_with, solve_point};
 use super::model::{BearingModel, OperatingPoint};
 use super::solution::Solution;
 use super::thermal::{solve_thd, ThermalModel, ThermalParams};
@@ -150,6 +150,60 @@ struct SweepState {
     start: Option<Vec<f64>>,
     model: BearingModel,
     thermal: Option<ThermalModel>,
+    /// Suspensions of the current point (isothermal points only; THD points run to the end), and the pads
+    /// its cold start had placed.
+    suspensions: usize,
+    placed_pads: usize,
+}
+
+/// Suspensions of one equilibrium before it must run to the end.
+const MAX_SUSPENSIONS: usize = 40;
+
+/// A suspended equilibrium solve: where to resume it, and the work of its parts so far (added to its final
+/// report).
+#[derive(Debug, Clone, Default)]
+struct Suspensions {
+    /// The equilibrium key it belongs to.
+    key: String,
+    coordinates: Vec<f64>,
+    placed_pads: usize,
+    suspensions: usize,
+    report: SolveReport,
+}
+
+impl Suspensions {
+    fn add(&mut self, r: &SolveReport) {
+        self.suspensions += 1;
+        self.report.iterations += r.iterations;
+        self.report.inner_iterations += r.inner_iterations;
+        self.report.film_solves += r.film_solves;
+        self.report.factorizations += r.factorizations;
+        self.report.seconds += r.seconds;
+        self.report.residual_history.extend_from_slice(&r.residual_history);
+        for w in &r.warnings {
+            if !self.report.warnings.contains(w) {
+                self.report.warnings.push(w.clone());
+            }
+        }
+    }
+
+    /// The final report covers the whole solve: earlier parts' work first.
+    fn merge_into(self, r: &mut SolveReport) {
+        r.iterations += self.report.iterations;
+        r.inner_iterations += self.report.inner_iterations;
+        r.film_solves += self.report.film_solves;
+        r.factorizations += self.report.factorizations;
+        r.seconds += self.report.seconds;
+        let mut history = self.report.residual_history;
+        history.append(&mut r.residual_history);
+        r.residual_history = history;
+        for w in self.report.warnings {
+            if !r.warnings.contains(&w) {
+                r.warnings.push(w);
+            }
+        }
+        r.method = format!("{} (resumed {} times, one part per frame)", r.method, self.suspensions);
+    }
 }
 
 /// Cached, steppable solver.
@@ -166,6 +220,8 @@ pub struct Pipeline {
     speed_done: Option<(String, Arc<Vec<SpeedPoint>>)>,
     /// Last equilibrium coordinates, to warm-start the next solve of the same model.
     warm: Option<Vec<f64>>,
+    /// An equilibrium paused by [`Cancel::suspend`].
+    suspended: Option<Suspensions>,
     pub counters: StageCounters,
 }
 
@@ -195,16 +251,35 @@ impl Pipeline {
         if self.equilibrium.as_ref().map(|e| &e.0) != Some(&ek) {
             let (_, model) = self.model.as_mut().ok_or_else(|| SolveError::Invalid("no model".into()))?;
             let op = OperatingPoint::isothermal(case);
-            let sol = match solve_operating_point(model, case, &op, self.warm.as_deref(), cancel) {
-                Ok(s) => s,
-                Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
+            // A solve suspended in an earlier step for these inputs resumes from its iterate; after
+            // MAX_SUSPENSIONS it runs to the end (bounded work even if every resumption is slow).
+            let resumed = self.suspended.take().filter(|r| r.key == ek);
+            let may_suspend = resumed.as_ref().is_none_or(|r| r.suspensions < MAX_SUSPENSIONS);
+            let no_suspend = NoSuspend(cancel);
+            let cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
+            let start = resumed.as_ref().map(|r| r.coordinates.as_slice()).or(self.warm.as_deref());
+            let params = EquilibriumParams { placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads), ..EquilibriumParams::default() };
+            let attempt = match solve_operating_point_with(model, case, &op, start, params, cancel) {
                 // A failed warm start retries cold before giving up.
-                Err(_) if self.warm.is_some() => {
+                Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled | SolveError::Suspended { .. }) => {
                     self.warm = None;
-                    solve_operating_point(model, case, &op, None, cancel)?
+                    solve_operating_point(model, case, &op, None, cancel)
+                }
+                r => r,
+            };
+            let mut sol = match attempt {
+                Ok(s) => s,
+                Err(SolveError::Suspended { coordinates, placed_pads, report }) => {
+                    let mut so_far = resumed.unwrap_or_default();
+                    so_far.add(&report);
+                    self.suspended = Some(Suspensions { key: ek, coordinates, placed_pads, ..so_far });
+                    return Ok(Step::Pending { stage: Stage::Equilibrium, fraction: 0.5 });
                 }
                 Err(e) => return Err(e),
             };
+            if let Some(so_far) = resumed {
+                so_far.merge_into(&mut sol.report);
+            }
             self.counters.equilibrium += 1;
             self.warm = Some(sol.coordinates.clone());
             self.equilibrium = Some((ek, Arc::new(sol)));
@@ -223,7 +298,7 @@ impl Pipeline {
                     *thermal_model = Some((mkey.clone(), ThermalModel::new(case, model)?));
                 }
                 let (_, tm) = thermal_model.as_mut().ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
-                let state = solve_thd(model, tm, case, ThermalParams::default(), Some(&eq.coordinates), cancel)?;
+                let state = solve_thd(model, tm, case, ThermalParams::default(), Some(&eq.coordinates), &NoSuspend(cancel))?;
                 let sol = assemble_thd_solution(model, case, &state);
                 self.counters.thermal += 1;
                 self.thermal = Some((tk, Arc::new(sol)));
@@ -263,14 +338,31 @@ impl Pipeline {
                         Some((_, m)) => m.clone(),
                         None => BearingModel::new(case)?,
                     };
-                    self.speed_sweep = Some(SweepState { key: sk.clone(), points: Vec::new(), start: None, model, thermal: None });
+                    self.speed_sweep = Some(SweepState { key: sk.clone(), points: Vec::new(), start: None, model, thermal: None, suspensions: 0, placed_pads: 0 });
                 }
                 let st = self.speed_sweep.as_mut().ok_or_else(|| SolveError::Invalid("no sweep".into()))?;
                 let i = st.points.len();
                 let rpm = speeds[i];
                 let mut c = case.clone();
                 c.operating.speed_rad_s = rpm * std::f64::consts::TAU / 60.0;
-                let result = match solve_point(&mut st.model, &mut st.thermal, &c, st.start.as_deref(), cancel) {
+                let no_suspend = NoSuspend(cancel);
+                let may_suspend = c.thermal.model == ThermalModelKind::Isothermal && st.suspensions < MAX_SUSPENSIONS;
+                let point_cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
+                let solved = if may_suspend {
+                    let params = EquilibriumParams { placed_pads: st.placed_pads, ..EquilibriumParams::default() };
+                    solve_operating_point_with(&mut st.model, &c, &OperatingPoint::isothermal(&c), st.start.as_deref(), params, point_cancel)
+                } else {
+                    solve_point(&mut st.model, &mut st.thermal, &c, st.start.as_deref(), point_cancel)
+                };
+                let result = match solved {
+                    Err(SolveError::Suspended { coordinates, placed_pads, .. }) => {
+                        st.start = Some(coordinates);
+                        st.placed_pads = placed_pads;
+                        st.suspensions += 1;
+                        #[allow(clippy::cast_precision_loss)]
+                        let fraction = i as f64 / speeds.len() as f64;
+                        return Ok(Step::Pending { stage: Stage::SpeedSweep, fraction });
+                    }
                     Ok(s) => {
                         st.start = Some(s.coordinates.clone());
                         Ok(SweepValues::of(&s))
@@ -281,6 +373,8 @@ impl Pipeline {
                         Err(e.to_string())
                     }
                 };
+                st.suspensions = 0;
+                st.placed_pads = 0;
                 st.points.push(SpeedPoint { speed_rpm: rpm, result });
                 self.counters.speed_sweep_points += 1;
                 #[allow(clippy::cast_precision_loss)]
@@ -354,6 +448,66 @@ mod tests {
         req.case = Some(case(&["mesh.circumferential_elements=20"]));
         p.run(&req, &NoCancel).unwrap();
         assert_eq!((p.counters.model, p.counters.equilibrium), (2, 3));
+    }
+
+    /// Asks every solve to pause as soon as it may (the web stepper with a spent frame budget).
+    struct AlwaysSuspend;
+    impl Cancel for AlwaysSuspend {
+        fn cancelled(&self) -> bool {
+            false
+        }
+        fn suspend(&self) -> bool {
+            true
+        }
+    }
+
+    #[test]
+    fn a_suspended_equilibrium_resumes_from_its_iterate_and_reaches_the_same_solution() {
+        let req = Request { case: Some(case(&["operating.load_n=12000"])), frequency_ratios: None, speeds_rpm: None };
+        let whole = Pipeline::new().run(&req, &NoCancel).unwrap().solution.unwrap();
+        let mut p = Pipeline::new();
+        let mut equilibrium_steps = 0;
+        let parts = loop {
+            match p.step(&req, &AlwaysSuspend).unwrap() {
+                Step::Done(o) => break o.solution.unwrap(),
+                Step::Pending { stage: Stage::Equilibrium, .. } => equilibrium_steps += 1,
+                Step::Pending { .. } => {}
+            }
+            assert!(equilibrium_steps <= MAX_SUSPENSIONS + 1, "suspensions are bounded");
+        };
+        // The cold start places one pad per step, then one Newton iteration per step (the last converges).
+        let pads = parts.pads.len();
+        assert!(equilibrium_steps >= pads + 1, "the solve was split: {equilibrium_steps} steps for {pads} pads");
+        assert_eq!(p.counters.equilibrium, 1);
+        assert!(parts.report.method.contains("resumed"), "{}", parts.report.method);
+        assert!(parts.report.iterations + pads >= equilibrium_steps, "the report counts every part: {}", parts.report.iterations);
+        assert_eq!(parts.report.residual_history.len(), parts.report.iterations);
+        assert!(parts.report.residual < 1e-9, "converged: {:e}", parts.report.residual);
+        let rel = |a: f64, b: f64| ((a - b) / b).abs();
+        assert!(rel(parts.eccentricity_ratio, whole.eccentricity_ratio) < 1e-6, "{} vs {}", parts.eccentricity_ratio, whole.eccentricity_ratio);
+        assert!(rel(parts.reduced.k_n_per_m[1][1], whole.reduced.k_n_per_m[1][1]) < 1e-5);
+    }
+
+    #[test]
+    fn suspended_speed_sweep_points_resume_and_match_whole_ones() {
+        let req = Request { case: Some(case(&[])), frequency_ratios: None, speeds_rpm: Some(vec![2000.0, 3000.0, 4000.0]) };
+        let whole = Pipeline::new().run(&req, &NoCancel).unwrap().speed_sweep.unwrap();
+        let mut p = Pipeline::new();
+        let mut sweep_steps = 0;
+        let parts = loop {
+            match p.step(&req, &AlwaysSuspend).unwrap() {
+                Step::Done(o) => break o.speed_sweep.unwrap(),
+                Step::Pending { stage: Stage::SpeedSweep, .. } => sweep_steps += 1,
+                Step::Pending { .. } => {}
+            }
+            assert!(sweep_steps <= 3 * (MAX_SUSPENSIONS + 1), "suspensions are bounded");
+        };
+        assert!(sweep_steps > 3, "points were split: {sweep_steps} steps");
+        assert_eq!(p.counters.speed_sweep_points, 3);
+        for (a, b) in parts.iter().zip(whole.iter()) {
+            let (ea, eb) = (a.result.as_ref().unwrap().eccentricity_ratio, b.result.as_ref().unwrap().eccentricity_ratio);
+            assert!(((ea - eb) / eb).abs() < 1e-6, "{} rpm: {ea} vs {eb}", a.speed_rpm);
+        }
     }
 
     #[test]
