@@ -110,7 +110,7 @@ fn skew(n: usize, distortion: f64, eps: f64, stab: Stabilisation) -> (f64, f64, 
     let bc = |k: usize, _x: f64, y: f64| -> Option<f64> {
         let (i, j) = (k / (ny + 1), k % (ny + 1));
         let boundary = i == 0 || i == n || j == 0 || j == ny;
-        boundary.then(|| if j == ny || (i == 0 && y > 0.7) { 1.0 } else { 0.0 })
+        boundary.then_some(if j == ny || (i == 0 && y > 0.7) { 1.0 } else { 0.0 })
     };
     let sol = solve(&m, eps, b, stab, &bc);
     assert!(sol.converged, "Picard iteration did not converge: change {:.2e}", sol.change);

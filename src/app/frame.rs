@@ -122,6 +122,7 @@ impl WorkbenchApp {
                     let now = match stage {
                         None => "building the model".to_string(),
                         Some(Stage::Model) => "equilibrium".into(),
+                        Some(Stage::Thermal) if *fraction < 1.0 => "thermal (THD) loop".into(),
                         Some(Stage::Thermal) => "thermal equilibrium done; coefficients and sweeps".into(),
                         Some(Stage::Equilibrium) if *fraction < 1.0 => "equilibrium".into(),
                         Some(Stage::Equilibrium | Stage::Reduction) => "coefficients and sweeps".into(),

@@ -118,6 +118,7 @@ impl WorkbenchApp {
                 doc
             }
             // The shipped default is compiled in and checked by a unit test: not user input.
+            #[allow(clippy::expect_used)]
             None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true),
         };
         Self {

@@ -17,9 +17,27 @@ pub fn default_preset() -> (&'static str, &'static str) {
     PRESETS[0]
 }
 
+/// The preset a page address asks for: `?case=fillon-a` (or `fillon-a.toml`) in the query string of the
+/// web build, so a link can open a given shipped case.
+#[must_use]
+pub fn preset_from_query(query: &str) -> Option<usize> {
+    let wanted = query.trim_start_matches('?').split('&').find_map(|kv| kv.strip_prefix("case="))?;
+    let wanted = wanted.strip_suffix(".toml").unwrap_or(wanted);
+    PRESETS.iter().position(|(name, _)| name.strip_suffix(".toml") == Some(wanted))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_query_string_names_a_preset() {
+        assert_eq!(preset_from_query("?case=fillon-a"), Some(3));
+        assert_eq!(preset_from_query("?x=1&case=fillon-a.toml"), Some(3));
+        assert_eq!(preset_from_query("case=compressor-bearing"), Some(0));
+        assert_eq!(preset_from_query("?case=unknown"), None);
+        assert_eq!(preset_from_query(""), None);
+    }
 
     #[test]
     fn every_preset_is_a_valid_case() {

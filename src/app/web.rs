@@ -14,9 +14,21 @@ pub fn start() {
             log::error!("no <canvas id=\"tiltpad\"> on the page");
             return;
         };
+        // `?case=<shipped case>` opens that case (asking first if the restored one has unsaved changes).
+        let preset = web_sys::window().and_then(|w| w.location().search().ok()).and_then(|q| super::presets::preset_from_query(&q));
         let runner = eframe::WebRunner::new();
         let started = runner
-            .start(canvas, eframe::WebOptions::default(), Box::new(|cc| Ok(Box::new(super::WorkbenchApp::new(cc)))))
+            .start(
+                canvas,
+                eframe::WebOptions::default(),
+                Box::new(move |cc| {
+                    let mut app = super::WorkbenchApp::new(cc);
+                    if let Some(k) = preset {
+                        app.request(super::Pending::Preset(k));
+                    }
+                    Ok(Box::new(app))
+                }),
+            )
             .await;
         if let Some(loading) = document.get_element_by_id("loading") {
             match started {

@@ -8,7 +8,7 @@
 //! |----------------|--------------------------------------------------------|
 //! | `Model`        | bearing geometry, mesh                                 |
 //! | `Equilibrium`  | model inputs + lubricant, operating point (not ω/Ω), physics |
-//! | `Thermal`      | equilibrium inputs + `[thermal]` (THD cases only; warm-started from the isothermal equilibrium) |
+//! | `Thermal`      | equilibrium inputs + `[thermal]` (THD cases only; warm-started from the isothermal equilibrium; one outer iteration per step) |
 //! | `Reduction`    | equilibrium (or thermal) + excitation ratio ω/Ω        |
 //! | `FrequencySweep` | equilibrium + the list of ratios                     |
 //! | `SpeedSweep`   | model inputs + everything but the speed, + the speeds  |
@@ -29,7 +29,7 @@ use super::error::SolveError;
 use super::job::{assemble_thd_solution, solve_operating_point, solve_operating_point_with, solve_point};
 use super::model::{BearingModel, OperatingPoint};
 use super::solution::Solution;
-use super::thermal::{solve_thd, ThermalModel, ThermalParams};
+use super::thermal::{ThdRun, ThermalModel, ThermalParams};
 use crate::model::ThermalModelKind;
 
 /// What the caller wants computed.
@@ -156,6 +156,9 @@ struct SweepState {
     placed_pads: usize,
 }
 
+/// Outer iterations a THD loop typically needs (for the progress fraction only).
+const THERMAL_ITERATIONS_EXPECTED: f64 = 10.0;
+
 /// Suspensions of one equilibrium before it must run to the end.
 const MAX_SUSPENSIONS: usize = 40;
 
@@ -214,6 +217,8 @@ pub struct Pipeline {
     /// Thermal model (pad meshes, thermal systems) under the model key, and the THD solution.
     thermal_model: Option<(String, ThermalModel)>,
     thermal: Option<(String, Arc<Solution>)>,
+    /// A THD loop under way (one outer iteration per step), under its thermal key.
+    thermal_run: Option<(String, ThdRun)>,
     reduction: Option<(String, Arc<Solution>)>,
     frequency_sweep: Option<(String, Arc<FrequencySweep>)>,
     speed_sweep: Option<SweepState>,
@@ -292,13 +297,23 @@ impl Pipeline {
         if case.thermal.model == ThermalModelKind::Thd {
             let tk = thermal_key(case);
             if self.thermal.as_ref().map(|t| &t.0) != Some(&tk) {
-                let Self { model, thermal_model, .. } = self;
+                let Self { model, thermal_model, thermal_run, .. } = self;
                 let (mkey, model) = model.as_mut().ok_or_else(|| SolveError::Invalid("no model".into()))?;
                 if thermal_model.as_ref().map(|t| &t.0) != Some(&*mkey) {
                     *thermal_model = Some((mkey.clone(), ThermalModel::new(case, model)?));
                 }
                 let (_, tm) = thermal_model.as_mut().ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
-                let state = solve_thd(model, tm, case, ThermalParams::default(), Some(&eq.coordinates), &NoSuspend(cancel))?;
+                // One outer iteration per step (a failed run is dropped; the next request starts afresh).
+                let mut run = match thermal_run.take() {
+                    Some((key, run)) if key == tk => run,
+                    _ => ThdRun::new(model, tm, case, ThermalParams::default(), Some(&eq.coordinates)),
+                };
+                let Some(state) = run.step(model, tm, case, &NoSuspend(cancel))? else {
+                    #[allow(clippy::cast_precision_loss)]
+                    let fraction = (run.outer_iterations() as f64 / THERMAL_ITERATIONS_EXPECTED).min(0.95);
+                    *thermal_run = Some((tk, run));
+                    return Ok(Step::Pending { stage: Stage::Thermal, fraction });
+                };
                 let sol = assemble_thd_solution(model, case, &state);
                 self.counters.thermal += 1;
                 self.thermal = Some((tk, Arc::new(sol)));
@@ -477,7 +492,7 @@ mod tests {
         };
         // The cold start places one pad per step, then one Newton iteration per step (the last converges).
         let pads = parts.pads.len();
-        assert!(equilibrium_steps >= pads + 1, "the solve was split: {equilibrium_steps} steps for {pads} pads");
+        assert!(equilibrium_steps > pads, "the solve was split: {equilibrium_steps} steps for {pads} pads");
         assert_eq!(p.counters.equilibrium, 1);
         assert!(parts.report.method.contains("resumed"), "{}", parts.report.method);
         assert!(parts.report.iterations + pads >= equilibrium_steps, "the report counts every part: {}", parts.report.iterations);
@@ -541,11 +556,26 @@ mod tests {
         };
         let mut p = Pipeline::new();
         let mut req = Request { case: Some(thd(&[])), frequency_ratios: None, speeds_rpm: None };
-        let o = p.run(&req, &NoCancel).unwrap();
+        // The loop runs one outer iteration per step.
+        let mut thermal_steps = 0;
+        let o = loop {
+            match p.step(&req, &NoCancel).unwrap() {
+                Step::Done(o) => break o,
+                Step::Pending { stage: Stage::Thermal, .. } => thermal_steps += 1,
+                Step::Pending { .. } => {}
+            }
+        };
         assert_eq!((p.counters.model, p.counters.equilibrium, p.counters.thermal, p.counters.reduction), (1, 1, 1, 1));
         let s = o.solution.unwrap();
         let t = s.thermal.as_ref().expect("thermal results");
         assert!(t.report.converged && t.t_max_film_c > 40.0);
+        assert_eq!(thermal_steps, t.report.outer_iterations, "one step per outer iteration");
+        assert!(thermal_steps > 2);
+        // The same state as the loop run in one go.
+        let mut m = BearingModel::new(req.case.as_ref().unwrap()).unwrap();
+        let whole = crate::bearing::solve_point(&mut m, &mut None, req.case.as_ref().unwrap(), None, &NoCancel).unwrap();
+        let w = whole.thermal.as_ref().unwrap();
+        assert!((w.t_max_film_c - t.t_max_film_c).abs() < 1e-3, "{} vs {}", w.t_max_film_c, t.t_max_film_c);
         assert!(s.pads.iter().all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
         // A thermal setting reruns only the thermal stage (and the reduction after it).
         req.case = Some(thd(&["thermal.convection_w_per_m2_k=150"]));

@@ -313,16 +313,10 @@ fn viscosity_change(law: &crate::model::ViscosityLaw, a: &[Vec<f64>], b: &[Vec<f
     a.iter().flatten().zip(b.iter().flatten()).fold(0.0_f64, |m, (&x, &y)| m.max((law.at(x) / law.at(y) - 1.0).abs()))
 }
 
-/// Solves the THD equilibrium of a case on an existing model.
-///
-/// Robustness: the temperature update is Anderson-accelerated (depth [`ANDERSON_DEPTH`], damping ω); if the
-/// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
-/// curve loses its root), the proposal is halved back towards the last field that worked, up to
-/// [`MAX_BACKTRACKS`] times, and the history is restarted.
+/// Solves the THD equilibrium of a case on an existing model (all outer iterations of a [`ThdRun`]).
 ///
 /// # Errors
-/// Equilibrium failures, a singular thermal system, or a loop that does not converge
-/// ([`SolveError::ThermalNotConverged`]).
+/// As [`ThdRun::step`].
 pub fn solve_thd(
     model: &mut BearingModel,
     thermal: &mut ThermalModel,
@@ -331,130 +325,191 @@ pub fn solve_thd(
     start: Option<&[f64]>,
     cancel: &dyn Cancel,
 ) -> Result<ThdState, SolveError> {
-    let t0 = Instant::now();
-    let law = case.lubricant.viscosity;
-    let mut op = OperatingPoint::isothermal(case);
-    let n = model.pads.len();
-    let mut report = ThermalReport::default();
-    let mut u: Option<Vec<f64>> = start.map(<[f64]>::to_vec);
-    let factorizations0: usize = thermal.pads.iter().map(|p| p.factorizations).sum();
-    for pt in &mut thermal.pads {
-        pt.t_prev = None;
-    }
-    // Temperatures whose viscosity gave the last successful equilibrium (None: the isothermal start), and
-    // the proposal for the next one.
-    let t_iso: Vec<Vec<f64>> = model.pads.iter().map(|p| vec![case.operating.film_temperature_c; p.film.geom.n_nodes()]).collect();
-    let mut t_ok: Option<Vec<Vec<f64>>> = None;
-    let mut t_try: Option<Vec<Vec<f64>>> = None;
-    let mut anderson = Anderson::new(ANDERSON_DEPTH, params.relaxation);
-    let mut backtracks = 0;
-    let mut last_change = f64::INFINITY;
-    // Pads whose film sees its mean viscosity only (see the module documentation), and the load shares of the
-    // last equilibrium.
-    let mut uniform = vec![false; n];
-    let mut shares = vec![1.0; n];
+    let mut run = ThdRun::new(model, thermal, case, params, start);
     loop {
+        if let Some(state) = run.step(model, thermal, case, cancel)? {
+            return Ok(state);
+        }
+    }
+}
+
+/// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
+/// the current viscosity field, then the film and pad temperatures), so a caller without threads (the web
+/// build) can spread a THD solve over frames.
+///
+/// Robustness: the temperature update is Anderson-accelerated (depth [`ANDERSON_DEPTH`], damping ω); if the
+/// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
+/// curve loses its root), the proposal is halved back towards the last field that worked, up to
+/// [`MAX_BACKTRACKS`] times, and the history is restarted.
+pub struct ThdRun {
+    t0: Instant,
+    params: ThermalParams,
+    op: OperatingPoint,
+    report: ThermalReport,
+    /// Coordinates of the last equilibrium (warm start of the next).
+    u: Option<Vec<f64>>,
+    factorizations0: usize,
+    /// The isothermal temperature field (the start).
+    t_iso: Vec<Vec<f64>>,
+    /// Temperatures whose viscosity gave the last successful equilibrium (None: the isothermal start), and
+    /// the proposal for the next one.
+    t_ok: Option<Vec<Vec<f64>>>,
+    t_try: Option<Vec<Vec<f64>>>,
+    anderson: Anderson,
+    backtracks: usize,
+    last_change: f64,
+    /// Pads whose film sees its mean viscosity only (see the module documentation), and the load shares of
+    /// the last equilibrium.
+    uniform: Vec<bool>,
+    shares: Vec<f64>,
+}
+
+impl ThdRun {
+    #[must_use]
+    pub fn new(model: &BearingModel, thermal: &mut ThermalModel, case: &Case, params: ThermalParams, start: Option<&[f64]>) -> Self {
+        let n = model.pads.len();
+        let factorizations0: usize = thermal.pads.iter().map(|p| p.factorizations).sum();
+        for pt in &mut thermal.pads {
+            pt.t_prev = None;
+        }
+        Self {
+            t0: Instant::now(),
+            params,
+            op: OperatingPoint::isothermal(case),
+            report: ThermalReport::default(),
+            u: start.map(<[f64]>::to_vec),
+            factorizations0,
+            t_iso: model.pads.iter().map(|p| vec![case.operating.film_temperature_c; p.film.geom.n_nodes()]).collect(),
+            t_ok: None,
+            t_try: None,
+            anderson: Anderson::new(ANDERSON_DEPTH, params.relaxation),
+            backtracks: 0,
+            last_change: f64::INFINITY,
+            uniform: vec![false; n],
+            shares: vec![1.0; n],
+        }
+    }
+
+    /// Outer iterations done so far.
+    #[must_use]
+    pub fn outer_iterations(&self) -> usize {
+        self.report.outer_iterations
+    }
+
+    /// One outer iteration; `Some` with the converged state when the loop has finished. Use the same model,
+    /// thermal model and case as [`ThdRun::new`].
+    ///
+    /// # Errors
+    /// Equilibrium failures, a singular thermal system, or a loop that does not converge
+    /// ([`SolveError::ThermalNotConverged`]).
+    pub fn step(&mut self, model: &mut BearingModel, thermal: &mut ThermalModel, case: &Case, cancel: &dyn Cancel) -> Result<Option<ThdState>, SolveError> {
         if cancel.cancelled() {
             return Err(SolveError::Cancelled);
         }
-        report.outer_iterations += 1;
+        let law = case.lubricant.viscosity;
+        let n = model.pads.len();
+        let params = self.params;
+        self.report.outer_iterations += 1;
         for k in 0..n {
-            op.nodal_viscosity[k] = t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], uniform[k]));
+            self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
         }
         let te = Instant::now();
-        let eq_params = equilibrium_params(last_change, &params);
+        let eq_params = equilibrium_params(self.last_change, &params);
         let exact = eq_params == EquilibriumParams::default();
-        let attempt = warm_equilibrium(model, &op, eq_params, u.as_deref(), cancel);
-        report.equilibrium_seconds += te.elapsed().as_secs_f64();
+        let attempt = warm_equilibrium(model, &self.op, eq_params, self.u.as_deref(), cancel);
+        self.report.equilibrium_seconds += te.elapsed().as_secs_f64();
         let eq = match attempt {
             Ok(eq) => eq,
             Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
             Err(e) => {
-                let Some(tt) = &t_try else { return Err(e) };
-                let light: Vec<usize> = (0..n).filter(|&k| !uniform[k] && shares[k] < LIGHT_PAD_SHARE).collect();
+                let Some(tt) = &self.t_try else { return Err(e) };
+                let light: Vec<usize> = (0..n).filter(|&k| !self.uniform[k] && self.shares[k] < LIGHT_PAD_SHARE).collect();
                 if !light.is_empty() {
                     for &k in &light {
-                        uniform[k] = true;
-                        report.warnings.push(format!(
+                        self.uniform[k] = true;
+                        self.report.warnings.push(format!(
                             "pad {k} carries {:.1} % of the load and had no equilibrium tilt with its non-uniform viscosity \
                              ({e}): it is given its mean film viscosity",
-                            100.0 * shares[k]
+                            100.0 * self.shares[k]
                         ));
                     }
-                    continue;
+                    return Ok(None);
                 }
-                if backtracks >= MAX_BACKTRACKS || report.outer_iterations >= params.max_iterations {
+                if self.backtracks >= MAX_BACKTRACKS || self.report.outer_iterations >= params.max_iterations {
                     return Err(e);
                 }
-                backtracks += 1;
-                let base = t_ok.as_ref().unwrap_or(&t_iso);
-                t_try = Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
-                anderson.reset();
-                report.warnings.push(format!("equilibrium failed with the updated viscosity field ({e}); step halved"));
-                continue;
+                self.backtracks += 1;
+                let base = self.t_ok.as_ref().unwrap_or(&self.t_iso);
+                self.t_try = Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
+                self.anderson.reset();
+                self.report.warnings.push(format!("equilibrium failed with the updated viscosity field ({e}); step halved"));
+                return Ok(None);
             }
         };
-        backtracks = 0;
-        shares = load_shares(&eq);
+        self.backtracks = 0;
+        self.shares = load_shares(&eq);
         // An unloaded pad's tilt is not determined by its film: from the first equilibrium in which it is
         // unloaded it is held for the rest of the loop, so that it cannot flip between equivalent states (each
         // flip changes its cavitated extent, hence the oil it hands to the next pad's inlet).
         for (k, p) in eq.pads.iter().enumerate() {
-            if p.unloaded && !op.held_pads[k] && !model.pads[k].dofs.is_empty() {
-                op.held_pads[k] = true;
-                report.warnings.push(format!("pad {k} is unloaded: its tilt is held from outer iteration {}", report.outer_iterations));
+            if p.unloaded && !self.op.held_pads[k] && !model.pads[k].dofs.is_empty() {
+                self.op.held_pads[k] = true;
+                self.report.warnings.push(format!("pad {k} is unloaded: its tilt is held from outer iteration {}", self.report.outer_iterations));
             }
         }
-        if t_ok.is_none() && t_try.is_none() {
+        if self.t_ok.is_none() && self.t_try.is_none() {
             // First (isothermal) equilibrium: decide once which pads are lightly loaded.
             for k in 0..n {
-                if shares[k] < LIGHT_PAD_SHARE && !model.pads[k].dofs.is_empty() {
-                    uniform[k] = true;
-                    report.warnings.push(format!(
+                if self.shares[k] < LIGHT_PAD_SHARE && !model.pads[k].dofs.is_empty() {
+                    self.uniform[k] = true;
+                    self.report.warnings.push(format!(
                         "pad {k} carries {:.1} % of the load: its Reynolds equation uses its mean film viscosity (the \
                          film and pad temperatures are computed in full)",
-                        100.0 * shares[k]
+                        100.0 * self.shares[k]
                     ));
                 }
             }
         }
-        report.equilibrium_iterations += eq.report.iterations;
-        report.film_solves += eq.report.film_solves;
-        u = Some(eq.u.clone());
-        t_ok = t_try.take();
+        self.report.equilibrium_iterations += eq.report.iterations;
+        self.report.film_solves += eq.report.film_solves;
+        self.u = Some(eq.u.clone());
+        self.t_ok = self.t_try.take();
         let tt = Instant::now();
-        let (sols, t_in, t_j, t_new) = film_temperatures(model, thermal, case, &op, &params)?;
-        let current = t_ok.as_ref().unwrap_or(&t_iso);
+        let (sols, t_in, t_j, t_new) = film_temperatures(model, thermal, case, &self.op, &params)?;
+        let current = self.t_ok.as_ref().unwrap_or(&self.t_iso);
         let change = viscosity_change(&law, &t_new, current);
-        report.viscosity_change.push(change);
-        last_change = change;
-        report.thermal_seconds += tt.elapsed().as_secs_f64();
+        self.report.viscosity_change.push(change);
+        self.last_change = change;
+        self.report.thermal_seconds += tt.elapsed().as_secs_f64();
         if change < params.viscosity_tol {
-            report.converged = true;
-            report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
-            report.thermal_factorizations = factorizations0;
+            self.report.converged = true;
+            self.report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
+            self.report.thermal_factorizations = self.factorizations0;
+            let report = std::mem::take(&mut self.report);
             if exact {
-                return finish(model, thermal, case, params, op, eq, &sols, &t_in, t_j, report, t0);
+                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(Some);
             }
             // The last equilibrium was solved loosely (early iterations are inexact on purpose): polish it with
             // the full tolerances on the same viscosity field, and take the temperatures of that state.
+            let mut report = report;
             let te = Instant::now();
-            let eq = warm_equilibrium(model, &op, EquilibriumParams::default(), Some(&eq.u), cancel)?;
+            let eq = warm_equilibrium(model, &self.op, EquilibriumParams::default(), Some(&eq.u), cancel)?;
             report.equilibrium_seconds += te.elapsed().as_secs_f64();
             report.equilibrium_iterations += eq.report.iterations;
             report.film_solves += eq.report.film_solves;
-            let (sols, t_in, t_j, t_polished) = film_temperatures(model, thermal, case, &op, &params)?;
+            let (sols, t_in, t_j, t_polished) = film_temperatures(model, thermal, case, &self.op, &params)?;
             report.viscosity_change.push(viscosity_change(&law, &t_polished, current));
-            return finish(model, thermal, case, params, op, eq, &sols, &t_in, t_j, report, t0);
+            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(Some);
         }
-        if report.outer_iterations >= params.max_iterations {
-            return Err(SolveError::ThermalNotConverged { iterations: report.outer_iterations, viscosity_change: change });
+        if self.report.outer_iterations >= params.max_iterations {
+            return Err(SolveError::ThermalNotConverged { iterations: self.report.outer_iterations, viscosity_change: change });
         }
-        let next = anderson.step(&flatten(current), &flatten(&t_new));
-        t_try = Some(unflatten(&next, &t_new));
+        let next = self.anderson.step(&flatten(current), &flatten(&t_new));
+        self.t_try = Some(unflatten(&next, &t_new));
         for (pt, t) in thermal.pads.iter_mut().zip(t_new) {
             pt.t_prev = Some(t);
         }
+        Ok(None)
     }
 }
 

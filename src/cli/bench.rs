@@ -12,37 +12,13 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use serde::Serialize;
 use web_time::Instant;
 
 use crate::bearing::{solve_case, Solution};
 use crate::model::{load_case, Case, Fidelity};
+use crate::scene::fidelity::{FidelityTable, LevelCost as LevelRow};
 
 use super::write_atomic;
-
-/// One measured level.
-#[derive(Debug, Clone, Serialize)]
-pub struct LevelRow {
-    pub case: String,
-    pub level: String,
-    pub film_nodes: usize,
-    pub median_ms: f64,
-    pub err_eccentricity: f64,
-    pub err_k: f64,
-    pub err_c: f64,
-    pub err_p_max: f64,
-    /// Relative error of the maximum film temperature rise above supply (THD rows only).
-    pub err_t_max: Option<f64>,
-}
-
-/// What the workbench reads to show the expected error and time of a level.
-#[derive(Debug, Clone, Serialize)]
-pub struct FidelityTable {
-    pub generated: String,
-    pub machine: String,
-    pub case: String,
-    pub rows: Vec<LevelRow>,
-}
 
 fn frob_rel(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> f64 {
     let mut d = 0.0;

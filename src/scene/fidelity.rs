@@ -2,10 +2,10 @@
 //! bearing (`assets/fidelity.json`, written with `docs/PERFORMANCE.md`). The editor shows it next to the
 //! fidelity selector.
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
-/// One measured level of one run (isothermal or THD).
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+/// One measured level of one run (isothermal or THD): written by the bench, read by the editor.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LevelCost {
     pub case: String,
     pub level: String,
@@ -15,15 +15,19 @@ pub struct LevelCost {
     pub err_k: f64,
     pub err_c: f64,
     pub err_p_max: f64,
+    /// Relative error of the maximum film temperature rise above supply (THD rows only).
     #[serde(default)]
     pub err_t_max: Option<f64>,
 }
 
 /// The measured table.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FidelityTable {
     pub generated: String,
     pub machine: String,
+    /// The case the rows were measured on.
+    #[serde(default)]
+    pub case: String,
     pub rows: Vec<LevelCost>,
 }
 
