@@ -7,8 +7,9 @@
 //!   within one film solve.
 //! - Web (no threads): the app calls [`Worker::poll`] every frame and the pipeline steps until a time
 //!   budget is spent; one step is one stage, or the part of an equilibrium solve that fits the budget (the
-//!   coupled Newton suspends between iterations, [`crate::bearing::Cancel::suspend`], and the next frame
-//!   resumes from its iterate). The thermal loop and sweep points are not split.
+//!   coupled Newton suspends between pad placements and iterations, [`crate::bearing::Cancel::suspend`],
+//!   and the next frame resumes from its iterate), or one THD outer iteration. Isothermal sweep points are
+//!   split the same way; a THD sweep point is one step.
 //!
 //! A job runs in two phases: first the solution and the frequency sweep (what most views need, so they
 //! update as soon as possible), then the speed sweep if the coefficient view asked for it.

@@ -82,6 +82,23 @@ impl SolveReport {
             self.warnings.push(w);
         }
     }
+
+    /// Adds the work of an earlier part of the same solve (a suspended part, [`SolveError::Suspended`]):
+    /// counts and time add up, its residual history comes first, warnings are merged. The final residuals
+    /// and the method stay this part's.
+    pub fn add_earlier(&mut self, earlier: SolveReport) {
+        self.iterations += earlier.iterations;
+        self.inner_iterations += earlier.inner_iterations;
+        self.film_solves += earlier.film_solves;
+        self.factorizations += earlier.factorizations;
+        self.seconds += earlier.seconds;
+        let mut history = earlier.residual_history;
+        history.append(&mut self.residual_history);
+        self.residual_history = history;
+        for w in earlier.warnings {
+            self.warn(w);
+        }
+    }
 }
 
 /// Converged state of one pad.
@@ -121,7 +138,8 @@ pub trait Cancel {
     }
 }
 
-/// Forwards cancellation but never suspends (solves that cannot be resumed: fallbacks, thermal, sweeps).
+/// Forwards cancellation but never suspends (solves whose caller cannot resume them: the fallbacks, the
+/// equilibria inside a THD outer iteration, THD sweep points).
 pub struct NoSuspend<'a>(pub &'a dyn Cancel);
 impl Cancel for NoSuspend<'_> {
     fn cancelled(&self) -> bool {

@@ -175,36 +175,17 @@ struct Suspensions {
 }
 
 impl Suspensions {
-    fn add(&mut self, r: &SolveReport) {
+    /// One more part of the solve has been suspended.
+    fn add(&mut self, part: SolveReport) {
         self.suspensions += 1;
-        self.report.iterations += r.iterations;
-        self.report.inner_iterations += r.inner_iterations;
-        self.report.film_solves += r.film_solves;
-        self.report.factorizations += r.factorizations;
-        self.report.seconds += r.seconds;
-        self.report.residual_history.extend_from_slice(&r.residual_history);
-        for w in &r.warnings {
-            if !self.report.warnings.contains(w) {
-                self.report.warnings.push(w.clone());
-            }
-        }
+        let mut r = part;
+        r.add_earlier(std::mem::take(&mut self.report));
+        self.report = r;
     }
 
     /// The final report covers the whole solve: earlier parts' work first.
     fn merge_into(self, r: &mut SolveReport) {
-        r.iterations += self.report.iterations;
-        r.inner_iterations += self.report.inner_iterations;
-        r.film_solves += self.report.film_solves;
-        r.factorizations += self.report.factorizations;
-        r.seconds += self.report.seconds;
-        let mut history = self.report.residual_history;
-        history.append(&mut r.residual_history);
-        r.residual_history = history;
-        for w in self.report.warnings {
-            if !r.warnings.contains(&w) {
-                r.warnings.push(w);
-            }
-        }
+        r.add_earlier(self.report);
         r.method = format!("{} (resumed {} times, one part per frame)", r.method, self.suspensions);
     }
 }
@@ -276,7 +257,7 @@ impl Pipeline {
                 Ok(s) => s,
                 Err(SolveError::Suspended { coordinates, placed_pads, report }) => {
                     let mut so_far = resumed.unwrap_or_default();
-                    so_far.add(&report);
+                    so_far.add(*report);
                     self.suspended = Some(Suspensions { key: ek, coordinates, placed_pads, ..so_far });
                     return Ok(Step::Pending { stage: Stage::Equilibrium, fraction: 0.5 });
                 }
