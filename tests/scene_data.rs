@@ -63,7 +63,7 @@ fn compressor_bearing_scene() {
     let json: serde_json::Value = serde_json::from_str(&export::results_json(&s)).unwrap();
     assert!((json["eccentricity_ratio"].as_f64().unwrap() - s.eccentricity_ratio).abs() < 1e-15);
     let t = plots::matrix_table(&s.full);
-    assert_eq!(t.headers[2], "pad0.tilt [rad]");
+    assert_eq!(t.headers[2], "pad 0 tilt [rad]");
 }
 
 /// Publication 4, Fig. 6: at 17 bar on the lower pad the film flow reverses upstream of the orifice.

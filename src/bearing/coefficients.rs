@@ -12,21 +12,29 @@
 use nalgebra::{Complex, DMatrix};
 use serde::Serialize;
 
+use super::coordinates::{Coord, JOURNAL_DOFS};
 use super::equilibrium::Equilibrium;
-use super::geometry::PadDof;
 use super::model::BearingModel;
 
 /// Full coefficient matrices and what each row means.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FullCoefficients {
-    /// Coordinate names: `x`, `y`, then `pad<k>.tilt`, `pad<k>.pivot_radial`.
-    pub dofs: Vec<String>,
+    /// The coordinate of each row and column: journal x, y, then each pad's coordinates.
+    pub coords: Vec<Coord>,
     /// Stiffness [N/m, N/rad, N·m/m, N·m/rad by block].
     pub k: Vec<Vec<f64>>,
     /// Damping [N·s/m, …].
     pub c: Vec<Vec<f64>>,
-    /// Pad inertia [kg, kg·m²].
+    /// Pad inertia [kg, kg·m, kg·m²].
     pub m: Vec<Vec<f64>>,
+}
+
+impl FullCoefficients {
+    /// Row (and column) of a coordinate.
+    #[must_use]
+    pub fn index(&self, c: Coord) -> Option<usize> {
+        self.coords.iter().position(|x| *x == c)
+    }
 }
 
 /// Reduced 2×2 journal coefficients (rows/cols x, y).
@@ -42,37 +50,21 @@ fn to_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
     (0..m.nrows()).map(|i| (0..m.ncols()).map(|j| m[(i, j)]).collect()).collect()
 }
 
-/// Assembles the full matrices at an equilibrium.
+/// Assembles the full matrices at an equilibrium: each pad's film block scattered through the model's
+/// [`DofMap`](super::coordinates::DofMap), plus its structural stiffness and inertia.
 #[must_use]
 pub fn full_coefficients(model: &BearingModel, eq: &Equilibrium) -> FullCoefficients {
-    let n = model.n_dofs;
+    let n = model.n_dofs();
     let mut k = DMatrix::zeros(n, n);
     let mut c = DMatrix::zeros(n, n);
     let mut m = DMatrix::zeros(n, n);
-    let mut dofs = vec!["x".to_string(), "y".to_string()];
     for (p, (pm, st)) in model.pads.iter().zip(&eq.pads).enumerate() {
-        let idx: Vec<usize> = [0, 1].into_iter().chain((0..pm.dofs.len()).map(|d| pm.offset + d)).collect();
-        for (a, &ga) in idx.iter().enumerate() {
-            for (b, &gb) in idx.iter().enumerate() {
-                k[(ga, gb)] += st.lin.stiffness[(a, b)];
-                c[(ga, gb)] += st.lin.damping[(a, b)];
-            }
-        }
-        for (d, dof) in pm.dofs.iter().enumerate() {
-            k[(pm.offset + d, pm.offset + d)] += pm.structural_stiffness[d];
-            for (e, _) in pm.dofs.iter().enumerate() {
-                m[(pm.offset + d, pm.offset + e)] = pm.mass[d][e];
-            }
-            dofs.push(format!(
-                "pad{p}.{}",
-                match dof {
-                    PadDof::Tilt => "tilt",
-                    PadDof::PivotRadial => "pivot_radial",
-                }
-            ));
-        }
+        model.dofs.scatter_add(p, &st.lin.stiffness, &mut k);
+        model.dofs.scatter_add(p, &st.lin.damping, &mut c);
+        model.dofs.scatter_add_pad_block(p, &pm.structure.stiffness, &mut k);
+        model.dofs.scatter_add_pad_block(p, &pm.structure.mass, &mut m);
     }
-    FullCoefficients { dofs, k: to_rows(&k), c: to_rows(&c), m: to_rows(&m) }
+    FullCoefficients { coords: model.dofs.coords(), k: to_rows(&k), c: to_rows(&c), m: to_rows(&m) }
 }
 
 fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
@@ -80,12 +72,27 @@ fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
     DMatrix::from_fn(n, n, |i, j| rows[i][j])
 }
 
-/// Pad coordinates that take part in the condensation (a coordinate with no stiffness, damping or inertia
-/// at all is decoupled and dropped).
+/// Pad coordinates that take part in the condensation: those connected to the journal through non-zero
+/// stiffness, damping or inertia couplings (directly or through other pad coordinates). The others — the
+/// coordinates of a floating pad, whose film carries nothing — are decoupled and dropped.
 fn active_pad_dofs(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>) -> Vec<usize> {
     let n = k.nrows();
-    let scale = (0..n).fold(0.0_f64, |s, i| s.max(k[(i, i)].abs()).max(c[(i, i)].abs()).max(m[(i, i)].abs()));
-    (2..n).filter(|&i| k[(i, i)].abs() + c[(i, i)].abs() + m[(i, i)].abs() > 1e-14 * scale.max(f64::MIN_POSITIVE)).collect()
+    let scale = [k, c, m].iter().map(|a| a.iter().fold(0.0_f64, |s, v| s.max(v.abs()))).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE);
+    let coupled = |i: usize, j: usize| [k, c, m].iter().any(|a| a[(i, j)].abs() > 1e-14 * scale || a[(j, i)].abs() > 1e-14 * scale);
+    let mut reached = vec![false; n];
+    let mut stack: Vec<usize> = (0..JOURNAL_DOFS).collect();
+    for &j in &stack {
+        reached[j] = true;
+    }
+    while let Some(i) = stack.pop() {
+        for j in JOURNAL_DOFS..n {
+            if !reached[j] && coupled(i, j) {
+                reached[j] = true;
+                stack.push(j);
+            }
+        }
+    }
+    (JOURNAL_DOFS..n).filter(|&i| reached[i]).collect()
 }
 
 /// Reduces the full matrices to the journal at excitation frequency `omega` [rad/s].

@@ -24,11 +24,6 @@ pub enum SolveError {
     ThermalNotConverged { iterations: usize, viscosity_change: f64 },
     #[error("solve cancelled")]
     Cancelled,
-    /// Paused at the caller's request ([`super::Cancel::suspend`]): resume by starting from
-    /// `coordinates` with `EquilibriumParams::placed_pads = placed_pads` (non-zero while the cold start was
-    /// still placing pads); `report` holds the work done so far.
-    #[error("solve suspended after {} iterations (resumes from its last iterate)", report.iterations)]
-    Suspended { coordinates: Vec<f64>, placed_pads: usize, report: Box<super::equilibrium::SolveReport> },
     #[error("{0}")]
     Invalid(String),
 }

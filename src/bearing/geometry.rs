@@ -9,70 +9,50 @@
 //!        − (Rp + t) δ sin(θ − θp)               tilt δ: counter-clockwise rotation of the pad about its
 //!                                               pivot; δ > 0 moves the trailing edge towards the journal
 //!        + ξ cos(θ − θp)                        pivot radial displacement ξ, positive away from the journal
+//!        + η sin(θ − θp)                        pivot transverse displacement η, positive towards +θ
 //! ```
+//!
+//! Each pad coordinate is a rigid motion of the pad (or an elastic mode); its shape follows from that
+//! motion in [`super::coordinates`].
 //!
 //! The generalised film force on coordinate q_k is `Q_k = ∫ p ∂h/∂q_k dA`; for the journal coordinates it
 //! is the film force on the journal (x, y), for the tilt it is the film moment about the pivot
 //! (counter-clockwise positive), for ξ the film force pushing the pad outwards along the pivot line.
 //! A fixed sector has no pad coordinates (δ ≡ 0).
 
-use crate::model::{Pad, PadKind};
+use crate::model::Pad;
 use crate::physics::reynolds::FilmShape;
 
-/// A pad degree of freedom beyond the journal's two.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum PadDof {
-    /// Rotation about the pivot [rad].
-    Tilt,
-    /// Radial translation of the pivot [m] (finite pivot stiffness).
-    PivotRadial,
-}
+use super::coordinates::{PadDof, RigidMotion};
 
-impl PadDof {
-    /// Unit of the coordinate, for display.
-    #[must_use]
-    pub fn unit(self) -> &'static str {
-        match self {
-            Self::Tilt => "rad",
-            Self::PivotRadial => "m",
-        }
-    }
-}
-
-/// The pad's degrees of freedom, in order.
-#[must_use]
-pub fn pad_dofs(pad: &Pad) -> Vec<PadDof> {
-    let mut d = Vec::new();
-    if pad.kind == PadKind::Tilting {
-        d.push(PadDof::Tilt);
-        if pad.pivot_stiffness_n_per_m.is_some() {
-            d.push(PadDof::PivotRadial);
-        }
-    }
-    d
-}
-
-/// Thickness model of one pad: `h0` and the shapes `∂h/∂q` for q = (e_x, e_y, pad dofs…).
+/// Thickness model of one pad: `h0` and the shapes `∂h/∂q` for q = (e_x, e_y, pad coordinates…).
 #[derive(Debug, Clone, PartialEq)]
 pub struct PadShape {
     pub pad_clearance: f64,
     pub assembled_clearance: f64,
     pub pivot: f64,
+    /// Pad bore radius Rp = R + Cp.
+    pub bore: f64,
     /// Distance from the pad's centre of curvature to the pivot, Rp + t.
     pub lever: f64,
     pub dofs: Vec<PadDof>,
+    /// The rigid motion of each pad coordinate (`None`: an elastic mode, whose shape is sampled).
+    motions: Vec<Option<RigidMotion>>,
 }
 
 impl PadShape {
     #[must_use]
-    pub fn new(pad: &Pad, journal_radius: f64, assembled_clearance: f64) -> Self {
+    pub fn new(pad: &Pad, journal_radius: f64, assembled_clearance: f64, dofs: &[PadDof]) -> Self {
+        let bore = pad.bore_radius_m(journal_radius);
+        let lever = bore + pad.thickness_m;
         Self {
             pad_clearance: pad.clearance_m,
             assembled_clearance,
             pivot: pad.pivot_rad,
-            lever: pad.bore_radius_m(journal_radius) + pad.thickness_m,
-            dofs: pad_dofs(pad),
+            bore,
+            lever,
+            dofs: dofs.to_vec(),
+            motions: dofs.iter().map(|d| d.rigid_motion(pad.pivot_rad, lever)).collect(),
         }
     }
 }
@@ -88,48 +68,16 @@ impl FilmShape for PadShape {
         match k {
             0 => -theta.cos(),
             1 => -theta.sin(),
-            _ => match self.dofs[k - 2] {
-                PadDof::Tilt => -self.lever * (theta - self.pivot).sin(),
-                PadDof::PivotRadial => (theta - self.pivot).cos(),
-            },
+            // Elastic modes have sampled shapes (pad flexibility); none are built yet.
+            _ => self.motions[k - 2].map_or(0.0, |m| m.film_shape(self.bore, theta)),
         }
     }
-}
-
-/// Rigid-body inertia of a pad (an annular sector of radii Rp, Rp + t, arc β, length L) in its own
-/// coordinates (tilt about the pivot, pivot radial translation).
-#[must_use]
-pub fn pad_mass_matrix(pad: &Pad, journal_radius: f64, length: f64) -> Vec<Vec<f64>> {
-    let dofs = pad_dofs(pad);
-    let r1 = pad.bore_radius_m(journal_radius);
-    let r2 = r1 + pad.thickness_m;
-    let beta = pad.arc_rad;
-    let rho = pad.density_kg_per_m3;
-    let mass = 0.5 * rho * length * beta * (r2 * r2 - r1 * r1);
-    // Polar moment about the centre of curvature O.
-    let i_o = 0.25 * rho * length * beta * (r2.powi(4) - r1.powi(4));
-    // Centroid distance from O, along the arc's mid-line.
-    let r_cm = if mass > 0.0 { (2.0 / 3.0) * (r2.powi(3) - r1.powi(3)) / (r2 * r2 - r1 * r1) * (0.5 * beta).sin() / (0.5 * beta) } else { 0.0 };
-    let theta_mid = pad.leading_edge_rad + 0.5 * beta;
-    let lever = r2; // pivot on the back of the pad
-    let i_p = i_o - 2.0 * mass * lever * r_cm * (theta_mid - pad.pivot_rad).cos() + mass * lever * lever;
-    let m_tr = mass * r_cm * (pad.pivot_rad - theta_mid).sin();
-    dofs.iter()
-        .map(|a| {
-            dofs.iter()
-                .map(|b| match (a, b) {
-                    (PadDof::Tilt, PadDof::Tilt) => i_p,
-                    (PadDof::PivotRadial, PadDof::PivotRadial) => mass,
-                    _ => m_tr,
-                })
-                .collect()
-        })
-        .collect()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bearing::coordinates::pad_dofs;
     use crate::model::PadKind;
 
     fn pad() -> Pad {
@@ -143,6 +91,7 @@ mod tests {
             preload: 0.25,
             thickness_m: 10e-3,
             pivot_stiffness_n_per_m: Some(1e8),
+            pivot_transverse_stiffness_n_per_m: None,
             density_kg_per_m3: 7800.0,
             youngs_modulus_pa: 200e9,
             poisson_ratio: 0.3,
@@ -153,7 +102,7 @@ mod tests {
     #[test]
     fn tilt_towards_journal_at_trailing_edge_reduces_h_there() {
         let p = pad();
-        let s = PadShape::new(&p, 0.05, 90e-6);
+        let s = PadShape::new(&p, 0.05, 90e-6, &pad_dofs(&p));
         let te = p.trailing_edge_rad();
         let le = p.leading_edge_rad;
         // δ > 0: trailing edge closer, leading edge further.
@@ -165,19 +114,5 @@ mod tests {
         assert!((s.dof(1, p.pivot_rad, 0.0) + 1.0).abs() < 1e-15);
         // Pivot moving away opens the film.
         assert!(s.dof(3, p.pivot_rad, 0.0) > 0.0);
-    }
-
-    #[test]
-    fn centred_pivot_pad_inertia_matches_closed_form() {
-        let p = pad();
-        let (r, l) = (0.05, 0.04);
-        let m = pad_mass_matrix(&p, r, l);
-        let (r1, r2) = (r + p.clearance_m, r + p.clearance_m + p.thickness_m);
-        let mass = 0.5 * 7800.0 * l * p.arc_rad * (r2 * r2 - r1 * r1);
-        assert!((m[1][1] - mass).abs() < 1e-12 * mass);
-        // Centred pivot: no coupling between tilt and radial translation.
-        assert!(m[0][1].abs() < 1e-12);
-        // Parallel-axis sanity: I_P between the moment about the centroid and about O + m·lever².
-        assert!(m[0][0] > 0.0 && m[0][0] < 0.25 * 7800.0 * l * p.arc_rad * (r2.powi(4) - r1.powi(4)) + mass * r2 * r2);
     }
 }

@@ -9,7 +9,8 @@ use std::f64::consts::TAU;
 use crate::model::{Case, LoadSpec, ThermalModelKind};
 
 use super::coefficients::{full_coefficients, reduce};
-use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel};
+use super::coordinates::PadDof;
+use super::equilibrium::{solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
 use super::solution::{BearingFlows, Derived, PadField, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
@@ -108,7 +109,7 @@ pub fn solve_operating_point(
     solve_operating_point_with(model, case, op, start, EquilibriumParams::default(), cancel)
 }
 
-/// [`solve_operating_point`] with explicit solver settings (e.g. resuming a suspended cold start).
+/// [`solve_operating_point`] with explicit solver settings.
 ///
 /// # Errors
 /// As [`solve_operating_point`].
@@ -122,6 +123,43 @@ pub fn solve_operating_point_with(
 ) -> Result<Solution, SolveError> {
     let eq = solve_equilibrium(model, op, params, start, cancel)?;
     Ok(assemble_solution(model, case, op, &eq))
+}
+
+/// A resumable [`solve_operating_point`]: pauses when `cancel` asks ([`Cancel::suspend`]); resume with
+/// `start = resume.coordinates` and `params.placed_pads = resume.placed_pads`.
+///
+/// # Errors
+/// As [`solve_operating_point`].
+pub fn step_operating_point(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    start: Option<&[f64]>,
+    params: EquilibriumParams,
+    cancel: &dyn Cancel,
+) -> Result<Progress<Solution, Resume>, SolveError> {
+    Ok(match step_equilibrium(model, op, params, start, cancel)? {
+        Progress::Done(eq) => Progress::Done(assemble_solution(model, case, op, &eq)),
+        Progress::Suspended(r) => Progress::Suspended(r),
+    })
+}
+
+/// A warning when the static (ω = 0) journal stiffness vanishes along an axis: the journal's position along
+/// it is set by the force balance alone (pads floating there, or no pad on that axis).
+fn zero_stiffness_warning(k: &[[f64; 2]; 2]) -> Option<String> {
+    let m = nalgebra::Matrix2::new(k[0][0], k[0][1], k[1][0], k[1][1]);
+    let svd = m.svd(false, true);
+    let v_t = svd.v_t?;
+    let (smax, smin) = (svd.singular_values.max(), svd.singular_values.min());
+    let i = if svd.singular_values[0] < svd.singular_values[1] { 0 } else { 1 };
+    (smax > 0.0 && smin < 1e-7 * smax).then(|| {
+        let axis = v_t[(i, 1)].atan2(v_t[(i, 0)]).to_degrees().rem_euclid(180.0).round() % 180.0 + 0.0;
+        format!(
+            "the bearing has no static stiffness along the {axis:.0}° axis at this equilibrium: the journal's \
+             position along it is set by the force balance alone (pads floating at the onset of pressure, or \
+             no pad on that axis: then it is held at its start position, as for a guided rotor)"
+        )
+    })
 }
 
 /// A warning when the static (ω = 0) journal stiffness has a negative principal value: the equilibrium
@@ -164,6 +202,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
         let f = film.flows(&inp);
         let (drag, pw) = film.friction(&inp);
         let (hmin, inode) = film.h_min();
+        let coordinate = |dof: PadDof| pm.dofs().iter().position(|d| *d == dof).map(|i| st.q[i]);
         let grid = &film.geom.grid;
         let field = PadField {
             s_m: grid.s.clone(),
@@ -192,13 +231,14 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
         let cav_frac = film.cavitated.iter().filter(|&&c| c).count() as f64 / film.p.len() as f64;
         pads.push(PadResult {
             index: k,
-            tilt_rad: pm.dofs.iter().position(|d| *d == super::geometry::PadDof::Tilt).map(|i| st.q[i]),
-            pivot_displacement_m: pm.dofs.iter().position(|d| *d == super::geometry::PadDof::PivotRadial).map(|i| st.q[i]),
+            tilt_rad: coordinate(PadDof::Tilt),
+            pivot_displacement_m: coordinate(PadDof::PivotRadial),
+            pivot_transverse_displacement_m: coordinate(PadDof::PivotTransverse),
             h_min_m: hmin,
             h_min_angle_deg: film.geom.node_theta[inode].to_degrees(),
             p_max_pa: film.p_max(),
             force_n: [st.forces[0], st.forces[1]],
-            moment_nm: if pm.dofs.is_empty() { 0.0 } else { st.forces[2] },
+            moment_nm: pm.dofs().iter().position(|d| *d == PadDof::Tilt).map_or(0.0, |i| st.pad_force(i)),
             flows_m3_per_s: f,
             orifice_flows_m3_per_s: (0..film.geom.orifices.len()).map(|o| film.orifice_flow(o, &inp)).collect(),
             friction_power_w: pw,
@@ -218,9 +258,8 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
     let omega = case.operating.excitation_ratio * op.speed_rad_s;
     let reduced = reduce(&full, omega);
     let mut report = eq.report.clone();
-    if let Some(w) = static_stability_warning(&reduce(&full, 0.0).k_n_per_m) {
-        report.warnings.push(w);
-    }
+    let k_static = reduce(&full, 0.0).k_n_per_m;
+    report.warnings.extend(static_stability_warning(&k_static).into_iter().chain(zero_stiffness_warning(&k_static)));
     let load_angle = match op.load {
         LoadSpec::Force { angle_rad, magnitude_n } if magnitude_n > 0.0 => angle_rad,
         _ => load[1].atan2(load[0]),

@@ -5,6 +5,7 @@
 
 pub mod anderson;
 pub mod coefficients;
+pub mod coordinates;
 pub mod equilibrium;
 pub mod error;
 pub mod geometry;
@@ -12,12 +13,17 @@ pub mod job;
 pub mod mixing;
 pub mod model;
 pub mod pipeline;
+pub mod progress;
+pub mod report;
 pub mod solution;
 pub mod thermal;
 pub mod thermal_pad;
 
 pub use coefficients::{FullCoefficients, ReducedCoefficients};
-pub use equilibrium::{Cancel, EquilibriumParams, NoCancel, NoSuspend, SolveReport};
+pub use coordinates::{Coord, DofMap, PadDof};
+pub use equilibrium::EquilibriumParams;
+pub use progress::{Cancel, NoCancel, NoSuspend, Progress};
+pub use report::SolveReport;
 pub use error::SolveError;
 pub use job::{solve_case, solve_operating_point, solve_point};
 pub use model::{BearingModel, OperatingPoint};

@@ -1,8 +1,9 @@
 //! The bearing model built once per geometry and mesh: one film (mesh, quadrature, pattern, symbolic
 //! factorisation, orifice operators, thickness shapes) per pad, and the global coordinate layout.
 //!
-//! Global coordinates: `u = [e_x, e_y, pad 0 dofs…, pad 1 dofs…, …]` (see [`super::geometry`]).
-//! Changing the operating point (speed, load, viscosity, injection) never rebuilds this.
+//! Global coordinates: `u = [e_x, e_y, pad 0 coordinates…, pad 1 coordinates…, …]`, laid out by the
+//! model's [`DofMap`] (see [`super::coordinates`]). Changing the operating point (speed, load, viscosity,
+//! injection) never rebuilds this.
 
 use crate::mesh::grid::{graded_nodes, PadGrid, Refinement};
 use crate::model::{Case, LoadSpec};
@@ -10,28 +11,31 @@ use crate::physics::orifice::LocalOrifice;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm, Viscosity};
 use crate::model::Cavitation;
 
+use super::coordinates::{DofMap, PadDof, PadStructure};
 use super::error::SolveError;
-use super::geometry::{pad_dofs, pad_mass_matrix, PadDof, PadShape};
+use super::geometry::PadShape;
 
-/// One pad: its film and where its coordinates live in the global vector.
+/// One pad: its film and its structure (coordinates, structural stiffness and inertia).
 #[derive(Debug, Clone)]
 pub struct PadModel {
     pub film: PadFilm,
-    pub dofs: Vec<PadDof>,
-    /// Index of the pad's first coordinate in the global vector.
-    pub offset: usize,
-    /// Structural stiffness on each pad coordinate (pivot stiffness on the radial one, 0 for the tilt).
-    pub structural_stiffness: Vec<f64>,
-    /// Rigid-body inertia in the pad coordinates.
-    pub mass: Vec<Vec<f64>>,
+    pub structure: PadStructure,
+}
+
+impl PadModel {
+    /// The pad's coordinates, in its local order (after the journal's two).
+    #[must_use]
+    pub fn dofs(&self) -> &[PadDof] {
+        &self.structure.dofs
+    }
 }
 
 /// The model: built from a case's geometry and mesh.
 #[derive(Debug, Clone)]
 pub struct BearingModel {
     pub pads: Vec<PadModel>,
-    /// Total number of global coordinates (2 + Σ pad dofs).
-    pub n_dofs: usize,
+    /// Layout of the global coordinate vector.
+    pub dofs: DofMap,
     pub journal_radius: f64,
     pub assembled_clearance: f64,
     pub length: f64,
@@ -46,10 +50,10 @@ impl BearingModel {
         let b = &case.bearing;
         let r = b.journal_radius_m;
         let mut pads = Vec::with_capacity(b.pads.len());
-        let mut offset = 2;
         for (k, pad) in b.pads.iter().enumerate() {
             let grid = pad_grid(case, k);
-            let shape = PadShape::new(pad, r, b.assembled_clearance_m);
+            let structure = PadStructure::rigid(pad, r, b.length_m);
+            let shape = PadShape::new(pad, r, b.assembled_clearance_m, &structure.dofs);
             let orifices: Vec<LocalOrifice> = pad
                 .orifices
                 .iter()
@@ -57,30 +61,22 @@ impl BearingModel {
                 .collect();
             let geom = FilmGeometry::new(grid, r, pad.leading_edge_rad, &orifices, &shape);
             let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, source: e })?;
-            let dofs = pad_dofs(pad);
-            let structural_stiffness = dofs
-                .iter()
-                .map(|d| match d {
-                    PadDof::Tilt => 0.0,
-                    PadDof::PivotRadial => pad.pivot_stiffness_n_per_m.unwrap_or(0.0),
-                })
-                .collect();
-            let mass = pad_mass_matrix(pad, r, b.length_m);
-            let n = dofs.len();
-            pads.push(PadModel { film, dofs, offset, structural_stiffness, mass });
-            offset += n;
+            pads.push(PadModel { film, structure });
         }
-        Ok(Self { pads, n_dofs: offset, journal_radius: r, assembled_clearance: b.assembled_clearance_m, length: b.length_m })
+        let dofs = DofMap::new(pads.iter().map(|p| p.structure.dofs.clone()).collect());
+        Ok(Self { pads, dofs, journal_radius: r, assembled_clearance: b.assembled_clearance_m, length: b.length_m })
     }
 
-    /// Local coordinates of pad k, `[e_x, e_y, pad dofs…]`, from the global vector.
+    /// Length of the global coordinate vector.
+    #[must_use]
+    pub fn n_dofs(&self) -> usize {
+        self.dofs.len()
+    }
+
+    /// Local coordinates of pad k, `[e_x, e_y, pad coordinates…]`, from the global vector.
     #[must_use]
     pub fn local(&self, k: usize, u: &[f64]) -> Vec<f64> {
-        let p = &self.pads[k];
-        let mut q = Vec::with_capacity(2 + p.dofs.len());
-        q.extend_from_slice(&u[..2]);
-        q.extend_from_slice(&u[p.offset..p.offset + p.dofs.len()]);
-        q
+        self.dofs.gather(k, u)
     }
 
     /// Total film nodes over all pads.

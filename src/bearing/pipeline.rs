@@ -24,9 +24,9 @@ use serde::Serialize;
 use crate::model::Case;
 
 use super::coefficients::{reduce, ReducedCoefficients};
-use super::equilibrium::{Cancel, EquilibriumParams, NoSuspend, SolveReport};
+use super::equilibrium::{Cancel, EquilibriumParams, NoSuspend, Progress, SolveReport};
 use super::error::SolveError;
-use super::job::{assemble_thd_solution, solve_operating_point, solve_operating_point_with, solve_point};
+use super::job::{assemble_thd_solution, solve_operating_point, solve_point, step_operating_point};
 use super::model::{BearingModel, OperatingPoint};
 use super::solution::Solution;
 use super::thermal::{ThdRun, ThermalModel, ThermalParams};
@@ -245,23 +245,22 @@ impl Pipeline {
             let cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
             let start = resumed.as_ref().map(|r| r.coordinates.as_slice()).or(self.warm.as_deref());
             let params = EquilibriumParams { placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads), ..EquilibriumParams::default() };
-            let attempt = match solve_operating_point_with(model, case, &op, start, params, cancel) {
+            let attempt = match step_operating_point(model, case, &op, start, params, cancel) {
                 // A failed warm start retries cold before giving up.
-                Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled | SolveError::Suspended { .. }) => {
+                Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled) => {
                     self.warm = None;
-                    solve_operating_point(model, case, &op, None, cancel)
+                    solve_operating_point(model, case, &op, None, cancel).map(Progress::Done)
                 }
                 r => r,
             };
-            let mut sol = match attempt {
-                Ok(s) => s,
-                Err(SolveError::Suspended { coordinates, placed_pads, report }) => {
+            let mut sol = match attempt? {
+                Progress::Done(s) => s,
+                Progress::Suspended(r) => {
                     let mut so_far = resumed.unwrap_or_default();
-                    so_far.add(*report);
-                    self.suspended = Some(Suspensions { key: ek, coordinates, placed_pads, ..so_far });
+                    so_far.add(r.report);
+                    self.suspended = Some(Suspensions { key: ek, coordinates: r.coordinates, placed_pads: r.placed_pads, ..so_far });
                     return Ok(Step::Pending { stage: Stage::Equilibrium, fraction: 0.5 });
                 }
-                Err(e) => return Err(e),
             };
             if let Some(so_far) = resumed {
                 so_far.merge_into(&mut sol.report);
@@ -346,20 +345,20 @@ impl Pipeline {
                 let point_cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
                 let solved = if may_suspend {
                     let params = EquilibriumParams { placed_pads: st.placed_pads, ..EquilibriumParams::default() };
-                    solve_operating_point_with(&mut st.model, &c, &OperatingPoint::isothermal(&c), st.start.as_deref(), params, point_cancel)
+                    step_operating_point(&mut st.model, &c, &OperatingPoint::isothermal(&c), st.start.as_deref(), params, point_cancel)
                 } else {
-                    solve_point(&mut st.model, &mut st.thermal, &c, st.start.as_deref(), point_cancel)
+                    solve_point(&mut st.model, &mut st.thermal, &c, st.start.as_deref(), point_cancel).map(Progress::Done)
                 };
                 let result = match solved {
-                    Err(SolveError::Suspended { coordinates, placed_pads, .. }) => {
-                        st.start = Some(coordinates);
-                        st.placed_pads = placed_pads;
+                    Ok(Progress::Suspended(r)) => {
+                        st.start = Some(r.coordinates);
+                        st.placed_pads = r.placed_pads;
                         st.suspensions += 1;
                         #[allow(clippy::cast_precision_loss)]
                         let fraction = i as f64 / speeds.len() as f64;
                         return Ok(Step::Pending { stage: Stage::SpeedSweep, fraction });
                     }
-                    Ok(s) => {
+                    Ok(Progress::Done(s)) => {
                         st.start = Some(s.coordinates.clone());
                         Ok(SweepValues::of(&s))
                     }

@@ -7,7 +7,7 @@ use crate::physics::energy::FilmHeat;
 use crate::physics::reynolds::PadFlows;
 
 use super::coefficients::{FullCoefficients, ReducedCoefficients};
-use super::equilibrium::SolveReport;
+use super::report::SolveReport;
 use super::thermal::ThermalReport;
 
 /// Quantities derived from the inputs that a reader of a result file needs.
@@ -70,6 +70,9 @@ pub struct PadResult {
     pub tilt_rad: Option<f64>,
     /// Radial pivot displacement [m] (finite pivot stiffness).
     pub pivot_displacement_m: Option<f64>,
+    /// Transverse pivot displacement [m] (finite transverse pivot stiffness).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pivot_transverse_displacement_m: Option<f64>,
     pub h_min_m: f64,
     /// Where h is smallest [deg].
     pub h_min_angle_deg: f64,
@@ -84,7 +87,7 @@ pub struct PadResult {
     pub friction_power_w: f64,
     /// Fraction of film nodes cavitated.
     pub cavitated_fraction: f64,
-    /// The pad carries almost no load.
+    /// The pad carries almost no load (a floating pad: see [`super::equilibrium::FLOATING_SHARE`]).
     pub unloaded: bool,
     #[serde(skip)]
     pub field: PadField,

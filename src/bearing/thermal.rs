@@ -452,7 +452,7 @@ impl ThdRun {
         // unloaded it is held for the rest of the loop, so that it cannot flip between equivalent states (each
         // flip changes its cavitated extent, hence the oil it hands to the next pad's inlet).
         for (k, p) in eq.pads.iter().enumerate() {
-            if p.unloaded && !self.op.held_pads[k] && !model.pads[k].dofs.is_empty() {
+            if p.unloaded && !self.op.held_pads[k] && !model.pads[k].dofs().is_empty() {
                 self.op.held_pads[k] = true;
                 self.report.warnings.push(format!("pad {k} is unloaded: its tilt is held from outer iteration {}", self.report.outer_iterations));
             }
@@ -460,7 +460,7 @@ impl ThdRun {
         if self.t_ok.is_none() && self.t_try.is_none() {
             // First (isothermal) equilibrium: decide once which pads are lightly loaded.
             for k in 0..n {
-                if self.shares[k] < LIGHT_PAD_SHARE && !model.pads[k].dofs.is_empty() {
+                if self.shares[k] < LIGHT_PAD_SHARE && !model.pads[k].dofs().is_empty() {
                     self.uniform[k] = true;
                     self.report.warnings.push(format!(
                         "pad {k} carries {:.1} % of the load: its Reynolds equation uses its mean film viscosity (the \

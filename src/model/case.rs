@@ -57,6 +57,8 @@ pub struct Pad {
     pub thickness_m: f64,
     /// Radial pivot stiffness [N/m]; `None` = rigid.
     pub pivot_stiffness_n_per_m: Option<f64>,
+    /// Transverse pivot stiffness (across the pivot line) [N/m]; `None` = rigid.
+    pub pivot_transverse_stiffness_n_per_m: Option<f64>,
     pub density_kg_per_m3: f64,
     pub youngs_modulus_pa: f64,
     pub poisson_ratio: f64,

@@ -109,6 +109,9 @@ pub struct PadFile {
     /// Radial pivot stiffness; absent = rigid pivot.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pivot_stiffness_n_per_m: Option<f64>,
+    /// Transverse pivot stiffness (across the pivot line, e.g. a rocker's tangential contact); absent = rigid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_transverse_stiffness_n_per_m: Option<f64>,
     /// Pad material density (default 7800, steel).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density_kg_per_m3: Option<f64>,

@@ -186,16 +186,16 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         None if kind == PadKind::Fixed => 0.0,
         None => return Err(missing(&PadSource::common_key("thickness_mm"), "pad thickness, mm")),
     };
-    let pivot_stiffness = match src.get("pivot_stiffness_n_per_m", |p| p.pivot_stiffness_n_per_m) {
-        Some((v, key)) => {
-            if kind == PadKind::Fixed {
-                return Err(inconsistent(&key, "a fixed sector has no pivot"));
-            }
-            // Real pivots are 1e7–1e10 N/m; below 1e5 N/m a pad would float millimetres off its seat.
-            Some(Range::closed(1e5, 1e14).check(&key, v)?)
+    // Real pivots are 1e7–1e10 N/m; below 1e5 N/m a pad would float millimetres off its seat.
+    let pivot_spring = |name: &str, f: fn(&PadFile) -> Option<f64>| -> Result<Option<f64>, CaseError> {
+        match src.get(name, f) {
+            Some((_, key)) if kind == PadKind::Fixed => Err(inconsistent(&key, "a fixed sector has no pivot")),
+            Some((v, key)) => Ok(Some(Range::closed(1e5, 1e14).check(&key, v)?)),
+            None => Ok(None),
         }
-        None => None,
     };
+    let pivot_stiffness = pivot_spring("pivot_stiffness_n_per_m", |p| p.pivot_stiffness_n_per_m)?;
+    let pivot_transverse_stiffness = pivot_spring("pivot_transverse_stiffness_n_per_m", |p| p.pivot_transverse_stiffness_n_per_m)?;
     let density = match src.get("density_kg_per_m3", |p| p.density_kg_per_m3) {
         Some((v, key)) => Range::positive(3e4).check(&key, v)?,
         None => 7800.0,
@@ -271,6 +271,7 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         preload,
         thickness_m: thickness,
         pivot_stiffness_n_per_m: pivot_stiffness,
+        pivot_transverse_stiffness_n_per_m: pivot_transverse_stiffness,
         density_kg_per_m3: density,
         youngs_modulus_pa: youngs,
         poisson_ratio: poisson,

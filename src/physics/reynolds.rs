@@ -453,6 +453,64 @@ impl PadFilm {
             .collect()
     }
 
+    /// The interval of coordinate `slot` (the others as in `q`) over which the film carries no pressure at
+    /// all under the Reynolds condition: `p ≡ 0` solves the complementarity problem exactly when the
+    /// right-hand side `b` is non-positive at every free node, and `b` is affine in the coordinate
+    /// (`b = c + q_slot d`, only the Couette term depends on the thickness). `None` for Gümbel cavitation
+    /// (whose pressure-free set needs a solve) or when no such coordinate value exists.
+    #[must_use]
+    pub fn pressure_free_interval(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
+        if inp.cavitation != Cavitation::Reynolds {
+            return None;
+        }
+        let g = &self.geom;
+        let u = inp.surface_speed;
+        let n = g.n_nodes();
+        let (mut c, mut d) = (vec![0.0; n], vec![0.0; n]);
+        for (e, nodes) in g.elements.iter().enumerate() {
+            for (k, qp) in g.qp[e].iter().enumerate() {
+                let mut h = g.base.qp[e][k];
+                for (j, qj) in q.iter().enumerate() {
+                    if j != slot {
+                        h += qj * g.shapes[j].qp[e][k];
+                    }
+                }
+                if let Some(x) = &self.extra_h {
+                    h += x.qp[e][k];
+                }
+                let phi = g.shapes[slot].qp[e][k];
+                for a in 0..4 {
+                    c[nodes[a]] += qp.w * 6.0 * u * h * qp.dn_ds[a];
+                    d[nodes[a]] += qp.w * 6.0 * u * phi * qp.dn_ds[a];
+                    if let Some(sq) = &self.squeeze {
+                        c[nodes[a]] -= 12.0 * qp.w * sq.qp[e][k] * qp.n[a];
+                    }
+                }
+            }
+        }
+        if inp.injection_pressure != 0.0 {
+            for o in &g.orifices {
+                for (ci, v) in c.iter_mut().zip(&o.vector) {
+                    *ci += inp.injection_pressure * v / inp.injection_viscosity;
+                }
+            }
+        }
+        let scale = c.iter().chain(&d).fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        for i in (0..n).filter(|&i| !g.dirichlet[i]) {
+            if d[i].abs() <= 1e-14 * scale {
+                if c[i] > 1e-14 * scale {
+                    return None;
+                }
+            } else if d[i] > 0.0 {
+                hi = hi.min(-c[i] / d[i]);
+            } else {
+                lo = lo.max(-c[i] / d[i]);
+            }
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+
     /// Nodal change of film thickness for a change `dq` of the coordinates.
     #[must_use]
     pub fn nodal_thickness_delta(&self, dq: &[f64]) -> Vec<f64> {

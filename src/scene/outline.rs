@@ -21,7 +21,8 @@
 
 use std::f64::consts::TAU;
 
-use crate::bearing::geometry::{pad_dofs, PadDof, PadShape};
+use crate::bearing::coordinates::{pad_dofs, Coord};
+use crate::bearing::geometry::PadShape;
 use crate::bearing::solution::Solution;
 use crate::model::{Case, LoadSpec};
 use crate::physics::reynolds::FilmShape;
@@ -104,16 +105,14 @@ pub fn bearing_outline(case: &Case, solution: Option<&Solution>) -> BearingOutli
     let mut pads = Vec::with_capacity(b.pads.len());
     let mut extent = r;
     for (idx, pad) in b.pads.iter().enumerate() {
-        let shape = PadShape::new(pad, r, b.assembled_clearance_m);
         let result = solution.and_then(|s| s.pads.get(idx));
-        // Coordinates [e_x, e_y, pad dofs…] in the order of `pad_dofs`.
+        let dofs = pad_dofs(pad);
+        let shape = PadShape::new(pad, r, b.assembled_clearance_m, &dofs);
+        // Local coordinates [e_x, e_y, pad coordinates…], looked up by their typed ids in the solution.
         let mut q = vec![e[0], e[1]];
-        for dof in pad_dofs(pad) {
-            q.push(match dof {
-                PadDof::Tilt => result.and_then(|p| p.tilt_rad).unwrap_or(0.0),
-                PadDof::PivotRadial => result.and_then(|p| p.pivot_displacement_m).unwrap_or(0.0),
-            });
-        }
+        q.extend(dofs.iter().map(|&dof| {
+            solution.and_then(|s| s.full.index(Coord::Pad { pad: idx, dof }).and_then(|i| s.coordinates.get(i)).copied()).unwrap_or(0.0)
+        }));
         let h = |theta: f64| shape.base(theta, 0.0) + (0..q.len()).map(|d| q[d] * shape.dof(d, theta, 0.0)).sum::<f64>();
         let rho_p = |theta: f64| rho_j(theta) + k * h(theta);
         let n = 48;

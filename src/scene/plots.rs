@@ -96,7 +96,7 @@ pub fn sweep_speeds(rpm: f64, n: usize) -> Vec<f64> {
 /// The full matrices as a table: coordinate names with units, rows of values (SI).
 #[derive(Debug, Clone, PartialEq)]
 pub struct MatrixTable {
-    /// `x [m]`, `y [m]`, `pad0.tilt [rad]`, …
+    /// `x [m]`, `y [m]`, `pad 0 tilt [rad]`, …
     pub headers: Vec<String>,
     pub k: Vec<Vec<f64>>,
     pub c: Vec<Vec<f64>>,
@@ -106,14 +106,7 @@ pub struct MatrixTable {
 /// Headers with the unit of each coordinate.
 #[must_use]
 pub fn matrix_table(full: &FullCoefficients) -> MatrixTable {
-    let headers = full
-        .dofs
-        .iter()
-        .map(|d| {
-            let unit = if d.ends_with(".tilt") { "rad" } else { "m" };
-            format!("{d} [{unit}]")
-        })
-        .collect();
+    let headers = full.coords.iter().map(|c| format!("{} [{}]", c.label(), c.unit())).collect();
     MatrixTable { headers, k: full.k.clone(), c: full.c.clone(), m: full.m.clone() }
 }
 

@@ -134,7 +134,7 @@ const THICKNESS: Field = Field {
     set: |f, v| f.bearing.pads.thickness_mm = Some(v),
 };
 
-const PAD_MATERIAL: [OptField; 4] = [
+const PAD_MATERIAL: [OptField; 5] = [
     OptField {
         num: Num {
             key: "bearing.pads.pivot_stiffness_n_per_m",
@@ -147,6 +147,19 @@ const PAD_MATERIAL: [OptField; 4] = [
         default: 2e7,
         get: |f| f.bearing.pads.pivot_stiffness_n_per_m,
         set: |f, v| f.bearing.pads.pivot_stiffness_n_per_m = v,
+    },
+    OptField {
+        num: Num {
+            key: "bearing.pads.pivot_transverse_stiffness_n_per_m",
+            label: "Pivot transverse stiffness",
+            unit: "N/m",
+            range: (1e6, 1e10),
+            decimals: 0,
+            tip: "Stiffness of the pivot across the pivot line (a rocker's tangential contact). Absent: the pivot does not move sideways. A finite value adds the sideways pivot motion as a pad coordinate.",
+        },
+        default: 1e8,
+        get: |f| f.bearing.pads.pivot_transverse_stiffness_n_per_m,
+        set: |f, v| f.bearing.pads.pivot_transverse_stiffness_n_per_m = v,
     },
     OptField {
         num: Num { key: "bearing.pads.density_kg_per_m3", label: "Pad density", unit: "kg/m³", range: (1000.0, 9000.0), decimals: 0, tip: "Pad material density: sets the pad inertia that enters the frequency-dependent reduced coefficients." },

@@ -190,7 +190,7 @@ pub fn optional_ui(
 /// What leaving out a key means, for keys whose absence is not a default number.
 fn absent_meaning(key: &str) -> Option<&'static str> {
     match key {
-        "bearing.pads.pivot_stiffness_n_per_m" => Some("rigid pivot"),
+        "bearing.pads.pivot_stiffness_n_per_m" | "bearing.pads.pivot_transverse_stiffness_n_per_m" => Some("rigid pivot"),
         "thermal.inlet_temperature_c" => Some("from the groove mixing"),
         "thermal.journal_temperature_c" => Some("from zero net heat flux"),
         _ => None,

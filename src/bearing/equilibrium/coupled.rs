@@ -1,0 +1,246 @@
+//! Coupled Newton on all coordinates at once: one film solve per pad per iteration, the films' analytic
+//! Jacobian `∂R/∂u = −(K_film + K_s)` assembled through the [`DofMap`](super::super::coordinates::DofMap).
+//!
+//! Safeguards: on a cold start, and whenever a pad's own stiffness is not positive (far from its
+//! equilibrium the tilt moment is not monotone), that pad is placed with the safeguarded pad solve; pads
+//! that carry no load are held and placed the same way. The Newton system is solved in a basis of the
+//! journal directions that have stiffness plus the loaded pads' coordinates, so a zero-stiffness journal
+//! direction (a two-pad bearing sideways) is held, as in the pad-assembly method. A backtracking line search
+//! on the scaled residual keeps every film open.
+
+use nalgebra::{DMatrix, DVector, Vector2};
+
+use super::super::coordinates::JOURNAL_DOFS;
+use super::super::error::SolveError;
+use super::super::model::BearingModel;
+use super::eval::{coupled_residual, eval_all, external_load, total_force, Ctx};
+use super::journal::{bearing_stiffness, journal_step};
+use super::pad::{follow_journal, solve_pad};
+use super::{Cancel, Found, PadState, Progress, Resume, Stall, SUFFICIENT_DECREASE, UNLOADED_SHARE};
+
+/// Backtracking halvings of a Newton step before the line search gives up.
+const LINE_SEARCH_HALVINGS: usize = 12;
+/// Fraction of the local film thickness a step may close at most.
+const FILM_CLOSING_FRACTION: f64 = 0.5;
+
+type Outcome = Progress<Result<Found, Stall>, Resume>;
+/// An accepted trial point: coordinates and pad states.
+type Accepted = (Vec<f64>, Vec<PadState>);
+
+/// Runs the coupled Newton from `u0` (`cold`: place every pad first).
+pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Outcome, SolveError> {
+    let w = external_load(ctx.op, 1.0);
+    let tol = ctx.params.force_tol * ctx.force_scale;
+    let mut u = u0.to_vec();
+    let mut states = if cold {
+        match cold_start(model, &mut u, ctx, cancel)? {
+            Progress::Done(Some(st)) => st,
+            Progress::Done(None) => return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, "film closes at the start")))),
+            Progress::Suspended(r) => return Ok(Progress::Suspended(r)),
+        }
+    } else {
+        match eval_all(model, &u, ctx) {
+            Ok(st) => st,
+            Err(_) => return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, "film closes at the start")))),
+        }
+    };
+    // Unloaded pads already re-examined in this solve.
+    let mut rechecked = vec![false; model.pads.len()];
+    let none_moved = vec![false; model.pads.len()];
+    place_hard_pads(model, &mut u, &mut states, &none_moved, ctx)?;
+    for it in 0..ctx.params.max_iterations {
+        if cancel.cancelled() {
+            return Err(SolveError::Cancelled);
+        }
+        if it > 0 && cancel.suspend() {
+            return Ok(Progress::Suspended(Resume { coordinates: u, placed_pads: 0, report: Default::default() }));
+        }
+        ctx.report.iterations += 1;
+        let (r, merit) = coupled_residual(model, &u, &states, w, ctx.force_scale);
+        ctx.report.residual_history.push(r[0].hypot(r[1]) / ctx.force_scale);
+        let pads_ok = states.iter().all(|s| s.unloaded || s.residual <= ctx.params.pad_tol);
+        if r[0].hypot(r[1]) <= tol && pads_ok {
+            // Before accepting, give every unloaded (not held) pad the safeguarded search: a pad without film
+            // pressure is in equilibrium only trivially, and from a warm start (a sweep, an edit) it may sit in
+            // its pressure-free range although a loaded equilibrium exists at this operating point.
+            let loaded_again = recheck_unloaded(model, &mut u, &mut states, &mut rechecked, ctx)?;
+            let (r2, _) = coupled_residual(model, &u, &states, w, ctx.force_scale);
+            if !loaded_again && r2[0].hypot(r2[1]) <= tol {
+                let force = total_force(&states);
+                return Ok(Progress::Done(Ok(Found { u, pads: states, force, method: "coupled Newton".into() })));
+            }
+            continue;
+        }
+        let step = match newton_step(model, &states, &r) {
+            Ok(s) => s,
+            Err(reason) => return Ok(Progress::Done(Err(stall(&u, &states, w, &reason, ctx)))),
+        };
+        match line_search(model, &u, &states, &step, merit, w, ctx)? {
+            Some((u2, s2)) => {
+                u = u2;
+                states = s2;
+            }
+            None => {
+                // Leave the films at the last accepted point.
+                let _ = eval_all(model, &u, ctx);
+                return Ok(Progress::Done(Err(stall(&u, &states, w, "line search found no decrease", ctx))));
+            }
+        }
+    }
+    Ok(Progress::Done(Err(stall(&u, &states, w, "iteration limit", ctx))))
+}
+
+fn stall(u: &[f64], states: &[PadState], w: [f64; 2], reason: &str, ctx: &Ctx<'_>) -> Stall {
+    let f = total_force(states);
+    Stall::new(u, (f[0] + w[0]).hypot(f[1] + w[1]) / ctx.force_scale, reason)
+}
+
+/// Places every pad at the starting journal position (those placed before a suspension again: from their
+/// placed coordinates that costs one film solve each). `None` if a film closes.
+fn cold_start(model: &mut BearingModel, u: &mut [f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Progress<Option<Vec<PadState>>, Resume>, SolveError> {
+    let mut st = Vec::with_capacity(model.pads.len());
+    for k in 0..model.pads.len() {
+        if k > ctx.params.placed_pads && cancel.suspend() {
+            return Ok(Progress::Suspended(Resume { coordinates: u.to_vec(), placed_pads: k, report: Default::default() }));
+        }
+        let slice = model.dofs.pad_slice(k);
+        let q = u[slice.clone()].to_vec();
+        match solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx) {
+            Ok(p) => {
+                u[slice].copy_from_slice(&p.q);
+                st.push(p);
+            }
+            Err(_) => return Ok(Progress::Done(None)),
+        }
+    }
+    Ok(Progress::Done(Some(st)))
+}
+
+/// Re-places pad k with the safeguarded pad solve; a pad carrying a vanishing share counts as unloaded.
+fn replace_pad(model: &mut BearingModel, k: usize, u: &mut [f64], ctx: &mut Ctx<'_>) -> Result<PadState, SolveError> {
+    let slice = model.dofs.pad_slice(k);
+    let q = u[slice.clone()].to_vec();
+    let st = solve_pad(&mut model.pads[k], k, [u[0], u[1]], &q, ctx).map_err(|e| ctx.film_error(k, e))?;
+    u[slice].copy_from_slice(&st.q);
+    let floating = ctx.share(&st) < UNLOADED_SHARE;
+    Ok(PadState { unloaded: st.unloaded || floating, residual: if floating { 0.0 } else { st.residual }, ..st })
+}
+
+/// Places the pads Newton cannot handle: no positive stiffness of their own, or no load. An unloaded pad
+/// that `moved_unloaded` says was carried along with a moving journal ([`follow_journal`]) is searched again
+/// only if it picked up load (a journal moving towards a floating pad loads it); one that stays unloaded
+/// carries a negligible force until the search before acceptance ([`recheck_unloaded`]) places it exactly.
+fn place_hard_pads(model: &mut BearingModel, u: &mut [f64], states: &mut [PadState], moved_unloaded: &[bool], ctx: &mut Ctx<'_>) -> Result<(), SolveError> {
+    for k in 0..model.pads.len() {
+        let pm = &model.pads[k];
+        let nd = pm.dofs().len();
+        if nd == 0 || ctx.held(k) {
+            continue;
+        }
+        let own_ok = (0..nd).all(|d| states[k].lin.stiffness[(JOURNAL_DOFS + d, JOURNAL_DOFS + d)] + pm.structure.stiffness[(d, d)] > 0.0);
+        let picked_up = moved_unloaded[k] && ctx.share(&states[k]) >= UNLOADED_SHARE;
+        if picked_up || ((!own_ok || states[k].unloaded) && states[k].residual > ctx.params.pad_tol) {
+            states[k] = replace_pad(model, k, u, ctx)?;
+        }
+    }
+    Ok(())
+}
+
+/// Gives every unloaded, not held pad one safeguarded search; true if one of them picked up load.
+fn recheck_unloaded(model: &mut BearingModel, u: &mut [f64], states: &mut [PadState], rechecked: &mut [bool], ctx: &mut Ctx<'_>) -> Result<bool, SolveError> {
+    let mut loaded_again = false;
+    for k in 0..model.pads.len() {
+        if !states[k].unloaded || ctx.held(k) || model.pads[k].dofs().is_empty() || rechecked[k] {
+            continue;
+        }
+        rechecked[k] = true;
+        states[k] = replace_pad(model, k, u, ctx)?;
+        loaded_again |= ctx.share(&states[k]) >= UNLOADED_SHARE;
+    }
+    Ok(loaded_again)
+}
+
+/// The Newton step over the journal directions with stiffness and the loaded pads' coordinates.
+fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<Vec<f64>, String> {
+    let n = model.n_dofs();
+    let kred = bearing_stiffness(&model.pads, states);
+    // Pads are not in equilibrium yet, so a residual along a zero-stiffness direction is allowed here.
+    let (_, held) = journal_step(&kred, &Vector2::new(r[0], r[1]), f64::INFINITY)?;
+    let unit = |i: usize| {
+        let mut b = vec![0.0; n];
+        b[i] = 1.0;
+        b
+    };
+    let mut basis: Vec<Vec<f64>> = match held {
+        Some(v) => {
+            let mut b = vec![0.0; n];
+            b[0] = -v[1];
+            b[1] = v[0];
+            vec![b]
+        }
+        None => (0..JOURNAL_DOFS).map(unit).collect(),
+    };
+    let mut k = DMatrix::<f64>::zeros(n, n);
+    for (p, (pm, st)) in model.pads.iter().zip(states).enumerate() {
+        // An unloaded tilting pad is held and contributes nothing (see `condensed_journal_stiffness`).
+        if st.unloaded && !pm.dofs().is_empty() {
+            continue;
+        }
+        model.dofs.scatter_add(p, &st.lin.stiffness, &mut k);
+        model.dofs.scatter_add_pad_block(p, &pm.structure.stiffness, &mut k);
+        basis.extend(model.dofs.pad_slice(p).map(unit));
+    }
+    let bm = DMatrix::from_fn(n, basis.len(), |i, c| basis[c][i]);
+    let kr = bm.transpose() * &k * &bm;
+    let rr = bm.transpose() * DVector::from_column_slice(r);
+    let y = kr.lu().solve(&rr).filter(|s| s.iter().all(|v| v.is_finite())).ok_or_else(|| "singular Jacobian".to_string())?;
+    Ok((&bm * y).iter().copied().collect())
+}
+
+/// Backtracking on the merit, the journal step limited to `max_step` Cb and every film kept open. A trial
+/// point is judged with its unloaded pads placed again (what the next iteration starts from).
+fn line_search(
+    model: &mut BearingModel,
+    u: &[f64],
+    states: &[PadState],
+    step: &[f64],
+    merit: f64,
+    w: [f64; 2],
+    ctx: &mut Ctx<'_>,
+) -> Result<Option<Accepted>, SolveError> {
+    let tol = ctx.params.force_tol * ctx.force_scale;
+    let cb = model.assembled_clearance;
+    let js = step[0].hypot(step[1]);
+    let mut alpha = if js > ctx.params.max_step * cb { ctx.params.max_step * cb / js } else { 1.0 };
+    for (kk, pm) in model.pads.iter().enumerate() {
+        let dh = pm.film.nodal_thickness_delta(&model.local(kk, step));
+        for (h, d) in pm.film.h.node.iter().zip(&dh) {
+            if *d < 0.0 {
+                alpha = alpha.min(FILM_CLOSING_FRACTION * h / -d);
+            }
+        }
+    }
+    // Unloaded pads are held by the Newton step; on a trial point they follow the journal.
+    let moved: Vec<bool> = model.pads.iter().zip(states).enumerate().map(|(k, (pm, st))| st.unloaded && !pm.dofs().is_empty() && !ctx.held(k)).collect();
+    for _ in 0..LINE_SEARCH_HALVINGS {
+        let mut trial: Vec<f64> = u.iter().zip(step).map(|(a, d)| a + alpha * d).collect();
+        let de = [alpha * step[0], alpha * step[1]];
+        for (k, _) in moved.iter().enumerate().filter(|m| *m.1) {
+            let slice = model.dofs.pad_slice(k);
+            let q = follow_journal(&model.pads[k], &u[slice.clone()], de);
+            trial[slice].copy_from_slice(&q);
+        }
+        if let Ok(mut st2) = eval_all(model, &trial, ctx) {
+            for (a, b) in st2.iter_mut().zip(states) {
+                a.unloaded |= b.unloaded && ctx.share(a) < UNLOADED_SHARE;
+            }
+            place_hard_pads(model, &mut trial, &mut st2, &moved, ctx)?;
+            let (r2, m2) = coupled_residual(model, &trial, &st2, w, ctx.force_scale);
+            if m2.sqrt() < (1.0 - SUFFICIENT_DECREASE * alpha) * merit.sqrt() || (r2[0].hypot(r2[1]) <= tol && m2 <= merit) {
+                return Ok(Some((trial, st2)));
+            }
+        }
+        alpha *= 0.5;
+    }
+    Ok(None)
+}

@@ -1,0 +1,179 @@
+//! Fallbacks after the coupled Newton, all on the journal position with every pad solved inside (Lund's
+//! pad assembly, so the journal force `F(e)` is the bearing's static force law):
+//!
+//! 1. Newton on `F(e) + W = 0` with the pad-condensed stiffness, from the initial guess.
+//! 2. The polar bracketing search ([`super::polar`]): converges for any continuous restoring force law,
+//!    including the non-smooth ones of zero-preload pads whose film is uniform.
+//! 3. A scan along the load for the first stable crossing (negative-stiffness regions and folds, e.g.
+//!    hydrostatic pads on soft pivots), then Newton.
+//! 4. Load continuation from a centred journal.
+//!
+//! Each returns a converged state or why it stopped; the last failure becomes the error.
+
+use nalgebra::Vector2;
+
+use crate::physics::reynolds::FilmError;
+
+use super::super::error::SolveError;
+use super::super::model::BearingModel;
+use super::eval::{assemble_u, external_load, load_direction, min_film, solve_all_pads, Ctx};
+use super::journal::{bearing_stiffness, journal_step};
+use super::{Cancel, Found, Stall, SUFFICIENT_DECREASE};
+
+/// Backtracking halvings of a journal Newton step.
+const LINE_SEARCH_HALVINGS: usize = 14;
+/// Load steps of the continuation.
+const CONTINUATION_STEPS: usize = 12;
+/// Step of the scan along the load, as a fraction of the assembled clearance, and its extent.
+const SCAN_STEP: f64 = 0.1;
+const SCAN_STEPS: usize = 100;
+/// A film thinner than this fraction of Cb when every method has failed means the load cannot be carried.
+pub(super) const TOUCHDOWN_FRACTION: f64 = 0.05;
+
+/// Runs the fallbacks in turn from `u0`.
+pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
+    let named = |r: Result<Found, Stall>, method: &str| r.map(|f| Found { method: method.to_string(), ..f });
+    match named(newton_journal(model, u0, 1.0, ctx, cancel)?, "Newton (pad assembly)") {
+        Ok(f) => return Ok(f),
+        Err(s) => ctx.report.warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
+    }
+    match named(super::polar::polar_search(model, ctx, cancel)?, "polar bracketing search") {
+        Ok(f) => return Ok(f),
+        Err(s) => ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason)),
+    }
+    if let Some(u_scan) = scan_along_load(model, ctx, cancel)? {
+        match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, "scan along the load + Newton") {
+            Ok(f) => return Ok(f),
+            Err(s) => ctx.report.warn(format!("Newton after the load-direction scan failed ({}); using load continuation", s.reason)),
+        }
+    }
+    continuation(model, ctx, cancel)
+}
+
+/// Newton on the journal position for load fraction `fraction`, from `u0`.
+pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+    let w = external_load(ctx.op, fraction);
+    let cb = model.assembled_clearance;
+    let mut journal = [u0[0], u0[1]];
+    let mut u = u0.to_vec();
+    let (mut states, mut f) = match solve_all_pads(model, journal, &u, ctx) {
+        Ok(x) => x,
+        Err((_, FilmError::Contact { .. })) => {
+            // Start from the centre if the guess closes a film.
+            journal = [0.0, 0.0];
+            u.iter_mut().for_each(|v| *v = 0.0);
+            solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| ctx.film_error(k, e))?
+        }
+        Err((k, e)) => return Err(ctx.film_error(k, e)),
+    };
+    let tol = ctx.params.force_tol * ctx.force_scale;
+    let stall = |journal: [f64; 2], r: Vector2<f64>, reason: String, scale: f64| Stall { journal, residual: r.norm() / scale, reason };
+    for _ in 0..ctx.params.max_iterations {
+        if cancel.cancelled() {
+            return Err(SolveError::Cancelled);
+        }
+        ctx.report.iterations += 1;
+        let r = Vector2::new(f[0] + w[0], f[1] + w[1]);
+        ctx.report.residual_history.push(r.norm() / ctx.force_scale);
+        u = assemble_u(model, journal, &states);
+        if r.norm() <= tol {
+            return Ok(Ok(Found { u, pads: states, force: f, method: String::new() }));
+        }
+        let mut step = match journal_step(&bearing_stiffness(&model.pads, &states), &r, tol) {
+            Ok((step, _)) => step,
+            Err(reason) => return Ok(Err(stall(journal, r, reason, ctx.force_scale))),
+        };
+        let max = ctx.params.max_step * cb;
+        if step.norm() > max {
+            step *= max / step.norm();
+        }
+        let mut alpha = 1.0;
+        let mut accepted = None;
+        for _ in 0..LINE_SEARCH_HALVINGS {
+            let trial = [journal[0] + alpha * step[0], journal[1] + alpha * step[1]];
+            match solve_all_pads(model, trial, &u, ctx) {
+                Ok((st2, f2)) => {
+                    let r2 = Vector2::new(f2[0] + w[0], f2[1] + w[1]);
+                    if r2.norm() < (1.0 - SUFFICIENT_DECREASE * alpha) * r.norm() || r2.norm() <= tol {
+                        accepted = Some((trial, st2, f2));
+                        break;
+                    }
+                }
+                Err((_, FilmError::Contact { .. })) => {}
+                Err((k, e)) => return Err(ctx.film_error(k, e)),
+            }
+            alpha *= 0.5;
+        }
+        let Some((j, s, ff)) = accepted else {
+            // Leave the films at the last accepted point.
+            let _ = solve_all_pads(model, journal, &u, ctx);
+            return Ok(Err(stall(journal, r, "line search found no decrease".into(), ctx.force_scale)));
+        };
+        journal = j;
+        states = s;
+        f = ff;
+    }
+    let r = Vector2::new(f[0] + w[0], f[1] + w[1]);
+    Ok(Err(stall(journal, r, format!("{} iterations", ctx.params.max_iterations), ctx.force_scale)))
+}
+
+/// Walks the journal along the load direction from the centre in steps of 0.1 Cb until the residual along
+/// the load changes sign with a restoring slope; returns the coordinates there (or `None`).
+fn scan_along_load(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Option<Vec<f64>>, SolveError> {
+    let w = external_load(ctx.op, 1.0);
+    let dir = load_direction(ctx.op);
+    if dir == [0.0, 0.0] {
+        return Ok(None);
+    }
+    let cb = model.assembled_clearance;
+    let mut u = vec![0.0; model.n_dofs()];
+    let mut prev: Option<(f64, Vec<f64>)> = None;
+    for i in 0..=SCAN_STEPS {
+        if cancel.cancelled() {
+            return Err(SolveError::Cancelled);
+        }
+        #[allow(clippy::cast_precision_loss)]
+        let e = SCAN_STEP * cb * i as f64;
+        let journal = [e * dir[0], e * dir[1]];
+        let Ok((states, f)) = solve_all_pads(model, journal, &u, ctx) else { return Ok(None) };
+        let g = (f[0] + w[0]) * dir[0] + (f[1] + w[1]) * dir[1];
+        u = assemble_u(model, journal, &states);
+        if let Some((gp, up)) = &prev {
+            if *gp > 0.0 && g <= 0.0 {
+                // Linear interpolation between the bracketing points.
+                let t = gp / (gp - g);
+                return Ok(Some(up.iter().zip(&u).map(|(a, b)| a + t * (b - a)).collect()));
+            }
+        }
+        prev = Some((g, u.clone()));
+    }
+    Ok(None)
+}
+
+/// Load continuation from a centred journal; touchdown when a step fails with a film nearly closed.
+fn continuation(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
+    let cb = model.assembled_clearance;
+    let mut u = vec![0.0; model.n_dofs()];
+    let mut last = Stall { journal: [0.0; 2], residual: 0.0, reason: String::new() };
+    for s in 1..=CONTINUATION_STEPS {
+        #[allow(clippy::cast_precision_loss)]
+        let frac = s as f64 / CONTINUATION_STEPS as f64;
+        match newton_journal(model, &u, frac, ctx, cancel)? {
+            Ok(found) if s == CONTINUATION_STEPS => return Ok(Found { method: "load continuation".into(), ..found }),
+            Ok(found) => u = found.u,
+            Err(stall) => {
+                let (pad, hmin) = min_film(model);
+                if hmin < TOUCHDOWN_FRACTION * cb {
+                    let ecc = stall.journal[0].hypot(stall.journal[1]) / cb;
+                    return Err(SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: ecc });
+                }
+                last = stall;
+                break;
+            }
+        }
+    }
+    if let (Some((pad, hmin, ecc)), None) = (ctx.closes_before_balance, ctx.exhausted()) {
+        return Err(SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: ecc });
+    }
+    Err(SolveError::NotConverged { iterations: ctx.report.iterations, residual: last.residual, reason: last.reason })
+}

@@ -1,0 +1,83 @@
+//! The converged state as a result: residuals, the full linearisation (stiffness and damping) at the
+//! converged films, floating pads, touchdown, the report; and failures classified (a film last seen nearly
+//! closed after every method failed is touchdown).
+//!
+//! ## Floating pads
+//! A pad whose load share is below [`FLOATING_SHARE`] *floats*: its film is at the cavitation (ambient)
+//! pressure almost everywhere — a zero-preload pad whose film is uniform, or a diverging film. A Lund-type
+//! linearisation about it is ill-posed: any separating motion ruptures the film, which cannot carry tension,
+//! while which nodes the active set calls "full" at p = 0 is decided by round-off (the damping of such
+//! pads changed by 10× between meshes). The film of a floating pad is treated as cavitated: it contributes
+//! no stiffness and no damping, so its coordinates decouple from the journal (only their structural
+//! stiffness and inertia remain), identically on every mesh. The report lists the floating pads.
+
+use crate::model::LoadSpec;
+use crate::physics::reynolds::FilmLinearization;
+
+use super::super::error::SolveError;
+use super::super::model::BearingModel;
+use super::eval::{external_load, min_film, Ctx};
+use super::fallback::TOUCHDOWN_FRACTION;
+use super::{Equilibrium, Found, FLOATING_SHARE};
+
+/// Pad residual (relative) above which a converged state is reported with a warning.
+const PAD_RESIDUAL_WARNING: f64 = 1e3;
+/// A minimum film below this multiple of the touchdown film is reported as close to touchdown.
+const TOUCHDOWN_WARNING: f64 = 2.0;
+
+/// Turns a found state into an [`Equilibrium`] (or touchdown).
+pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -> Result<Equilibrium, SolveError> {
+    let Found { u, mut pads, force, method } = found;
+    let op = ctx.op;
+    let cb = model.assembled_clearance;
+    let w = external_load(op, 1.0);
+    ctx.report.residual = if matches!(op.load, LoadSpec::Force { .. }) { (force[0] + w[0]).hypot(force[1] + w[1]) / ctx.force_scale } else { 0.0 };
+    ctx.report.method = method;
+    for (k, p) in pads.iter_mut().enumerate() {
+        let share = ctx.share(p);
+        let film = &mut model.pads[k].film;
+        if share < FLOATING_SHARE {
+            p.unloaded = true;
+            let n = film.geom.n_dofs();
+            p.lin = FilmLinearization { stiffness: nalgebra::DMatrix::zeros(n, n), damping: nalgebra::DMatrix::zeros(n, n) };
+            ctx.report.floating_pads.push(k);
+            let what = if model.pads[k].dofs().is_empty() { "" } else { "; its tilt is weakly determined (set where film pressure begins)" };
+            ctx.report.warn(format!(
+                "pad {k} floats: it carries {share:.1e} of the load scale, its film is treated as cavitated and contributes no stiffness or damping{what}"
+            ));
+        } else {
+            // Full linearisation (stiffness and damping) at the converged state: the films hold it.
+            p.lin = film.linearize(&op.film_inputs(k));
+            if p.residual > PAD_RESIDUAL_WARNING * ctx.params.pad_tol {
+                ctx.report.warn(format!("pad {k} equilibrium residual {:.1e} (relative) above tolerance", p.residual));
+            }
+        }
+    }
+    ctx.report.pad_residual = pads.iter().filter(|p| !p.unloaded).fold(0.0_f64, |m, p| m.max(p.residual));
+    let (kmin, hmin) = min_film(model);
+    if hmin < op.touchdown_film {
+        return Err(SolveError::Touchdown { pad: kmin, h_min_um: hmin * 1e6, eccentricity_ratio: u[0].hypot(u[1]) / cb });
+    }
+    if hmin < TOUCHDOWN_WARNING * op.touchdown_film {
+        ctx.report.warn(format!("minimum film thickness {:.2} µm on pad {kmin} is close to touchdown ({:.2} µm)", hmin * 1e6, op.touchdown_film * 1e6));
+    }
+    ctx.report.seconds = ctx.elapsed();
+    Ok(Equilibrium { u, pads, film_force: force, report: ctx.report })
+}
+
+/// Every method failed with the films last seen close to contact: the load cannot be carried.
+pub(super) fn classify_failure(model: &BearingModel, e: SolveError) -> SolveError {
+    match e {
+        SolveError::NotConverged { .. } => {
+            let (pad, hmin) = min_film(model);
+            let cb = model.assembled_clearance;
+            if hmin < TOUCHDOWN_FRACTION * cb {
+                let e = model.pads.first().map_or(&[0.0, 0.0][..], |p| p.film.coordinates());
+                SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: e[0].hypot(e[1]) / cb }
+            } else {
+                e
+            }
+        }
+        e => e,
+    }
+}

@@ -1,0 +1,252 @@
+//! Polar bracketing search for the journal position: robust where Newton cycles.
+//!
+//! With every pad solved inside (pad assembly), the residual `R(e) = F(e) + W` is continuous but need not be
+//! smooth: a zero-preload pad whose film is uniform carries a load ∝ √(approach) on one side and floats on
+//! the other, so the bearing's force law has an infinite slope (Newton overshoots to the mirror point and
+//! cycles). In polar journal coordinates `e = s (cos ψ, sin ψ)`:
+//!
+//! ```text
+//! g(s; ψ) = R(s u_ψ)·u_ψ        along the ray: > 0 at the centre for |ψ − ψ_W| < 90°, < 0 far out (restoring)
+//! s*(ψ)   = the first root of g on the ray              (Illinois regula falsi in a bracket)
+//! h(ψ)    = R(s*(ψ) u_ψ)·u_ψ⊥   across the ray: > 0 below the equilibrium angle, < 0 above
+//! ψ*      = the root of h                               (Illinois regula falsi in a bracket)
+//! ```
+//!
+//! Both roots are bracketed, so the search converges for any continuous restoring force law (intermediate
+//! value theorem), superlinearly where the law is smooth. Each evaluation is a pad assembly.
+
+use super::super::error::SolveError;
+use super::super::model::BearingModel;
+use super::eval::{assemble_u, external_load, min_film, solve_all_pads, Ctx};
+use super::fallback::TOUCHDOWN_FRACTION;
+use super::{Cancel, Found, PadState, Stall};
+use crate::physics::reynolds::FilmError;
+
+/// First angular step from the load direction [rad] (doubled until the bracket is found), and the largest
+/// angle from the load that is searched.
+const FIRST_ANGLE_STEP: f64 = 0.035;
+const MAX_ANGLE: f64 = 1.55;
+/// First radial step (fraction of Cb) when looking for a bracket along a ray; doubled up to `MAX_RADIAL_STEP`.
+const FIRST_RADIAL_STEP: f64 = 0.02;
+const MAX_RADIAL_STEP: f64 = 0.2;
+/// Largest eccentricity searched, in units of Cb (zero-preload pads allow up to ~1/cos(β/2)).
+const MAX_RADIUS: f64 = 10.0;
+/// Bracket iterations at most per root.
+const MAX_BRACKET_ITERATIONS: usize = 80;
+
+/// The converged point on one ray.
+struct RayRoot {
+    s: f64,
+    thinnest: (usize, f64),
+    /// Residual along and across the ray [N].
+    g: f64,
+    h: f64,
+    u: Vec<f64>,
+    states: Vec<PadState>,
+    force: [f64; 2],
+}
+
+/// One evaluation on a ray: `None` when a film closes there.
+struct Probe {
+    g: f64,
+    /// Thinnest film there: (pad, h_min [m]).
+    thinnest: (usize, f64),
+    u: Vec<f64>,
+    states: Vec<PadState>,
+    force: [f64; 2],
+}
+
+/// Illinois (modified regula falsi) step inside a bracket `(a, fa) > 0 > (b, fb)`.
+fn illinois(a: f64, fa: f64, b: f64, fb: f64) -> f64 {
+    if fa.is_finite() && fb.is_finite() && fa != fb {
+        let x = b - fb * (b - a) / (fb - fa);
+        if x > a.min(b) && x < a.max(b) {
+            return x;
+        }
+    }
+    0.5 * (a + b)
+}
+
+struct Search<'m, 'c, 'o> {
+    model: &'m mut BearingModel,
+    ctx: &'c mut Ctx<'o>,
+    w: [f64; 2],
+    warm: Vec<f64>,
+    tol: f64,
+}
+
+impl Search<'_, '_, '_> {
+    fn probe(&mut self, psi: f64, s: f64) -> Result<Option<Probe>, SolveError> {
+        let dir = [psi.cos(), psi.sin()];
+        let journal = [s * dir[0], s * dir[1]];
+        let warm = self.warm.clone();
+        match solve_all_pads(self.model, journal, &warm, self.ctx) {
+            Ok((states, force)) => {
+                let u = assemble_u(self.model, journal, &states);
+                self.warm.clone_from(&u);
+                let g = (force[0] + self.w[0]) * dir[0] + (force[1] + self.w[1]) * dir[1];
+                Ok(Some(Probe { g, thinnest: min_film(self.model), u, states, force }))
+            }
+            Err((_, FilmError::Contact { .. })) => Ok(None),
+            Err((k, e)) => Err(self.ctx.film_error(k, e)),
+        }
+    }
+
+    /// The first root of g on the ray ψ, searched from `guess` [m]; `None` if the ray has no restoring root.
+    fn ray(&mut self, psi: f64, guess: f64, cancel: &dyn Cancel) -> Result<Option<RayRoot>, SolveError> {
+        let cb = self.model.assembled_clearance;
+        // Last point with g > 0, and first with g ≤ 0 or a closed film (`None` probe).
+        let mut lo: Option<(f64, Probe)> = None;
+        let mut hi: Option<(f64, Option<Probe>)> = None;
+        // Bracket: walk out while g > 0, in while g ≤ 0 (or the film is closed).
+        let mut s = guess.max(0.0);
+        let mut step = FIRST_RADIAL_STEP * cb;
+        loop {
+            if cancel.cancelled() {
+                return Err(SolveError::Cancelled);
+            }
+            let p = self.probe(psi, s)?;
+            let positive = p.as_ref().is_some_and(|p| p.g > 0.0);
+            if positive {
+                lo = p.map(|p| (s, p));
+                if hi.is_some() {
+                    break;
+                }
+                s += step;
+                if s > MAX_RADIUS * cb {
+                    return Ok(None);
+                }
+            } else {
+                hi = Some((s, p));
+                if lo.is_some() {
+                    break;
+                }
+                if s == 0.0 {
+                    return Ok(None);
+                }
+                s = (s - step).max(0.0);
+            }
+            step = (2.0 * step).min(MAX_RADIAL_STEP * cb);
+        }
+        let (Some((mut a, mut pa)), Some((mut b, mut pb))) = (lo, hi) else { return Ok(None) };
+        let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
+        for _ in 0..MAX_BRACKET_ITERATIONS {
+            let gb = pb.as_ref().map_or(f64::NEG_INFINITY, |p| p.g);
+            let converged_b = gb.abs() <= 0.1 * self.tol;
+            if converged_b || pa.g.abs() <= 0.1 * self.tol || (b - a).abs() <= 1e-13 * cb {
+                let (s, p) = if converged_b || pa.g.abs() > gb.abs() { (b, pb) } else { (a, Some(pa)) };
+                let Some(p) = p else {
+                    // The film closes before the force balances along this ray: remember the thinnest film
+                    // seen on its carrying side (touchdown, if no other method finds an equilibrium).
+                    if self.probe(psi, a)?.is_some() {
+                        let (pad, h) = min_film(self.model);
+                        self.ctx.closes_before_balance = Some((pad, h, a / cb));
+                    }
+                    return Ok(None);
+                };
+                let perp = [-psi.sin(), psi.cos()];
+                let h = (p.force[0] + self.w[0]) * perp[0] + (p.force[1] + self.w[1]) * perp[1];
+                return Ok(Some(RayRoot { s, thinnest: p.thinnest, g: p.g, h, u: p.u, states: p.states, force: p.force }));
+            }
+            let x = illinois(a, fa_scale * pa.g, b, fb_scale * gb);
+            match self.probe(psi, x)? {
+                Some(p) if p.g > 0.0 => {
+                    a = x;
+                    pa = p;
+                    fa_scale = 1.0;
+                    fb_scale *= 0.5;
+                }
+                p => {
+                    b = x;
+                    pb = p;
+                    fb_scale = 1.0;
+                    fa_scale *= 0.5;
+                }
+            }
+        }
+        Ok(None)
+    }
+}
+
+/// Runs the polar bracketing search (force-prescribed loads only).
+pub(super) fn polar_search(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+    let w = external_load(ctx.op, 1.0);
+    let stall = |reason: &str| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: reason.to_string() }));
+    if w[0].hypot(w[1]) <= 0.0 {
+        return stall("no load to search along");
+    }
+    let psi_w = w[1].atan2(w[0]);
+    let tol = ctx.params.force_tol * ctx.force_scale;
+    let cb = model.assembled_clearance;
+    let warm = vec![0.0; model.n_dofs()];
+    let mut search = Search { model, ctx, w, warm, tol };
+    let mut guess = 0.3 * cb;
+    let Some(mid) = search.ray(psi_w, guess, cancel)? else { return stall("no restoring root along the load") };
+    guess = mid.s;
+    search.ctx.report.iterations += 1;
+    // Bracket ψ: h > 0 below the equilibrium angle, < 0 above.
+    let (mut a, mut ra, mut b, mut rb) = (psi_w, None, psi_w, None);
+    let mut step = FIRST_ANGLE_STEP;
+    let up = mid.h > 0.0;
+    if up { (a, ra) = (psi_w, Some(mid)) } else { (b, rb) = (psi_w, Some(mid)) }
+    loop {
+        let done_a = ra.as_ref().is_some_and(|r: &RayRoot| r.h.abs() <= tol && r.g.abs() <= tol);
+        let done_b = rb.as_ref().is_some_and(|r: &RayRoot| r.h.abs() <= tol && r.g.abs() <= tol);
+        if done_a || done_b || (ra.is_some() && rb.is_some()) {
+            break;
+        }
+        if step > MAX_ANGLE {
+            return stall("no sign change of the transverse residual within 90° of the load");
+        }
+        let psi = if up { psi_w + step } else { psi_w - step };
+        search.ctx.report.iterations += 1;
+        let Some(r) = search.ray(psi, guess, cancel)? else { return stall("a ray without a restoring root inside the angular bracket") };
+        guess = r.s;
+        match (up, r.h > 0.0) {
+            (true, true) => (a, ra) = (psi, Some(r)),
+            (true, false) => (b, rb) = (psi, Some(r)),
+            (false, false) => (b, rb) = (psi, Some(r)),
+            (false, true) => (a, ra) = (psi, Some(r)),
+        }
+        step *= 2.0;
+    }
+    let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
+    for _ in 0..MAX_BRACKET_ITERATIONS {
+        for r in [ra.as_ref(), rb.as_ref()].into_iter().flatten() {
+            if r.h.abs() <= tol && r.g.abs() <= tol {
+                let residual = r.g.hypot(r.h) / search.ctx.force_scale;
+                search.ctx.report.residual_history.push(residual);
+                let pads = r.states.clone();
+                return Ok(Ok(Found { u: r.u.clone(), pads, force: r.force, method: String::new() }));
+            }
+        }
+        let (Some(pa), Some(pb)) = (ra.as_ref(), rb.as_ref()) else { break };
+        if (b - a).abs() <= 1e-14 {
+            break;
+        }
+        search.ctx.report.residual_history.push(pa.h.abs().min(pb.h.abs()) / search.ctx.force_scale);
+        let psi = illinois(a, fa_scale * pa.h, b, fb_scale * pb.h);
+        search.ctx.report.iterations += 1;
+        let Some(r) = search.ray(psi, guess, cancel)? else { return stall("a ray without a restoring root inside the angular bracket") };
+        guess = r.s;
+        if r.h > 0.0 {
+            (a, ra) = (psi, Some(r));
+            fa_scale = 1.0;
+            fb_scale *= 0.5;
+        } else {
+            (b, rb) = (psi, Some(r));
+            fb_scale = 1.0;
+            fa_scale *= 0.5;
+        }
+    }
+    let best = [ra, rb].into_iter().flatten().fold(None, |m: Option<RayRoot>, r| match m {
+        Some(b) if b.g.hypot(b.h) <= r.g.hypot(r.h) => Some(b),
+        _ => Some(r),
+    });
+    // The best point balances the load only with a nearly closed film: touchdown, if nothing else succeeds.
+    if let Some(r) = best.as_ref().filter(|r| r.thinnest.1 < TOUCHDOWN_FRACTION * cb) {
+        search.ctx.closes_before_balance = Some((r.thinnest.0, r.thinnest.1, r.s / cb));
+    }
+    let best = best.map_or(f64::INFINITY, |r| r.g.hypot(r.h));
+    Ok(Err(Stall { journal: [0.0; 2], residual: best / search.ctx.force_scale, reason: "angular bracket exhausted".into() }))
+}

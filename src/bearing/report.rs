@@ -1,0 +1,52 @@
+//! What a solve did: iterations, residuals, time, warnings ([`SolveReport`]). Every equilibrium returns
+//! one; the thermal loop keeps its own ([`super::ThermalReport`]) around the equilibria it runs.
+
+use serde::Serialize;
+
+/// What an equilibrium solve did.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct SolveReport {
+    /// Outer (journal) Newton iterations, summed over methods and continuation steps.
+    pub iterations: usize,
+    /// Pad (inner) iterations.
+    pub inner_iterations: usize,
+    pub film_solves: usize,
+    pub factorizations: usize,
+    /// Final journal force residual |ΣF + W| relative to the force scale.
+    pub residual: f64,
+    /// Largest final pad residual relative to the pad's scale (floating pads excluded).
+    pub pad_residual: f64,
+    /// Residual after each outer iteration.
+    pub residual_history: Vec<f64>,
+    pub method: String,
+    pub seconds: f64,
+    /// Pads that float (no film pressure): their film contributes no stiffness or damping.
+    pub floating_pads: Vec<usize>,
+    pub warnings: Vec<String>,
+}
+
+impl SolveReport {
+    /// Adds a warning once.
+    pub fn warn(&mut self, w: String) {
+        if !self.warnings.contains(&w) {
+            self.warnings.push(w);
+        }
+    }
+
+    /// Adds the work of an earlier part of the same solve (a suspended part): counts and time add up, its
+    /// residual history comes first, warnings are merged. The final residuals and the method stay this
+    /// part's.
+    pub fn add_earlier(&mut self, earlier: SolveReport) {
+        self.iterations += earlier.iterations;
+        self.inner_iterations += earlier.inner_iterations;
+        self.film_solves += earlier.film_solves;
+        self.factorizations += earlier.factorizations;
+        self.seconds += earlier.seconds;
+        let mut history = earlier.residual_history;
+        history.append(&mut self.residual_history);
+        self.residual_history = history;
+        for w in earlier.warnings {
+            self.warn(w);
+        }
+    }
+}
