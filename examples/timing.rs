@@ -7,7 +7,7 @@ fn main() {
     let (_, case) = load_case(&text, &set).unwrap();
     let mut t = vec![];
     for _ in 0..15 {
-        let t0 = std::time::Instant::now();
+        let t0 = web_time::Instant::now();
         let s = solve_case(&case).unwrap();
         t.push(t0.elapsed().as_secs_f64() * 1e3);
         std::hint::black_box(s);

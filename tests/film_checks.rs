@@ -23,13 +23,13 @@ fn orifice_operator_reproduces_hagen_poiseuille() {
     let (mu, dp) = (0.02, 2e6);
     let q = film.geom.sym * dp * op.total / (12.0 * mu);
     let q_hp = hagen_poiseuille_flow(o.diameter_m, o.length_m, mu, dp);
-    assert!(common::rel(q, q_hp).abs() < 2e-3, "orifice flow {q:.6e} vs Hagen–Poiseuille {q_hp:.6e}");
+    // Exact inside the hole (3×3 Gauss), sub-cells on its rim: measured +1.4e-6 on the standard mesh.
+    assert!(common::rel(q, q_hp).abs() < 5e-6, "orifice flow {q:.6e} vs Hagen–Poiseuille {q_hp:.6e}");
     let _ = PI;
 }
 
 /// Mass balance. The reported flows are the consistent nodal fluxes of the finite-element residual: inflow
-/// (leading edge + orifice) equals outflow (trailing edge + sides + flow into cavitated zones) to round-off,
-/// far inside the 0.5 % criterion. As an independent check, the edge flows integrated directly from the
+/// (leading edge + orifice) equals outflow (trailing edge + sides + flow into cavitated zones) to round-off. As an independent check, the edge flows integrated directly from the
 /// pressure gradient (`q = −h³/12µ ∇p + U h/2`) must approach the same balance as the mesh is refined, at the
 /// first order expected of element gradients on the boundary.
 #[test]
@@ -46,7 +46,6 @@ fn film_flows_balance() {
         for (k, pm) in model.pads.iter().enumerate() {
             let inp = op.film_inputs(k);
             let f = pm.film.flows(&inp);
-            assert!(f.imbalance().abs() < 5e-3 * f.throughput(), "pad {k}: consistent imbalance {:.3e}", f.imbalance());
             assert!(f.imbalance().abs() < 1e-9 * f.throughput(), "pad {k}: consistent flows close to round-off");
             let (le, te, side) = pm.film.direct_edge_flows(&inp);
             // Leading edge: direct and consistent agree within 1 %.
@@ -71,11 +70,13 @@ fn load_on_pad_symmetry() {
         "compressor-bearing.toml",
         &["bearing.pads.count=4", "bearing.pads.pivot_deg=[0.0,90.0,180.0,270.0]", "bearing.pads.offset=0.5", "bearing.pads.arc_deg=70", "bearing.pads.orifice=[]", "bearing.pads.density_kg_per_m3=1e-9"],
     );
-    assert!(s.attitude_angle_deg.abs() < 0.01, "attitude {}°", s.attitude_angle_deg);
+    // Measured: attitude 7e-8°, cross-coupling 5e-16 of the direct stiffness, e_x/e_y 1e-9 (what the
+    // equilibrium tolerance leaves; the film forces themselves are symmetric to round-off).
+    assert!(s.attitude_angle_deg.abs() < 1e-5, "attitude {}°", s.attitude_angle_deg);
     let k = s.reduced.k_n_per_m;
     let kd = k[0][0].abs().max(k[1][1].abs());
-    assert!(k[0][1].abs() < 1e-6 * kd && k[1][0].abs() < 1e-6 * kd, "cross-coupled K {k:?}");
-    assert!(s.journal_position_m[0].abs() < 1e-6 * s.journal_position_m[1].abs());
+    assert!(k[0][1].abs() < 1e-12 * kd && k[1][0].abs() < 1e-12 * kd, "cross-coupled K {k:?}");
+    assert!(s.journal_position_m[0].abs() < 1e-7 * s.journal_position_m[1].abs(), "{:?}", s.journal_position_m);
 }
 
 /// Full stiffness from the analytic perturbation equals central differences of the generalised forces,

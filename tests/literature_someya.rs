@@ -94,8 +94,10 @@ fn four_pad_load_between_pads() {
         }
         // Zero up to the unloaded (upper) pads, which by definition carry less than 1e-6 of the load.
         let scale = k[0][0].abs();
-        assert!(k[0][1].abs() < 1e-5 * scale && k[1][0].abs() < 1e-5 * scale, "S = {sn}: cross-coupled K {k:?}");
-        assert!(s.attitude_angle_deg.abs() < 1e-3);
+        // Load between pads of a symmetric bearing: no cross-coupling and no attitude, up to what the
+        // equilibrium tolerance leaves (measured 2e-9 of K̄xx and 7e-8°).
+        assert!(k[0][1].abs() < 1e-7 * scale && k[1][0].abs() < 1e-7 * scale, "S = {sn}: cross-coupled K {k:?}");
+        assert!(s.attitude_angle_deg.abs() < 1e-5, "S = {sn}: attitude {}°", s.attitude_angle_deg);
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }

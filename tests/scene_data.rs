@@ -15,7 +15,7 @@ fn compressor_bearing_scene() {
     let (j, p, h) = o.pads[3].h_min.unwrap();
     assert!((h - s.h_min_m).abs() < 1e-15, "pad 3 carries the load: {h} vs {}", s.h_min_m);
     let drawn_gap = (p[0] - j[0]).hypot(p[1] - j[1]);
-    assert!((drawn_gap - o.exaggeration * h).abs() < 1e-3 * o.exaggeration * h, "{drawn_gap} vs {}", o.exaggeration * h);
+    assert!((drawn_gap - o.exaggeration * h).abs() < 1e-12 * o.exaggeration * h, "{drawn_gap} vs {}", o.exaggeration * h);
     assert!(!o.pads[3].pressure.is_empty());
     // Journal displaced downwards, drawn exaggerated.
     assert!(o.journal_centre[1] < 0.0 && (o.journal_centre[1] - o.exaggeration * s.journal_position_m[1]).abs() < 1e-15);

@@ -4,7 +4,7 @@ mod common;
 
 use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
 use tiltpad::bearing::thermal_pad::PadThermal;
-use tiltpad::bearing::{BearingModel, OperatingPoint};
+use tiltpad::bearing::{BearingModel, OperatingPoint, ThermalModel};
 use tiltpad::mesh::pad3d::PadMesh;
 use tiltpad::physics::energy::{FilmEnergy, Injection, Oil};
 use tiltpad::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
@@ -67,5 +67,41 @@ fn film_temperature_stays_above_the_coldest_inflow() {
         let tmin = p.field.film_temperature_c.as_ref().unwrap().iter().fold(f64::MAX, |m, &v| m.min(v));
         println!("pad {}: film min {tmin:.3} °C (coldest inflow {coldest:.3} °C)", p.index);
         assert!(tmin > coldest - 0.2, "pad {}: {tmin} °C", p.index);
+    }
+}
+
+/// The thermal loop stops at its iteration budget and at its time budget, and says which (the time budget
+/// also stops an equilibrium that is running when it is spent).
+#[test]
+fn thermal_loop_stops_at_its_budgets() {
+    use tiltpad::bearing::error::{Budget, Iteration};
+    use tiltpad::bearing::thermal::{solve_thd, ThdRun};
+    use tiltpad::bearing::{SolveError, ThermalParams};
+    let case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);
+    let mut model = BearingModel::new(&case).unwrap();
+    let mut thermal = ThermalModel::new(&case, &model).unwrap();
+    let tol = ThermalParams::default().viscosity_tol;
+    let params = ThermalParams { max_iterations: 2, ..ThermalParams::default() };
+    match solve_thd(&mut model, &mut thermal, &case, params, None, &NoCancel) {
+        Err(SolveError::BudgetExceeded { what: Iteration::Thermal, budget: Budget::Iterations(2), iterations: 2, residual, .. }) => {
+            assert!(residual > tol && residual.is_finite(), "{residual}");
+        }
+        other => panic!("expected the iteration budget, got {:?}", other.map(|s| s.report.outer_iterations)),
+    }
+    // Unbudgeted, the same loop converges in more than two iterations.
+    let params = ThermalParams::default();
+    let s = solve_thd(&mut model, &mut thermal, &case, params, None, &NoCancel).unwrap();
+    assert!(s.report.converged && s.report.outer_iterations > 2, "{:?}", s.report.outer_iterations);
+    // A microsecond: spent inside the first equilibrium, which stops at its next iteration, so the very
+    // first outer iteration returns the error.
+    let params = ThermalParams { max_seconds: 1e-6, ..ThermalParams::default() };
+    let mut run = ThdRun::new(&model, &mut thermal, &case, params, None);
+    let err = run.step(&mut model, &mut thermal, &case, &NoCancel).map(|s| s.is_some()).unwrap_err();
+    match err {
+        SolveError::BudgetExceeded { what: Iteration::Thermal, budget: Budget::Seconds(limit), iterations: 1, seconds, .. } => {
+            assert!(limit == 1e-6 && seconds >= limit, "{err}");
+            assert!(err.to_string().contains("time budget"), "{err}");
+        }
+        other => panic!("expected the time budget, got {other:?}"),
     }
 }

@@ -1,21 +1,25 @@
 //! Thesis trends of the thermal model on the industrial compressor bearing (Publications 1–2; model.md §12,
 //! §13): THD gives a higher eccentricity and lower reduced stiffness and damping than the isothermal model
 //! (at the supply temperature); leading-edge injection at 20–40 bar lowers the average film temperature.
-//! Every THD solve here must close its energy balance within 1 % and converge.
+//! Every THD solve here must close its energy balance to round-off and converge.
 
 mod common;
 
 use tiltpad::bearing::Solution;
 
+/// The energy balance closes to round-off (the scheme is conservative with respect to the Reynolds flows):
+/// measured up to 8e-14 on a pad, 1.2e-14 for the bearing (docs/THERMAL.md).
+const ENERGY_CLOSURE: f64 = 1e-12;
+
 fn solve(set: &[&str]) -> Solution {
     let s = common::solve("compressor-bearing.toml", set);
     if let Some(t) = &s.thermal {
         assert!(t.report.converged, "{:?}", t.report);
-        assert!(t.energy_balance_closure.abs() < 0.01, "{set:?}: energy balance closure {:.2e}", t.energy_balance_closure);
+        assert!(t.energy_balance_closure.abs() < ENERGY_CLOSURE, "{set:?}: energy balance closure {:.2e}", t.energy_balance_closure);
         for (k, p) in s.pads.iter().enumerate() {
             let pt = p.thermal.as_ref().unwrap();
             let c = pt.heat.closure();
-            assert!(c.abs() < 0.01, "{set:?}: pad {k} closure {c:.2e}");
+            assert!(c.abs() < ENERGY_CLOSURE, "{set:?}: pad {k} closure {c:.2e}");
             assert!(p.field.film_temperature_c.as_ref().unwrap().iter().all(|v| v.is_finite()));
         }
     }

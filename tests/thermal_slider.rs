@@ -98,7 +98,9 @@ fn adiabatic_slider_matches_the_closed_form_and_conserves_energy() {
     let (_, p_reynolds) = film.friction(&inp);
     println!("shear power {:.4} W (Reynolds module {:.4} W), carried by oil {:.4} W, closure {:.2e}", heat.shear_power_w, p_reynolds, heat.carried_by_oil(), heat.closure());
     assert!((heat.shear_power_w / p_reynolds - 1.0).abs() < 1e-12, "full film: both friction powers agree");
-    assert!((heat.dissipation_w / heat.shear_power_w - 1.0).abs() < 1e-10, "∫Φ = U ∫ (µU/h + h/2 ∂p/∂s) exactly");
-    assert!(heat.cavitation_transport_w.abs() < 1e-9 * heat.shear_power_w);
-    assert!(heat.closure().abs() < 1e-8, "closure {:.2e}", heat.closure());
+    // Exact identities, so round-off (measured 5e-15 and 3.5e-16 of the shear power).
+    assert!((heat.dissipation_w / heat.shear_power_w - 1.0).abs() < 1e-12, "∫Φ = U ∫ (µU/h + h/2 ∂p/∂s) exactly");
+    assert!(heat.cavitation_transport_w.abs() < 1e-12 * heat.shear_power_w, "a full film carries nothing into cavitation");
+    // Round-off (measured 1.9e-15, docs/THERMAL.md).
+    assert!(heat.closure().abs() < 1e-12, "closure {:.2e}", heat.closure());
 }

@@ -6,7 +6,9 @@
 //! Create or refresh the snapshots with `UPDATE_SNAPSHOTS=1 cargo test --test workbench_ui`.
 #![cfg(feature = "gui")]
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use web_time::Instant;
 
 use egui::accesskit::Role;
 use egui_kittest::kittest::{NodeT, Queryable};

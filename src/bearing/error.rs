@@ -4,6 +4,49 @@ use crate::model::CaseError;
 use crate::physics::reynolds::FilmError;
 use thiserror::Error;
 
+/// An iteration that runs under a budget ([`SolveError::BudgetExceeded`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Iteration {
+    /// The thermal (THD) outer loop: equilibrium, film and pad temperatures, viscosity update.
+    Thermal,
+}
+
+impl Iteration {
+    /// What the residual of [`SolveError::BudgetExceeded`] measures.
+    #[must_use]
+    pub fn residual_name(self) -> &'static str {
+        match self {
+            Self::Thermal => "largest relative viscosity change",
+        }
+    }
+}
+
+impl std::fmt::Display for Iteration {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Thermal => "thermal (THD) loop",
+        })
+    }
+}
+
+/// The budget that stopped an iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Budget {
+    /// At most this many iterations.
+    Iterations(usize),
+    /// At most this much computing time [s].
+    Seconds(f64),
+}
+
+impl std::fmt::Display for Budget {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Iterations(n) => write!(f, "iteration budget ({n} iterations)"),
+            Self::Seconds(s) => write!(f, "time budget ({s} s)"),
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum SolveError {
     #[error(transparent)]
@@ -19,9 +62,12 @@ pub enum SolveError {
     /// Newton (and its fallbacks) stopped without meeting the tolerance.
     #[error("equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})")]
     NotConverged { iterations: usize, residual: f64, reason: String },
-    /// The thermal loop stopped before the viscosity field converged.
-    #[error("thermal (THD) loop not converged after {iterations} outer iterations: largest relative viscosity change {viscosity_change:.2e}")]
-    ThermalNotConverged { iterations: usize, viscosity_change: f64 },
+    /// An iteration used up its iteration or time budget before converging.
+    #[error(
+        "{what} not converged: stopped by its {budget} after {iterations} iterations ({seconds:.1} s); {} {residual:.2e}",
+        what.residual_name()
+    )]
+    BudgetExceeded { what: Iteration, budget: Budget, iterations: usize, seconds: f64, residual: f64 },
     #[error("solve cancelled")]
     Cancelled,
     #[error("{0}")]

@@ -268,6 +268,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
     let attitude = if ecc > 1e-12 { wrap_deg((e[1].atan2(e[0]) - load_angle).to_degrees()) } else { 0.0 };
     let n_rev = op.speed_rad_s / TAU;
     let sommerfeld = (wmag > 1e-9).then(|| op.viscosity * n_rev * model.length * 2.0 * r / wmag * (r / cb).powi(2));
+    report.warnings.extend(super::regime::Regime::of(case, op.surface_speed, &pads).warnings());
     Solution {
         title: case.title.clone(),
         eccentricity_ratio: ecc,

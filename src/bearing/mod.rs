@@ -1,7 +1,7 @@
 //! The bearing: film geometry and coordinates ([`geometry`]), the model built once per mesh ([`model`]),
 //! static equilibrium ([`equilibrium`]), the thermal (THD) loop around it ([`thermal`], with the per-pad
-//! thermal systems in [`thermal_pad`]), dynamic coefficients ([`coefficients`]) and the solve job ([`job`])
-//! that turns a case into a [`Solution`].
+//! thermal systems in [`thermal_pad`]), dynamic coefficients ([`coefficients`]), the flow-regime checks of
+//! a solved film ([`regime`]) and the solve job ([`job`]) that turns a case into a [`Solution`].
 
 pub mod anderson;
 pub mod coefficients;
@@ -14,6 +14,7 @@ pub mod mixing;
 pub mod model;
 pub mod pipeline;
 pub mod progress;
+pub mod regime;
 pub mod report;
 pub mod solution;
 pub mod thermal;

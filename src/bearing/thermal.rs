@@ -38,7 +38,7 @@ use crate::fem::SolverError;
 use crate::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
 
 use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
-use super::error::SolveError;
+use super::error::{Budget, Iteration, SolveError};
 use super::model::{BearingModel, OperatingPoint};
 use super::anderson::{flatten, unflatten, Anderson};
 use super::mixing::inlet_and_journal;
@@ -48,6 +48,9 @@ use super::thermal_pad::{PadTemperatures, PadThermal, ThermalSetup};
 pub const ANDERSON_DEPTH: usize = 4;
 /// Halvings of a temperature update whose viscosity field has no equilibrium.
 pub const MAX_BACKTRACKS: usize = 6;
+/// Default time budget of the thermal loop [s]: about a hundred times what a THD solve of a shipped case
+/// takes at the standard fidelity in a release build (docs/PERFORMANCE.md).
+pub const DEFAULT_MAX_SECONDS: f64 = 120.0;
 /// Load share below which a pad whose non-uniform viscosity leaves it without an equilibrium tilt is given
 /// its mean film viscosity instead.
 pub const LIGHT_PAD_SHARE: f64 = 0.1;
@@ -57,8 +60,12 @@ pub const LIGHT_PAD_SHARE: f64 = 0.1;
 pub struct ThermalParams {
     /// Largest nodal relative viscosity change at convergence (default 1e-4).
     pub viscosity_tol: f64,
-    /// Outer iterations at most (default 40).
+    /// Iteration budget: outer iterations at most (default 40).
     pub max_iterations: usize,
+    /// Time budget: computing time of the whole loop at most [s] (default [`DEFAULT_MAX_SECONDS`]; counted
+    /// inside [`ThdRun::step`] only, so a caller that spreads the loop over frames is not charged for the
+    /// time in between). An equilibrium running when it is spent is stopped at its next iteration.
+    pub max_seconds: f64,
     /// Damping ω of the film temperature update (default 0.8).
     pub relaxation: f64,
     /// Stabilisation of the film energy equation (default plain SUPG: linear, so the loop's fixed point is
@@ -69,7 +76,7 @@ pub struct ThermalParams {
 
 impl Default for ThermalParams {
     fn default() -> Self {
-        Self { viscosity_tol: 1e-4, max_iterations: 40, relaxation: 0.8, stabilisation: Stabilisation::Supg }
+        Self { viscosity_tol: 1e-4, max_iterations: 40, max_seconds: DEFAULT_MAX_SECONDS, relaxation: 0.8, stabilisation: Stabilisation::Supg }
     }
 }
 
@@ -362,6 +369,34 @@ pub struct ThdRun {
     /// the last equilibrium.
     uniform: Vec<bool>,
     shares: Vec<f64>,
+    /// Computing time spent inside [`ThdRun::step`] so far [s] (the time budget's count).
+    work_seconds: f64,
+}
+
+/// Forwards the caller's cancellation and suspension, and cancels once a time budget is spent.
+struct Deadline<'a> {
+    inner: &'a dyn Cancel,
+    /// `None`: no limit (an infinite or unrepresentable budget).
+    until: Option<Instant>,
+}
+
+impl<'a> Deadline<'a> {
+    fn after(inner: &'a dyn Cancel, seconds: f64) -> Self {
+        let until = std::time::Duration::try_from_secs_f64(seconds.max(0.0)).ok().and_then(|d| Instant::now().checked_add(d));
+        Self { inner, until }
+    }
+    fn expired(&self) -> bool {
+        self.until.is_some_and(|t| Instant::now() >= t)
+    }
+}
+
+impl Cancel for Deadline<'_> {
+    fn cancelled(&self) -> bool {
+        self.inner.cancelled() || self.expired()
+    }
+    fn suspend(&self) -> bool {
+        self.inner.suspend()
+    }
 }
 
 impl ThdRun {
@@ -387,6 +422,7 @@ impl ThdRun {
             last_change: f64::INFINITY,
             uniform: vec![false; n],
             shares: vec![1.0; n],
+            work_seconds: 0.0,
         }
     }
 
@@ -400,12 +436,37 @@ impl ThdRun {
     /// thermal model and case as [`ThdRun::new`].
     ///
     /// # Errors
-    /// Equilibrium failures, a singular thermal system, or a loop that does not converge
-    /// ([`SolveError::ThermalNotConverged`]).
+    /// Equilibrium failures, a singular thermal system, or a loop that spends its iteration or time budget
+    /// ([`SolveError::BudgetExceeded`], saying which).
     pub fn step(&mut self, model: &mut BearingModel, thermal: &mut ThermalModel, case: &Case, cancel: &dyn Cancel) -> Result<Option<ThdState>, SolveError> {
         if cancel.cancelled() {
             return Err(SolveError::Cancelled);
         }
+        let time_budget = Budget::Seconds(self.params.max_seconds);
+        if self.work_seconds >= self.params.max_seconds {
+            return Err(self.budget_exceeded(time_budget));
+        }
+        let started = Instant::now();
+        let deadline = Deadline::after(cancel, self.params.max_seconds - self.work_seconds);
+        let result = self.outer_iteration(model, thermal, case, &deadline);
+        self.work_seconds += started.elapsed().as_secs_f64();
+        match result {
+            Err(SolveError::Cancelled) if !cancel.cancelled() && deadline.expired() => Err(self.budget_exceeded(time_budget)),
+            r => r,
+        }
+    }
+
+    fn budget_exceeded(&self, budget: Budget) -> SolveError {
+        SolveError::BudgetExceeded {
+            what: Iteration::Thermal,
+            budget,
+            iterations: self.report.outer_iterations,
+            seconds: self.work_seconds,
+            residual: self.last_change,
+        }
+    }
+
+    fn outer_iteration(&mut self, model: &mut BearingModel, thermal: &mut ThermalModel, case: &Case, cancel: &dyn Cancel) -> Result<Option<ThdState>, SolveError> {
         let law = case.lubricant.viscosity;
         let n = model.pads.len();
         let params = self.params;
@@ -435,7 +496,10 @@ impl ThdRun {
                     }
                     return Ok(None);
                 }
-                if self.backtracks >= MAX_BACKTRACKS || self.report.outer_iterations >= params.max_iterations {
+                if self.report.outer_iterations >= params.max_iterations {
+                    return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
+                }
+                if self.backtracks >= MAX_BACKTRACKS {
                     return Err(e);
                 }
                 self.backtracks += 1;
@@ -502,7 +566,7 @@ impl ThdRun {
             return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(Some);
         }
         if self.report.outer_iterations >= params.max_iterations {
-            return Err(SolveError::ThermalNotConverged { iterations: self.report.outer_iterations, viscosity_change: change });
+            return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
         }
         let next = self.anderson.step(&flatten(current), &flatten(&t_new));
         self.t_try = Some(unflatten(&next, &t_new));

@@ -228,7 +228,7 @@ mod tests {
                 }
             }
         }
-        let x: Vec<f64> = (0..5).map(|i| (i as f64 + 1.0).ln()).collect();
+        let x: Vec<f64> = (0..5).map(|i| (i as f64).ln_1p()).collect();
         let mut b = vec![0.0; 5];
         p.matvec(&v, &x, &mut b);
         assert!((p.row_dot(&v, 2, &x) - b[2]).abs() < 1e-14);

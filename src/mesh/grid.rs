@@ -20,13 +20,20 @@ pub struct Refinement {
     pub fine: f64,
 }
 
-/// Node positions on `[a, b]` with about `base_cells` cells, refined in the given zones.
-///
-/// # Panics
-/// Never for valid input (`b > a`, `base_cells ≥ 1`, positive refinement sizes); callers validate.
+/// Half-width of the refinement zone around an orifice, as a fraction of its diameter.
+pub const ORIFICE_ZONE_HALF_WIDTH: f64 = 0.6;
+
+/// The refinement around an orifice of diameter `diameter` centred at `centre` (one direction): spacing
+/// `diameter / elements_across` within [`ORIFICE_ZONE_HALF_WIDTH`] diameters of the centre.
 #[must_use]
-#[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-pub fn graded_nodes(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> Vec<f64> {
+#[allow(clippy::cast_precision_loss)]
+pub fn orifice_zone(centre: f64, diameter: f64, elements_across: usize) -> Refinement {
+    Refinement { centre, half_width: ORIFICE_ZONE_HALF_WIDTH * diameter, fine: diameter / elements_across.max(1) as f64 }
+}
+
+/// The cumulative integral of 1/spacing over `[a, b]` on a fine uniform sampling, and the sample width.
+#[allow(clippy::cast_precision_loss)]
+fn cumulative_density(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> (Vec<f64>, f64) {
     let len = b - a;
     let base = len / base_cells as f64;
     let spacing = |x: f64| -> f64 {
@@ -39,7 +46,6 @@ pub fn graded_nodes(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> 
         }
         h
     };
-    // Cumulative integral of 1/spacing on a fine sampling.
     let samples = 4000.max(20 * base_cells);
     let dx = len / samples as f64;
     let mut cum = Vec::with_capacity(samples + 1);
@@ -48,6 +54,27 @@ pub fn graded_nodes(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> 
         let xm = a + (k as f64 + 0.5) * dx;
         cum.push(cum[k] + dx / spacing(xm));
     }
+    (cum, dx)
+}
+
+/// Number of cells [`graded_nodes`] makes on `[a, b]`, counted without placing the nodes (the sampling
+/// it needs is `max(4000, 20 base_cells)` values, whatever the count).
+#[must_use]
+#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+pub fn graded_cells(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> usize {
+    let (cum, _) = cumulative_density(a, b, base_cells, zones);
+    (cum[cum.len() - 1].round() as usize).max(1)
+}
+
+/// Node positions on `[a, b]` with about `base_cells` cells, refined in the given zones.
+///
+/// # Panics
+/// Never for valid input (`b > a`, `base_cells ≥ 1`, positive refinement sizes); callers validate.
+#[must_use]
+#[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+pub fn graded_nodes(a: f64, b: f64, base_cells: usize, zones: &[Refinement]) -> Vec<f64> {
+    let (cum, dx) = cumulative_density(a, b, base_cells, zones);
+    let samples = cum.len() - 1;
     let total = cum[samples];
     let n = (total.round() as usize).max(1);
     let mut nodes = Vec::with_capacity(n + 1);
@@ -187,6 +214,15 @@ mod tests {
         for w in h.windows(2) {
             let r = (w[1] / w[0]).max(w[0] / w[1]);
             assert!(r < GROWTH + 0.1, "ratio {r}");
+        }
+    }
+
+    #[test]
+    fn cell_count_without_placing_nodes() {
+        let zones = [orifice_zone(0.3, 0.05, 12), orifice_zone(0.7, 0.01, 24)];
+        for base in [4, 10, 37] {
+            let x = graded_nodes(0.0, 1.0, base, &zones);
+            assert_eq!(graded_cells(0.0, 1.0, base, &zones), x.len() - 1, "{base} base cells");
         }
     }
 

@@ -162,6 +162,8 @@ pub struct MeshSpec {
     pub half_model: bool,
     /// Element layers through the pad thickness (pad conduction).
     pub pad_radial_elements: usize,
+    /// Most mesh nodes (film over all pads + pad solids) a solve may allocate ([`super::budget`]).
+    pub max_nodes: usize,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

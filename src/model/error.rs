@@ -27,6 +27,16 @@ pub enum CaseError {
     /// Values that are each fine but contradict one another (overlapping pads, orifice outside its pad, …).
     #[error("`{key}`: {message}")]
     Inconsistent { key: String, message: String },
+    /// The meshes would need more nodes than the budget `mesh.max_nodes` allows (refused before anything is
+    /// allocated; see [`crate::model::budget`]).
+    #[error(
+        "`mesh.max_nodes`: the meshes would need {needed} nodes ({film} film nodes over all pads, pad {largest_pad} \
+         alone {largest_pad_film}; {pad_solid} pad-solid nodes; {orifices} orifices), more than the budget of {budget}; \
+         coarsen mesh.circumferential_elements, mesh.axial_elements or mesh.orifice_elements (each orifice is refined \
+         with mesh.orifice_elements across its diameter), mesh.pad_radial_elements for the thermal model, use fewer \
+         orifices, or raise mesh.max_nodes"
+    )]
+    NodeBudget { needed: usize, budget: usize, film: usize, pad_solid: usize, largest_pad: usize, largest_pad_film: usize, orifices: usize },
     /// A `--set key=value` override that cannot be applied.
     #[error("override `{text}`: {message}")]
     BadOverride { text: String, message: String },
@@ -51,6 +61,7 @@ impl CaseError {
             | Self::WrongType { key, .. }
             | Self::OutOfRange { key, .. }
             | Self::Inconsistent { key, .. } => Some(key),
+            Self::NodeBudget { .. } => Some("mesh.max_nodes"),
         }
     }
 }

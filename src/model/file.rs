@@ -14,7 +14,7 @@
 //! [[bearing.pad]]      # optional per-pad overrides of any [bearing.pads] value, one table per pad
 //! [lubricant]          # two-point viscosity law, density, c_p, conductivity
 //! [operating]          # speed_rpm, load_n + load_angle_deg (or eccentricity_ratio + eccentricity_angle_deg), …
-//! [mesh]               # fidelity or explicit element counts
+//! [mesh]               # fidelity or explicit element counts, node budget (max_nodes)
 //! [physics]            # cavitation model, …
 //! [thermal]            # isothermal | thd, film–pad exchange (bc1/bc2/bc3), pad conduction, inlet mixing
 //! ```
@@ -231,6 +231,11 @@ pub struct MeshFile {
     /// Element layers through the pad thickness for pad heat conduction (thermal model).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_radial_elements: Option<usize>,
+    /// Node budget: the most mesh nodes a solve may allocate, film nodes over all pads plus (thermal model)
+    /// pad-solid nodes; a case whose meshes would need more is refused before anything is built. Default
+    /// [`crate::model::budget::DEFAULT_MAX_NODES`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_nodes: Option<usize>,
 }
 
 /// Cavitation condition of the film.

@@ -1,7 +1,9 @@
 //! What a user describes: bearing geometry, pads, orifices, lubricant, operating point, mesh and physics
 //! options. Case files are TOML in engineering units ([`file`]); they are validated and converted to SI once
-//! ([`resolve`]) into a [`Case`] that the solver reads.
+//! ([`resolve`]) into a [`Case`] that the solver reads; [`budget`] counts the mesh nodes a case would
+//! allocate, so that an oversized one is refused before anything is built.
 
+pub mod budget;
 pub mod case;
 pub mod error;
 pub mod file;

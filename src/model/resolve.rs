@@ -6,6 +6,7 @@
 
 use std::f64::consts::{PI, TAU};
 
+use super::budget::{DEFAULT_MAX_NODES, MAX_NODES_RANGE};
 use super::case::{
     Bearing, Case, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ViscosityLaw,
 };
@@ -35,15 +36,9 @@ impl CaseFile {
         };
         let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown };
         let thermal = resolve_thermal(self, &operating)?;
-        Ok(Case {
-            title: self.title.clone().unwrap_or_default(),
-            bearing,
-            lubricant,
-            operating,
-            mesh,
-            physics,
-            thermal,
-        })
+        let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal };
+        super::budget::check(&case)?;
+        Ok(case)
     }
 }
 
@@ -512,6 +507,7 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     let nz = count("mesh.axial_elements", m.axial_elements, nz0, 2, 1000)?;
     let no = count("mesh.orifice_elements", m.orifice_elements, no0, 2, 64)?;
     let nr = count("mesh.pad_radial_elements", m.pad_radial_elements, fidelity.pad_radial_elements(), 1, 200)?;
+    let max_nodes = count("mesh.max_nodes", m.max_nodes, DEFAULT_MAX_NODES, MAX_NODES_RANGE.0, MAX_NODES_RANGE.1)?;
     let all_mid = bearing.pads.iter().flat_map(|p| &p.orifices).all(|o| o.axial_m.abs() < 1e-12);
     let half = match m.half_model {
         Some(true) if !all_mid => {
@@ -527,7 +523,15 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
             allowed: "an even number with the half model".into(),
         });
     }
-    Ok(MeshSpec { fidelity, circumferential_elements: nx, axial_elements: nz, orifice_elements: no, half_model: half, pad_radial_elements: nr })
+    Ok(MeshSpec {
+        fidelity,
+        circumferential_elements: nx,
+        axial_elements: nz,
+        orifice_elements: no,
+        half_model: half,
+        pad_radial_elements: nr,
+        max_nodes,
+    })
 }
 
 /// `[thermal]`: documented defaults — isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply temperature,

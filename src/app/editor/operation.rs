@@ -368,5 +368,22 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         let num = Num { key, label, unit: "", range: (2.0, 200.0), decimals: 0, tip: "Explicit element count, overriding the fidelity level." };
         out.merge(optional_ui(ui, doc, &num, level(fid) as f64, |f| get(f).map(|v| v as f64), |f, v| set(f, v.map(|x| x.round().max(0.0) as usize))));
     }
+    let budget = Num {
+        key: "mesh.max_nodes",
+        label: "Node budget",
+        unit: "nodes",
+        range: (1e4, 1e7),
+        decimals: 0,
+        tip: "Most mesh nodes a solve may allocate: film nodes over all pads plus, with the thermal model, the pad solids' nodes. A case whose meshes (element counts, orifice refinement) would need more is refused before anything is built; memory and time grow faster than the node count.",
+    };
+    #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &budget,
+        crate::model::budget::DEFAULT_MAX_NODES as f64,
+        |f| f.mesh.max_nodes.map(|v| v as f64),
+        |f, v| f.mesh.max_nodes = v.map(|x| x.round().max(0.0) as usize),
+    ));
     out
 }

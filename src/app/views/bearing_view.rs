@@ -96,6 +96,8 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], s
     let jc = to_screen.map(outline.journal_centre);
     painter.circle_filled(jc, 3.0, Color32::WHITE);
     // Direction of rotation: counter-clockwise, an arc with an arrowhead.
+    // Screen points: f32 precision is what the painter draws with.
+    #[allow(clippy::cast_possible_truncation)]
     let r_rot = 0.22 * to_screen.points_per_m * outline.journal_radius_m as f32;
     let arc: Vec<Pos2> = (0..=24).map(|i| {
         let a = 0.35 + 1.1 * std::f32::consts::PI * i as f32 / 24.0;

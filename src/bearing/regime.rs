@@ -1,0 +1,141 @@
+//! Flow-regime checks of a solved film: is the laminar, smooth-surface Reynolds model it used valid here?
+//!
+//! The solver accepts every validated input, also physically absurd ones (a 1 nm clearance, 10⁶ rpm); it
+//! then solves, and these checks say in the report where the model stops describing a real bearing:
+//!
+//! ```text
+//! Re = ρ U h / µ           local film Reynolds number (U = Ω R, h and µ at each film node)
+//!                          laminar below ≈ 1000–1500 (journal bearings): above LAMINAR_REYNOLDS the
+//!                          film is turbulent and the laminar model underestimates friction loss,
+//!                          temperature rise and stiffness
+//! Ta = Re √(h / R)         Taylor number: above 41.3 (Taylor, small-gap rotating cylinders) the
+//!                          Couette flow develops Taylor vortices, before turbulence
+//! h_min                    below ≈ 1 µm, the order of the combined roughness of journal and pad, the
+//!                          surfaces touch through their asperities (mixed lubrication, not modelled)
+//! Cb / R                   built bearings have clearance ratios of about 0.5–3 ‰; outside
+//!                          [MIN_CLEARANCE_RATIO, MAX_CLEARANCE_RATIO] the case is unusual enough to say so
+//! ```
+//!
+//! The caller passes the case, the surface speed and the pad fields of a solution; the result is plain data
+//! plus the warnings for the solve report.
+
+use crate::model::Case;
+
+use super::solution::PadResult;
+
+/// Film Reynolds number above which the film is taken as no longer laminar (the low end of the
+/// 1000–1500 transition range reported for journal bearings).
+pub const LAMINAR_REYNOLDS: f64 = 1000.0;
+/// Critical Taylor number of the flow between rotating cylinders with a small gap.
+pub const CRITICAL_TAYLOR: f64 = 41.3;
+/// Film thickness below which the surfaces' roughness matters (mixed lubrication) [m].
+pub const ROUGHNESS_FILM_M: f64 = 1e-6;
+/// Clearance ratios Cb/R outside this range are flagged as unusual.
+pub const MIN_CLEARANCE_RATIO: f64 = 2e-4;
+pub const MAX_CLEARANCE_RATIO: f64 = 1e-2;
+
+/// The regime numbers of a solved film.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Regime {
+    /// Largest local film Reynolds number ρ U h / µ, and its pad.
+    pub reynolds_max: f64,
+    pub reynolds_pad: usize,
+    /// Largest local Taylor number Re √(h/R).
+    pub taylor_max: f64,
+    /// Smallest film thickness [m].
+    pub h_min_m: f64,
+    /// Assembled clearance ratio Cb/R.
+    pub clearance_ratio: f64,
+}
+
+impl Regime {
+    /// The regime of the pad fields `pads` of a solve of `case` at journal surface speed `surface_speed`
+    /// [m/s].
+    #[must_use]
+    pub fn of(case: &Case, surface_speed: f64, pads: &[PadResult]) -> Self {
+        let rho = case.lubricant.density_kg_per_m3;
+        let r = case.bearing.journal_radius_m;
+        let u = surface_speed.abs();
+        let mut out = Self {
+            reynolds_max: 0.0,
+            reynolds_pad: 0,
+            taylor_max: 0.0,
+            h_min_m: f64::INFINITY,
+            clearance_ratio: case.bearing.assembled_clearance_m / r,
+        };
+        for p in pads {
+            let f = &p.field;
+            for (&h, &mu) in f.film_thickness_m.iter().zip(&f.viscosity_pa_s) {
+                let re = rho * u * h / mu;
+                if re > out.reynolds_max {
+                    out.reynolds_max = re;
+                    out.reynolds_pad = p.index;
+                }
+                out.taylor_max = out.taylor_max.max(re * (h / r).sqrt());
+            }
+            out.h_min_m = out.h_min_m.min(p.h_min_m);
+        }
+        out
+    }
+
+    /// One warning per check that fails.
+    #[must_use]
+    pub fn warnings(&self) -> Vec<String> {
+        let mut w = Vec::new();
+        if self.reynolds_max > LAMINAR_REYNOLDS {
+            w.push(format!(
+                "turbulent film: the film Reynolds number ρUh/µ reaches {:.0} (pad {}), past the laminar limit of about \
+                 {LAMINAR_REYNOLDS:.0}–1500; the laminar Reynolds equation used here underestimates friction loss, \
+                 temperature rise and stiffness",
+                self.reynolds_max, self.reynolds_pad
+            ));
+        } else if self.taylor_max > CRITICAL_TAYLOR {
+            w.push(format!(
+                "Taylor vortices: the Taylor number Re·√(h/R) reaches {:.1}, above the critical {CRITICAL_TAYLOR}; the \
+                 laminar Couette flow the model assumes becomes cellular and the friction loss rises",
+                self.taylor_max
+            ));
+        }
+        if self.h_min_m < ROUGHNESS_FILM_M {
+            w.push(format!(
+                "the minimum film thickness {:.3} µm is below about {:.0} µm, the order of the combined surface roughness of \
+                 journal and pad: mixed lubrication (asperity contact), which the smooth-film model does not describe",
+                self.h_min_m * 1e6,
+                ROUGHNESS_FILM_M * 1e6
+            ));
+        }
+        if !(MIN_CLEARANCE_RATIO..=MAX_CLEARANCE_RATIO).contains(&self.clearance_ratio) {
+            w.push(format!(
+                "clearance ratio Cb/R = {:.2e} is outside {MIN_CLEARANCE_RATIO:.0e}–{MAX_CLEARANCE_RATIO:.0e} (built bearings: \
+                 about 0.5–3 ‰)",
+                self.clearance_ratio
+            ));
+        }
+        w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn regime(reynolds_max: f64, taylor_max: f64, h_min_m: f64, clearance_ratio: f64) -> Regime {
+        Regime { reynolds_max, reynolds_pad: 2, taylor_max, h_min_m, clearance_ratio }
+    }
+
+    #[test]
+    fn each_check_fires_on_its_own_side_of_its_limit() {
+        assert!(regime(900.0, 40.0, 20e-6, 1.5e-3).warnings().is_empty());
+        let turbulent = regime(1001.0, 60.0, 20e-6, 1.5e-3).warnings();
+        assert_eq!(turbulent.len(), 1, "{turbulent:?}");
+        assert!(turbulent[0].starts_with("turbulent film") && turbulent[0].contains("1001 (pad 2)"), "{turbulent:?}");
+        let taylor = regime(999.0, 41.4, 20e-6, 1.5e-3).warnings();
+        assert!(taylor.len() == 1 && taylor[0].starts_with("Taylor vortices"), "{taylor:?}");
+        let thin = regime(1.0, 0.1, 0.99e-6, 1.5e-3).warnings();
+        assert!(thin.len() == 1 && thin[0].contains("0.990 µm"), "{thin:?}");
+        for ratio in [1.9e-4, 1.01e-2] {
+            let w = regime(1.0, 0.1, 20e-6, ratio).warnings();
+            assert!(w.len() == 1 && w[0].starts_with("clearance ratio"), "{ratio}: {w:?}");
+        }
+    }
+}
