@@ -23,8 +23,12 @@
 //!   the solve job.
 //! - [`scene`]: results → plain drawables for the workbench (colour fields, flowlines, the bearing outline,
 //!   plot series, result rows, exports); no GUI types, built and tested without the `gui` feature.
+//! - [`study`]: sweeps over any case keys (grids) and design-space batches, one result row per point,
+//!   failed points kept as rows with their error; no I/O.
+//! - [`io`]: safe (atomic) writes, VTK `.vtu`/`.pvd` exports of the film and pad fields, reduced
+//!   coefficients for ROSS and as CSV.
 //! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
-//! - [`cli`]: batch runs (`tiltpad solve`, `tiltpad sweep`).
+//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`).
 
 // Lints: `[lints]` in Cargo.toml. Library paths that user input reaches never unwrap or expect (test
 // builds may; `[lints]` cannot tell test targets apart, so this one stays here).
@@ -32,10 +36,12 @@
 
 pub mod bearing;
 pub mod fem;
+pub mod io;
 pub mod mesh;
 pub mod model;
 pub mod physics;
 pub mod scene;
+pub mod study;
 pub mod cli;
 #[cfg(feature = "gui")]
 pub mod app;

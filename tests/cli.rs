@@ -57,7 +57,8 @@ fn sweep_writes_csv() {
     let csv = std::fs::read_to_string(&out).unwrap();
     let rows: Vec<&str> = csv.lines().collect();
     assert_eq!(rows.len(), 4);
-    let ecc: Vec<f64> = rows[1..].iter().map(|r| r.split(',').nth(1).unwrap().parse().unwrap()).collect();
+    let col = rows[0].split(',').position(|h| h == "eccentricity_ratio").unwrap();
+    let ecc: Vec<f64> = rows[1..].iter().map(|r| r.split(',').nth(col).unwrap().parse().unwrap()).collect();
     // Faster journal, thicker film: eccentricity falls with speed.
     assert!(ecc[0] > ecc[1] && ecc[1] > ecc[2], "{ecc:?}");
     std::fs::remove_dir_all(&dir).ok();

@@ -75,7 +75,7 @@ impl WorkbenchApp {
     pub(super) fn save_case(&mut self, ask: bool) {
         let path = if ask { None } else { self.doc.path.clone() };
         let name = if self.doc.name.ends_with(".toml") { self.doc.name.clone() } else { format!("{}.toml", self.doc.name) };
-        self.files.save_case(self.doc.file(), &name, path.as_deref());
+        self.files.save_case(self.doc.text(), self.doc.file(), &name, path.as_deref());
     }
 
     pub(super) fn take_shortcuts(&mut self, ctx: &egui::Context) {
@@ -100,10 +100,10 @@ impl WorkbenchApp {
         for e in self.files.poll() {
             match e {
                 FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
-                FileEvent::SavedCase { name, path, saved } => {
+                FileEvent::SavedCase { name, path, saved, text } => {
                     self.notice = Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
                     if *saved == *self.doc.file() {
-                        self.doc.mark_saved(name, path);
+                        self.doc.mark_saved(name, path, text);
                     }
                 }
                 FileEvent::Exported { name, path } => {

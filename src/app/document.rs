@@ -1,6 +1,10 @@
 //! The case being edited: the [`CaseFile`] (persisted, engineering units), its validation, where it
 //! came from, whether it has unsaved changes, and undo/redo.
 //!
+//! The document keeps the text it was opened from: [`Document::text`] writes the edited values into that
+//! text ([`CaseFile::to_toml_preserving`]), so a save keeps the user's comments, order and units and
+//! changes only the values that were edited.
+//!
 //! Undo works on whole `CaseFile` snapshots (a case is a few hundred bytes). Continuous edits of one field
 //! (dragging a value) form one undo step: an edit that continues the previous edit of the same key does
 //! not push a new snapshot.
@@ -23,6 +27,8 @@ pub struct Document {
     redo: Vec<CaseFile>,
     last_key: Option<String>,
     validation: Result<Case, CaseError>,
+    /// The TOML text the case was opened from or last saved as.
+    source: Option<String>,
 }
 
 impl Document {
@@ -39,6 +45,26 @@ impl Document {
             redo: Vec::new(),
             last_key: None,
             validation,
+            source: None,
+        }
+    }
+
+    /// The document with the text its case was read from (kept for comment-preserving saves).
+    #[must_use]
+    pub fn with_source(mut self, text: impl Into<String>) -> Self {
+        self.source = Some(text.into());
+        self
+    }
+
+    /// The case as TOML: the source text with the edited values written into it (comments, order and
+    /// units kept), or a fresh file when there is no source.
+    ///
+    /// # Errors
+    /// A value TOML cannot hold (non-finite numbers).
+    pub fn text(&self) -> Result<String, CaseError> {
+        match &self.source {
+            Some(src) => self.file.to_toml_preserving(src).or_else(|_| self.file.to_toml()),
+            None => self.file.to_toml(),
         }
     }
 
@@ -83,8 +109,8 @@ impl Document {
     }
 
     /// Replaces the whole case (opening a file or a preset): a fresh history.
-    pub fn replace(&mut self, file: CaseFile, name: impl Into<String>, path: Option<std::path::PathBuf>) {
-        *self = Self { path, ..Self::new(file, name, true) };
+    pub fn replace(&mut self, file: CaseFile, name: impl Into<String>, path: Option<std::path::PathBuf>, source: &str) {
+        *self = Self { path, ..Self::new(file, name, true).with_source(source) };
     }
 
     /// Ends a continuous gesture, so the next edit of the same key is a new undo step.
@@ -124,9 +150,10 @@ impl Document {
         self.saved.as_ref() != Some(&self.file)
     }
 
-    /// Records that the current case was saved.
-    pub fn mark_saved(&mut self, name: impl Into<String>, path: Option<std::path::PathBuf>) {
+    /// Records that the current case was saved as `text`.
+    pub fn mark_saved(&mut self, name: impl Into<String>, path: Option<std::path::PathBuf>, text: String) {
         self.saved = Some(self.file.clone());
+        self.source = Some(text);
         self.name = name.into();
         if path.is_some() {
             self.path = path;
@@ -145,7 +172,19 @@ mod tests {
 
     fn doc() -> Document {
         let file = parse_case_file(include_str!("../../cases/compressor-bearing.toml"), &[]).unwrap();
-        Document::new(file, "compressor", true)
+        Document::new(file, "compressor", true).with_source(include_str!("../../cases/compressor-bearing.toml"))
+    }
+
+    #[test]
+    fn the_saved_text_keeps_the_source_comments() {
+        let mut d = doc();
+        d.edit("operating.speed_rpm", false, |f| f.operating.speed_rpm = 8000.0);
+        let text = d.text().unwrap();
+        assert!(text.starts_with("# Industrial gas-compressor bearing"), "{text}");
+        assert!(text.contains("speed_rpm = 8000.0\n"), "{text}");
+        // Without a source the case is written fresh.
+        let fresh = Document::new(d.file().clone(), "x", false).text().unwrap();
+        assert!(!fresh.contains('#') && fresh.contains("speed_rpm = 8000.0"));
     }
 
     #[test]
@@ -165,7 +204,7 @@ mod tests {
         assert!(!d.is_dirty() && !d.undo());
         assert!(d.redo() && d.redo() && !d.redo());
         assert_eq!(d.file().operating.load_n, Some(2500.0));
-        d.mark_saved("x.toml", None);
+        d.mark_saved("x.toml", None, String::new());
         assert!(!d.is_dirty());
     }
 

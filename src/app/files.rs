@@ -3,8 +3,10 @@
 //!
 //! Dialogs never block the UI: on native they run on a short-lived thread (rfd's blocking dialog), on the
 //! web in a future (rfd's async dialog; saving becomes a download). Their outcome comes back as a
-//! [`FileEvent`] over a channel. Saving on native is atomic: the bytes go to a temporary file in the same
-//! folder, which is then renamed over the target.
+//! [`FileEvent`] over a channel. Writes on native are safe ([`crate::io::safe_write`]): the bytes go to
+//! an exclusively created temporary file beside the target, which is synced and renamed over it; a
+//! symlink is written through, never replaced. A case is saved as the text it was opened from with the
+//! edited values written in ([`super::document::Document::text`]), so its comments survive.
 
 use std::sync::mpsc::{channel, Receiver, Sender};
 
@@ -13,8 +15,8 @@ use std::sync::mpsc::{channel, Receiver, Sender};
 pub enum FileEvent {
     /// A case file was read: display name, path (native), text.
     Opened { name: String, path: Option<std::path::PathBuf>, text: String },
-    /// The case was saved under this name (and path, on native).
-    SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile> },
+    /// The case was saved under this name (and path, on native) as `text`.
+    SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile>, text: String },
     /// An export was written (to `path`, when known).
     Exported { name: String, path: Option<std::path::PathBuf> },
     Error(String),
@@ -87,9 +89,9 @@ impl Files {
         });
     }
 
-    /// Saves the case: straight to `path` when known (native), else through a save dialog.
-    pub fn save_case(&self, file: &crate::model::CaseFile, name: &str, path: Option<&std::path::Path>) {
-        let text = match file.to_toml() {
+    /// Saves the case `text` (of `file`): straight to `path` when known (native), else through a save dialog.
+    pub fn save_case(&self, text: Result<String, crate::model::CaseError>, file: &crate::model::CaseFile, name: &str, path: Option<&std::path::Path>) {
+        let text = match text {
             Ok(t) => t,
             Err(e) => {
                 let _ = self.tx.send(FileEvent::Error(format!("cannot write the case as TOML: {e}")));
@@ -98,16 +100,17 @@ impl Files {
         };
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(p) = path {
-            let event = match crate::cli::write_atomic(p, text.as_bytes()) {
-                Ok(()) => FileEvent::SavedCase { name: display_name(p), path: Some(p.to_path_buf()), saved: Box::new(file.clone()) },
-                Err(e) => FileEvent::Error(format!("{e:#}")),
+            let event = match crate::io::write_file(p, text.as_bytes()) {
+                Ok(()) => FileEvent::SavedCase { name: display_name(p), path: Some(p.to_path_buf()), saved: Box::new(file.clone()), text },
+                Err(e) => FileEvent::Error(e.to_string()),
             };
             let _ = self.tx.send(event);
             return;
         }
         let _ = path;
         let saved = Box::new(file.clone());
-        self.save_bytes(name, "Case (TOML)", "toml", text.into_bytes(), move |name, path| FileEvent::SavedCase { name, path, saved });
+        let bytes = text.clone().into_bytes();
+        self.save_bytes(name, "Case (TOML)", "toml", bytes, move |name, path| FileEvent::SavedCase { name, path, saved, text });
     }
 
     /// Exports bytes under a suggested name.
@@ -120,9 +123,9 @@ impl Files {
         if !dialogs_available() {
             // Without a dialog, write into the working directory under the suggested name.
             let path = std::path::PathBuf::from(name);
-            let event = match crate::cli::write_atomic(&path, &bytes) {
+            let event = match crate::io::write_file(&path, &bytes) {
                 Ok(()) => done(name.to_string(), std::fs::canonicalize(&path).ok()),
-                Err(e) => FileEvent::Error(format!("{e:#}")),
+                Err(e) => FileEvent::Error(e.to_string()),
             };
             let _ = self.tx.send(event);
             return;
@@ -148,7 +151,7 @@ fn dialogs_available() -> bool {
 async fn write_handle(handle: &rfd::FileHandle, bytes: &[u8]) -> Result<(), String> {
     #[cfg(not(target_arch = "wasm32"))]
     {
-        crate::cli::write_atomic(handle.path(), bytes).map_err(|e| format!("{e:#}"))
+        crate::io::write_file(handle.path(), bytes).map_err(|e| e.to_string())
     }
     #[cfg(target_arch = "wasm32")]
     {
@@ -229,30 +232,54 @@ pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>, S
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::app::document::Document;
     use crate::model::parse_case_file;
 
     #[test]
-    fn saving_a_case_is_atomic_and_round_trips() {
+    fn saving_an_edited_case_changes_only_the_edited_line() {
         let dir = std::env::temp_dir().join(format!("tiltpad-save-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("case.toml");
-        std::fs::write(&path, "old contents").unwrap();
-        let file = parse_case_file(include_str!("../../cases/test-rig.toml"), &[]).unwrap();
+        let original = include_str!("../../cases/test-rig.toml");
+        std::fs::write(&path, original).unwrap();
+        let file = parse_case_file(original, &[]).unwrap();
+        let mut doc = Document::new(file, "case.toml", true).with_source(original);
+        doc.edit("operating.load_n", false, |f| f.operating.load_n = Some(1234.0));
         let files = Files::new(egui::Context::default());
-        files.save_case(&file, "case.toml", Some(&path));
+        files.save_case(doc.text(), doc.file(), "case.toml", Some(&path));
         match files.poll().as_slice() {
-            [FileEvent::SavedCase { name, path: Some(p), saved }] => {
+            [FileEvent::SavedCase { name, path: Some(p), saved, text }] => {
                 assert_eq!(name, "case.toml");
                 assert_eq!(p, &path);
-                assert_eq!(**saved, file);
+                assert_eq!(**saved, *doc.file());
+                assert_eq!(text, &std::fs::read_to_string(&path).unwrap());
             }
             other => panic!("{other:?}"),
         }
-        let back = parse_case_file(&std::fs::read_to_string(&path).unwrap(), &[]).unwrap();
-        assert_eq!(back, file);
+        let written = std::fs::read_to_string(&path).unwrap();
+        let changed: Vec<(&str, &str)> = original.lines().zip(written.lines()).filter(|(a, b)| a != b).collect();
+        assert_eq!(original.lines().count(), written.lines().count());
+        assert_eq!(changed.len(), 1, "{changed:?}");
+        assert!(changed[0].0.starts_with("load_n") && changed[0].1.starts_with("load_n = 1234"), "{changed:?}");
+        assert_eq!(parse_case_file(&written, &[]).unwrap(), *doc.file());
         // Only the target is left: the temporary file was renamed over it.
         let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
         assert_eq!(names, vec![std::ffi::OsString::from("case.toml")]);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    #[test]
+    fn a_failed_save_names_the_path_and_keeps_the_file() {
+        let dir = std::env::temp_dir().join(format!("tiltpad-save-dir-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("case.toml")).unwrap();
+        let file = parse_case_file(include_str!("../../cases/test-rig.toml"), &[]).unwrap();
+        let files = Files::new(egui::Context::default());
+        files.save_case(file.to_toml(), &file, "case.toml", Some(&dir.join("case.toml")));
+        match files.poll().as_slice() {
+            [FileEvent::Error(e)] => assert!(e.contains("case.toml") && e.contains("directory"), "{e}"),
+            other => panic!("{other:?}"),
+        }
+        assert!(dir.join("case.toml").is_dir());
         std::fs::remove_dir_all(&dir).ok();
     }
 

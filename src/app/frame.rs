@@ -86,6 +86,17 @@ impl WorkbenchApp {
                         self.files.export(&self.export_name("results", "json"), "JSON", "json", export::results_json(s).into_bytes());
                     }
                 }
+                if ui.add_enabled(solution.is_some(), egui::Button::new("Export film fields for ParaView (VTU)…")).on_hover_text("Pressure, film thickness, temperatures and the mean film velocity on the 3-D pad surfaces, as a VTK unstructured grid.").clicked() {
+                    if let Some(s) = &solution {
+                        self.files.export(&self.export_name("film", "vtu"), "VTK unstructured grid", "vtu", crate::io::vtk::film_grid(s).to_vtu().into_bytes());
+                    }
+                }
+                let pads = solution.as_ref().and_then(|s| crate::io::vtk::pad_solid_grid(s));
+                if ui.add_enabled(pads.is_some(), egui::Button::new("Export pad temperatures for ParaView (VTU)…")).on_hover_text("The pads' 3-D temperature field (thermal model), as a VTK unstructured grid.").clicked() {
+                    if let Some(g) = &pads {
+                        self.files.export(&self.export_name("pads", "vtu"), "VTK unstructured grid", "vtu", g.to_vtu().into_bytes());
+                    }
+                }
             });
             ui.menu_button("Edit", |ui| {
                 if ui.add_enabled(self.doc.can_undo(), egui::Button::new("Undo")).clicked() {

@@ -110,16 +110,16 @@ impl WorkbenchApp {
     #[must_use]
     pub fn with_state(ctx: &egui::Context, persisted: Persisted) -> Self {
         let (name, text) = presets::default_preset();
-        let restored = persisted.case_toml.as_deref().and_then(|t| parse_case_file(t, &[]).ok());
+        let restored = persisted.case_toml.as_deref().and_then(|t| parse_case_file(t, &[]).ok().map(|f| (f, t)));
         let doc = match restored {
-            Some(file) => {
-                let mut doc = Document::new(file, persisted.case_name.clone(), persisted.case_saved);
+            Some((file, source)) => {
+                let mut doc = Document::new(file, persisted.case_name.clone(), persisted.case_saved).with_source(source);
                 doc.path.clone_from(&persisted.case_path);
                 doc
             }
             // The shipped default is compiled in and checked by a unit test: not user input.
             #[allow(clippy::expect_used)]
-            None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true),
+            None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true).with_source(text),
         };
         Self {
             persisted,
@@ -146,7 +146,7 @@ impl WorkbenchApp {
     pub fn load_text(&mut self, name: &str, path: Option<std::path::PathBuf>, text: &str) {
         match parse_case_file(text, &[]) {
             Ok(file) => {
-                self.doc.replace(file, name, path);
+                self.doc.replace(file, name, path, text);
                 self.notice = Some(format!("Opened {name}"));
             }
             Err(e) => self.notice = Some(format!("Cannot open {name}: {e}")),
@@ -245,7 +245,7 @@ impl eframe::App for WorkbenchApp {
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        self.persisted.case_toml = self.doc.file().to_toml().ok();
+        self.persisted.case_toml = self.doc.text().ok();
         self.persisted.case_name.clone_from(&self.doc.name);
         self.persisted.case_path.clone_from(&self.doc.path);
         self.persisted.case_saved = !self.doc.is_dirty();

@@ -1,14 +1,26 @@
-//! Command-line interface for batch runs: `tiltpad solve`, `tiltpad sweep`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`.
 //!
-//! Engineering units at this edge only; the JSON written by `solve --json` is SI with units in the key names.
+//! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
+//! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
+//! also receives every error, with a non-zero exit status. Files are written safely ([`crate::io`]).
 //! The result documents ([`solution_json`], [`summary_text`]) build on every target (the web workbench
 //! exports them too); the commands themselves are native only.
 
 #[cfg(not(target_arch = "wasm32"))]
+mod batch;
+#[cfg(not(target_arch = "wasm32"))]
 mod bench;
+#[cfg(not(target_arch = "wasm32"))]
+mod bench_batch;
+#[cfg(not(target_arch = "wasm32"))]
+mod coefficients;
+#[cfg(not(target_arch = "wasm32"))]
+mod rows;
 mod summary;
 #[cfg(not(target_arch = "wasm32"))]
 mod sweep;
+#[cfg(not(target_arch = "wasm32"))]
+mod vtu;
 
 #[cfg(not(target_arch = "wasm32"))]
 use std::path::{Path, PathBuf};
@@ -43,26 +55,91 @@ pub enum Command {
         /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
-        /// Write the full result as JSON.
+        /// Write the full result as JSON (`-`: standard output; the summary then goes to standard error).
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
+        /// Write the film fields on the 3-D pad surfaces as a VTK grid (`OUT.vtu`; pad temperatures of a
+        /// thermal solve to `OUT-pads.vtu`), for ParaView.
+        #[arg(long, value_name = "OUT.vtu")]
+        vtu: Option<PathBuf>,
     },
-    /// Solve a case over a range of one parameter and write a CSV table.
+    /// Solve a case over a grid of any case keys; one row per point, written as it completes.
     Sweep {
         case: PathBuf,
-        /// Dotted case key to vary, e.g. `operating.speed_rpm`.
-        #[arg(long)]
-        param: String,
-        #[arg(long)]
-        from: f64,
-        #[arg(long)]
-        to: f64,
+        /// A swept key: `KEY=FROM:TO:STEPS`, `KEY=v1,v2,…` or `KEY=[a,b];[c,d]` (repeat for a grid; the
+        /// first varies slowest).
+        #[arg(long = "vary", value_name = "KEY=VALUES")]
+        vary: Vec<String>,
+        /// One swept key (with --from, --to, --steps), same as `--vary KEY=FROM:TO:STEPS`.
+        #[arg(long, value_name = "KEY")]
+        param: Option<String>,
+        #[arg(long, requires = "param")]
+        from: Option<f64>,
+        #[arg(long, requires = "param")]
+        to: Option<f64>,
         #[arg(long, default_value_t = 11)]
         steps: usize,
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+        /// CSV of the rows (`-`: standard output, the default when no output is given).
         #[arg(long, value_name = "OUT")]
-        csv: PathBuf,
+        csv: Option<PathBuf>,
+        /// JSON lines of the rows (one object per point).
+        #[arg(long, value_name = "OUT")]
+        jsonl: Option<PathBuf>,
+        /// A ParaView collection `OUT.pvd` with one `.vtu` per solved point beside it.
+        #[arg(long, value_name = "OUT.pvd")]
+        vtu: Option<PathBuf>,
+    },
+    /// Solve every design of a table (one design per row, any case keys as columns) on a base case.
+    Batch {
+        /// Designs table (CSV with a header of case keys).
+        designs: PathBuf,
+        /// Base case file (TOML) the designs change.
+        #[arg(long)]
+        case: PathBuf,
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Run only block I of N (1 ≤ I ≤ N) of the designs, e.g. `--shard $SLURM_ARRAY_TASK_ID/8`.
+        #[arg(long, value_name = "I/N")]
+        shard: Option<String>,
+        /// CSV of the rows (`-`: standard output, the default when no output is given).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// JSON lines of the rows.
+        #[arg(long, value_name = "OUT")]
+        jsonl: Option<PathBuf>,
+    },
+    /// Reduced stiffness and damping over running speed or excitation frequency, for ROSS and as CSV.
+    Coefficients {
+        case: PathBuf,
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Running speeds, rpm: `FROM:TO:STEPS` or a list (each condensed at the case's excitation ratio).
+        #[arg(long, value_name = "RPM")]
+        speed_rpm: Option<String>,
+        /// Excitation ratios ω/Ω at the case's speed: `FROM:TO:STEPS` or a list (frequency-dependent
+        /// coefficients).
+        #[arg(long, value_name = "RATIOS")]
+        excitation_ratio: Option<String>,
+        /// ROSS bearing-element file (TOML, `ross.BearingElement.load` reads it).
+        #[arg(long, value_name = "OUT.toml")]
+        ross: Option<PathBuf>,
+        /// CSV with units in the header (`-`: standard output; the default without --ross).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// Rotor node of the bearing in the ROSS model.
+        #[arg(long, default_value_t = 0)]
+        node: usize,
+        /// Tag of the ROSS element.
+        #[arg(long, default_value = "tiltpad")]
+        tag: String,
+    },
+    /// Print every case key with its unit, allowed values, default and meaning.
+    Schema {
+        /// Write the table as JSON instead (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
     },
     /// Measure time and error per fidelity level; writes docs/PERFORMANCE.md (run in --release).
     Bench {
@@ -86,16 +163,40 @@ pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
 }
 
 #[cfg(not(target_arch = "wasm32"))]
-/// Writes a file atomically (temporary file in the same folder, then rename).
+/// Writes a file safely (see [`crate::io::safe_write`]).
 ///
 /// # Errors
-/// I/O errors.
+/// I/O errors, naming the path.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or_else(|| Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
-    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", tmp.display()))?;
-    std::fs::rename(&tmp, path).with_context(|| format!("cannot move {} to {}", tmp.display(), path.display()))?;
+    Ok(crate::io::write_file(path, bytes)?)
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn is_stdout(p: Option<&PathBuf>) -> bool {
+    p.is_some_and(|p| p.as_os_str() == "-")
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathBuf>) -> Result<()> {
+    let (_, c) = read_case(case, set)?;
+    let sol = solve_case(&c).with_context(|| format!("solving {}", case.display()))?;
+    // Standard output belongs to the JSON when it goes there.
+    if is_stdout(json) {
+        eprint!("{}", summary_text(&sol));
+    } else {
+        print!("{}", summary_text(&sol));
+    }
+    if let Some(out) = json {
+        let mut text = serde_json::to_string_pretty(&solution_json(&sol))?;
+        text.push('\n');
+        write_atomic(out, text.as_bytes())?;
+        rows::announce(out);
+    }
+    if let Some(out) = vtu {
+        for p in vtu::write_solution(out, &sol)? {
+            rows::announce(&p);
+        }
+    }
     Ok(())
 }
 
@@ -103,21 +204,50 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
 /// Runs a CLI command.
 ///
 /// # Errors
-/// Case, solve and I/O errors (printed by `main`).
+/// Case, solve and I/O errors (printed by `main` on standard error).
 pub fn run(command: Command) -> Result<()> {
     match command {
-        Command::Solve { case, set, json } => {
-            let (_, c) = read_case(&case, &set)?;
-            let sol = solve_case(&c).with_context(|| format!("solving {}", case.display()))?;
-            print!("{}", summary_text(&sol));
-            if let Some(out) = json {
-                let text = serde_json::to_string_pretty(&solution_json(&sol))?;
-                write_atomic(&out, text.as_bytes())?;
-                println!("wrote {}", out.display());
+        Command::Solve { case, set, json, vtu } => solve(&case, &set, json.as_ref(), vtu.as_ref()),
+        Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu } => {
+            let mut axes = Vec::new();
+            if let Some(key) = param {
+                let (Some(from), Some(to)) = (from, to) else { anyhow::bail!("--param needs --from and --to") };
+                if steps < 1 {
+                    anyhow::bail!("--steps must be at least 1");
+                }
+                axes.push(crate::study::Axis::linspace(&key, from, to, steps));
+            }
+            for spec in &vary {
+                axes.push(crate::study::Axis::parse(spec)?);
+            }
+            sweep::run(sweep::SweepArgs { case: &case, axes, set: &set, csv, jsonl, vtu })
+        }
+        Command::Batch { designs, case, set, shard, csv, jsonl } => {
+            let shard = shard.as_deref().map_or(Ok(crate::study::Shard::ALL), crate::study::Shard::parse)?;
+            batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl })
+        }
+        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag } => coefficients::run(&coefficients::CoefficientArgs {
+            case: &case,
+            set: &set,
+            speed_rpm: speed_rpm.as_deref(),
+            excitation_ratio: excitation_ratio.as_deref(),
+            ross,
+            csv,
+            node,
+            tag: &tag,
+        }),
+        Command::Schema { json } => {
+            match json {
+                Some(out) => {
+                    let mut text = serde_json::to_string_pretty(&crate::model::schema::json_table())?;
+                    text.push('\n');
+                    write_atomic(&out, text.as_bytes())?;
+                    rows::announce(&out);
+                }
+                None => print!("{}", crate::model::schema::text_table()),
             }
             Ok(())
         }
-        Command::Sweep { case, param, from, to, steps, set, csv } => sweep::run(&case, &param, from, to, steps, &set, &csv),
         Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
     }
 }

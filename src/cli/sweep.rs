@@ -1,81 +1,76 @@
-//! `tiltpad sweep`: one parameter over a range, warm-started point to point, with a progress bar.
+//! `tiltpad sweep`: a grid over any case keys, warm-started point to point, each row written as it
+//! completes; a failed point is a row with its error, and the command fails only when every point did.
 
-use std::fmt::Write as _;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::bearing::{solve_point, BearingModel, NoCancel, ThermalModel};
-use crate::model::load_case;
+use crate::study::{grid, Axis, Runner};
 
-use super::write_atomic;
+use super::rows::RowSink;
+use super::vtu::VtuSeries;
 
-/// Runs the sweep and writes the CSV.
+/// What to sweep and where the rows go.
+pub struct SweepArgs<'a> {
+    pub case: &'a Path,
+    pub axes: Vec<Axis>,
+    pub set: &'a [String],
+    pub csv: Option<PathBuf>,
+    pub jsonl: Option<PathBuf>,
+    pub vtu: Option<PathBuf>,
+}
+
+pub fn progress(len: usize) -> ProgressBar {
+    let pb = ProgressBar::new(len as u64);
+    pb.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed_precise} eta {eta} {msg}").unwrap_or_else(|_| ProgressStyle::default_bar()));
+    pb
+}
+
+/// Runs the sweep.
 ///
 /// # Errors
-/// Case errors at any point of the range, solve failures are recorded per row, I/O errors.
-pub fn run(case: &Path, param: &str, from: f64, to: f64, steps: usize, set: &[String], csv: &Path) -> Result<()> {
-    if steps < 1 {
-        bail!("--steps must be at least 1");
+/// An unreadable case, bad axes, an output that cannot be written, or every point failed.
+pub fn run(args: SweepArgs<'_>) -> Result<()> {
+    if args.axes.is_empty() {
+        bail!("nothing to sweep: give --vary KEY=FROM:TO:STEPS (or --param KEY --from A --to B --steps N)");
     }
-    let text = std::fs::read_to_string(case)?;
-    let pb = ProgressBar::new(steps as u64);
-    pb.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg}").unwrap_or_else(|_| ProgressStyle::default_bar()));
-    let mut out = String::from(
-        "value,eccentricity_ratio,attitude_angle_deg,h_min_um,p_max_mpa,friction_power_w,kxx_n_per_m,kxy_n_per_m,kyx_n_per_m,kyy_n_per_m,cxx_ns_per_m,cxy_ns_per_m,cyx_ns_per_m,cyy_ns_per_m,iterations,seconds,error\n",
-    );
-    let mut model: Option<(BearingModel, String)> = None;
-    let mut thermal: Option<ThermalModel> = None;
-    let mut start: Option<Vec<f64>> = None;
-    for i in 0..steps {
-        #[allow(clippy::cast_precision_loss)]
-        let v = if steps == 1 { from } else { from + (to - from) * i as f64 / (steps - 1) as f64 };
-        let mut sets = set.to_vec();
-        sets.push(format!("{param}={v}"));
-        let (_, c) = load_case(&text, &sets)?;
-        // Reuse the model while the geometry and mesh are unchanged.
-        let key = format!("{:?}{:?}", c.bearing, c.mesh);
-        if model.as_ref().map(|m| &m.1) != Some(&key) {
-            model = Some((BearingModel::new(&c)?, key));
-            thermal = None;
-            start = None;
+    let text = std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let points = grid::points(&args.axes)?;
+    let keys: Vec<String> = args.axes.iter().map(|a| a.key.clone()).collect();
+    let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
+    let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "point", &keys)?;
+    let mut vtu = args.vtu.as_deref().map(VtuSeries::new);
+    // One numeric axis: ParaView steps through its values; otherwise through the point numbers.
+    let single = (args.axes.len() == 1).then(|| &args.axes[0]);
+    let mut runner = Runner::new(text, args.set.to_vec(), true);
+    let pb = progress(points.len());
+    let mut failed = 0;
+    for (i, point) in points.iter().enumerate() {
+        pb.set_message(point.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", "));
+        let (row, solution) = runner.row(i, point);
+        if row.result.is_err() {
+            failed += 1;
+            pb.println(format!("point {i}: {}", row.error_text()));
         }
-        let Some((m, _)) = model.as_mut() else { unreachable!() };
-        pb.set_message(format!("{param} = {v:.4}"));
-        match solve_point(m, &mut thermal, &c, start.as_deref(), &NoCancel) {
-            Ok(s) => {
-                let (k, cc) = (s.reduced.k_n_per_m, s.reduced.c_ns_per_m);
-                let _ = writeln!(
-                    out,
-                    "{v},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},",
-                    s.eccentricity_ratio,
-                    s.attitude_angle_deg,
-                    s.h_min_m * 1e6,
-                    s.p_max_pa * 1e-6,
-                    s.friction_power_w,
-                    k[0][0],
-                    k[0][1],
-                    k[1][0],
-                    k[1][1],
-                    cc[0][0],
-                    cc[0][1],
-                    cc[1][0],
-                    cc[1][1],
-                    s.report.iterations,
-                    s.report.seconds
-                );
-                start = Some(s.coordinates.clone());
-            }
-            Err(e) => {
-                let _ = writeln!(out, "{v},,,,,,,,,,,,,,,,\"{}\"", e.to_string().replace('"', "'"));
-                start = None;
-            }
+        sink.write(&row)?;
+        if let (Some(series), Some(s)) = (&mut vtu, &solution) {
+            #[allow(clippy::cast_precision_loss)]
+            let step = single.and_then(|a| a.values[i].parse::<f64>().ok()).unwrap_or(i as f64);
+            series.add(i, step, s)?;
         }
         pb.inc(1);
     }
-    pb.finish_with_message("done");
-    write_atomic(csv, out.as_bytes())?;
-    println!("wrote {}", csv.display());
+    pb.finish_and_clear();
+    sink.finish()?;
+    if let Some(series) = vtu {
+        series.finish()?;
+    }
+    if failed == points.len() {
+        bail!("every point of the sweep failed ({failed} of {failed}); the rows say why");
+    }
+    if failed > 0 {
+        eprintln!("{failed} of {} points failed; their rows hold the error", points.len());
+    }
     Ok(())
 }

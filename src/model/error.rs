@@ -67,7 +67,8 @@ impl CaseError {
 }
 
 /// Checks that `value` is finite and inside `[lo, hi]` (bounds inclusive unless stated by `open_lo`/`open_hi`).
-pub(crate) struct Range {
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Range {
     pub lo: f64,
     pub hi: f64,
     pub open_lo: bool,
@@ -88,7 +89,9 @@ impl Range {
         Self { lo, hi, open_lo: true, open_hi: true }
     }
 
-    fn describe(&self) -> String {
+    /// The interval as validation messages and `tiltpad schema` write it, e.g. `(0, 10000]`.
+    #[must_use]
+    pub fn describe(&self) -> String {
         let l = if self.open_lo { "(" } else { "[" };
         let r = if self.open_hi { ")" } else { "]" };
         format!("{l}{}, {}{r}", fmt_bound(self.lo), fmt_bound(self.hi))

@@ -1,14 +1,18 @@
 //! What a user describes: bearing geometry, pads, orifices, lubricant, operating point, mesh and physics
 //! options. Case files are TOML in engineering units ([`file`]); they are validated and converted to SI once
 //! ([`resolve`]) into a [`Case`] that the solver reads; [`budget`] counts the mesh nodes a case would
-//! allocate, so that an oversized one is refused before anything is built.
+//! allocate, so that an oversized one is refused before anything is built. [`schema`] lists every key with
+//! its unit, allowed values and meaning (for `tiltpad schema` and the editor); [`edit`] writes an edited
+//! case back into the user's own file, keeping its comments.
 
 pub mod budget;
 pub mod case;
+pub mod edit;
 pub mod error;
 pub mod file;
 pub mod load;
 pub mod resolve;
+pub mod schema;
 
 pub use case::{
     Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics,
@@ -17,3 +21,18 @@ pub use case::{
 pub use error::CaseError;
 pub use file::CaseFile;
 pub use load::{load_case, parse_case_file};
+
+/// Name and text of every shipped case (`cases/*.toml`), for tests that must cover them all.
+#[cfg(test)]
+pub(crate) fn shipped_cases() -> Vec<(String, String)> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("cases");
+    let mut out: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .map(|p| (p.file_name().unwrap().to_string_lossy().into_owned(), std::fs::read_to_string(&p).unwrap()))
+        .collect();
+    out.sort();
+    assert!(out.len() >= 7, "shipped cases missing from {}", dir.display());
+    out
+}

@@ -9,31 +9,17 @@ use crate::model::CaseFile;
 
 const GEOMETRY: [Field; 3] = [
     Field {
-        num: Num { key: "bearing.journal_radius_mm", label: "Journal radius R", unit: "mm", range: (10.0, 500.0), decimals: 3, tip: "Radius of the shaft journal running in the bearing." },
+        num: Num { key: "bearing.journal_radius_mm", label: "Journal radius R", decimals: 3 },
         get: |f| f.bearing.journal_radius_mm,
         set: |f, v| f.bearing.journal_radius_mm = v,
     },
     Field {
-        num: Num {
-            key: "bearing.length_mm",
-            label: "Pad length L",
-            unit: "mm",
-            range: (10.0, 400.0),
-            decimals: 3,
-            tip: "Axial length of the pads. With L/D below about 0.5 side leakage dominates and the load capacity falls quickly.",
-        },
+        num: Num { key: "bearing.length_mm", label: "Pad length L", decimals: 3 },
         get: |f| f.bearing.length_mm,
         set: |f, v| f.bearing.length_mm = v,
     },
     Field {
-        num: Num {
-            key: "bearing.assembled_clearance_um",
-            label: "Assembled clearance Cb",
-            unit: "µm",
-            range: (20.0, 400.0),
-            decimals: 2,
-            tip: "Radial clearance of the assembled bearing: the gap between the journal and the pads at their pivots with the journal centred. Typically 1–2 ‰ of the radius.",
-        },
+        num: Num { key: "bearing.assembled_clearance_um", label: "Assembled clearance Cb", decimals: 2 },
         get: |f| f.bearing.assembled_clearance_um,
         set: |f, v| f.bearing.assembled_clearance_um = v,
     },
@@ -85,24 +71,17 @@ fn set_clearance_mode(f: &mut CaseFile, mode: ClearanceMode) {
 /// The value row of each way of giving the pad clearance.
 const CLEARANCE: [Field; 3] = [
     Field {
-        num: Num {
-            key: "bearing.pads.preload",
-            label: "Preload m",
-            unit: "–",
-            range: (0.0, 0.7),
-            decimals: 3,
-            tip: "m = 1 − Cb/Cp: how much the pads' own curvature converges on the journal. Preload keeps unloaded pads working (a converging wedge) and raises stiffness.",
-        },
+        num: Num { key: "bearing.pads.preload", label: "Preload m", decimals: 3 },
         get: |f| f.bearing.pads.preload.unwrap_or(0.0),
         set: |f, v| f.bearing.pads.preload = Some(v),
     },
     Field {
-        num: Num { key: "bearing.pads.clearance_um", label: "Pad clearance Cp", unit: "µm", range: (20.0, 600.0), decimals: 2, tip: "Machined radial clearance of the pads: pad bore radius minus journal radius." },
+        num: Num { key: "bearing.pads.clearance_um", label: "Pad clearance Cp", decimals: 2 },
         get: |f| f.bearing.pads.clearance_um.unwrap_or(0.0),
         set: |f, v| f.bearing.pads.clearance_um = Some(v),
     },
     Field {
-        num: Num { key: "bearing.pads.bore_radius_mm", label: "Pad bore radius Rp", unit: "mm", range: (10.0, 500.0), decimals: 4, tip: "Radius to which the pads are machined, Rp = R + Cp." },
+        num: Num { key: "bearing.pads.bore_radius_mm", label: "Pad bore radius Rp", decimals: 4 },
         get: |f| f.bearing.pads.bore_radius_mm.unwrap_or(0.0),
         set: |f, v| f.bearing.pads.bore_radius_mm = Some(v),
     },
@@ -110,71 +89,50 @@ const CLEARANCE: [Field; 3] = [
 
 const ARC_OFFSET: [Field; 2] = [
     Field {
-        num: Num { key: "bearing.pads.arc_deg", label: "Pad arc β", unit: "°", range: (20.0, 120.0), decimals: 2, tip: "Angular extent of each pad." },
+        num: Num { key: "bearing.pads.arc_deg", label: "Pad arc β", decimals: 2 },
         get: |f| f.bearing.pads.arc_deg.unwrap_or(0.0),
         set: |f, v| f.bearing.pads.arc_deg = Some(v),
     },
     Field {
-        num: Num {
-            key: "bearing.pads.offset",
-            label: "Pivot offset α",
-            unit: "–",
-            range: (0.4, 0.7),
-            decimals: 3,
-            tip: "Pivot position as a fraction of the arc from the leading edge: 0.5 is centred (either rotation direction), 0.6 is the common offset that raises the film thickness and lowers the temperature.",
-        },
+        num: Num { key: "bearing.pads.offset", label: "Pivot offset α", decimals: 3 },
         get: |f| f.bearing.pads.offset.unwrap_or(0.5),
         set: |f, v| f.bearing.pads.offset = Some(v),
     },
 ];
 
 const THICKNESS: Field = Field {
-    num: Num { key: "bearing.pads.thickness_mm", label: "Pad thickness t", unit: "mm", range: (3.0, 150.0), decimals: 3, tip: "Radial thickness of the pad; the pivot sits on its back, so t sets the lever of the tilt." },
+    num: Num { key: "bearing.pads.thickness_mm", label: "Pad thickness t", decimals: 3 },
     get: |f| f.bearing.pads.thickness_mm.unwrap_or(0.0),
     set: |f, v| f.bearing.pads.thickness_mm = Some(v),
 };
 
 const PAD_MATERIAL: [OptField; 5] = [
     OptField {
-        num: Num {
-            key: "bearing.pads.pivot_stiffness_n_per_m",
-            label: "Pivot stiffness",
-            unit: "N/m",
-            range: (1e6, 1e10),
-            decimals: 0,
-            tip: "Radial stiffness of the pivot contact (a rocker-back Hertz contact, a spring). Absent: rigid pivot. A soft pivot lowers the bearing's effective stiffness.",
-        },
+        num: Num { key: "bearing.pads.pivot_stiffness_n_per_m", label: "Pivot stiffness", decimals: 0 },
         default: 2e7,
         get: |f| f.bearing.pads.pivot_stiffness_n_per_m,
         set: |f, v| f.bearing.pads.pivot_stiffness_n_per_m = v,
     },
     OptField {
-        num: Num {
-            key: "bearing.pads.pivot_transverse_stiffness_n_per_m",
-            label: "Pivot transverse stiffness",
-            unit: "N/m",
-            range: (1e6, 1e10),
-            decimals: 0,
-            tip: "Stiffness of the pivot across the pivot line (a rocker's tangential contact). Absent: the pivot does not move sideways. A finite value adds the sideways pivot motion as a pad coordinate.",
-        },
+        num: Num { key: "bearing.pads.pivot_transverse_stiffness_n_per_m", label: "Pivot transverse stiffness", decimals: 0 },
         default: 1e8,
         get: |f| f.bearing.pads.pivot_transverse_stiffness_n_per_m,
         set: |f, v| f.bearing.pads.pivot_transverse_stiffness_n_per_m = v,
     },
     OptField {
-        num: Num { key: "bearing.pads.density_kg_per_m3", label: "Pad density", unit: "kg/m³", range: (1000.0, 9000.0), decimals: 0, tip: "Pad material density: sets the pad inertia that enters the frequency-dependent reduced coefficients." },
+        num: Num { key: "bearing.pads.density_kg_per_m3", label: "Pad density", decimals: 0 },
         default: 7800.0,
         get: |f| f.bearing.pads.density_kg_per_m3,
         set: |f, v| f.bearing.pads.density_kg_per_m3 = v,
     },
     OptField {
-        num: Num { key: "bearing.pads.youngs_modulus_gpa", label: "Young's modulus E", unit: "GPa", range: (70.0, 220.0), decimals: 1, tip: "Pad material stiffness, for the pad flexibility model (steel 200 GPa, brass about 100 GPa). Not used by rigid pads." },
+        num: Num { key: "bearing.pads.youngs_modulus_gpa", label: "Young's modulus E", decimals: 1 },
         default: 200.0,
         get: |f| f.bearing.pads.youngs_modulus_gpa,
         set: |f, v| f.bearing.pads.youngs_modulus_gpa = v,
     },
     OptField {
-        num: Num { key: "bearing.pads.poisson_ratio", label: "Poisson ratio ν", unit: "–", range: (0.25, 0.35), decimals: 3, tip: "Pad material Poisson ratio, for the pad flexibility model." },
+        num: Num { key: "bearing.pads.poisson_ratio", label: "Poisson ratio ν", decimals: 3 },
         default: 0.3,
         get: |f| f.bearing.pads.poisson_ratio,
         set: |f, v| f.bearing.pads.poisson_ratio = v,
@@ -202,14 +160,7 @@ fn set_pad_count(f: &mut CaseFile, n: usize) {
     }
 }
 
-const PIVOTS: Num<'static> = Num {
-    key: "bearing.pads.pivot_deg",
-    label: "Pivot angles",
-    unit: "°",
-    range: (0.0, 360.0),
-    decimals: 2,
-    tip: "Angle of each pad's pivot from +x (horizontal), counter-clockwise; the load usually acts at 270° (down). A pivot at 270° is load on pad, pivots at 225° and 315° load between pads.",
-};
+const PIVOTS: Num<'static> = Num { key: "bearing.pads.pivot_deg", label: "Pivot angles", decimals: 2 };
 
 fn pivots_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     match doc.file().bearing.pads.pivot_deg.clone() {
@@ -232,13 +183,13 @@ fn pivots_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
 pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let mut out = EditOutput::default();
     let n = pad_count(doc.file());
-    let count_tip = "How many pads share the circumference. Changing it makes the pivots evenly spaced from the first one.";
-    out.merge(count_ui(ui, doc, "bearing.pads.count", "Number of pads", count_tip, n, set_pad_count));
+    let note = "Changing it makes the pivots evenly spaced from the first one.";
+    out.merge(count_ui(ui, doc, "bearing.pads.count", "Number of pads", note, n, set_pad_count));
     let kind = doc.file().bearing.pads.kind.unwrap_or_default();
     out.merge(choice_ui(
         ui,
         doc,
-        Pick { key: "bearing.pads.kind", label: "Pad kind", tip: "Tilting pads rotate freely about their pivots (no cross-coupled stiffness from a symmetric bearing); fixed sectors do not tilt (lobed or plain bearings)." },
+        Pick { key: "bearing.pads.kind", label: "Pad kind", tip: None },
         kind,
         &[(PadKindFile::Tilting, "tilting"), (PadKindFile::Fixed, "fixed sector")],
         |f, k| f.bearing.pads.kind = Some(k),
@@ -250,7 +201,7 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(choice_ui(
         ui,
         doc,
-        Pick { key: "bearing.pads.clearance_input", label: "Pad geometry given by", tip: "The pads' machined clearance Cp may be given as the preload m = 1 − Cb/Cp, as Cp itself or as the pad bore radius Rp = R + Cp." },
+        Pick { key: "bearing.pads.clearance_input", label: "Pad geometry given by", tip: Some("The pads' machined clearance Cp may be given as the preload m = 1 − Cb/Cp, as Cp itself or as the pad bore radius Rp = R + Cp.") },
         mode,
         &[(ClearanceMode::Preload, "preload"), (ClearanceMode::Clearance, "pad clearance"), (ClearanceMode::BoreRadius, "pad bore radius")],
         set_clearance_mode,
@@ -265,13 +216,11 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out
 }
 
-/// A value of an orifice entry; its key is `bearing.pads.orifice[k].<field>`, as the validation names it.
+/// A value of an orifice entry; its key is `bearing.pads.orifice[k].<field>`, as the validation names it
+/// (unit, tooltip and drag range from the schema row `bearing.pads.orifice[].<field>`).
 struct OrificeRow {
     field: &'static str,
     label: &'static str,
-    unit: &'static str,
-    range: (f64, f64),
-    tip: &'static str,
     get: fn(&OrificeFile) -> f64,
     set: fn(&mut OrificeFile, f64),
 }
@@ -280,36 +229,24 @@ const ORIFICE_ROWS: [OrificeRow; 4] = [
     OrificeRow {
         field: "position_frac",
         label: "Position along arc",
-        unit: "–",
-        range: (0.1, 0.9),
-        tip: "Circumferential position of the orifice centre as a fraction of the arc from the leading edge. Injection near the leading edge lifts the pad's leading edge and cools the film.",
         get: |o| o.position_frac,
         set: |o, v| o.position_frac = v,
     },
     OrificeRow {
         field: "axial_frac",
         label: "Axial position",
-        unit: "–",
-        range: (0.2, 0.8),
-        tip: "Axial position as a fraction of the length; 0.5 is the mid-plane (the half model needs every orifice there).",
         get: |o| o.axial_frac.unwrap_or(0.5),
         set: |o, v| o.axial_frac = Some(v),
     },
     OrificeRow {
         field: "diameter_mm",
         label: "Diameter d0",
-        unit: "mm",
-        range: (1.0, 10.0),
-        tip: "Orifice diameter: the injected flow scales with d0⁴ (Hagen–Poiseuille).",
         get: |o| o.diameter_mm,
         set: |o, v| o.diameter_mm = v,
     },
     OrificeRow {
         field: "length_mm",
         label: "Capillary length l0",
-        unit: "mm",
-        range: (1.0, 20.0),
-        tip: "Length of the capillary through the pad: its hydraulic resistance, proportional to l0/d0⁴, throttles the injection.",
         get: |o| o.length_mm,
         set: |o, v| o.length_mm = v,
     },
@@ -335,7 +272,7 @@ pub fn orifices_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         ui.end_row();
         for row in &ORIFICE_ROWS {
             let key = format!("bearing.pads.orifice[{k}].{}", row.field);
-            let num = Num { key: &key, label: row.label, unit: row.unit, range: row.range, decimals: 3, tip: row.tip };
+            let num = Num { key: &key, label: row.label, decimals: 3 };
             let read = |f: &CaseFile| f.bearing.pads.orifice.as_ref().and_then(|l| l.get(k)).map_or(0.0, row.get);
             out.merge(number_ui(ui, doc, &num, read, |f, v| {
                 if let Some(o) = f.bearing.pads.orifice.as_mut().and_then(|l| l.get_mut(k)) {

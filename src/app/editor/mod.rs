@@ -28,7 +28,7 @@ const GROUPS: [(&str, GroupUi, bool); 8] = [
 pub fn editor_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let mut out = Grid::new("title")
         .num_columns(3)
-        .show(ui, |ui| operation::text_ui(ui, doc, "title", "Title", "Free text shown in results and exports.", |f| f.title.clone(), |f, v| f.title = v))
+        .show(ui, |ui| operation::text_ui(ui, doc, "title", "Title", |f| f.title.clone(), |f, v| f.title = v))
         .inner;
     if let Err(e) = doc.validation() {
         ui.label(RichText::new(format!("Invalid case: {e}")).color(widgets::ERROR_COLOR))
@@ -42,4 +42,29 @@ pub fn editor_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    /// Every case key an editor row names has a schema row (its unit, tooltip and drag range come from
+    /// there); only the editor's own choices (how a value is given) have none.
+    #[test]
+    fn every_editor_key_has_a_schema_row() {
+        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs")];
+        let mut keys = 0;
+        for src in sources {
+            for part in src.split("key: \"").skip(1) {
+                let key = part.split('"').next().unwrap_or_default();
+                if matches!(key, "bearing.pads.clearance_input" | "operating.load_mode") {
+                    continue;
+                }
+                assert!(crate::model::schema::spec(key).is_some(), "editor key `{key}` has no schema row");
+                keys += 1;
+            }
+        }
+        for key in ["mesh.circumferential_elements", "bearing.pads.orifice[0].diameter_mm", "title", "lubricant.name", "bearing.pads.count"] {
+            assert!(crate::model::schema::spec(key).is_some(), "{key}");
+        }
+        assert!(keys > 40, "found only {keys} editor keys");
+    }
 }

@@ -5,33 +5,59 @@
 //! would start a solve for each intermediate number). Values are not clamped to their sensible range: a user may type anything, and the validation of the
 //! case (the same checks as the CLI) says what is wrong, next to the field. The sensible range sets the
 //! drag speed and is shown in the tooltip.
+//!
+//! A row's unit, tooltip (physical meaning, typical and allowed values) and drag range come from the case
+//! schema ([`crate::model::schema`]) by key, the same table `tiltpad schema` prints; a row here only adds
+//! its label and display precision.
 
 use egui::{Color32, DragValue, RichText, Ui};
 
 use crate::app::document::Document;
+use crate::model::schema::{spec, KeySpec};
 use crate::model::CaseFile;
 
-/// A numeric case value as the editor shows it.
+/// A numeric case value as the editor shows it; unit, meaning and typical range are the schema's.
 #[derive(Debug, Clone, Copy)]
 pub struct Num<'a> {
-    /// Dotted key as written in the case file.
+    /// Dotted key as written in the case file (a schema key, indices allowed).
     pub key: &'a str,
     pub label: &'a str,
-    pub unit: &'a str,
-    /// Sensible range (for dragging and the tooltip, not enforced).
-    pub range: (f64, f64),
     pub decimals: usize,
-    /// Physical meaning.
-    pub tip: &'a str,
+}
+
+/// The schema row of a key the editor shows (every editor key has one: a unit test checks them).
+fn schema_row(key: &str) -> Option<&'static KeySpec> {
+    spec(key)
+}
+
+/// The tooltip of a case key: its meaning, typical and allowed values, and the key itself.
+#[must_use]
+pub fn key_tooltip(key: &str) -> String {
+    match schema_row(key) {
+        Some(s) => {
+            let unit = if s.unit.is_empty() { String::new() } else { format!(" {}", s.unit) };
+            let typical = s.typical.map_or_else(String::new, |(lo, hi)| format!("Typical: {lo} – {hi}{unit}\n"));
+            format!("{}\n\n{typical}Allowed: {}\nCase key: {key}", s.meaning, s.allowed.describe())
+        }
+        None => format!("Case key: {key}"),
+    }
 }
 
 impl Num<'_> {
-    fn tooltip(&self) -> String {
-        format!("{}\n\nTypical: {} – {} {}\nCase key: {}", self.tip, self.range.0, self.range.1, self.unit, self.key)
+    /// Unit of the value, as the schema gives it.
+    #[must_use]
+    pub fn unit(&self) -> &'static str {
+        schema_row(self.key).map_or("", |s| s.unit)
     }
 
+    fn tooltip(&self) -> String {
+        key_tooltip(self.key)
+    }
+
+    /// Drag speed: a 400th of the typical range.
     fn speed(&self) -> f64 {
-        (self.range.1 - self.range.0) / 400.0
+        let (lo, hi) = schema_row(self.key).and_then(|s| s.typical).unwrap_or((0.0, 1.0));
+        (hi - lo) / 400.0
     }
 }
 
@@ -146,7 +172,7 @@ pub fn number_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, get: impl Fn(&Cas
     let label = label_ui(ui, n.label, &n.tooltip());
     let value = get(doc.file());
     let out = drag_ui(ui, doc, n, label, value, set);
-    ui.label(n.unit);
+    ui.label(n.unit());
     ui.end_row();
     error_row_ui(ui, doc, n.key);
     out
@@ -166,7 +192,7 @@ pub fn optional_ui(
     let mut out = EditOutput::default();
     let label = ui
         .horizontal(|ui| {
-            if ui.checkbox(&mut on, "").on_hover_text(format!("Give {} explicitly (unchecked: {default} {})", n.label, n.unit)).changed() {
+            if ui.checkbox(&mut on, "").on_hover_text(format!("Give {} explicitly (unchecked: {default} {})", n.label, n.unit())).changed() {
                 let value = on.then(|| current.unwrap_or(default));
                 doc.edit(n.key, false, |f| set(f, value));
                 out.changed = true;
@@ -181,25 +207,27 @@ pub fn optional_ui(
             ui.label(RichText::new(text).weak()).labelled_by(label.id);
         }
     }
-    ui.label(n.unit);
+    ui.label(n.unit());
     ui.end_row();
     error_row_ui(ui, doc, n.key);
     out
 }
 
-/// What leaving out a key means, for keys whose absence is not a default number.
+/// What leaving out a key means, for keys whose absence is not a default number (the schema's words).
 fn absent_meaning(key: &str) -> Option<&'static str> {
     match key {
-        "bearing.pads.pivot_stiffness_n_per_m" | "bearing.pads.pivot_transverse_stiffness_n_per_m" => Some("rigid pivot"),
-        "thermal.inlet_temperature_c" => Some("from the groove mixing"),
-        "thermal.journal_temperature_c" => Some("from zero net heat flux"),
+        "bearing.pads.pivot_stiffness_n_per_m"
+        | "bearing.pads.pivot_transverse_stiffness_n_per_m"
+        | "thermal.inlet_temperature_c"
+        | "thermal.journal_temperature_c" => schema_row(key).map(|s| s.default),
         _ => None,
     }
 }
 
-/// An integer count (pads, elements).
-pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, tip: &str, value: usize, set: impl FnOnce(&mut CaseFile, usize)) -> EditOutput {
-    let label = label_ui(ui, text, tip);
+/// An integer count (pads, elements); `note` adds what the editor does on a change to the schema's tooltip.
+pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, note: &str, value: usize, set: impl FnOnce(&mut CaseFile, usize)) -> EditOutput {
+    let tip = format!("{}\n\n{note}", key_tooltip(key));
+    let label = label_ui(ui, text, &tip);
     let mut v = value;
     let invalid = doc.error_for(key).is_some();
     let r = ui
@@ -209,7 +237,7 @@ pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, 
         })
         .inner
         .labelled_by(label.id)
-        .on_hover_text(tip);
+        .on_hover_text(&tip);
     let mut out = EditOutput { dragging: r.dragged(), drag_released: r.drag_stopped(), ..EditOutput::default() };
     if v != value {
         doc.edit(key, r.dragged() && !r.drag_started(), |f| set(f, v));
@@ -231,24 +259,26 @@ pub fn per_pad_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, values: &[f64], 
             out.merge(drag_ui(ui, doc, n, pad_label, value, |f, x| set(f, k, x)));
         }
     });
-    ui.label(n.unit);
+    ui.label(n.unit());
     ui.end_row();
     error_row_ui(ui, doc, n.key);
     out
 }
 
-/// A choice of the case file: its key (for undo grouping and errors), label and meaning.
+/// A choice of the case file: its key (for undo grouping and errors) and label; its meaning is the
+/// schema's, or `tip` for a choice that is the editor's own (how a value is given, not a case key).
 #[derive(Debug, Clone, Copy)]
 pub struct Pick {
     pub key: &'static str,
     pub label: &'static str,
-    pub tip: &'static str,
+    pub tip: Option<&'static str>,
 }
 
 /// A choice among named options.
 pub fn choice_ui<T: PartialEq + Copy>(ui: &mut Ui, doc: &mut Document, pick: Pick, current: T, options: &[(T, &str)], set: impl FnOnce(&mut CaseFile, T)) -> EditOutput {
     let Pick { key, label: text, tip } = pick;
-    let label = label_ui(ui, text, tip);
+    let tip = tip.map_or_else(|| key_tooltip(key), str::to_string);
+    let label = label_ui(ui, text, &tip);
     let mut chosen = current;
     let name = options.iter().find(|o| o.0 == current).map_or("?", |o| o.1);
     egui::ComboBox::from_id_salt(key).selected_text(name).show_ui(ui, |ui| {
@@ -258,7 +288,7 @@ pub fn choice_ui<T: PartialEq + Copy>(ui: &mut Ui, doc: &mut Document, pick: Pic
     })
     .response
     .labelled_by(label.id)
-    .on_hover_text(tip);
+    .on_hover_text(&tip);
     let mut out = EditOutput::default();
     if chosen != current {
         doc.edit(key, false, |f| set(f, chosen));

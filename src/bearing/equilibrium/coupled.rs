@@ -154,7 +154,10 @@ fn recheck_unloaded(model: &mut BearingModel, u: &mut [f64], states: &mut [PadSt
             continue;
         }
         rechecked[k] = true;
-        states[k] = replace_pad(model, k, u, ctx)?;
+        ctx.thorough_onset = true;
+        let placed = replace_pad(model, k, u, ctx);
+        ctx.thorough_onset = false;
+        states[k] = placed?;
         loaded_again |= ctx.share(&states[k]) >= UNLOADED_SHARE;
     }
     Ok(loaded_again)

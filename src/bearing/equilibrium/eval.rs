@@ -53,6 +53,9 @@ pub(crate) struct Ctx<'a> {
     pub report: SolveReport,
     /// Along the load, the film closed before the force balanced: (pad, thinnest film [m], ε) there.
     pub closes_before_balance: Option<(usize, f64, f64)>,
+    /// Pads found at the onset of pressure are searched for a loaded root further on (the final
+    /// placements; see `pad::loaded_root_beyond`).
+    pub thorough_onset: bool,
     /// Film solves allowed in total.
     budget: usize,
     started: Instant,
@@ -61,7 +64,7 @@ pub(crate) struct Ctx<'a> {
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
-        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, budget, started }
+        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, thorough_onset: false, budget, started }
     }
 
     /// Seconds since the solve started.

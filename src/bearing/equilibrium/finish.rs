@@ -34,6 +34,14 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
     ctx.report.residual = if matches!(op.load, LoadSpec::Force { .. }) { (force[0] + w[0]).hypot(force[1] + w[1]) / ctx.force_scale } else { 0.0 };
     ctx.report.method = method;
     for (k, p) in pads.iter_mut().enumerate() {
+        // The films must hold the returned state (a search may have evaluated a pad elsewhere last).
+        let local = model.local(k, &u);
+        if model.pads[k].film.coordinates() != local.as_slice() {
+            let film = &mut model.pads[k].film;
+            film.set_coordinates(&local).map_err(|e| SolveError::Film { pad: k, source: e })?;
+            film.solve(&op.film_inputs(k), true).map_err(|e| SolveError::Film { pad: k, source: e })?;
+            ctx.report.film_solves += 1;
+        }
         let share = ctx.share(p);
         let film = &mut model.pads[k].film;
         if share < FLOATING_SHARE {

@@ -151,6 +151,11 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
             onset_pts = if onset { [Some((d, share)), onset_pts[0]] } else { [None, None] };
         }
         if let Some(f) = free.as_ref().filter(|_| onset_pts[0].is_some() && bhi - blo <= width) {
+            if ctx.thorough_onset {
+                if let Some(st) = loaded_root_beyond(pm, k, &local, slot, bhi, hi - margin, ctx)? {
+                    return Ok(st);
+                }
+            }
             return Ok(PadState { unloaded: true, residual: 0.0, ..f.clone() });
         }
         let inside = |x: f64| x > blo && x < bhi;
@@ -201,6 +206,82 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
         d = next;
     }
     last.map(|s| if s.unloaded { PadState { residual: 0.0, ..s } } else { s }).ok_or_else(|| FilmError::Input("no tilt iteration".into()))
+}
+
+/// Tilt samples across the loaded side when looking for a loaded root beyond the onset of pressure.
+const LOADED_ROOT_SAMPLES: usize = 12;
+
+/// One evaluation of the tilt moment residual `r` and its slope `dr/dδ` at tilt `d`.
+fn moment_at(pm: &mut PadModel, k: usize, local: &mut [f64], slot: usize, d: f64, ctx: &mut Ctx<'_>) -> Result<(f64, f64, PadState), FilmError> {
+    let t = slot - JOURNAL_DOFS;
+    local[slot] = d;
+    let (forces, lin) = eval_pad(pm, k, local, ctx)?;
+    let r = forces[slot] - structural_force(pm, &local[JOURNAL_DOFS..], t);
+    let slope = -(lin.stiffness[(slot, slot)] + pm.structure.stiffness[(t, t)]);
+    let rel = relative(r, pad_scales(pm, &forces, ctx.force_scale)[t]);
+    let share = forces[0].hypot(forces[1]) / ctx.force_scale;
+    Ok((r, slope, PadState { q: local[JOURNAL_DOFS..].to_vec(), forces, lin, unloaded: share < UNLOADED_SHARE, residual: rel }))
+}
+
+/// A pad whose moment pushes it back just past the onset of pressure may still have a loaded root further
+/// on, where the moment rises through zero and falls again (a lightly loaded preloaded pad near a fold:
+/// two stable states, floating and loaded). The floating state is only neutrally stable (no moment on its
+/// pressure-free side), so the loaded root is preferred when it exists — a deterministic choice whatever the
+/// starting point. The loaded side `(from, to)` is sampled for a positive moment or a local maximum of the
+/// moment (slope changing sign), and the falling root after it is bracketed and solved.
+fn loaded_root_beyond(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, from: f64, to: f64, ctx: &mut Ctx<'_>) -> Result<Option<PadState>, FilmError> {
+    let mut local = local.to_vec();
+    let step = (to - from) / (LOADED_ROOT_SAMPLES + 1) as f64;
+    let mut prev: Option<(f64, f64, f64)> = None;
+    let mut positive: Option<f64> = None;
+    for i in 1..=LOADED_ROOT_SAMPLES {
+        let d = from + step * i as f64;
+        let (r, slope, _) = moment_at(pm, k, &mut local, slot, d, ctx)?;
+        if r > 0.0 {
+            positive = Some(d);
+            break;
+        }
+        if let Some((dp, rp, sp)) = prev {
+            if sp > 0.0 && slope <= 0.0 {
+                // A local maximum of the moment between dp and d: refine it by secant on the slope.
+                let (mut a, mut sa, mut b, mut sb) = (dp, sp, d, slope);
+                let mut best = rp.max(r);
+                for _ in 0..6 {
+                    let x = if sa != sb { a - sa * (b - a) / (sb - sa) } else { 0.5 * (a + b) };
+                    let x = if x > a && x < b { x } else { 0.5 * (a + b) };
+                    let (rx, sx, _) = moment_at(pm, k, &mut local, slot, x, ctx)?;
+                    best = best.max(rx);
+                    if rx > 0.0 {
+                        positive = Some(x);
+                        break;
+                    }
+                    if sx > 0.0 { (a, sa) = (x, sx) } else { (b, sb) = (x, sx) }
+                }
+                if positive.is_some() || best < 0.0 {
+                    break;
+                }
+            }
+        }
+        prev = Some((d, r, slope));
+    }
+    let Some(mut a) = positive else { return Ok(None) };
+    // The falling root after the positive point: Newton inside a bracket [a (r > 0), b (r < 0)].
+    let mut b = to;
+    let mut x = a + 0.5 * step;
+    for _ in 0..ctx.params.max_inner_iterations {
+        ctx.report.inner_iterations += 1;
+        let (r, slope, st) = moment_at(pm, k, &mut local, slot, x, ctx)?;
+        if st.residual <= ctx.params.pad_tol && !st.unloaded {
+            return Ok(Some(st));
+        }
+        if r > 0.0 { a = x } else { b = x }
+        let newton = if slope < 0.0 { x - r / slope } else { f64::NAN };
+        x = if newton > a && newton < b { newton } else { 0.5 * (a + b) };
+        if b - a <= 1e-13 * (to - from) {
+            return Ok((!st.unloaded).then_some(st));
+        }
+    }
+    Ok(None)
 }
 
 /// Tilt-condensed stiffness of the pad coordinates `others` (film + structure), `K_oo − K_ot K_tt⁻¹ K_to`.

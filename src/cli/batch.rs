@@ -1,0 +1,60 @@
+//! `tiltpad batch DESIGNS.csv --case BASE.toml`: one solve per design (any case keys as columns), each
+//! from scratch so that a row does not depend on the rows before it; `--shard I/N` runs the I-th of N
+//! blocks, for GNU parallel or a Slurm job array (see the README). Rows carry the design's number, its
+//! inputs and its results (or its error), in CSV and/or JSON lines, written as they complete.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+
+use crate::study::{Designs, Runner, Shard};
+
+use super::rows::RowSink;
+use super::sweep::progress;
+
+/// What to run and where the rows go.
+pub struct BatchArgs<'a> {
+    pub designs: &'a Path,
+    pub case: &'a Path,
+    pub set: &'a [String],
+    pub shard: Shard,
+    pub csv: Option<PathBuf>,
+    pub jsonl: Option<PathBuf>,
+}
+
+/// Runs the shard.
+///
+/// # Errors
+/// Unreadable inputs, a bad designs table, an output that cannot be written, or every design failed.
+pub fn run(args: &BatchArgs<'_>) -> Result<()> {
+    let table = std::fs::read_to_string(args.designs).with_context(|| format!("cannot read designs table {}", args.designs.display()))?;
+    let designs = Designs::parse(&table).with_context(|| format!("in {}", args.designs.display()))?;
+    let text = std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let range = args.shard.range(designs.rows.len());
+    let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
+    let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "design", &designs.keys)?;
+    let mut runner = Runner::new(text, args.set.to_vec(), false);
+    let pb = progress(range.len());
+    let mut failed = 0;
+    for i in range.clone() {
+        // Every key of the table is a column, in header order, empty where the design keeps the base value.
+        let given = &designs.rows[i];
+        let (mut row, _) = runner.row(i, given);
+        row.inputs = designs.keys.iter().map(|k| (k.clone(), given.iter().find(|(g, _)| g == k).map(|(_, v)| v.clone()).unwrap_or_default())).collect();
+        if row.result.is_err() {
+            failed += 1;
+            pb.println(format!("design {i}: {}", row.error_text()));
+        }
+        sink.write(&row)?;
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    sink.finish()?;
+    if !range.is_empty() && failed == range.len() {
+        bail!("every design of this shard failed ({failed} of {failed}); the rows say why");
+    }
+    if failed > 0 {
+        eprintln!("{failed} of {} designs failed; their rows hold the error", range.len());
+    }
+    Ok(())
+}

@@ -1,0 +1,37 @@
+//! Studies: many solves of one base case, each with some case keys changed — a sweep over a grid of any
+//! keys ([`grid`]), or a design-space batch read from a table ([`designs`]) — and the table of results,
+//! one row per point ([`columns`], [`run`]).
+//!
+//! Contract: a study never stops at a bad point. Each point yields a [`Row`] holding either the output
+//! columns (SI or engineering units, the unit in each column name; empty where a quantity does not exist,
+//! such as temperatures of an isothermal solve) or the error that point met (an invalid value, a
+//! touchdown, a non-converged solve). Rows come out one at a time, in order, so a caller can write each
+//! as it completes. No I/O and no GUI here: the command line (`tiltpad sweep`, `tiltpad batch`) drives
+//! it, and the workbench's "any input against any output" sweep can reuse it.
+//!
+//! Determinism: with warm starts off (batches), a row depends only on the base case and its own
+//! overrides, so a batch split into shards gives the same rows as one run; only the `seconds` column (wall
+//! time) differs between runs.
+
+pub mod columns;
+pub mod designs;
+pub mod grid;
+pub mod run;
+
+pub use columns::{Column, COLUMNS};
+pub use designs::{Designs, Shard};
+pub use grid::Axis;
+pub use run::{PointError, Row, Runner};
+
+use thiserror::Error;
+
+/// A study that cannot start (its description is wrong); errors of single points are in their [`Row`].
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum StudyError {
+    #[error("`--vary {spec}`: {message}")]
+    BadAxis { spec: String, message: String },
+    #[error("designs table, line {line}: {message}")]
+    BadDesigns { line: usize, message: String },
+    #[error("`--shard {spec}`: {message}")]
+    BadShard { spec: String, message: String },
+}

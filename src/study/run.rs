@@ -1,0 +1,221 @@
+//! Solving the points of a study, one [`Row`] per point.
+//!
+//! A [`Runner`] holds the base case text and its `--set` overrides. Each point's overrides are applied on
+//! top, the case is validated and solved. The bearing model (meshes, symbolic factorisations) and the
+//! thermal model are reused while the geometry, mesh, lubricant and thermal settings stay the same. With
+//! warm starts (sweeps) a point starts from the previous point's equilibrium and, if that fails, once more
+//! from scratch; without them (batches) every point is solved from scratch, so its row does not depend on
+//! which points came before it.
+
+use web_time::Instant;
+
+use crate::bearing::{solve_point, BearingModel, NoCancel, SolveError, Solution, ThermalModel};
+use crate::model::{load_case, Case, CaseError};
+
+use super::columns::{outputs, COLUMNS};
+
+/// Why one point has no results.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PointError {
+    #[error(transparent)]
+    Case(#[from] CaseError),
+    #[error(transparent)]
+    Solve(#[from] SolveError),
+}
+
+/// One row of a study: the point's index and overrides, and its output cells or its error.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    pub index: usize,
+    /// The point's `(key, value)` overrides, as given.
+    pub inputs: Vec<(String, String)>,
+    /// Output cells in [`COLUMNS`] order, or the error.
+    pub result: Result<Vec<Option<f64>>, PointError>,
+    /// Wall time of the point [s] (the only column that differs from run to run).
+    pub seconds: f64,
+}
+
+fn cell(v: Option<f64>) -> String {
+    v.map_or_else(String::new, |x| format!("{x:?}"))
+}
+
+/// A `--set` value as JSON: numbers, lists and words as TOML reads them.
+fn json_value(raw: &str) -> serde_json::Value {
+    let parsed = format!("v = {raw}").parse::<toml::Table>().ok().and_then(|mut t| t.remove("v"));
+    parsed.and_then(|v| serde_json::to_value(v).ok()).unwrap_or_else(|| serde_json::Value::String(raw.to_string()))
+}
+
+impl Row {
+    /// CSV header: the index column, the input keys, the output columns, `seconds`, `error`.
+    #[must_use]
+    pub fn header(index_name: &str, input_keys: &[String]) -> Vec<String> {
+        let mut h = vec![index_name.to_string()];
+        h.extend(input_keys.iter().cloned());
+        h.extend(COLUMNS.iter().map(|c| c.name.to_string()));
+        h.push("seconds".into());
+        h.push("error".into());
+        h
+    }
+
+    /// The row's CSV cells (empty output cells for a failed point, the error in the last cell).
+    #[must_use]
+    pub fn record(&self) -> Vec<String> {
+        let mut r = vec![self.index.to_string()];
+        r.extend(self.inputs.iter().map(|(_, v)| v.clone()));
+        match &self.result {
+            Ok(cells) => r.extend(cells.iter().map(|&c| cell(c))),
+            Err(_) => r.extend(std::iter::repeat_n(String::new(), COLUMNS.len())),
+        }
+        r.push(format!("{:?}", self.seconds));
+        r.push(self.error_text());
+        r
+    }
+
+    /// The error message on one line (empty for a solved point).
+    #[must_use]
+    pub fn error_text(&self) -> String {
+        self.result.as_ref().err().map_or_else(String::new, |e| e.to_string().replace(['\n', '\r'], " "))
+    }
+
+    /// The row as one JSON object (a JSON-lines record): index, inputs, outputs, seconds, error.
+    #[must_use]
+    pub fn json(&self, index_name: &str) -> serde_json::Value {
+        let inputs: serde_json::Map<String, serde_json::Value> = self.inputs.iter().map(|(k, v)| (k.clone(), json_value(v))).collect();
+        let outputs: serde_json::Map<String, serde_json::Value> = match &self.result {
+            Ok(cells) => COLUMNS.iter().zip(cells).map(|(c, v)| (c.name.to_string(), v.map_or(serde_json::Value::Null, serde_json::Value::from))).collect(),
+            Err(_) => serde_json::Map::new(),
+        };
+        let error = self.result.as_ref().err().map(ToString::to_string);
+        let mut obj = serde_json::Map::new();
+        obj.insert(index_name.to_string(), self.index.into());
+        obj.insert("inputs".into(), inputs.into());
+        obj.insert("outputs".into(), outputs.into());
+        obj.insert("seconds".into(), self.seconds.into());
+        obj.insert("error".into(), error.into());
+        serde_json::Value::Object(obj)
+    }
+}
+
+/// Solves points of one base case.
+pub struct Runner {
+    text: String,
+    base: Vec<String>,
+    warm: bool,
+    model: Option<(BearingModel, String)>,
+    thermal: Option<(ThermalModel, String)>,
+    start: Option<Vec<f64>>,
+}
+
+impl Runner {
+    /// A runner for the case `text` with `base` overrides (`key=value`); `warm`: start each point from the
+    /// previous equilibrium.
+    #[must_use]
+    pub fn new(text: impl Into<String>, base: Vec<String>, warm: bool) -> Self {
+        Self { text: text.into(), base, warm, model: None, thermal: None, start: None }
+    }
+
+    /// The validated case of a point.
+    ///
+    /// # Errors
+    /// Syntax, unknown keys and every validation failure of the point's values.
+    pub fn case(&self, overrides: &[(String, String)]) -> Result<Case, CaseError> {
+        let mut set = self.base.clone();
+        set.extend(overrides.iter().map(|(k, v)| format!("{k}={v}")));
+        Ok(load_case(&self.text, &set)?.1)
+    }
+
+    /// Solves one point.
+    ///
+    /// # Errors
+    /// The point's case error or solve error.
+    pub fn solve(&mut self, overrides: &[(String, String)]) -> Result<Solution, PointError> {
+        let case = self.case(overrides)?;
+        let model_key = format!("{:?}{:?}", case.bearing, case.mesh);
+        if self.model.as_ref().map(|m| &m.1) != Some(&model_key) {
+            self.model = Some((BearingModel::new(&case)?, model_key.clone()));
+            self.thermal = None;
+            self.start = None;
+        }
+        let thermal_key = format!("{model_key}{:?}{:?}", case.lubricant, case.thermal);
+        if self.thermal.as_ref().is_some_and(|t| t.1 != thermal_key) {
+            self.thermal = None;
+        }
+        let start = if self.warm { self.start.take() } else { None };
+        let warm = start.is_some();
+        let mut result = self.solve_with(&case, &thermal_key, start.as_deref());
+        if result.is_err() && warm {
+            result = self.solve_with(&case, &thermal_key, None);
+        }
+        if let Ok(s) = &result {
+            self.start = self.warm.then(|| s.coordinates.clone());
+        }
+        result.map_err(PointError::from)
+    }
+
+    fn solve_with(&mut self, case: &Case, thermal_key: &str, start: Option<&[f64]>) -> Result<Solution, SolveError> {
+        let Some((model, _)) = self.model.as_mut() else { return Err(SolveError::Invalid("no bearing model".into())) };
+        let mut thermal = self.thermal.take().map(|t| t.0);
+        let result = solve_point(model, &mut thermal, case, start, &NoCancel);
+        self.thermal = thermal.map(|t| (t, thermal_key.to_string()));
+        result
+    }
+
+    /// Solves one point and makes its row; the solution too when there is one (for field exports).
+    pub fn row(&mut self, index: usize, overrides: &[(String, String)]) -> (Row, Option<Solution>) {
+        let t0 = Instant::now();
+        let result = self.solve(overrides);
+        let seconds = t0.elapsed().as_secs_f64();
+        let (result, solution) = match result {
+            Ok(s) => (Ok(outputs(&s)), Some(s)),
+            Err(e) => (Err(e), None),
+        };
+        (Row { index, inputs: overrides.to_vec(), result, seconds }, solution)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::columns::column;
+
+    fn runner(warm: bool) -> Runner {
+        Runner::new(include_str!("../../cases/compressor-bearing.toml"), vec!["mesh.fidelity=\"preview\"".into()], warm)
+    }
+
+    fn value(row: &Row, name: &str) -> Option<f64> {
+        let k = COLUMNS.iter().position(|c| c.name == name).unwrap();
+        row.result.as_ref().unwrap()[k]
+    }
+
+    #[test]
+    fn a_bad_point_is_a_row_with_its_error_and_the_next_point_still_solves() {
+        let mut r = runner(true);
+        let p = |v: &str| vec![("operating.speed_rpm".to_string(), v.to_string())];
+        let (a, _) = r.row(0, &p("6000.0"));
+        let (bad, none) = r.row(1, &p("-5.0"));
+        let (c, sol) = r.row(2, &p("8000.0"));
+        assert!(none.is_none() && sol.is_some());
+        let msg = bad.error_text();
+        assert!(msg.contains("operating.speed_rpm") && msg.contains("-5"), "{msg}");
+        assert!(bad.record().last().unwrap().contains("operating.speed_rpm"));
+        // Faster journal, thicker film.
+        assert!(value(&a, "eccentricity_ratio").unwrap() > value(&c, "eccentricity_ratio").unwrap());
+        // Isothermal: no temperatures, empty cells.
+        assert_eq!(value(&a, "t_max_film_c"), None);
+        let rec = a.record();
+        let k = 2 + COLUMNS.iter().position(|c| c.name == "t_max_film_c").unwrap();
+        assert_eq!(rec[k], "");
+        assert!(column("h_min_um").is_some());
+    }
+
+    #[test]
+    fn cold_rows_do_not_depend_on_the_rows_before_them() {
+        let p = |v: &str| vec![("bearing.pads.preload".to_string(), v.to_string()), ("bearing.pads.bore_radius_mm".to_string(), String::new())];
+        let mut alone = runner(false);
+        let (x, _) = alone.row(0, &p("0.3"));
+        let mut after = runner(false);
+        let _ = after.row(0, &p("0.1"));
+        let (y, _) = after.row(0, &p("0.3"));
+        assert_eq!(x.result, y.result);
+    }
+}
