@@ -134,7 +134,7 @@ fn place_hard_pads(model: &mut BearingModel, u: &mut [f64], states: &mut [PadSta
     for k in 0..model.pads.len() {
         let pm = &model.pads[k];
         let nd = pm.dofs().len();
-        if nd == 0 || ctx.held(k) {
+        if nd == 0 || (ctx.held(k) && states[k].unloaded) {
             continue;
         }
         let own_ok = (0..nd).all(|d| states[k].lin.stiffness[(JOURNAL_DOFS + d, JOURNAL_DOFS + d)] + pm.structure.stiffness[(d, d)] > 0.0);

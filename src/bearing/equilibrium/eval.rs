@@ -101,7 +101,8 @@ impl<'a> Ctx<'a> {
         f[0].hypot(f[1]) / self.force_scale
     }
 
-    /// The pad's coordinates are held at their start values (an outer thermal loop holds unloaded pads).
+    /// The pad's coordinates are held at their start values while it carries no load (an outer thermal loop
+    /// holds unloaded pads, so that they cannot flip between equivalent pressure-free states).
     pub fn held(&self, k: usize) -> bool {
         self.op.held_pads.get(k).copied().unwrap_or(false)
     }
@@ -237,9 +238,9 @@ pub(super) fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -
         let sc = pad_scales(pm, &forces, ctx.force_scale);
         let residual = (0..q.len()).map(|d| relative(forces[JOURNAL_DOFS + d] - structural_force(pm, &q, d), sc[d])).fold(0.0, f64::max);
         let mut st = PadState { q, forces, lin, unloaded: false, residual };
-        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load); a held pad is
-        // treated as unloaded (its coordinates are not solved for).
-        st.unloaded = ctx.share(&st) < UNLOADED_SHARE || ctx.held(k);
+        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load); a held pad
+        // that picks up load is solved like any other.
+        st.unloaded = ctx.share(&st) < UNLOADED_SHARE;
         if st.unloaded {
             st.residual = 0.0;
         }

@@ -37,17 +37,21 @@ pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cance
         Ok(f) => return Ok(f),
         Err(s) => ctx.report.warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
     }
-    match named(super::polar::polar_search(model, ctx, cancel)?, "polar bracketing search") {
+    // The searches below start from a centred journal, with the pads where `u0` has them (pads held by an
+    // outer thermal loop keep their coordinates).
+    let mut centred = u0.to_vec();
+    centred[..2].fill(0.0);
+    match named(super::polar::polar_search(model, &centred, ctx, cancel)?, "polar bracketing search") {
         Ok(f) => return Ok(f),
         Err(s) => ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason)),
     }
-    if let Some(u_scan) = scan_along_load(model, ctx, cancel)? {
+    if let Some(u_scan) = scan_along_load(model, &centred, ctx, cancel)? {
         match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, "scan along the load + Newton") {
             Ok(f) => return Ok(f),
             Err(s) => ctx.report.warn(format!("Newton after the load-direction scan failed ({}); using load continuation", s.reason)),
         }
     }
-    continuation(model, ctx, cancel)
+    continuation(model, &centred, ctx, cancel)
 }
 
 /// Newton on the journal position for load fraction `fraction`, from `u0`.
@@ -61,7 +65,7 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
         Err((_, FilmError::Contact { .. })) => {
             // Start from the centre if the guess closes a film.
             journal = [0.0, 0.0];
-            u.iter_mut().for_each(|v| *v = 0.0);
+            u[..2].fill(0.0);
             solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| ctx.film_error(k, e))?
         }
         Err((k, e)) => return Err(ctx.film_error(k, e)),
@@ -119,14 +123,14 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
 
 /// Walks the journal along the load direction from the centre in steps of 0.1 Cb until the residual along
 /// the load changes sign with a restoring slope; returns the coordinates there (or `None`).
-fn scan_along_load(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Option<Vec<f64>>, SolveError> {
+fn scan_along_load(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Option<Vec<f64>>, SolveError> {
     let w = external_load(ctx.op, 1.0);
     let dir = load_direction(ctx.op);
     if dir == [0.0, 0.0] {
         return Ok(None);
     }
     let cb = model.assembled_clearance;
-    let mut u = vec![0.0; model.n_dofs()];
+    let mut u = centred.to_vec();
     let mut prev: Option<(f64, Vec<f64>)> = None;
     for i in 0..=SCAN_STEPS {
         if cancel.cancelled() {
@@ -151,9 +155,9 @@ fn scan_along_load(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Can
 }
 
 /// Load continuation from a centred journal; touchdown when a step fails with a film nearly closed.
-fn continuation(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
+fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
     let cb = model.assembled_clearance;
-    let mut u = vec![0.0; model.n_dofs()];
+    let mut u = centred.to_vec();
     let mut last = Stall { journal: [0.0; 2], residual: 0.0, reason: String::new() };
     for s in 1..=CONTINUATION_STEPS {
         #[allow(clippy::cast_precision_loss)]
