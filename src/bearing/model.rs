@@ -60,7 +60,7 @@ impl BearingModel {
                 .map(|o| LocalOrifice { s0: (o.angle_rad - pad.leading_edge_rad) * r, z0: o.axial_m, diameter: o.diameter_m, length: o.length_m })
                 .collect();
             let geom = FilmGeometry::new(grid, r, pad.leading_edge_rad, &orifices, &shape);
-            let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, source: e })?;
+            let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, error: e })?;
             pads.push(PadModel { film, structure });
         }
         let dofs = DofMap::new(pads.iter().map(|p| p.structure.dofs.clone()).collect());

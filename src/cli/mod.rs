@@ -15,6 +15,8 @@ mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
+mod convergence_map;
+#[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
 #[cfg(not(target_arch = "wasm32"))]
@@ -150,6 +152,23 @@ pub enum Command {
         #[arg(long, default_value = ".")]
         root: PathBuf,
     },
+    /// Convergence map of the equilibrium: every shipped case and a generated family of bearings, load
+    /// direction every 5° × Sommerfeld number 10 … 0.01; counts converged / physical error / failure (run in
+    /// --release; about half an hour on two cores).
+    ConvergenceMap {
+        /// Directions every 30° and the 4-pad family only (a quick check).
+        #[arg(long)]
+        quick: bool,
+        /// Write every point as CSV.
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// Write the table into docs/VALIDATION.md (between its markers).
+        #[arg(long)]
+        update_doc: bool,
+        /// Project root (where `cases/` and `docs/` are).
+        #[arg(long, default_value = ".")]
+        root: PathBuf,
+    },
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -249,5 +268,6 @@ pub fn run(command: Command) -> Result<()> {
             Ok(())
         }
         Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
+        Command::ConvergenceMap { quick, csv, update_doc, root } => convergence_map::run(&root, quick, csv.as_deref(), update_doc),
     }
 }

@@ -17,7 +17,7 @@ use crate::physics::reynolds::FilmError;
 use super::super::error::SolveError;
 use super::super::model::BearingModel;
 use super::eval::{assemble_u, external_load, load_direction, min_film, solve_all_pads, Ctx};
-use super::journal::{bearing_stiffness, journal_step};
+use super::journal::{bearing_stiffness, journal_step, pads_surround, StepFailure};
 use super::{Cancel, Found, Stall, SUFFICIENT_DECREASE};
 
 /// Backtracking halvings of a journal Newton step.
@@ -36,6 +36,12 @@ pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cance
     match named(newton_journal(model, u0, 1.0, ctx, cancel)?, "Newton (pad assembly)") {
         Ok(f) => return Ok(f),
         Err(s) => ctx.report.warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
+    }
+    if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
+        // Outside the cone of the pads no search can find stiffness: that is the answer.
+        if !pads_surround(&model.pads, external_load(ctx.op, 1.0)) {
+            return Err(SolveError::NoStiffness { axis_deg, load_component_n });
+        }
     }
     // The searches below start from a centred journal, with the pads where `u0` has them (pads held by an
     // outer thermal loop keep their coordinates).
@@ -85,7 +91,12 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
         }
         let mut step = match journal_step(&bearing_stiffness(&model.pads, &states), &r, tol) {
             Ok((step, _)) => step,
-            Err(reason) => return Ok(Err(stall(journal, r, reason, ctx.force_scale))),
+            Err(reason) => {
+                if let StepFailure::NoStiffness { axis_deg, component } = reason {
+                    ctx.no_stiffness = Some((axis_deg, component));
+                }
+                return Ok(Err(stall(journal, r, reason.to_string(), ctx.force_scale)));
+            }
         };
         let max = ctx.params.max_step * cb;
         if step.norm() > max {
@@ -176,8 +187,19 @@ fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, ca
             }
         }
     }
-    if let (Some((pad, hmin, ecc)), None) = (ctx.closes_before_balance, ctx.exhausted()) {
+    if let Some(b) = ctx.exhausted() {
+        return Err(ctx.budget_error(b));
+    }
+    if let Some((pad, hmin, ecc)) = ctx.closes_before_balance {
         return Err(SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: ecc });
+    }
+    if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
+        if !pads_surround(&model.pads, external_load(ctx.op, 1.0)) {
+            return Err(SolveError::NoStiffness { axis_deg, load_component_n });
+        }
+        // Pads surround the load, so some pad can carry it: the missing stiffness is where the search
+        // stopped, not an answer.
+        last.reason = format!("{} (pads surround the load, yet the search stopped with no stiffness along {axis_deg:.0}°)", last.reason);
     }
     Err(SolveError::NotConverged { iterations: ctx.report.iterations, residual: last.residual, reason: last.reason })
 }

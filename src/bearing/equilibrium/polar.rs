@@ -190,8 +190,8 @@ pub(super) fn polar_search(model: &mut BearingModel, centred: &[f64], ctx: &mut 
     let up = mid.h > 0.0;
     if up { (a, ra) = (psi_w, Some(mid)) } else { (b, rb) = (psi_w, Some(mid)) }
     loop {
-        let done_a = ra.as_ref().is_some_and(|r: &RayRoot| r.h.abs() <= tol && r.g.abs() <= tol);
-        let done_b = rb.as_ref().is_some_and(|r: &RayRoot| r.h.abs() <= tol && r.g.abs() <= tol);
+        let done_a = ra.as_ref().is_some_and(|r: &RayRoot| r.g.hypot(r.h) <= tol);
+        let done_b = rb.as_ref().is_some_and(|r: &RayRoot| r.g.hypot(r.h) <= tol);
         if done_a || done_b || (ra.is_some() && rb.is_some()) {
             break;
         }
@@ -213,7 +213,7 @@ pub(super) fn polar_search(model: &mut BearingModel, centred: &[f64], ctx: &mut 
     let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
     for _ in 0..MAX_BRACKET_ITERATIONS {
         for r in [ra.as_ref(), rb.as_ref()].into_iter().flatten() {
-            if r.h.abs() <= tol && r.g.abs() <= tol {
+            if r.g.hypot(r.h) <= tol {
                 let residual = r.g.hypot(r.h) / search.ctx.force_scale;
                 search.ctx.report.residual_history.push(residual);
                 let pads = r.states.clone();
