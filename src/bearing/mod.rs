@@ -17,6 +17,7 @@ pub mod progress;
 pub mod regime;
 pub mod report;
 pub mod solution;
+pub mod stages;
 pub mod thermal;
 pub mod thermal_pad;
 
