@@ -281,7 +281,9 @@ mod tests {
     fn request(speed_rpm: f64, sweep: bool) -> Request {
         let set = [format!("operating.speed_rpm={speed_rpm}"), "mesh.fidelity=\"preview\"".to_string()];
         let case = load_case(include_str!("../../cases/compressor-bearing.toml"), &set).unwrap().1;
-        Request { case: Some(case), frequency_ratios: Some(vec![0.5, 1.0]), speeds_rpm: sweep.then(|| vec![8000.0, 9000.0]) }
+        let mut wanted = vec![StageId::Reduction, StageId::FrequencySweep];
+        wanted.extend(sweep.then_some(StageId::SpeedSweep));
+        Request { case, wanted, frequency_ratios: vec![0.5, 1.0], speeds_rpm: if sweep { vec![8000.0, 9000.0] } else { Vec::new() } }
     }
 
     /// Polls until the latest job completes; returns every event seen.
@@ -301,11 +303,11 @@ mod tests {
         let mut w = Worker::new(egui::Context::default());
         let job = w.submit(request(9000.0, true));
         let events = run_until_done(&mut w);
-        assert!(events.iter().any(|e| matches!(e, Event::Progress { stage: Stage::Equilibrium, .. })));
+        assert!(events.iter().any(|e| matches!(e, Event::Progress { stage: StageId::Equilibrium, .. })));
         let solved: Vec<(bool, bool)> = events
             .iter()
             .filter_map(|e| match e {
-                Event::Solved { job: j, outcome, complete } if *j == job => Some((*complete, outcome.speed_sweep.is_some())),
+                Event::Solved { job: j, outcome, complete } if *j == job => Some((*complete, outcome.speed_sweep().is_some())),
                 _ => None,
             })
             .collect();
@@ -323,7 +325,7 @@ mod tests {
         // Only the newest job's events reach the app, and its solution is at its speed.
         assert!(events.iter().all(|e| event_job(e) == second));
         let speed = events.iter().find_map(|e| match e {
-            Event::Solved { outcome, .. } => outcome.solution.as_ref().map(|s| s.derived.speed_rpm),
+            Event::Solved { outcome, .. } => outcome.solution().map(|s| s.derived.speed_rpm),
             _ => None,
         });
         assert!((speed.unwrap() - 7000.0).abs() < 1e-9);
