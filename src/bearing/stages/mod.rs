@@ -48,8 +48,10 @@
 //!    `publish`.
 //! 2. One line in the `stages!` list below, after the stages it reads: `MyStage => my_stage::MyStage,`.
 //!
-//! A view that shows the new result lists `StageId::MyStage` in its needs ([`crate::scene::request`]) and
-//! reads it with `outcome.get::<T>(StageId::MyStage)`.
+//! Nothing else changes: the id, the slot, the label, the execution counter and the dependency order come
+//! from that line. A view that shows the new result lists `StageId::MyStage` in its needs (a constant in
+//! [`crate::scene::request`], chosen by `View::needs` in `app::state`) and reads it with
+//! `outcome.get::<T>(StageId::MyStage)` (`T`: what `publish` returns, e.g. `Arc<MyResult>` → `get::<MyResult>`).
 //!
 //! The native worker loops over [`Stages::step`] on its thread; the web build calls it within a per-frame
 //! time budget ([`Cancel::suspend`] asks long stages to pause). Execution counters ([`Stages::runs`]) let

@@ -248,3 +248,19 @@ fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
     s.run(&req, &NoCancel).unwrap();
     assert_eq!(runs(&s), [1, 1, 2, 2, 3, 0, 0]);
 }
+
+#[test]
+fn every_stage_reads_only_stages_registered_before_it() {
+    for (i, s) in StageId::ALL.iter().enumerate() {
+        assert_eq!(s.index(), i);
+        for n in s.needs() {
+            assert!(n.index() < i, "{s:?} reads {n:?}, registered after it");
+        }
+    }
+    // What a wanted stage pulls in: the reduction reads films, equilibrium, thermal (when it applies) and
+    // coefficients; the speed sweep only the films.
+    let needed = |w: &[StageId]| -> Vec<StageId> { Stages::needed(w).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect() };
+    use StageId::*;
+    assert_eq!(needed(&[Reduction]), vec![Films, Equilibrium, Thermal, Coefficients, Reduction]);
+    assert_eq!(needed(&[SpeedSweep]), vec![Films, SpeedSweep]);
+}
