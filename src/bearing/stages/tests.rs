@@ -264,3 +264,30 @@ fn every_stage_reads_only_stages_registered_before_it() {
     assert_eq!(needed(&[Reduction]), vec![Films, Equilibrium, Thermal, Coefficients, Reduction]);
     assert_eq!(needed(&[SpeedSweep]), vec![Films, SpeedSweep]);
 }
+
+#[test]
+fn a_stage_reads_only_what_it_declared_and_only_when_current() {
+    let mut s = Stages::new();
+    let req = Request::solution(case(&[]));
+    let refusal = |reader: StageId, s: &mut Stages| -> String {
+        let ctx = Ctx { slots: &mut s.slots, req: &req, reader };
+        match reader {
+            StageId::Films => ctx.output::<equilibrium::EquilibriumStage>().map(|_| ()),
+            StageId::Coefficients => ctx.output::<thermal::ThermalStage>().map(|_| ()),
+            _ => ctx.output::<coefficients::CoefficientsStage>().map(|_| ()),
+        }
+        .map_or_else(|e| e.to_string(), |()| "read".into())
+    };
+    // The films declare no upstream stage.
+    assert!(refusal(StageId::Films, &mut s).contains("not declared in NEEDS"));
+    // Declared, but not computed yet.
+    assert!(refusal(StageId::Reduction, &mut s).contains("not current"));
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(refusal(StageId::Reduction, &mut s), "read");
+    // The thermal stage does not apply to an isothermal case.
+    assert!(refusal(StageId::Coefficients, &mut s).contains("does not apply"));
+    // An edit that changes the coefficients' inputs makes the old output unreadable.
+    let edited = Request::solution(case(&["operating.load_n=8000"]));
+    let ctx = Ctx { slots: &mut s.slots, req: &edited, reader: StageId::Reduction };
+    assert!(ctx.output::<coefficients::CoefficientsStage>().is_err());
+}
