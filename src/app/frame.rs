@@ -7,7 +7,6 @@ use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
 use super::views::{bearing_view, coefficients_view, field_view, placeholders, results_panel};
 use super::{Pending, Status, WorkbenchApp};
-use crate::bearing::pipeline::Stage;
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
 
@@ -129,16 +128,11 @@ impl WorkbenchApp {
                 }
                 Status::Solving { stage, fraction } => {
                     ui.spinner();
-                    // The stage named is the one that just finished; say what runs now.
+                    // The stage worked on last, and how far it got.
                     let now = match stage {
-                        None => "building the model".to_string(),
-                        Some(Stage::Model) => "equilibrium".into(),
-                        Some(Stage::Thermal) if *fraction < 1.0 => "thermal (THD) loop".into(),
-                        Some(Stage::Thermal) => "thermal equilibrium done; coefficients and sweeps".into(),
-                        Some(Stage::Equilibrium) if *fraction < 1.0 => "equilibrium".into(),
-                        Some(Stage::Equilibrium | Stage::Reduction) => "coefficients and sweeps".into(),
-                        Some(Stage::FrequencySweep) => "speed sweep".into(),
-                        Some(Stage::SpeedSweep) => format!("speed sweep {:.0} %", 100.0 * fraction),
+                        None => "starting".to_string(),
+                        Some(s) if *fraction < 1.0 => format!("{} {:.0} %", s.label(), 100.0 * fraction),
+                        Some(s) => format!("{} done", s.label()),
                     };
                     ui.label(format!("Solving: {now}…"));
                 }

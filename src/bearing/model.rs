@@ -67,6 +67,24 @@ impl BearingModel {
         Ok(Self { pads, dofs, journal_radius: r, assembled_clearance: b.assembled_clearance_m, length: b.length_m })
     }
 
+    /// Replaces every pad's structure (pivot springs, inertia) without rebuilding the films: an edit of a
+    /// pivot stiffness or of the pad density keeps the meshes and factorisations.
+    ///
+    /// # Errors
+    /// If a structure's coordinates differ from the model's (they shape the films: rebuild the model).
+    pub fn set_structure(&mut self, structures: Vec<PadStructure>) -> Result<(), SolveError> {
+        if structures.len() != self.pads.len() {
+            return Err(SolveError::Invalid(format!("{} pad structures for a model of {} pads", structures.len(), self.pads.len())));
+        }
+        for (k, (pm, s)) in self.pads.iter_mut().zip(structures).enumerate() {
+            if s.dofs != pm.structure.dofs {
+                return Err(SolveError::Invalid(format!("pad {k}: coordinates {:?} differ from the model's {:?}", s.dofs, pm.structure.dofs)));
+            }
+            pm.structure = s;
+        }
+        Ok(())
+    }
+
     /// Length of the global coordinate vector.
     #[must_use]
     pub fn n_dofs(&self) -> usize {

@@ -7,6 +7,7 @@
 //! - [`flowlines`]: streamlines of the film's mean velocity (Couette + Poiseuille, orifices as sources or sinks).
 //! - [`outline`]: the bearing cross-section to scale with an exaggerated clearance.
 //! - [`plots`]: reduced coefficients against frequency ratio or speed, the full-matrix table.
+//! - [`request`]: the stages the open views need, joined into the request the app sends.
 //! - [`summary`]: the results panel's rows in display units.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
 //! - [`fidelity`]: the measured time and error of each fidelity level (from `tiltpad bench`).
@@ -22,4 +23,5 @@ pub mod field;
 pub mod flowlines;
 pub mod outline;
 pub mod plots;
+pub mod request;
 pub mod summary;
