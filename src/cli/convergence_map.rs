@@ -144,12 +144,12 @@ fn csv(points: &[MapPoint]) -> String {
     s
 }
 
-/// Runs the map; `quick`: directions every 30° and the family at 4 pads only (a smoke run).
+/// Runs the map every `step_deg`; `quick`: directions every 30° and the family at 4 pads only (a smoke run).
 ///
 /// # Errors
 /// I/O, invalid cases, a missing marker in docs/VALIDATION.md.
-pub fn run(root: &Path, quick: bool, csv_out: Option<&Path>, update_doc: bool) -> Result<()> {
-    let spec = if quick { MapSpec { direction_step_deg: 30.0, ..MapSpec::full() } } else { MapSpec::full() };
+pub fn run(root: &Path, quick: bool, step_deg: f64, csv_out: Option<&Path>, update_doc: bool) -> Result<()> {
+    let spec = MapSpec { direction_step_deg: if quick { 30.0 } else { step_deg }, ..MapSpec::full() };
     let shipped = shipped(root)?;
     let family: Vec<MapBearing> = generated_family().into_iter().filter(|b| !quick || b.name.starts_with("4 pads,")).collect();
     let all: Vec<MapBearing> = shipped.iter().chain(&family).cloned().collect();

@@ -152,13 +152,17 @@ pub enum Command {
         #[arg(long, default_value = ".")]
         root: PathBuf,
     },
-    /// Convergence map of the equilibrium: every shipped case and a generated family of bearings, load
-    /// direction every 5° × Sommerfeld number 10 … 0.01; counts converged / physical error / failure (run in
-    /// --release; about half an hour on two cores).
+    /// Convergence map of the equilibrium: every shipped case and a generated family of 144 bearings, load
+    /// direction every `--step-deg` × Sommerfeld number 10 … 0.01; counts converged / physical error /
+    /// failure (run in --release; the 30° grid, 7296 points, takes about 40 min on two busy cores, the 5°
+    /// grid six times that).
     ConvergenceMap {
         /// Directions every 30° and the 4-pad family only (a quick check).
         #[arg(long)]
         quick: bool,
+        /// Step of the load direction [deg].
+        #[arg(long, default_value_t = 5.0, value_parser = parse_step_deg)]
+        step_deg: f64,
         /// Write every point as CSV.
         #[arg(long, value_name = "OUT")]
         csv: Option<PathBuf>,
@@ -169,6 +173,16 @@ pub enum Command {
         #[arg(long, default_value = ".")]
         root: PathBuf,
     },
+}
+
+/// `--step-deg`: a divisor of 360 between 1 and 90.
+fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
+    let v: f64 = s.parse().map_err(|e| format!("{e}"))?;
+    let n = 360.0 / v;
+    if !(1.0..=90.0).contains(&v) || (n - n.round()).abs() > 1e-9 {
+        return Err(format!("--step-deg {v}: must divide 360 and lie in 1 … 90"));
+    }
+    Ok(v)
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -268,6 +282,6 @@ pub fn run(command: Command) -> Result<()> {
             Ok(())
         }
         Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
-        Command::ConvergenceMap { quick, csv, update_doc, root } => convergence_map::run(&root, quick, csv.as_deref(), update_doc),
+        Command::ConvergenceMap { quick, step_deg, csv, update_doc, root } => convergence_map::run(&root, quick, step_deg, csv.as_deref(), update_doc),
     }
 }

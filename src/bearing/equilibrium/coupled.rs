@@ -78,7 +78,7 @@ pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, c
         }
         let step = newton_step(model, &states, &r);
         let accepted = match &step {
-            Ok(s) => line_search(model, &u, &states, s, merit, w, radius, ctx)?,
+            Ok(s) => line_search(model, (&u, &states), s, merit, w, radius, ctx)?,
             Err(_) => None,
         };
         if let Some(((u2, s2), full_capped)) = accepted {
@@ -229,7 +229,7 @@ const WALK_STEPS: usize = 60;
 /// closes first or none does within [`WALK_STEPS`].
 fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState], d: Vector2<f64>, ctx: &mut Ctx<'_>) -> Result<Option<Accepted>, SolveError> {
     let cb = model.assembled_clearance;
-    let follows: Vec<bool> = model.pads.iter().enumerate().map(|(k, pm)| !pm.dofs().is_empty() && !(ctx.held(k) && states[k].unloaded)).collect();
+    let follows: Vec<bool> = model.pads.iter().enumerate().map(|(k, pm)| !(pm.dofs().is_empty() || ctx.held(k) && states[k].unloaded)).collect();
     let floating: Vec<bool> = follows.iter().zip(states).map(|(f, s)| *f && s.unloaded).collect();
     for i in 1..=WALK_STEPS {
         #[allow(clippy::cast_precision_loss)]
@@ -259,8 +259,7 @@ fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState]
 /// point is judged with its unloaded pads placed again (what the next iteration starts from).
 fn line_search(
     model: &mut BearingModel,
-    u: &[f64],
-    states: &[PadState],
+    (u, states): (&[f64], &[PadState]),
     step: &[f64],
     merit: f64,
     w: [f64; 2],
