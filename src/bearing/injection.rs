@@ -104,7 +104,7 @@ pub fn dynamic_stiffness(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>, s
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::bearing::coefficients::full_coefficients;
     use crate::bearing::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
@@ -116,13 +116,13 @@ mod tests {
 
     /// The Publication 5 rig at 40 bar on both pads, one port feeding both (the sums are what a finite
     /// difference of the common injection pressure sees).
-    fn rig(p_bar: f64) -> Case {
+    pub(crate) fn rig(p_bar: f64) -> Case {
         let text = include_str!("../../cases/test-rig-pub5.toml").replace("fidelity = \"standard\"", "fidelity = \"preview\"");
         let set = [format!("operating.injection_pressure_bar={p_bar}"), "operating.load_n=1500".to_string()];
         load_case(&text, &set).unwrap().1
     }
 
-    fn solve(case: &Case) -> (BearingModel, OperatingPoint, Equilibrium) {
+    pub(crate) fn solve(case: &Case) -> (BearingModel, OperatingPoint, Equilibrium) {
         let mut model = BearingModel::new(case).unwrap();
         let op = OperatingPoint::isothermal(case);
         let eq = solve_equilibrium(&mut model, &op, EquilibriumParams::default(), None, &NoCancel).unwrap();

@@ -8,6 +8,7 @@ pub mod coefficients;
 pub mod coordinates;
 pub mod equilibrium;
 pub mod error;
+pub mod frf;
 pub mod geometry;
 pub mod injection;
 pub mod job;
