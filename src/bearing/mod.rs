@@ -9,6 +9,7 @@ pub mod coordinates;
 pub mod equilibrium;
 pub mod error;
 pub mod frf;
+pub mod frf_job;
 pub mod geometry;
 pub mod injection;
 pub mod job;
