@@ -13,6 +13,8 @@ mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_frf;
+#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod frf;
@@ -175,6 +177,9 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
+        /// Re-measure one section only (`frf`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        #[arg(long, value_name = "SECTION")]
+        only: Option<String>,
     },
 }
 
@@ -277,6 +282,10 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
-        Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
+        Command::Bench { repeats, root, only } => match only.as_deref() {
+            None => bench::run(&root, repeats.max(1)),
+            Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf"),
+        },
     }
 }
