@@ -131,7 +131,7 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case) -> Option<FrfAction>
             }
         }
     }
-    let Some((_, curves)) = view.curves.as_ref() else { return None };
+    let (_, curves) = view.curves.as_ref()?;
     let mut action = None;
     ui.horizontal_wrapped(|ui| {
         for (g, hidden) in GROUPS.iter().zip(view.hidden.iter_mut()) {

@@ -94,7 +94,7 @@ mod tests {
         for f in [0.1, 0.5, 2.0, 10.0] {
             let r = f * w;
             let g = v.spool_response(Complex::new(0.0, r));
-            let mag = 1.0 / ((1.0 - f * f).powi(2) + (2.0 * v.damping_ratio * f).powi(2)).sqrt();
+            let mag = 1.0 / (1.0 - f * f).hypot(2.0 * v.damping_ratio * f);
             let phase = -(2.0 * v.damping_ratio * f).atan2(1.0 - f * f);
             assert!((g.norm() / mag - 1.0).abs() < 1e-14 && (g.arg() - phase).abs() < 1e-14, "f/fV = {f}: {g}");
         }
