@@ -76,7 +76,7 @@ pub fn injection_coupling(model: &mut BearingModel, op: &OperatingPoint, eq: &Eq
             c.velocity[(k, g)] += r.velocity.column(a).sum();
         }
         c.admittance[(k, k)] += r.admittance.sum();
-        c.static_flow[k] += r.flow.iter().sum::<f64>();
+        c.static_flow[k] += r.static_flow.iter().sum::<f64>();
     }
     Ok(c)
 }

@@ -27,7 +27,9 @@ pub fn capillary_conductance(diameter: f64, length: f64, viscosity: f64) -> f64 
     std::f64::consts::PI * diameter.powi(4) / (128.0 * viscosity * length)
 }
 
-/// Linearised nozzle–film coupling of every port, over the bearing's global coordinates.
+/// Linearised nozzle–film coupling: over a pad's local coordinates and its orifices
+/// ([`crate::physics::reynolds::InjectionResponse`]), or over the bearing's global coordinates and the valve
+/// ports ([`crate::bearing::injection::injection_coupling`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct NozzleCoupling {
     /// Y [m³/(s·Pa)], ports × ports.
@@ -38,7 +40,7 @@ pub struct NozzleCoupling {
     pub velocity: DMatrix<f64>,
     /// B [N/Pa, N·m/Pa, …], coordinates × ports.
     pub force: DMatrix<f64>,
-    /// Static flow of each port into the film [m³/s].
+    /// Static flow of each port (orifice) into the film [m³/s].
     pub static_flow: Vec<f64>,
 }
 

@@ -24,20 +24,9 @@ use nalgebra::DMatrix;
 use super::{FilmInputs, PadFilm};
 
 /// One pad's film response to its orifices' entry pressures, in the pad's local coordinates
-/// `[e_x, e_y, pad coordinates…]`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct InjectionResponse {
-    /// `B = ∂Q/∂p_inj`, coordinates × orifices [N/Pa, N·m/Pa].
-    pub force: DMatrix<f64>,
-    /// `Y = ∂q/∂p_inj`, orifices × orifices [m³/(s·Pa)].
-    pub admittance: DMatrix<f64>,
-    /// `D = ∂q/∂u`, orifices × coordinates [m³/(s·m), m³/(s·rad)].
-    pub displacement: DMatrix<f64>,
-    /// `E = ∂q/∂u̇`, orifices × coordinates [m³/m, m³/rad].
-    pub velocity: DMatrix<f64>,
-    /// Static flow of each orifice into the film [m³/s].
-    pub flow: Vec<f64>,
-}
+/// `[e_x, e_y, pad coordinates…]` (rows/columns) and its orifices (the "ports"): `force` = B = ∂Q/∂p_inj,
+/// `admittance` = Y = ∂q/∂p_inj, `displacement` = D = ∂q/∂u, `velocity` = E = ∂q/∂u̇, `static_flow`.
+pub type InjectionResponse = crate::physics::hydraulics::NozzleCoupling;
 
 impl PadFilm {
     /// The film's response to the injection pressures about the last solve (see the module doc).
@@ -67,8 +56,8 @@ impl PadFilm {
         });
         let displacement = DMatrix::from_fn(no, m, |o, k| -g.sym * sparse_dot(o, &col(&motion, k)) / (12.0 * mu));
         let velocity = DMatrix::from_fn(no, m, |o, k| -g.sym * sparse_dot(o, &col(&motion, m + k)) / (12.0 * mu));
-        let flow = (0..no).map(|o| self.orifice_flow(o, inp)).collect();
-        InjectionResponse { force, admittance, displacement, velocity, flow }
+        let static_flow = (0..no).map(|o| self.orifice_flow(o, inp)).collect();
+        InjectionResponse { admittance, displacement, velocity, force, static_flow }
     }
 }
 
@@ -149,7 +138,7 @@ mod tests {
             let fd = (qp[o] - qm[o]) / (2.0 * dp);
             let y: f64 = r.admittance.row(o).sum();
             assert!(rel(y, fd) < 3e-9, "Y[{o}] {y} vs {fd}");
-            assert!(rel(r.flow[o], qp[o] - dp * fd) < 1e-11, "static flow {o}");
+            assert!(rel(r.static_flow[o], qp[o] - dp * fd) < 1e-11, "static flow {o}");
         }
         // Displacements: q_o(u ± δ) at fixed injection.
         for k in 0..2 {
