@@ -78,6 +78,7 @@ pub struct WorkbenchApp {
     /// A value is being dragged in the editor.
     dragging: bool,
     field_cache: FieldCache,
+    pub frf: views::frf_view::FrfView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -126,6 +127,7 @@ impl WorkbenchApp {
             status: Status::Idle,
             dragging: false,
             field_cache: FieldCache::default(),
+            frf: views::frf_view::FrfView::default(),
             pending: None,
             allow_close: false,
             notice: None,

@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `frf`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -13,9 +13,12 @@ mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_frf;
+#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
 mod convergence_map;
+pub mod frf;
 #[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
@@ -137,6 +140,30 @@ pub enum Command {
         #[arg(long, default_value = "tiltpad")]
         tag: String,
     },
+    /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
+    /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
+    Frf {
+        case: PathBuf,
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Lowest frequency [Hz] (0 allowed: the band is then linear, else logarithmic).
+        #[arg(long, default_value_t = 1.0)]
+        from: f64,
+        /// Highest frequency [Hz].
+        #[arg(long, default_value_t = 1000.0)]
+        to: f64,
+        #[arg(long, default_value_t = 400)]
+        points: usize,
+        /// Control-signal amplitude [V] to check against the valve model's small-signal range.
+        #[arg(long, value_name = "V")]
+        amplitude_v: Option<f64>,
+        /// CSV of magnitude and phase per curve (`-`: standard output; the default without --json).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// JSON of the curves, notes and timings.
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+    },
     /// Print every case key with its unit, allowed values, default and meaning.
     Schema {
         /// Write the table as JSON instead (`-`: standard output).
@@ -151,6 +178,9 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
+        /// Re-measure one section only (`frf`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        #[arg(long, value_name = "SECTION")]
+        only: Option<String>,
     },
     /// Convergence map of the equilibrium: every shipped case and a generated family of 144 bearings, load
     /// direction every `--step-deg` × Sommerfeld number 10 … 0.01; counts converged / physical error /
@@ -269,6 +299,9 @@ pub fn run(command: Command) -> Result<()> {
             node,
             tag: &tag,
         }),
+        Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
+            frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
+        }
         Command::Schema { json } => {
             match json {
                 Some(out) => {
@@ -281,7 +314,11 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
-        Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
         Command::ConvergenceMap { quick, step_deg, csv, update_doc, root } => convergence_map::run(&root, quick, step_deg, csv.as_deref(), update_doc),
+        Command::Bench { repeats, root, only } => match only.as_deref() {
+            None => bench::run(&root, repeats.max(1)),
+            Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf"),
+        },
     }
 }
