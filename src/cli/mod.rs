@@ -18,6 +18,7 @@ mod bench_frf;
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
 mod convergence_map;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod frf;
 #[cfg(not(target_arch = "wasm32"))]
 mod rows;
@@ -206,6 +207,7 @@ pub enum Command {
 }
 
 /// `--step-deg`: a divisor of 360 between 1 and 90.
+#[cfg(not(target_arch = "wasm32"))]
 fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
     let v: f64 = s.parse().map_err(|e| format!("{e}"))?;
     let n = 360.0 / v;
