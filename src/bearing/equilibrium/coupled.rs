@@ -89,7 +89,12 @@ pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, c
             radius = if full_capped { 2.0 * radius } else { base_radius };
             continue;
         }
-        // No Newton progress. If part of the load acts where no pad holds the journal (every pad floats, or
+        // No Newton progress. A floating pad may have a loaded state here too (a fold: negative preload, pivot
+        // past mid-pad), which the cheap placement did not look for: search every unloaded pad thoroughly once.
+        if recheck_unloaded(model, &mut u, &mut states, &mut rechecked, ctx)? {
+            continue;
+        }
+        // If part of the load acts where no pad holds the journal (every pad floats, or
         // the loaded pads leave a direction without stiffness), walk along it until another pad picks up load.
         let kred = bearing_stiffness(&model.pads, &states);
         if walks < model.pads.len() {
