@@ -21,13 +21,18 @@ const SIZE: [f32; 2] = [1400.0, 860.0];
 
 /// The app on a shipped case (the compressor bearing unless `preset_toml` is given), solved.
 fn solved_app(preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
+    solved_app_sized(SIZE, preset_toml, setup)
+}
+
+/// As [`solved_app`], in a window of `size` (a tall one keeps opened editor groups in view).
+fn solved_app_sized(size: [f32; 2], preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
     let mut persisted = Persisted::default();
     if let Some(text) = preset_toml {
         persisted.case_toml = Some(text.to_string());
         persisted.case_name = "test case".into();
     }
     setup(&mut persisted);
-    let mut h = Harness::builder().with_size(SIZE).build_eframe(move |cc| {
+    let mut h = Harness::builder().with_size(size).build_eframe(move |cc| {
         let mut app = WorkbenchApp::with_state(&cc.egui_ctx, persisted);
         app.hide_timings = true;
         app
@@ -215,6 +220,27 @@ fn frf_view_shows_the_bode_plots_of_the_rig_and_its_limitations() {
     h.get_by_role_and_label(Role::Slider, "air fraction");
     h.get_by_label("Export CSV");
     snapshot(&mut h, "frf_rig_pub5");
+}
+
+/// The hydraulics group edits the valve, the lines and the rig; an air-fraction edit changes only the case's
+/// line (the FRF stage reads the ports' pads, so nothing is re-solved: the FRF model stays the same object).
+#[test]
+fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
+    let mut h = solved_app_sized([1400.0, 2600.0], Some(include_str!("../cases/test-rig-pub5.toml")), |p| p.view = View::Frf);
+    let model = h.state().shown.clone().unwrap().frf.expect("the FRF view asks for the FRF stage");
+    h.get_by_label("Hydraulics (controllable bearing)").click();
+    h.run_steps(2);
+    h.get_by_label("Line 0");
+    spin_button(&h, "Supply pressure").set_value_accesskit(40.0);
+    h.run_steps(2);
+    assert_eq!(h.state().doc.file().hydraulics.as_ref().unwrap().supply_pressure_bar, 40.0);
+    spin_button(&h, "Line 0 length").set_value_accesskit(1500.0);
+    h.run_steps(2);
+    wait_for_solve(&mut h);
+    assert_eq!(h.state().doc.file().hydraulics.as_ref().unwrap().port[0].line_length_mm, 1500.0);
+    let after = h.state().shown.clone().unwrap();
+    assert!(std::sync::Arc::ptr_eq(&after.frf.unwrap(), &model), "an edit of the line re-linearised the bearing");
+    assert_eq!(after.solution.inputs.hydraulics.as_ref().unwrap().ports[0].line_length_m, 1.5);
 }
 
 fn spin_button<'a>(h: &'a Harness<'_, WorkbenchApp>, label: &'a str) -> egui_kittest::Node<'a> {

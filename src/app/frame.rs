@@ -249,11 +249,11 @@ impl WorkbenchApp {
     }
 
     fn frf_ui(&mut self, ui: &mut Ui) {
-        let Some(case) = self.shown.as_ref().map(|s| s.solution.inputs.clone()) else {
+        let Some((case, model)) = self.shown.as_ref().map(|s| (s.solution.inputs.clone(), s.frf.clone())) else {
             ui.label("Waiting for the first result…");
             return;
         };
-        if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case) {
+        if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case, model.as_deref()) {
             self.files.export(&self.export_name("frf", "csv"), "CSV", "csv", csv.into_bytes());
         }
     }

@@ -47,6 +47,8 @@ pub struct Shown {
     pub solution: Arc<Solution>,
     pub frequency_sweep: Option<Arc<Vec<(f64, ReducedCoefficients)>>>,
     pub speed_sweep: Option<Arc<Vec<SpeedPoint>>>,
+    /// The bearing linearised for its injection ports (FRF view open, case with `[hydraulics]`).
+    pub frf: Option<Arc<crate::bearing::frf_job::FrfModel>>,
 }
 
 /// What the solver is doing.
@@ -197,7 +199,7 @@ impl WorkbenchApp {
             .as_ref()
             .filter(|s| outcome.speed_sweep().is_none() && s.solution.inputs == solution.inputs)
             .and_then(|s| s.speed_sweep.clone());
-        self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep(), speed_sweep: outcome.speed_sweep().or(keep_speed) });
+        self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep(), speed_sweep: outcome.speed_sweep().or(keep_speed), frf: outcome.get(StageId::Frf) });
     }
 
     /// The case of the shown result differs from the edited one (invalid, solving or failed).

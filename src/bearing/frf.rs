@@ -135,7 +135,7 @@ impl BearingDynamics {
     /// # Errors
     /// See [`injection_coupling`].
     pub fn at_equilibrium(model: &mut BearingModel, op: &OperatingPoint, eq: &Equilibrium, ports: &[Vec<usize>]) -> Result<Self, SolveError> {
-        let coupling = injection_coupling(model, op, eq, ports)?;
+        let coupling = injection_coupling(model, op, &eq.u, ports)?;
         let full = full_coefficients(model, eq);
         let mat = |rows: &[Vec<f64>]| DMatrix::from_fn(rows.len(), rows.len(), |i, j| rows[i][j]);
         Ok(Self { k: mat(&full.k), c: mat(&full.c), m: mat(&full.m), coupling })

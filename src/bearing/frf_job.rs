@@ -18,11 +18,16 @@ use crate::physics::hydraulics::pipeline::Truncation;
 use crate::physics::hydraulics::servovalve::flow_gain;
 use crate::physics::hydraulics::{effective_bulk_modulus, Line, Servovalve};
 
-use super::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
+use nalgebra::DMatrix;
+
 use super::error::SolveError;
 use super::frf::{BearingDynamics, FrfPoint, Hydraulics, Port, Rig, ShakerPoint};
+use super::injection::injection_coupling;
 use super::model::{BearingModel, OperatingPoint};
+use super::progress::NoCancel;
 use super::report::SolveReport;
+use super::solution::Solution;
+use super::stages::{Request, StageId, Stages};
 
 /// Atmospheric pressure [Pa], for the air's absolute pressure.
 const ATMOSPHERE: f64 = 101_325.0;
@@ -71,18 +76,28 @@ fn no_hydraulics() -> SolveError {
 }
 
 impl FrfModel {
-    /// Solves the isothermal equilibrium of `case` and linearises the bearing for its ports.
+    /// Solves the isothermal equilibrium of `case` and linearises the bearing for its ports: the FRF stage
+    /// ([`crate::bearing::stages::frf`]) run on its own.
     ///
     /// # Errors
     /// No `[hydraulics]`, or the equilibrium failed.
     pub fn new(case: &Case) -> Result<Self, SolveError> {
-        let h = case.hydraulics.as_ref().ok_or_else(no_hydraulics)?;
-        let mut model = BearingModel::new(case)?;
-        let op = OperatingPoint::isothermal(case);
-        let eq = solve_equilibrium(&mut model, &op, EquilibriumParams::default(), None, &NoCancel)?;
+        case.hydraulics.as_ref().ok_or_else(no_hydraulics)?;
+        let req = Request { case: case.clone(), wanted: vec![StageId::Frf], frequency_ratios: Vec::new(), speeds_rpm: Vec::new() };
+        let outcome = Stages::new().run(&req, &NoCancel)?;
+        outcome.get::<Self>(StageId::Frf).map(|m| Self::clone(&m)).ok_or_else(no_hydraulics)
+    }
+
+    /// Linearises the bearing of `model` at the equilibrium `sol` (full `K`, `C` from it, the pads' inertia
+    /// `m`) for the ports (`ports[k]`: the pads port k feeds), at the operating point `op`.
+    ///
+    /// # Errors
+    /// A port feeding a pad the bearing does not have, or a film that fails at the equilibrium.
+    pub fn linearise(model: &mut BearingModel, op: &OperatingPoint, case: &Case, sol: &Solution, m: Vec<Vec<f64>>, ports: &[Vec<usize>]) -> Result<Self, SolveError> {
         let t0 = Instant::now();
-        let ports: Vec<Vec<usize>> = h.ports.iter().map(|p| p.pads.clone()).collect();
-        let dynamics = BearingDynamics::at_equilibrium(&mut model, &op, &eq, &ports)?;
+        let coupling = injection_coupling(model, op, &sol.coordinates, ports)?;
+        let mat = |rows: &[Vec<f64>]| DMatrix::from_fn(rows.len(), rows.len(), |i, j| rows[i][j]);
+        let dynamics = BearingDynamics { k: mat(&sol.full.k), c: mat(&sol.full.c), m: mat(&m), coupling };
         #[allow(clippy::cast_precision_loss)]
         let static_pressure = ports.iter().map(|pads| pads.iter().map(|&k| op.injection_pressure[k]).sum::<f64>() / pads.len() as f64).collect();
         Ok(Self {
@@ -90,8 +105,8 @@ impl FrfModel {
             static_pressure,
             injection_viscosity: op.injection_viscosity,
             density: case.lubricant.density_kg_per_m3,
-            report: eq.report.clone(),
-            eccentricity_ratio: eq.u[0].hypot(eq.u[1]) / model.assembled_clearance,
+            report: sol.report.clone(),
+            eccentricity_ratio: sol.eccentricity_ratio,
             linearise_seconds: t0.elapsed().as_secs_f64(),
         })
     }

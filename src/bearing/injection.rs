@@ -31,7 +31,6 @@ use nalgebra::{Complex, DMatrix};
 
 use crate::physics::hydraulics::NozzleCoupling;
 
-use super::equilibrium::Equilibrium;
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
 
@@ -42,7 +41,7 @@ type C64 = Complex<f64>;
 /// # Errors
 /// A port naming a pad the model does not have, a pad on two ports, or a film failure when re-solving a
 /// pad at the equilibrium.
-pub fn injection_coupling(model: &mut BearingModel, op: &OperatingPoint, eq: &Equilibrium, ports: &[Vec<usize>]) -> Result<NozzleCoupling, SolveError> {
+pub fn injection_coupling(model: &mut BearingModel, op: &OperatingPoint, u: &[f64], ports: &[Vec<usize>]) -> Result<NozzleCoupling, SolveError> {
     let n = model.n_dofs();
     let np = ports.len();
     let mut owner = vec![None; model.pads.len()];
@@ -66,7 +65,7 @@ pub fn injection_coupling(model: &mut BearingModel, op: &OperatingPoint, eq: &Eq
         let Some(k) = *port else { continue };
         let inp = op.film_inputs(p);
         let film = &mut model.pads[p].film;
-        film.set_coordinates(&model.dofs.gather(p, &eq.u)).map_err(|e| SolveError::Film { pad: p, error: e })?;
+        film.set_coordinates(&model.dofs.gather(p, u)).map_err(|e| SolveError::Film { pad: p, error: e })?;
         film.solve(&inp, true).map_err(|e| SolveError::Film { pad: p, error: e })?;
         let r = film.injection_response(&inp);
         // All orifices of the pad see the port's pressure: sum over the orifice columns / rows.
@@ -107,7 +106,7 @@ pub fn dynamic_stiffness(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>, s
 pub(crate) mod tests {
     use super::*;
     use crate::bearing::coefficients::full_coefficients;
-    use crate::bearing::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
+    use crate::bearing::equilibrium::{solve_equilibrium, Equilibrium, EquilibriumParams, NoCancel};
     use crate::model::{load_case, Case, LoadSpec};
 
     fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
@@ -145,7 +144,7 @@ pub(crate) mod tests {
     fn active_force_at_zero_frequency_is_the_static_difference() {
         let p0 = 40.0;
         let (mut model, op, eq) = solve(&rig(p0));
-        let coupling = injection_coupling(&mut model, &op, &eq, &[vec![0, 1]]).unwrap();
+        let coupling = injection_coupling(&mut model, &op, &eq.u, &[vec![0, 1]]).unwrap();
         let full = full_coefficients(&model, &eq);
         let (k, c, m) = (mat(&full.k), mat(&full.c), mat(&full.m));
         let z = dynamic_stiffness(&k, &c, &m, C64::from(0.0));
@@ -185,7 +184,7 @@ pub(crate) mod tests {
     #[test]
     fn active_force_at_high_frequency_is_the_condensed_film_response() {
         let (mut model, op, eq) = solve(&rig(40.0));
-        let coupling = injection_coupling(&mut model, &op, &eq, &[vec![0, 1]]).unwrap();
+        let coupling = injection_coupling(&mut model, &op, &eq.u, &[vec![0, 1]]).unwrap();
         let full = full_coefficients(&model, &eq);
         let (k, c, m) = (mat(&full.k), mat(&full.c), mat(&full.m));
         let b = coupling.force.map(C64::from);

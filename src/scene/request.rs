@@ -15,6 +15,9 @@ pub const FREQUENCY_PLOTS: &[StageId] = &[StageId::Reduction, StageId::Frequency
 /// Coefficients against the running speed.
 pub const SPEED_PLOTS: &[StageId] = &[StageId::Reduction, StageId::SpeedSweep];
 
+/// The FRFs: the solution and the bearing linearised for its injection ports.
+pub const FRF: &[StageId] = &[StageId::Reduction, StageId::Frf];
+
 /// Frequency ratios ω/Ω of the frequency sweep: from, to, points.
 pub const RATIOS: (f64, f64, usize) = (0.0, 3.0, 31);
 /// Points of the speed sweep (from half to one and a half times the case's speed).

@@ -2,6 +2,7 @@
 //! tooltips that explain the physics, and validation messages in place.
 
 mod bearing;
+mod hydraulics;
 mod operation;
 mod thermal;
 pub mod widgets;
@@ -13,7 +14,7 @@ pub use widgets::EditOutput;
 
 /// The groups, in order: title, function that draws the rows, open by default.
 type GroupUi = fn(&mut Ui, &mut Document) -> EditOutput;
-const GROUPS: [(&str, GroupUi, bool); 8] = [
+const GROUPS: [(&str, GroupUi, bool); 9] = [
     ("Geometry", bearing::geometry_ui, true),
     ("Pads", bearing::pads_ui, true),
     ("Orifices", bearing::orifices_ui, false),
@@ -22,6 +23,7 @@ const GROUPS: [(&str, GroupUi, bool); 8] = [
     ("Physics model", operation::physics_ui, false),
     ("Thermal model", thermal::thermal_ui, false),
     ("Fidelity", operation::fidelity_ui, false),
+    ("Hydraulics (controllable bearing)", hydraulics::hydraulics_ui, false),
 ];
 
 /// Draws the editor; returns what changed.
@@ -50,7 +52,7 @@ mod tests {
     /// there); only the editor's own choices (how a value is given) have none.
     #[test]
     fn every_editor_key_has_a_schema_row() {
-        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs")];
+        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs"), include_str!("hydraulics.rs")];
         let mut keys = 0;
         for src in sources {
             for part in src.split("key: \"").skip(1) {
@@ -62,7 +64,7 @@ mod tests {
                 keys += 1;
             }
         }
-        for key in ["mesh.circumferential_elements", "bearing.pads.orifice[0].diameter_mm", "title", "lubricant.name", "bearing.pads.count"] {
+        for key in ["hydraulics.port[1].air_fraction", "mesh.circumferential_elements", "bearing.pads.orifice[0].diameter_mm", "title", "lubricant.name", "bearing.pads.count"] {
             assert!(crate::model::schema::spec(key).is_some(), "{key}");
         }
         assert!(keys > 40, "found only {keys} editor keys");

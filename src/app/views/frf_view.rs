@@ -3,9 +3,9 @@
 //! fraction, line length and valve bandwidth that re-run only the frequency loop, CSV export, and the
 //! model's limitations stated.
 //!
-//! The bearing's equilibrium and linearisation ([`FrfModel`]) are computed once per case on the UI thread
-//! (isothermal; a few tens of ms at preview fidelity in release builds) and cached; the sliders change a
-//! copy of the case's hydraulics and re-run [`FrfModel::sweep`] (400 frequencies, below a millisecond).
+//! The bearing's equilibrium and linearisation ([`FrfModel`]) come from the FRF stage, run by the solver
+//! off the UI thread like every stage while this view is open; the sliders change a copy of the case's
+//! hydraulics and re-run only [`FrfModel::sweep`] (400 frequencies, a few milliseconds), no stage.
 
 use egui::{Color32, RichText, Ui};
 use egui_plot::{HoverPosition, Legend, Line, Plot, VLine};
@@ -34,8 +34,8 @@ const GROUPS: [&str; 5] = ["G1", "G2", "G3", "G", "rig"];
 /// The view's runtime state (not persisted).
 #[derive(Default)]
 pub struct FrfView {
-    /// The case the cached model belongs to, and the model (or why it failed).
-    cache: Option<(Case, Result<FrfModel, String>)>,
+    /// The case the slider values belong to.
+    for_case: Option<Case>,
     /// Slider values: air fraction [–], line length [mm], valve natural frequency [Hz]; `None` = the case's.
     air_fraction: Option<f64>,
     line_length_mm: Option<f64>,
@@ -53,14 +53,12 @@ pub enum FrfAction {
 }
 
 impl FrfView {
-    /// Computes the model for `case` unless cached; the error, if it failed.
-    fn ensure(&mut self, case: &Case) -> Option<String> {
-        let fresh = self.cache.as_ref().is_some_and(|(c, _)| c == case);
-        if !fresh {
-            self.cache = Some((case.clone(), FrfModel::new(case).map_err(|e| e.to_string())));
+    /// A new case resets the sliders to its values.
+    fn follow(&mut self, case: &Case) {
+        if self.for_case.as_ref() != Some(case) {
+            self.for_case = Some(case.clone());
             (self.air_fraction, self.line_length_mm, self.valve_hz, self.curves) = (None, None, None, None);
         }
-        self.cache.as_ref().and_then(|(_, m)| m.as_ref().err().cloned())
     }
 }
 
@@ -82,18 +80,20 @@ fn log_ticks(value: f64) -> String {
     if v >= 1.0 { format!("{v:.0}") } else { format!("{v:.2}") }
 }
 
-/// Draws the view for `case` (the shown solution's inputs).
-pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case) -> Option<FrfAction> {
+/// Draws the view for `case` (the shown solution's inputs) and its linearised bearing `model` (the FRF
+/// stage's output; `None` while it is computed).
+pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case, model: Option<&FrfModel>) -> Option<FrfAction> {
     let Some(h) = case.hydraulics.clone() else {
         ui.add_space(16.0);
         ui.label(RichText::new("Frequency response of the controllable bearing").heading());
         ui.label("This case has no [hydraulics] section (servovalve, ports, injection lines). Open the shipped \"Test rig, Publ. 5\" case to see the FRFs.");
         return None;
     };
-    if let Some(e) = view.ensure(case) {
-        ui.label(RichText::new(format!("No operating point for the FRFs: {e}")).color(Color32::from_rgb(230, 120, 60)));
+    let Some(model) = model else {
+        ui.label("Linearising the bearing for its injection ports…");
         return None;
-    }
+    };
+    view.follow(case);
     let (air0, len0, hz0) = (h.ports[0].air_fraction, h.ports[0].line_length_m * 1e3, h.valve.natural_frequency_rad_s / std::f64::consts::TAU);
     let mut air = view.air_fraction.unwrap_or(air0);
     let mut len = view.line_length_mm.unwrap_or(len0);
@@ -112,7 +112,6 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case) -> Option<FrfAction>
         (view.air_fraction, view.line_length_mm, view.valve_hz) = (Some(air), Some(len), Some(hz));
     }
     let adj = adjusted(case, air, len, hz);
-    let Some((_, Ok(model))) = view.cache.as_ref() else { return None };
     if view.curves.as_ref().is_none_or(|(c, _)| *c != adj) {
         match model.sweep(&adj, &band(1.0, 1000.0, 400)) {
             Ok(s) => {

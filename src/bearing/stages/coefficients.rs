@@ -38,7 +38,7 @@ impl CoefficientsInputs {
 }
 
 /// The full inertia matrix of a case's pads over the solution's coordinates (journal rows zero).
-fn pad_inertia(case: &Case, coords: &[Coord]) -> Vec<Vec<f64>> {
+pub(super) fn pad_inertia(case: &Case, coords: &[Coord]) -> Vec<Vec<f64>> {
     let n = coords.len();
     let mut m = vec![vec![0.0; n]; n];
     let b = &case.bearing;

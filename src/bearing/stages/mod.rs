@@ -15,6 +15,7 @@
 //! | `Reduction`      | Coefficients + ω/Ω: the solution the views show                          | Coefficients         |
 //! | `FrequencySweep` | Coefficients + the request's ratios ω/Ω                                  | Coefficients         |
 //! | `SpeedSweep`     | Coefficients' inputs with Ω left out + ω/Ω + the request's speeds        | Films                |
+//! | `Frf`            | Equilibrium + pad density + the pads each `[hydraulics]` port feeds      | Films, Equilibrium   |
 //!
 //! Each row is the `Inputs` struct of the stage's file, built by a function that destructures [`Case`] and
 //! its sub-structs **exhaustively (no `..`)**: adding a field anywhere in `Case` is a compile error in
@@ -22,8 +23,9 @@
 //!
 //! Read by no stage: the title and the case itself (stamped on the published solution), Young's modulus and
 //! Poisson's ratio (until the pads deform), the fidelity name (its element counts are read), the oil's
-//! name, and the node budget `mesh.max_nodes` (checked when the case is validated, before any stage runs), and the `[hydraulics]` section (read by the
-//! FRF view, which builds its own `FrfModel` until it becomes a stage).
+//! name, and the node budget `mesh.max_nodes` (checked when the case is validated, before any stage runs), and of the `[hydraulics]` section everything
+//! but the ports' pads (the valve, lines and rig enter only the FRF view's frequency loop, run on the `Frf`
+//! stage's output).
 //! Editing them runs nothing. The pivot stiffnesses and the pad density are not read by the films: the
 //! stages that solve install the pads' structure in the films' model ([`films::install_structure`],
 //! [`crate::bearing::BearingModel::set_structure`]) without rebuilding it; the density reaches only
@@ -159,6 +161,8 @@ stages! {
     FrequencySweep => frequency_sweep::FrequencySweepStage,
     /// One solution per speed.
     SpeedSweep => speed_sweep::SpeedSweepStage,
+    /// The bearing linearised for its injection ports (the FRFs' operating point).
+    Frf => frf::FrfStage,
 }
 
 impl StageId {

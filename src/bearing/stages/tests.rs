@@ -18,10 +18,40 @@ fn with_sweep(case: Case) -> Request {
     Request { case, wanted: vec![StageId::Reduction, StageId::FrequencySweep], frequency_ratios: RATIOS.to_vec(), speeds_rpm: Vec::new() }
 }
 
-/// Runs of (Films, Equilibrium, Thermal, Coefficients, Reduction, FrequencySweep, SpeedSweep).
+/// Runs of (Films, Equilibrium, Thermal, Coefficients, Reduction, FrequencySweep, SpeedSweep); the FRF
+/// stage has its own test.
 fn runs(s: &Stages) -> [usize; 7] {
     let v: Vec<usize> = s.all_runs().into_iter().map(|(_, n)| n).collect();
-    v.try_into().unwrap()
+    v[..7].try_into().unwrap()
+}
+
+/// The FRF stage reads the ports' pads, not the valve, lines or rig: the sliders of the FRF view (air
+/// fraction, line length, valve bandwidth) rerun no stage; the load reruns the equilibrium and the FRF
+/// stage; its model equals the one the CLI builds on its own.
+#[test]
+fn the_frf_stage_reads_the_ports_pads_only() {
+    let rig = |set: &[&str]| {
+        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+        load_case(include_str!("../../../cases/test-rig-pub5.toml"), &set).unwrap().1
+    };
+    let req = |case: Case| Request { case, wanted: vec![StageId::Reduction, StageId::Frf], frequency_ratios: Vec::new(), speeds_rpm: Vec::new() };
+    let mut s = Stages::new();
+    let first = s.run(&req(rig(&[])), &NoCancel).unwrap();
+    let model = first.get::<crate::bearing::frf_job::FrfModel>(StageId::Frf).unwrap();
+    assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (1, 1));
+    for edit in ["hydraulics.port.0.air_fraction=0.01", "hydraulics.port.0.line_length_mm=1500", "hydraulics.valve.natural_frequency_hz=80", "hydraulics.supply_pressure_bar=40"] {
+        let o = s.run(&req(rig(&[edit])), &NoCancel).unwrap();
+        assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (1, 1), "{edit} ran a stage");
+        assert!(Arc::ptr_eq(&o.get::<crate::bearing::frf_job::FrfModel>(StageId::Frf).unwrap(), &model));
+    }
+    s.run(&req(rig(&["operating.load_n=500"])), &NoCancel).unwrap();
+    assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (2, 2));
+    // The CLI's model (the stage run alone) is the app's, to round-off.
+    let alone = crate::bearing::frf_job::FrfModel::new(&rig(&[])).unwrap();
+    let dk = (&alone.dynamics.k - &model.dynamics.k).norm() / model.dynamics.k.norm();
+    let df = (&alone.dynamics.coupling.force - &model.dynamics.coupling.force).norm() / model.dynamics.coupling.force.norm();
+    assert!(dk < 1e-9 && df < 1e-9, "{dk:e} {df:e}");
+    assert!(model.dynamics.m.norm() > 0.0, "pad inertia");
 }
 
 #[test]

@@ -1,0 +1,79 @@
+//! The FRF stage: the bearing linearised for its injection ports at the isothermal equilibrium
+//! ([`FrfModel`]: full `K`, `C`, `M` over journal and pad coordinates and the nozzle coupling — one extra
+//! right-hand side per port in the films' factorisations, see [`crate::bearing::injection`]).
+//!
+//! It reads which pads each port feeds and nothing else of `[hydraulics]`: the valve, the lines, the air
+//! fraction and the rig are cheap and enter only the frequency loop ([`FrfModel::sweep`]), which the FRF view
+//! and the CLI run on the published model, so a slider on air fraction, line length or valve bandwidth
+//! reruns no stage. Thermal cases are linearised at their isothermal equilibrium (the injected oil's
+//! temperature sets the injection viscosity).
+
+use std::sync::Arc;
+
+use web_time::Instant;
+
+use crate::bearing::error::SolveError;
+use crate::bearing::frf_job::FrfModel;
+use crate::bearing::model::OperatingPoint;
+use crate::bearing::progress::Cancel;
+use crate::model::hydraulics::{Hydraulics, Port};
+
+use super::coefficients::pad_inertia;
+use super::equilibrium::{EquilibriumInputs, EquilibriumStage};
+use super::films::{FilmsStage, StructureInputs};
+use super::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
+
+/// The inputs of the linearisation for the ports.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrfInputs {
+    pub equilibrium: EquilibriumInputs,
+    /// Pad density per pad [kg/m³] (the inertia `M`).
+    pub density_kg_per_m3: Vec<f64>,
+    /// The pads each port feeds.
+    pub port_pads: Vec<Vec<usize>>,
+}
+
+impl FrfInputs {
+    /// `None` without `[hydraulics]`. Exhaustive over the hydraulics (no `..`).
+    #[must_use]
+    pub fn of(case: &crate::model::Case) -> Option<Self> {
+        let Hydraulics { supply_pressure_pa: _, return_pressure_pa: _, valve: _, ports, rig: _ } = case.hydraulics.as_ref()?;
+        let port_pads = ports
+            .iter()
+            .map(|port| {
+                let Port { sign: _, pads, line_length_m: _, line_diameter_m: _, oil_bulk_modulus_pa: _, air_fraction: _, wall_compliance_per_pa: _, modes: _ } = port;
+                pads.clone()
+            })
+            .collect();
+        Some(Self { equilibrium: EquilibriumInputs::of(case), density_kg_per_m3: StructureInputs::of(case).density_kg_per_m3, port_pads })
+    }
+}
+
+#[derive(Default)]
+pub struct FrfStage;
+
+impl Stage for FrfStage {
+    const LABEL: &'static str = "FRF linearisation";
+    const NEEDS: &'static [StageId] = &[StageId::Films, StageId::Equilibrium];
+    type Inputs = FrfInputs;
+    type Output = Arc<FrfModel>;
+
+    fn inputs(req: &Request) -> Option<FrfInputs> {
+        FrfInputs::of(&req.case)
+    }
+
+    fn poll(&mut self, inputs: &FrfInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<Arc<FrfModel>>, SolveError> {
+        let case = ctx.case().clone();
+        let sol = Arc::clone(ctx.output::<EquilibriumStage>()?);
+        let model = ctx.output_mut::<FilmsStage>()?;
+        let t0 = Instant::now();
+        let op = OperatingPoint::isothermal(&case);
+        let m = pad_inertia(&case, &sol.full.coords);
+        let frf = FrfModel::linearise(model, &op, &case, &sol, m, &inputs.port_pads)?;
+        Ok(Progress::Done(Arc::new(FrfModel { linearise_seconds: t0.elapsed().as_secs_f64(), ..frf })))
+    }
+
+    fn publish(&mut self, output: &Arc<FrfModel>, _req: &Request) -> Option<Published> {
+        Some(output.clone())
+    }
+}
