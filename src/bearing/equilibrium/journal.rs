@@ -65,33 +65,60 @@ impl std::fmt::Display for StepFailure {
     }
 }
 
-/// Newton step `K Δ = r` by singular values: directions without stiffness are not moved along; a load
-/// component there above `tol` cannot be carried. Returns the step and the held direction, if any.
-pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StepFailure> {
-    if !k.iter().all(|v| v.is_finite()) {
-        return Err(StepFailure::Other("non-finite bearing stiffness".into()));
+/// The singular directions of a journal stiffness: left `u`, right `vt` rows, values, and which of them
+/// count as zero stiffness (below [`STIFFNESS_RANK_TOL`] of the largest, or all when the largest is zero).
+struct Directions {
+    u: Matrix2<f64>,
+    vt: Matrix2<f64>,
+    sigma: Vector2<f64>,
+    soft: [bool; 2],
+}
+
+impl Directions {
+    /// `None` when `k` is not finite or its decomposition fails.
+    fn of(k: &Matrix2<f64>) -> Option<Self> {
+        if !k.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let svd = k.svd(true, true);
+        let (u, vt) = (svd.u?, svd.v_t?);
+        let sigma = svd.singular_values;
+        let smax = sigma.max();
+        let soft = [0, 1].map(|i| smax <= 0.0 || sigma[i] <= STIFFNESS_RANK_TOL * smax);
+        Some(Self { u, vt, sigma, soft })
     }
-    let svd = k.svd(true, true);
-    let (Some(u), Some(vt)) = (svd.u, svd.v_t) else { return Err(StepFailure::Other("singular value decomposition failed".into())) };
-    let smax = svd.singular_values.max();
-    if smax <= 0.0 {
+
+    /// The load component of `r` along left direction `i`, and that direction.
+    fn component(&self, i: usize, r: &Vector2<f64>) -> (f64, Vector2<f64>) {
+        let ui = self.u.column(i).into_owned();
+        (ui.dot(r), ui)
+    }
+}
+
+fn axis_deg(d: &Vector2<f64>) -> f64 {
+    d[1].atan2(d[0]).to_degrees().rem_euclid(180.0)
+}
+
+/// Newton step `K Δ = r` by singular values: directions without stiffness are not moved along; a load
+/// component there above `10 tol` cannot be carried. Returns the step and the held direction, if any.
+pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StepFailure> {
+    let Some(dirs) = Directions::of(k) else { return Err(StepFailure::Other("non-finite bearing stiffness or failed singular value decomposition".into())) };
+    if dirs.soft == [true, true] {
         if r.norm() > 10.0 * tol {
-            return Err(StepFailure::NoStiffness { axis_deg: r[1].atan2(r[0]).to_degrees().rem_euclid(180.0), component: r.norm() });
+            return Err(StepFailure::NoStiffness { axis_deg: axis_deg(r), component: r.norm() });
         }
         return Err(StepFailure::Other("the bearing has no stiffness at this position".into()));
     }
     let mut step = Vector2::zeros();
     let mut held = None;
     for i in 0..2 {
-        let (ui, vi) = (u.column(i), vt.row(i).transpose());
-        let ri = ui.dot(r);
-        if svd.singular_values[i] > STIFFNESS_RANK_TOL * smax {
-            step += vi * (ri / svd.singular_values[i]);
+        let (ri, ui) = dirs.component(i, r);
+        let vi = dirs.vt.row(i).transpose();
+        if !dirs.soft[i] {
+            step += vi * (ri / dirs.sigma[i]);
+        } else if ri.abs() > 10.0 * tol {
+            return Err(StepFailure::NoStiffness { axis_deg: axis_deg(&ui), component: ri.abs() });
         } else {
-            if ri.abs() > 10.0 * tol {
-                let axis_deg = ui[1].atan2(ui[0]).to_degrees().rem_euclid(180.0);
-                return Err(StepFailure::NoStiffness { axis_deg, component: ri.abs() });
-            }
             held = Some(vi);
         }
     }
@@ -101,20 +128,13 @@ pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Resu
 /// The unit direction along which part of the unbalanced force `r` (above `tol`) acts where `k` has no
 /// stiffness: `r` itself when nothing holds the journal. `None` when every load component is supported.
 pub(super) fn unsupported_direction(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Option<Vector2<f64>> {
-    let smax = k.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    if !smax.is_finite() {
-        return None;
-    }
-    if smax == 0.0 {
+    let dirs = Directions::of(k)?;
+    if dirs.soft == [true, true] {
         return (r.norm() > tol).then(|| r / r.norm());
     }
-    let svd = k.svd(true, false);
-    let u = svd.u?;
-    let smax = svd.singular_values.max();
     (0..2).find_map(|i| {
-        let ui = u.column(i).into_owned();
-        let ri = ui.dot(r);
-        (svd.singular_values[i] <= STIFFNESS_RANK_TOL * smax && ri.abs() > tol).then(|| ui * ri.signum())
+        let (ri, ui) = dirs.component(i, r);
+        (dirs.soft[i] && ri.abs() > tol).then(|| ui * ri.signum())
     })
 }
 
