@@ -183,7 +183,10 @@ fn recheck_unloaded(model: &mut BearingModel, u: &mut [f64], states: &mut [PadSt
         let placed = replace_pad(model, k, u, ctx);
         ctx.thorough_onset = false;
         states[k] = placed?;
-        loaded_again |= ctx.share(&states[k]) >= UNLOADED_SHARE;
+        if ctx.share(&states[k]) >= UNLOADED_SHARE {
+            loaded_again = true;
+            ctx.loaded_state_found.push(k);
+        }
     }
     Ok(loaded_again)
 }

@@ -58,6 +58,8 @@ pub(crate) struct Ctx<'a> {
     /// Pads found at the onset of pressure are searched for a loaded root further on (the final
     /// placements; see `pad::loaded_root_beyond`).
     pub thorough_onset: bool,
+    /// Pads the thorough search found a loaded state of where they floated (a pad near a fold has two).
+    pub loaded_state_found: Vec<usize>,
     /// Film solves allowed in total.
     budget: usize,
     started: Instant,
@@ -66,7 +68,7 @@ pub(crate) struct Ctx<'a> {
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
-        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, budget, started }
+        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, loaded_state_found: Vec::new(), budget, started }
     }
 
     /// Seconds since the solve started.

@@ -53,6 +53,11 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
             ctx.report.warn(format!(
                 "pad {k} floats: it carries {share:.1e} of the load scale, its film is treated as cavitated and contributes no stiffness or damping{what}"
             ));
+            if ctx.loaded_state_found.contains(&k) {
+                ctx.report.warn(format!(
+                    "pad {k} also has a lightly loaded state near this operating point (found during the search; no equilibrium with it loaded was reached): a pad near a fold, so results here may differ between meshes and with the starting point"
+                ));
+            }
         } else {
             // Full linearisation (stiffness and damping) at the converged state: the films hold it.
             p.lin = film.linearize(&op.film_inputs(k));
