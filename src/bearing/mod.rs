@@ -8,6 +8,7 @@ pub mod coefficients;
 pub mod coordinates;
 pub mod equilibrium;
 pub mod error;
+pub mod flex;
 pub mod geometry;
 pub mod job;
 pub mod mixing;

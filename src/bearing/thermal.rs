@@ -133,14 +133,16 @@ impl ThermalModel {
                 )));
             }
             let conduction = (pad.thickness_m > 0.0).then(|| {
-                let mesh = PadMesh::extrude(
-                    &film.geom.grid,
-                    b.journal_radius_m,
-                    pad.leading_edge_rad,
-                    pad.bore_radius_m(b.journal_radius_m),
-                    pad.thickness_m,
-                    case.mesh.pad_radial_elements,
-                );
+                let mesh = pm.solid.clone().unwrap_or_else(|| {
+                    std::sync::Arc::new(PadMesh::extrude(
+                        &film.geom.grid,
+                        b.journal_radius_m,
+                        pad.leading_edge_rad,
+                        pad.bore_radius_m(b.journal_radius_m),
+                        pad.thickness_m,
+                        case.mesh.pad_radial_elements,
+                    ))
+                });
                 PadConduction::new(mesh)
             });
             if conduction.is_none() && !matches!(case.thermal.pad_film_bc, PadFilmBc::Bc1) {

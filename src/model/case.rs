@@ -171,6 +171,9 @@ pub struct Physics {
     pub cavitation: Cavitation,
     /// Film thickness below which an equilibrium counts as touchdown [m].
     pub touchdown_film_m: f64,
+    /// Bending modes per tilting pad beyond the rigid tilt (pseudo-modal pad flexibility, model.md §5);
+    /// 0 = rigid pads.
+    pub pad_modes: usize,
 }
 
 /// Film–pad heat exchange (model.md §3).

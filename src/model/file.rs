@@ -260,6 +260,9 @@ pub struct PhysicsFile {
     /// contact through their roughness). Default: 1 % of the assembled clearance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub touchdown_film_um: Option<f64>,
+    /// Bending modes per tilting pad beyond the rigid tilt (pad flexibility); 0 (default) = rigid pads.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_modes: Option<usize>,
 }
 
 /// Which film model: isothermal (one viscosity at `operating.film_temperature_c`) or thermohydrodynamic.

@@ -18,6 +18,8 @@ const UM: f64 = 1e-6;
 const BAR: f64 = 1e5;
 /// Largest pad count the solver accepts.
 pub const MAX_PADS: usize = 24;
+/// Most bending modes per pad (the thesis finds the first one carries almost all of the effect).
+pub const MAX_PAD_MODES: usize = 3;
 
 impl CaseFile {
     /// Validates every value and converts to SI.
@@ -34,7 +36,15 @@ impl CaseFile {
             Some(v) => Range::open_lo(0.0, 0.5 * cb / UM).check("physics.touchdown_film_um", v)? * UM,
             None => 0.01 * cb,
         };
-        let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown };
+        let pad_modes = match self.physics.pad_modes {
+            Some(v) if v > MAX_PAD_MODES => {
+                #[allow(clippy::cast_precision_loss)]
+                let value = v as f64;
+                return Err(CaseError::OutOfRange { key: "physics.pad_modes".into(), value, allowed: format!("an integer in [0, {MAX_PAD_MODES}]") });
+            }
+            v => v.unwrap_or(0),
+        };
+        let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
         let thermal = resolve_thermal(self, &operating)?;
         let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal };
         super::budget::check(&case)?;

@@ -302,6 +302,14 @@ pub const KEYS: &[KeySpec] = &[
         "1 % of the assembled clearance",
         "Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (contact through the surface roughness).",
     ),
+    KeySpec {
+        key: "physics.pad_modes",
+        unit: "",
+        allowed: Allowed::Integer { lo: 0, hi: 3 },
+        typical: Some((0.0, 3.0)),
+        default: "0 (rigid pads)",
+        meaning: "Bending modes per tilting pad beyond the rigid tilt (pad flexibility by pseudo-modal reduction of the pad's finite-element model, with E, ν and density of the pads). Each mode adds a coordinate to the equilibrium and a row/column to the full coefficient matrices. The first bending mode carries almost all of the effect.",
+    },
     // [thermal]
     other(
         "thermal.model",

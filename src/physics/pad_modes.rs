@@ -61,7 +61,8 @@ pub struct PadMode {
     pub frequency_hz: f64,
     /// Film-face radial displacement per unit coordinate, at the film nodes.
     pub film_shape: Vec<f64>,
-    /// Nodal displacements (x, y, z per pad node) per unit coordinate, for drawing.
+    /// Nodal displacements per unit coordinate, (u_r, u_θ, u_z) per pad node (polar components, so that
+    /// identical pads at other angles share them), for drawing.
     pub nodal: Vec<f64>,
     /// Modal mass [kg] and stiffness [N/m] of the whole pad.
     pub mass: f64,
@@ -206,10 +207,19 @@ fn mode_from_pair(pairs: &EigenPairs, i: usize, sys: &ElasticSystem, solid: &Sol
     }
     let (c, s) = (pivot_rad.cos(), pivot_rad.sin());
     let mass = sym * scale * scale;
+    let polar = (0..solid.n_nodes())
+        .flat_map(|n| {
+            let x = solid.nodes[n];
+            let r = x[0].hypot(x[1]);
+            let (cn, sn) = (x[0] / r, x[1] / r);
+            let u = &nodal[3 * n..3 * n + 3];
+            [u[0] * cn + u[1] * sn, -u[0] * sn + u[1] * cn, u[2]]
+        })
+        .collect();
     PadMode {
         frequency_hz: pairs.values[i].max(0.0).sqrt() / std::f64::consts::TAU,
         film_shape: radial.iter().map(|v| v * scale).collect(),
-        nodal,
+        nodal: polar,
         mass,
         stiffness: pairs.values[i] * mass,
         momentum_pt: [momentum[0] * c + momentum[1] * s, -momentum[0] * s + momentum[1] * c],
