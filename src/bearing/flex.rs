@@ -8,8 +8,8 @@
 //! equilibrium and the coefficients handle the extra coordinates as they handle any other.
 //!
 //! Modes depend on exactly [`ModeKey`]: the film grid, journal radius, bore, thickness, layers, pivot
-//! position within the arc, material and count. Pads with equal keys (the usual identical pads at other
-//! angles) share one computation.
+//! position within the arc, material and count. Pads whose keys match up to round-off ([`ModeKey::matches`]; the usual
+//! identical pads at other angles) share one computation.
 
 use std::sync::Arc;
 

@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -14,6 +14,8 @@ mod bench;
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod modes;
 #[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
@@ -135,6 +137,25 @@ pub enum Command {
         #[arg(long, default_value = "tiltpad")]
         tag: String,
     },
+    /// Pad bending modes on the pivot (frequency, modal mass and stiffness), optionally the mesh-convergence
+    /// table of the first pad's modes (thesis Table 3.1 style).
+    Modes {
+        case: PathBuf,
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Bending modes per pad (1–6).
+        #[arg(long, default_value_t = 3)]
+        count: usize,
+        /// Also the convergence table over film/solid meshes.
+        #[arg(long)]
+        table: bool,
+        /// JSON of the modes (and table) (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// CSV of the modes, or of the table with --table (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+    },
     /// Print every case key with its unit, allowed values, default and meaning.
     Schema {
         /// Write the table as JSON instead (`-`: standard output).
@@ -236,6 +257,7 @@ pub fn run(command: Command) -> Result<()> {
             node,
             tag: &tag,
         }),
+        Command::Modes { case, set, count, table, json, csv } => modes::run(&modes::ModeArgs { case: &case, set: &set, count, table, json, csv }),
         Command::Schema { json } => {
             match json {
                 Some(out) => {

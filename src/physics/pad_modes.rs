@@ -107,6 +107,24 @@ pub struct ModeKey {
     pub bending: usize,
 }
 
+impl ModeKey {
+    /// Equal up to round-off (1e-9 relative; identical pads at other angles differ in the last bits).
+    #[must_use]
+    pub fn matches(&self, other: &Self) -> bool {
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs()).max(1e-3);
+        let all = |a: &[f64], b: &[f64]| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| close(*x, *y));
+        let (g, h) = (&self.grid, &other.grid);
+        all(&g.s, &h.s)
+            && all(&g.z, &h.z)
+            && g.periodic == h.periodic
+            && g.half == h.half
+            && self.layers == other.layers
+            && self.bending == other.bending
+            && self.material == other.material
+            && all(&[self.radius, self.bore, self.thickness, self.pivot_from_le], &[other.radius, other.bore, other.thickness, other.pivot_from_le])
+    }
+}
+
 /// Pivot and material of a pad for [`PadModes::compute`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PivotSupport {
@@ -173,7 +191,7 @@ impl PadModes {
     /// # Errors
     /// As [`PadModes::compute`].
     pub fn cached(cache: &mut Vec<(ModeKey, Arc<Self>)>, key: ModeKey, compute: impl FnOnce() -> Result<Self, ElasticError>) -> Result<Arc<Self>, ElasticError> {
-        if let Some((_, m)) = cache.iter().find(|(k, _)| *k == key) {
+        if let Some((_, m)) = cache.iter().find(|(k, _)| k.matches(&key)) {
             return Ok(m.clone());
         }
         let m = Arc::new(compute()?);
