@@ -18,7 +18,7 @@
 //!   (rectangles, isoparametric quadrilaterals, cylindrical hexahedra), sparse assembly, Cholesky and LU
 //!   factorisation, the SUPG advection–diffusion kernel.
 //! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow,
-//!   film energy, pad heat conduction).
+//!   film energy, pad heat conduction, pad elasticity and the pad's bending modes).
 //! - [`bearing`]: geometry of the film, equilibrium (Newton), the thermal (THD) loop, dynamic coefficients,
 //!   the solve job.
 //! - [`scene`]: results → plain drawables for the workbench (colour fields, flowlines, the bearing outline,
@@ -28,7 +28,7 @@
 //! - [`io`]: safe (atomic) writes, VTK `.vtu`/`.pvd` exports of the film and pad fields, reduced
 //!   coefficients for ROSS and as CSV.
 //! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
-//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`).
+//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `schema`, `bench`).
 
 // Lints: `[lints]` in Cargo.toml. Library paths that user input reaches never unwrap or expect (test
 // builds may; `[lints]` cannot tell test targets apart, so this one stays here).

@@ -45,6 +45,13 @@ fn modes_are_coordinates_and_stiff_pads_tend_to_rigid() {
     assert_eq!(soft.full.coords.len(), n_rigid + 5, "one mode per pad");
     assert!(soft.full.coords.contains(&Coord::Pad { pad: 3, dof: PadDof::Mode(0) }));
     assert_eq!(soft.full.k.len(), n_rigid + 5);
+    // Deformation output: one amplitude per mode; the film-face field peaks at the amplitude (unit shapes).
+    for p in &soft.pads {
+        assert_eq!(p.mode_amplitudes_m.len(), 1);
+        let peak = p.elastic_displacement_m.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+        assert!((peak - p.mode_amplitudes_m[0].abs()).abs() <= 1e-12 * peak.max(1e-30), "{peak} {:?}", p.mode_amplitudes_m);
+    }
+    eprintln!("loaded pad (4) mode amplitude {:.3} µm", 1e6 * soft.pads[3].mode_amplitudes_m[0]);
     let stiff = flex(2000.0);
     let stiffer = flex(20000.0);
     let d = |s: &Solution| (s.eccentricity_ratio - rigid.eccentricity_ratio).abs();

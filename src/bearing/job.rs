@@ -244,6 +244,8 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             friction_power_w: pw,
             cavitated_fraction: cav_frac,
             unloaded: st.unloaded,
+            mode_amplitudes_m: mode_amplitudes(pm, &st.q),
+            elastic_displacement_m: elastic_displacement(pm, &st.q),
             field,
             thermal: None,
         });
@@ -299,4 +301,22 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
         inputs: case.clone(),
         thermal: None,
     }
+}
+
+/// The pad's modal coordinates `PadDof::Mode(i)`, in mode order.
+fn mode_amplitudes(pm: &super::model::PadModel, q: &[f64]) -> Vec<f64> {
+    pm.dofs().iter().zip(q).filter(|(d, _)| matches!(d, PadDof::Mode(_))).map(|(_, v)| *v).collect()
+}
+
+/// Σ q_i φ_i at the film nodes (empty for a rigid pad).
+fn elastic_displacement(pm: &super::model::PadModel, q: &[f64]) -> Vec<f64> {
+    let Some(modes) = &pm.modes else { return Vec::new() };
+    let amps = mode_amplitudes(pm, q);
+    let mut u = vec![0.0; pm.film.geom.n_nodes()];
+    for (m, a) in modes.modes.iter().zip(&amps) {
+        for (ui, phi) in u.iter_mut().zip(&m.film_shape) {
+            *ui += a * phi;
+        }
+    }
+    u
 }

@@ -89,6 +89,13 @@ pub struct PadResult {
     pub cavitated_fraction: f64,
     /// The pad carries almost no load (a floating pad: see [`super::equilibrium::FLOATING_SHARE`]).
     pub unloaded: bool,
+    /// Amplitude of each retained bending mode (flexible pads) [m]: the largest film-face radial
+    /// displacement of the mode, positive opening the film where the mode's shape peaks.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mode_amplitudes_m: Vec<f64>,
+    /// Elastic radial displacement of the film face at each film node, Σ q_i φ_i [m] (empty for rigid pads).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub elastic_displacement_m: Vec<f64>,
     #[serde(skip)]
     pub field: PadField,
     /// Thermal results (thermal model only).

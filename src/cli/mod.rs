@@ -13,6 +13,8 @@ mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_flex;
+#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod modes;

@@ -19,6 +19,9 @@
 //! test on distorted shapes. The internal unknowns are condensed out element by element:
 //! `K = K_cc − K_ci K_ii⁻¹ K_ic`. The mass uses the compatible shape functions only.
 //!
+//! Thermal strain `ε_th = α ΔT (1, 1, 1, 0, 0, 0)` enters as the load `∫ Bᵀ D ε_th dV` (condensed like the
+//! stiffness), for the pads' thermal growth.
+//!
 //! Units: SI (m, Pa, kg/m³); the element matrices act on `u = (u_x, u_y, u_z)` per node, node-major.
 
 use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
@@ -113,21 +116,33 @@ fn gauss_points() -> impl Iterator<Item = [f64; 3]> {
     [-G, G].into_iter().flat_map(|a| [-G, G].into_iter().flat_map(move |b| [-G, G].into_iter().map(move |c| [a, b, c])))
 }
 
-/// Stiffness and mass of one element with Cartesian nodes `x`. `None` if the element is inverted
-/// (`det J ≤ 0` at a Gauss point).
-#[must_use]
-pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24)> {
+/// Element integrals before condensation: compatible and internal (incompatible) blocks.
+struct Parts {
+    kcc: Matrix24,
+    kci: SMatrix<f64, 24, 9>,
+    kii: SMatrix<f64, 9, 9>,
+    m: Matrix24,
+    /// Thermal load `∫ Bᵀ D ε_th dV` on the compatible and the internal unknowns.
+    fc: SVector<f64, 24>,
+    fi: SVector<f64, 9>,
+}
+
+/// Integrates the element; `thermal` = (α, nodal temperature rise) adds the thermal-strain load.
+fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, thermal: Option<(f64, &[f64; 8])>) -> Option<Parts> {
     let d_mat = mat.d_matrix();
-    let centre = [0.0; 3];
-    let j0 = jacobian(x, &dshape(centre));
+    let j0 = jacobian(x, &dshape([0.0; 3]));
     let det0 = j0.determinant();
     let j0_inv = j0.try_inverse()?;
-    let mut kcc = Matrix24::zeros();
-    let mut kci = SMatrix::<f64, 24, 9>::zeros();
-    let mut kii = SMatrix::<f64, 9, 9>::zeros();
-    let mut m = Matrix24::zeros();
-    for p in gauss_points() {
-        let d = dshape(p);
+    let mut p = Parts {
+        kcc: Matrix24::zeros(),
+        kci: SMatrix::zeros(),
+        kii: SMatrix::zeros(),
+        m: Matrix24::zeros(),
+        fc: SVector::zeros(),
+        fi: SVector::zeros(),
+    };
+    for gp in gauss_points() {
+        let d = dshape(gp);
         let j = jacobian(x, &d);
         let det = j.determinant();
         if det <= 0.0 {
@@ -139,36 +154,68 @@ pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> 
             b.fixed_view_mut::<6, 3>(0, 3 * a).copy_from(&b_columns(&(j_inv * da)));
         }
         let db = d_mat * b;
-        kcc += b.transpose() * db * det;
+        p.kcc += b.transpose() * db * det;
+        let n = shape(gp);
+        // Thermal strain α ΔT (1, 1, 1, 0, 0, 0) at the Gauss point; its stress D ε_th.
+        let sigma_th = thermal.map(|(alpha, dt)| {
+            let t: f64 = n.iter().zip(dt).map(|(na, ta)| na * ta).sum();
+            d_mat * SVector::<f64, 6>::from_row_slice(&[alpha * t, alpha * t, alpha * t, 0.0, 0.0, 0.0])
+        });
+        if let Some(s) = &sigma_th {
+            p.fc += b.transpose() * s * det;
+        }
         if form == Formulation::Incompatible {
             // Internal fields (1 − ξ_i²): reference gradient −2 ξ_i e_i, mapped with the centre Jacobian.
             let mut bi = SMatrix::<f64, 6, 9>::zeros();
             for i in 0..3 {
                 let mut dp = Vector3::zeros();
-                dp[i] = -2.0 * p[i];
+                dp[i] = -2.0 * gp[i];
                 let g = (j0_inv * dp) * (det0 / det);
                 bi.fixed_view_mut::<6, 3>(0, 3 * i).copy_from(&b_columns(&g));
             }
-            kci += db.transpose() * bi * det;
-            kii += bi.transpose() * d_mat * bi * det;
+            p.kci += db.transpose() * bi * det;
+            p.kii += bi.transpose() * d_mat * bi * det;
+            if let Some(s) = &sigma_th {
+                p.fi += bi.transpose() * s * det;
+            }
         }
-        let n = shape(p);
         for a in 0..8 {
             for bb in 0..8 {
                 let v = mat.density * n[a] * n[bb] * det;
                 for c in 0..3 {
-                    m[(3 * a + c, 3 * bb + c)] += v;
+                    p.m[(3 * a + c, 3 * bb + c)] += v;
                 }
             }
         }
     }
+    Some(p)
+}
+
+/// Stiffness and mass of one element with Cartesian nodes `x`. `None` if the element is inverted
+/// (`det J ≤ 0` at a Gauss point).
+#[must_use]
+pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24)> {
+    let p = integrate(x, mat, form, None)?;
     let k = if form == Formulation::Incompatible {
-        let chol = kii.cholesky()?;
-        kcc - kci * chol.solve(&kci.transpose())
+        let chol = p.kii.cholesky()?;
+        p.kcc - p.kci * chol.solve(&p.kci.transpose())
     } else {
-        kcc
+        p.kcc
     };
-    Some((k, m))
+    Some((k, p.m))
+}
+
+/// Equivalent nodal forces of a thermal strain `α ΔT` (ΔT given at the nodes, interpolated trilinearly),
+/// `f = ∫ Bᵀ D ε_th dV`, condensed consistently with the stiffness: `f_c − K_ci K_ii⁻¹ f_i`.
+#[must_use]
+pub fn element_thermal_load(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, alpha: f64, dt: &[f64; 8]) -> Option<SVector<f64, 24>> {
+    let p = integrate(x, mat, form, Some((alpha, dt)))?;
+    if form == Formulation::Incompatible {
+        let chol = p.kii.cholesky()?;
+        Some(p.fc - p.kci * chol.solve(&p.fi))
+    } else {
+        Some(p.fc)
+    }
 }
 
 /// Momentum of a displacement (velocity) field over the element, `∫ ρ u dV` [kg · unit of u].

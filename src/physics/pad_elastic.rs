@@ -23,7 +23,7 @@
 //! them as they are. Units: SI.
 
 use crate::fem::eigen::{self, EigenError, EigenPairs, EigenParams};
-use crate::fem::solid8::{element_matrices, Elastic, Formulation};
+use crate::fem::solid8::{element_matrices, element_thermal_load, Elastic, Formulation};
 use crate::fem::{Pattern, SolverError, SpdSolver};
 use crate::fem::hex8::NODES;
 use crate::mesh::pad3d::PadMesh;
@@ -150,6 +150,23 @@ pub enum ElasticError {
     Factor(SolverError),
     #[error(transparent)]
     Eigen(#[from] EigenError),
+}
+
+/// Nodal forces (3 per node) equivalent to the thermal strain `α ΔT` of a nodal temperature rise `dt`
+/// (thermal growth, model.md §5).
+///
+/// # Errors
+/// [`ElasticError::Element`] for an inverted element.
+pub fn thermal_forces(solid: &Solid, material: &Elastic, alpha: f64, dt: &[f64]) -> Result<Vec<f64>, ElasticError> {
+    let mut f = vec![0.0; 3 * solid.n_nodes()];
+    for (e, hex) in solid.hexes.iter().enumerate() {
+        let t = hex.map(|n| dt[n]);
+        let fe = element_thermal_load(&solid.element_nodes(e), material, Formulation::Incompatible, alpha, &t).ok_or(ElasticError::Element { element: e })?;
+        for (l, v) in fe.iter().enumerate() {
+            f[3 * hex[l / 3] + l % 3] += v;
+        }
+    }
+    Ok(f)
 }
 
 /// Reduced stiffness and mass of a supported solid, on one sparse pattern.
@@ -353,6 +370,37 @@ mod tests {
         let (e, a, i) = (200e9, b * t, b * t.powi(3) / 12.0);
         let exact = std::f64::consts::FRAC_PI_4 * p * r * (r * r / (e * i) + 1.0 / (e * a) + 1.2 / (0.5 * e * a));
         (-mean(&solid, &u, 1, free_end), exact)
+    }
+
+    /// Temperature linear through the depth of a bar, T = a + b y: the free thermal strain is compatible and
+    /// stress-free, u_y = α (a y + b (y² − x² − z²)/2) with u_x = 0 on x = 0, u_z = 0 on z = 0 and the origin
+    /// pinned. Its quadratic terms are exactly the elements' incompatible modes, so the tip moves as the closed
+    /// form says to round-off (the condensed thermal load is consistent).
+    #[test]
+    fn a_linear_temperature_bends_a_free_bar_exactly() {
+        let (l, h, b) = (0.2, 0.01, 0.01);
+        let solid = beam(l, h, b, [10, 2, 2]);
+        let mut fixed = Vec::new();
+        for (i, x) in solid.nodes.iter().enumerate() {
+            if x[0] == 0.0 {
+                fixed.push((i, 0));
+            }
+            if x[2] == 0.0 {
+                fixed.push((i, 2));
+            }
+            if x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0 {
+                fixed.push((i, 1));
+            }
+        }
+        let steel = Elastic { youngs_modulus: 200e9, poisson_ratio: 0.3, density: 7800.0 };
+        let sys = ElasticSystem::assemble(&solid, &steel, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+        let (alpha, a, slope) = (1.2e-5, 30.0, 2000.0);
+        let dt: Vec<f64> = solid.nodes.iter().map(|x| a + slope * x[1]).collect();
+        let u = sys.static_solve(&thermal_forces(&solid, &steel, alpha, &dt).unwrap()).unwrap();
+        let exact = |x: [f64; 3]| [alpha * (a + slope * x[1]) * x[0], alpha * (a * x[1] + 0.5 * slope * (x[1] * x[1] - x[0] * x[0] - x[2] * x[2])), alpha * (a + slope * x[1]) * x[2]];
+        let scale = alpha * slope * l * l;
+        let worst = solid.nodes.iter().enumerate().flat_map(|(i, x)| (0..3).map(move |c| (i, c, *x))).map(|(i, c, x)| (u[3 * i + c] - exact(x)[c]).abs()).fold(0.0, f64::max);
+        assert!(worst < 1e-9 * scale, "{}", worst / scale);
     }
 
     /// First bending frequency of the cantilever against Euler–Bernoulli, ω₁ = 1.87510² √(EI/(ρ A L⁴))
