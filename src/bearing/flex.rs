@@ -38,7 +38,7 @@ impl FlexPad {
     /// Modal mass, stiffness and couplings of each retained mode.
     #[must_use]
     pub fn properties(&self) -> Vec<ModalProperties> {
-        self.modes.modes.iter().map(|m| ModalProperties { mass: m.mass, stiffness: m.stiffness, momentum_pt: m.momentum_pt }).collect()
+        modal_properties(&self.modes)
     }
 
     /// The modes' film shapes on the pad's film grid.
@@ -46,6 +46,12 @@ impl FlexPad {
     pub fn film_fields(&self, grid: &PadGrid, radius: f64, theta_le: f64) -> Vec<FilmField> {
         self.modes.modes.iter().map(|m| FilmField { grid: grid.clone(), radius, theta_le, node: m.film_shape.clone() }).collect()
     }
+}
+
+/// Modal mass, stiffness and pivot-translation couplings of each of a pad's retained modes.
+#[must_use]
+pub fn modal_properties(modes: &PadModes) -> Vec<ModalProperties> {
+    modes.modes.iter().map(|m| ModalProperties { mass: m.mass, stiffness: m.stiffness, momentum_pt: m.momentum_pt }).collect()
 }
 
 /// The material of pad k.
