@@ -41,7 +41,8 @@ impl View {
         match (self, axis) {
             (Self::Coefficients, CoefficientAxis::FrequencyRatio) => request::FREQUENCY_PLOTS,
             (Self::Coefficients, CoefficientAxis::Speed) => request::SPEED_PLOTS,
-            (Self::Bearing | Self::Fields | Self::PadDeformation | Self::Frf | Self::Rotor, _) => request::SOLUTION,
+            (Self::PadDeformation, _) => request::DEFORMATION,
+            (Self::Bearing | Self::Fields | Self::Frf | Self::Rotor, _) => request::SOLUTION,
         }
     }
 }

@@ -13,7 +13,7 @@ use super::coordinates::PadDof;
 use super::equilibrium::{solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
-use super::solution::{BearingFlows, Derived, PadField, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
+use super::solution::{BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
 use super::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
 
 /// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
@@ -246,6 +246,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             unloaded: st.unloaded,
             mode_amplitudes_m: mode_amplitudes(pm, &st.q),
             elastic_displacement_m: elastic_displacement(pm, &st.q),
+            flex: pm.modes.as_ref().zip(pm.solid.as_ref()).map(|(modes, solid)| PadFlex { modes: modes.clone(), radii_m: solid.radii.clone() }),
             field,
             thermal: None,
         });

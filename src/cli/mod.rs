@@ -202,7 +202,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -344,7 +344,8 @@ pub fn run(command: Command) -> Result<()> {
         Command::Bench { repeats, root, only } => match only.as_deref() {
             None => bench::run(&root, repeats.max(1)),
             Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf"),
+            Some("flex") => bench::replace_section(&root, "## Flexible pads", &bench_flex::section(&root, repeats.clamp(1, 3))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex"),
         },
     }
 }
