@@ -55,7 +55,14 @@ pub fn solve_point(
 /// converged viscosity field, temperatures frozen) plus the thermal fields.
 #[must_use]
 pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdState) -> Solution {
+    // The films of the converged state hold its thermal growth (TEHD) while the solution is assembled.
+    if let Some(g) = &state.growth {
+        super::tehd::install(model, g);
+    }
     let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium);
+    if state.growth.is_some() {
+        super::tehd::clear(model);
+    }
     let max = |v: &[f64]| v.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
     let (mut t_area, mut area) = (0.0, 0.0);
     for (p, st) in sol.pads.iter_mut().zip(&state.pads) {

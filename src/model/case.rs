@@ -207,6 +207,11 @@ pub struct Thermal {
     /// Given journal temperature [°C], else zero net heat flux.
     pub journal_temperature_c: Option<f64>,
     pub cavitated_film: CavitatedFilm,
+    /// Thermal expansion of the pads α_p and of the journal α_j [1/K] (0: no growth; TEHD when either is set).
+    pub pad_expansion_per_k: f64,
+    pub journal_expansion_per_k: f64,
+    /// Temperature at which the clearances are given [°C], else the supply temperature.
+    pub reference_temperature_c: Option<f64>,
 }
 
 impl Fidelity {

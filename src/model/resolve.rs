@@ -545,6 +545,9 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     })
 }
 
+/// Thermal expansion coefficients [10⁻⁶/K]: 0 (no growth) to 100 (well above any bearing metal's ≈ 10–25).
+const EXPANSION_PPM: Range = Range::closed(0.0, 100.0);
+
 /// `[thermal]`: documented defaults — isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply temperature,
 /// pad conductivity 45 W/(m K) (steel), carry-over λ = 0.8, inlet and journal temperatures computed,
 /// striated cavitated film.
@@ -572,5 +575,8 @@ fn resolve_thermal(file: &CaseFile, operating: &Operating) -> Result<Thermal, Ca
         inlet_temperature_c: opt_t("thermal.inlet_temperature_c", t.inlet_temperature_c)?,
         journal_temperature_c: opt_t("thermal.journal_temperature_c", t.journal_temperature_c)?,
         cavitated_film: t.cavitated_film.unwrap_or_default(),
+        pad_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.pad_expansion_ppm_per_k", t.pad_expansion_ppm_per_k.unwrap_or(0.0))?,
+        journal_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.journal_expansion_ppm_per_k", t.journal_expansion_ppm_per_k.unwrap_or(0.0))?,
+        reference_temperature_c: opt_t("thermal.reference_temperature_c", t.reference_temperature_c)?,
     })
 }

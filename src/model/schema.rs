@@ -346,6 +346,23 @@ pub const KEYS: &[KeySpec] = &[
     ),
     num("thermal.inlet_temperature_c", "°C", TEMP, (0.0, 150.0), "from the groove mixing", "Leading-edge oil temperature of every pad, when measured. Unset: from the groove mixing balance."),
     num("thermal.journal_temperature_c", "°C", TEMP, (0.0, 150.0), "from zero net heat flux", "Journal surface temperature, when known. Unset: from zero net heat flux into the journal."),
+    num(
+        "thermal.pad_expansion_ppm_per_k",
+        "10⁻⁶/K",
+        Range::closed(0.0, 100.0),
+        (10.0, 20.0),
+        "0",
+        "TEHD: thermal expansion of the pads (steel ≈ 12, bronze ≈ 18). The pad's 3-D temperature strains its solid (clamped on the pivot patch); the film-face radial displacement changes the film thickness inside the thermal loop. 0: no pad growth.",
+    ),
+    num(
+        "thermal.journal_expansion_ppm_per_k",
+        "10⁻⁶/K",
+        Range::closed(0.0, 100.0),
+        (10.0, 20.0),
+        "0",
+        "TEHD: thermal expansion of the journal (steel ≈ 11–12): it grows by α R (T_journal − T_ref), closing every film by as much. 0: no journal growth.",
+    ),
+    num("thermal.reference_temperature_c", "°C", TEMP, (0.0, 60.0), "the supply temperature", "TEHD: temperature at which the clearances are given (the assembly temperature); growth is counted from it."),
     other(
         "thermal.cavitated_film",
         "",
