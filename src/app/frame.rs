@@ -201,7 +201,7 @@ impl WorkbenchApp {
                     ui.label("Waiting for the first result…");
                 }
             },
-            v => placeholders::placeholder_ui(ui, v),
+            v @ View::Rotor => placeholders::placeholder_ui(ui, v),
         }
     }
 
