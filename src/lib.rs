@@ -18,18 +18,19 @@
 //!   (rectangles, isoparametric quadrilaterals, cylindrical hexahedra), sparse assembly, Cholesky and LU
 //!   factorisation, the SUPG advection–diffusion kernel.
 //! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow,
-//!   film energy, pad heat conduction).
-//! - [`bearing`]: geometry of the film, equilibrium (Newton), the thermal (THD) loop, dynamic coefficients,
+//!   film energy, pad heat conduction, pad elasticity and the pad's bending modes).
+//! - [`bearing`]: geometry of the film, equilibrium (Newton), the thermal (THD) loop with the pads' and the
+//!   journal's thermal growth (TEHD), flexible pads (modes as coordinates), dynamic coefficients,
 //!   the solve job, and the cached, steppable stages (typed inputs, execution counters) the app asks through.
 //! - [`scene`]: results → plain drawables for the workbench (colour fields, flowlines, the bearing outline,
-//!   plot series, result rows, exports) and the request the open views need; no GUI types, built and tested
+//!   plot series, result rows, exports, the pad deformation) and the request the open views need; no GUI types, built and tested
 //!   without the `gui` feature.
 //! - [`study`]: sweeps over any case keys (grids) and design-space batches, one result row per point,
 //!   failed points kept as rows with their error; no I/O.
 //! - [`io`]: safe (atomic) writes, VTK `.vtu`/`.pvd` exports of the film and pad fields, reduced
 //!   coefficients for ROSS and as CSV.
 //! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
-//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`).
+//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `schema`, `bench`).
 
 // Lints: `[lints]` in Cargo.toml. Library paths that user input reaches never unwrap or expect (test
 // builds may; `[lints]` cannot tell test targets apart, so this one stays here).

@@ -124,6 +124,33 @@ fn thermal_solve_reports_temperatures_in_json_and_summary() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+#[test]
+fn modes_lists_each_pads_bending_modes_as_json_and_csv() {
+    let case = common::case_path("compressor-bearing-flexible.toml");
+    let o = tiltpad().args(["modes", case.to_str().unwrap(), "--count", "2", "--json", "-"]).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = j["modes"].as_array().unwrap();
+    assert_eq!(rows.len(), 5 * 2, "five pads, two modes each");
+    let f = |i: usize| rows[i]["frequency_hz"].as_f64().unwrap();
+    // Identical pads share one computation; modes ascend.
+    for p in 1..5 {
+        assert_eq!(f(2 * p), f(0));
+    }
+    assert!(f(1) > f(0) && f(0) > 1e3, "{} {}", f(0), f(1));
+    for r in rows {
+        let (m, k) = (r["modal_mass_kg"].as_f64().unwrap(), r["modal_stiffness_n_per_m"].as_f64().unwrap());
+        let hz = (k / m).sqrt() / std::f64::consts::TAU;
+        assert!((hz - r["frequency_hz"].as_f64().unwrap()).abs() < 1e-9 * hz);
+        assert!(r["residual"].as_f64().unwrap() < 1e-6);
+    }
+    let o = tiltpad().args(["modes", case.to_str().unwrap(), "--count", "1", "--csv", "-"]).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let csv = String::from_utf8_lossy(&o.stdout);
+    assert!(csv.starts_with("pad,mode,frequency_hz,modal_mass_kg,modal_stiffness_n_per_m"), "{csv}");
+    assert_eq!(csv.lines().count(), 1 + 5);
+}
+
 /// `tiltpad frf` writes every curve with its unit (CSV and JSON agree), the phase-lag note, the
 /// small-signal warning and timings; a case without hydraulics is refused naming the section.
 #[test]

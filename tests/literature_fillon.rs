@@ -27,11 +27,25 @@ fn pad_max(s: &Solution) -> f64 {
 /// elastic deformation — and gives a maximum pad surface temperature about 9 °C below the measurement.
 #[test]
 #[ignore = "not met: the THD model (no pad/journal deformation) gives 67.2 °C vs the measured 76.5 °C (−9.3 °C); \
-            published TEHD models give 72.9 °C"]
+            published TEHD models give 72.9 °C; with thermal growth (fillon-a-tehd.toml) it is met, tested below"]
 fn fillon_a_max_pad_temperature_within_5_degrees_of_measurement() {
     let s = thd(&[]);
     let t = pad_max(&s);
     assert!((t - 76.5).abs() < 5.0, "max pad surface temperature {t:.1} °C vs measured 76.5 °C");
+}
+
+/// With thermal growth of the pads and the journal (TEHD, `cases/fillon-a-tehd.toml`: steel, clearances at
+/// 20 °C; docs/THERMAL.md) the maximum pad surface temperature at 4000 rpm meets the measurement (76.6 °C on
+/// the standard mesh). The rise from 1000 rpm (12.3 K against > 20 K measured) is not met: reported there.
+#[test]
+fn fillon_a_tehd_max_pad_temperature_within_5_degrees_of_measurement() {
+    let s = common::solve("fillon-a-tehd.toml", &[]);
+    let t = s.thermal.as_ref().expect("a THD case");
+    assert!(t.report.converged, "{:?}", t.report);
+    assert!(t.energy_balance_closure.abs() < 1e-12, "energy balance closure {:.2e}", t.energy_balance_closure);
+    let max = pad_max(&s);
+    println!("TEHD: max pad surface temperature {max:.2} °C, journal {:.2} °C", t.journal_temperature_c);
+    assert!((max - 76.5).abs() < 5.0, "max pad surface temperature {max:.1} °C vs measured 76.5 °C");
 }
 
 #[test]

@@ -38,7 +38,7 @@ fn insulated_pad_takes_its_face_temperature() {
     let film = &model.pads[2].film;
     let mesh = PadMesh::extrude(&film.geom.grid, case.bearing.journal_radius_m, pad.leading_edge_rad, pad.bore_radius_m(case.bearing.journal_radius_m), pad.thickness_m, 4);
     let mut solver = PadDirichletSolver::new(&mesh).unwrap();
-    let pt = PadThermal::new(film, Some(PadConduction::new(mesh))).unwrap();
+    let pt = PadThermal::new(film, Some(PadConduction::new(std::sync::Arc::new(mesh)))).unwrap();
     let face = vec![63.0; film.geom.n_nodes()];
     let t = pt.solve_pad_bc1(&mut solver, &face, &PadMaterial { conductivity: 45.0, convection: 0.0, ambient_c: 20.0 }).unwrap().unwrap();
     assert!(t.iter().all(|v| (v - 63.0).abs() < 1e-9), "{:?}", t.iter().fold(f64::MAX, |m, &v| m.min(v)));

@@ -243,6 +243,41 @@ fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
     assert_eq!(after.solution.inputs.hydraulics.as_ref().unwrap().ports[0].line_length_m, 1.5);
 }
 
+/// The pad-deformation view of the flexible compressor bearing (two modes): the loaded pad's deformed
+/// section, its displacement and film maps, the mode gallery with the solved frequencies; hovering the
+/// displacement map reads a value in µm within the solved field's range.
+#[test]
+fn deformation_view_shows_the_loaded_pad_and_its_modes() {
+    let text: &'static str = include_str!("../cases/compressor-bearing-flexible.toml").replace("pad_modes = 1", "pad_modes = 2").leak();
+    let mut h = solved_app(Some(text), |p| p.view = View::PadDeformation);
+    h.run_steps(3);
+    let s = h.state().shown.clone().unwrap().solution;
+    let pad = &s.pads[3];
+    let modes = &pad.flex.as_ref().expect("flexible pads").modes.modes;
+    assert_eq!(modes.len(), 2);
+    h.get_by_label_contains("Pad 3: mid-plane section drawn");
+    h.get_by_label_contains(&format!("mode 2 at {} Hz", tiltpad::scene::summary::sig4(modes[1].frequency_hz)));
+    h.get_by_label("Automatic exaggeration");
+    snapshot(&mut h, "deformation_compressor_pad3");
+    let peak_um = 1e6 * pad.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let anchor = h.get_by_label("Automatic exaggeration").rect();
+    let mut found = None;
+    'sweep: for row in 0..12 {
+        for col in 0..50 {
+            let pos = egui::pos2(500.0 + 14.0 * col as f32, anchor.bottom() + 40.0 + 16.0 * row as f32);
+            h.hover_at(pos);
+            h.run_steps(2);
+            if let Some(n) = h.query_by_label_contains("Film-face radial displacement u at θ") {
+                found = Some(text_of(&n));
+                break 'sweep;
+            }
+        }
+    }
+    let text = found.expect("a readout over the displacement map");
+    let value: f64 = text.rsplit(": ").next().unwrap().trim_end_matches(" µm").parse().unwrap();
+    assert!(value.abs() <= peak_um * (1.0 + 1e-9), "{value} µm vs peak {peak_um} µm");
+}
+
 fn spin_button<'a>(h: &'a Harness<'_, WorkbenchApp>, label: &'a str) -> egui_kittest::Node<'a> {
     h.get_by_role_and_label(Role::SpinButton, label)
 }

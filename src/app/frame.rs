@@ -5,7 +5,7 @@ use egui::{Color32, RichText, Ui};
 use super::editor::editor_ui;
 use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
-use super::views::{bearing_view, coefficients_view, field_view, frf_view, placeholders, results_panel};
+use super::views::{bearing_view, coefficients_view, deformation_view, field_view, frf_view, placeholders, results_panel};
 use super::{Pending, Status, WorkbenchApp};
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
@@ -195,7 +195,13 @@ impl WorkbenchApp {
             View::Fields => self.fields_ui(ui),
             View::Coefficients => self.coefficients_ui(ui),
             View::Frf => self.frf_ui(ui),
-            v => placeholders::placeholder_ui(ui, v),
+            View::PadDeformation => match self.shown.clone() {
+                Some(shown) => deformation_view::deformation_view_ui(ui, &mut self.deformation, &shown.solution),
+                None => {
+                    ui.label("Waiting for the first result…");
+                }
+            },
+            v @ View::Rotor => placeholders::placeholder_ui(ui, v),
         }
     }
 

@@ -81,6 +81,7 @@ pub struct WorkbenchApp {
     dragging: bool,
     field_cache: FieldCache,
     pub frf: views::frf_view::FrfView,
+    pub deformation: views::deformation_view::DeformationView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -130,6 +131,7 @@ impl WorkbenchApp {
             dragging: false,
             field_cache: FieldCache::default(),
             frf: views::frf_view::FrfView::default(),
+            deformation: views::deformation_view::DeformationView::default(),
             pending: None,
             allow_close: false,
             notice: None,

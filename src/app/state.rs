@@ -42,7 +42,8 @@ impl View {
             (Self::Coefficients, CoefficientAxis::FrequencyRatio) => request::FREQUENCY_PLOTS,
             (Self::Coefficients, CoefficientAxis::Speed) => request::SPEED_PLOTS,
             (Self::Frf, _) => request::FRF,
-            (Self::Bearing | Self::Fields | Self::PadDeformation | Self::Rotor, _) => request::SOLUTION,
+            (Self::PadDeformation, _) => request::DEFORMATION,
+            (Self::Bearing | Self::Fields | Self::Rotor, _) => request::SOLUTION,
         }
     }
 }

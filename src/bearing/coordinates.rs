@@ -194,7 +194,47 @@ impl SectorInertia {
     }
 }
 
+/// What the structure needs of one elastic mode (from the pad's finite-element model).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModalProperties {
+    /// Modal mass [kg] and stiffness [N/m] (whole pad).
+    pub mass: f64,
+    pub stiffness: f64,
+    /// `∫ ρ v dV` along the pivot line e_p and across it e_t [kg]: the mass coupling with the pivot's
+    /// translations (the modes are M-orthogonal to the tilt).
+    pub momentum_pt: [f64; 2],
+}
+
 impl PadStructure {
+    /// Appends elastic modes `Mode(0..)`: modal mass and stiffness on the diagonal, mass coupling with the
+    /// pivot translations.
+    #[must_use]
+    pub fn with_modes(self, modes: &[ModalProperties]) -> Self {
+        let n0 = self.dofs.len();
+        let n = n0 + modes.len();
+        let mut dofs = self.dofs;
+        dofs.extend((0..modes.len()).map(|i| PadDof::Mode(u8::try_from(i).unwrap_or(u8::MAX))));
+        let mut mass = DMatrix::zeros(n, n);
+        let mut stiffness = DMatrix::zeros(n, n);
+        mass.view_mut((0, 0), (n0, n0)).copy_from(&self.mass);
+        stiffness.view_mut((0, 0), (n0, n0)).copy_from(&self.stiffness);
+        for (i, m) in modes.iter().enumerate() {
+            let d = n0 + i;
+            mass[(d, d)] = m.mass;
+            stiffness[(d, d)] = m.stiffness;
+            for (a, dof) in dofs[..n0].iter().enumerate() {
+                let coupling = match dof {
+                    PadDof::PivotRadial => m.momentum_pt[0],
+                    PadDof::PivotTransverse => m.momentum_pt[1],
+                    PadDof::Tilt | PadDof::Mode(_) => 0.0,
+                };
+                mass[(a, d)] = coupling;
+                mass[(d, a)] = coupling;
+            }
+        }
+        Self { dofs, stiffness, mass }
+    }
+
     /// Rigid-pad structure of a case pad (pivot springs; rigid-body inertia about the pivot).
     #[must_use]
     pub fn rigid(pad: &Pad, journal_radius: f64, length: f64) -> Self {

@@ -21,6 +21,7 @@
 //! A fixed sector has no pad coordinates (δ ≡ 0).
 
 use crate::model::Pad;
+use crate::physics::pad_modes::FilmField;
 use crate::physics::reynolds::FilmShape;
 
 use super::coordinates::{PadDof, RigidMotion};
@@ -38,6 +39,8 @@ pub struct PadShape {
     pub dofs: Vec<PadDof>,
     /// The rigid motion of each pad coordinate (`None`: an elastic mode, whose shape is sampled).
     motions: Vec<Option<RigidMotion>>,
+    /// Film shapes of the elastic modes, `PadDof::Mode(i)` ↦ entry i (sampled at the film nodes).
+    modes: Vec<FilmField>,
 }
 
 impl PadShape {
@@ -53,7 +56,15 @@ impl PadShape {
             lever,
             dofs: dofs.to_vec(),
             motions: dofs.iter().map(|d| d.rigid_motion(pad.pivot_rad, lever)).collect(),
+            modes: Vec::new(),
         }
+    }
+
+    /// The film shapes of the pad's elastic modes (`PadDof::Mode(i)` takes entry i).
+    #[must_use]
+    pub fn with_modes(mut self, modes: Vec<FilmField>) -> Self {
+        self.modes = modes;
+        self
     }
 }
 
@@ -64,12 +75,16 @@ impl FilmShape for PadShape {
     fn n_dofs(&self) -> usize {
         2 + self.dofs.len()
     }
-    fn dof(&self, k: usize, theta: f64, _z: f64) -> f64 {
+    fn dof(&self, k: usize, theta: f64, z: f64) -> f64 {
         match k {
             0 => -theta.cos(),
             1 => -theta.sin(),
-            // Elastic modes have sampled shapes (pad flexibility); none are built yet.
-            _ => self.motions[k - 2].map_or(0.0, |m| m.film_shape(self.bore, theta)),
+            _ => match (self.motions[k - 2], self.dofs[k - 2]) {
+                (Some(m), _) => m.film_shape(self.bore, theta),
+                // Elastic modes: the sampled film-face radial displacement (pad flexibility).
+                (None, PadDof::Mode(i)) => self.modes.get(usize::from(i)).map_or(0.0, |f| f.at(theta, z)),
+                (None, _) => 0.0,
+            },
         }
     }
 }

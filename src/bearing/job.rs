@@ -13,7 +13,7 @@ use super::coordinates::PadDof;
 use super::equilibrium::{solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
-use super::solution::{BearingFlows, Derived, PadField, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
+use super::solution::{BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
 use super::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
 
 /// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
@@ -55,7 +55,14 @@ pub fn solve_point(
 /// converged viscosity field, temperatures frozen) plus the thermal fields.
 #[must_use]
 pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdState) -> Solution {
+    // The films of the converged state hold its thermal growth (TEHD) while the solution is assembled.
+    if let Some(g) = &state.growth {
+        super::tehd::install(model, g);
+    }
     let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium);
+    if state.growth.is_some() {
+        super::tehd::clear(model);
+    }
     let max = |v: &[f64]| v.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
     let (mut t_area, mut area) = (0.0, 0.0);
     for (p, st) in sol.pads.iter_mut().zip(&state.pads) {
@@ -244,6 +251,9 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             friction_power_w: pw,
             cavitated_fraction: cav_frac,
             unloaded: st.unloaded,
+            mode_amplitudes_m: mode_amplitudes(pm, &st.q),
+            elastic_displacement_m: elastic_displacement(pm, &st.q),
+            flex: pm.modes.as_ref().zip(pm.solid.as_ref()).map(|(modes, solid)| PadFlex { modes: modes.clone(), radii_m: solid.radii.clone() }),
             field,
             thermal: None,
         });
@@ -299,4 +309,22 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
         inputs: case.clone(),
         thermal: None,
     }
+}
+
+/// The pad's modal coordinates `PadDof::Mode(i)`, in mode order.
+fn mode_amplitudes(pm: &super::model::PadModel, q: &[f64]) -> Vec<f64> {
+    pm.dofs().iter().zip(q).filter(|(d, _)| matches!(d, PadDof::Mode(_))).map(|(_, v)| *v).collect()
+}
+
+/// Σ q_i φ_i at the film nodes (empty for a rigid pad).
+fn elastic_displacement(pm: &super::model::PadModel, q: &[f64]) -> Vec<f64> {
+    let Some(modes) = &pm.modes else { return Vec::new() };
+    let amps = mode_amplitudes(pm, q);
+    let mut u = vec![0.0; pm.film.geom.n_nodes()];
+    for (m, a) in modes.modes.iter().zip(&amps) {
+        for (ui, phi) in u.iter_mut().zip(&m.film_shape) {
+            *ui += a * phi;
+        }
+    }
+    u
 }

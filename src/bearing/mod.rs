@@ -1,6 +1,6 @@
 //! The bearing: film geometry and coordinates ([`geometry`]), the model built once per mesh ([`model`]),
 //! static equilibrium ([`equilibrium`]), the thermal (THD) loop around it ([`thermal`], with the per-pad
-//! thermal systems in [`thermal_pad`]), dynamic coefficients ([`coefficients`]), the flow-regime checks of
+//! thermal systems in [`thermal_pad`] and the thermal growth of pads and journal in [`tehd`]), dynamic coefficients ([`coefficients`]), the flow-regime checks of
 //! a solved film ([`regime`]), the solve job ([`job`]) that turns a case into a [`Solution`], and the
 //! cached, steppable [`stages`] the app asks for results through.
 
@@ -9,6 +9,7 @@ pub mod coefficients;
 pub mod coordinates;
 pub mod equilibrium;
 pub mod error;
+pub mod flex;
 pub mod frf;
 pub mod frf_job;
 pub mod geometry;
@@ -21,6 +22,7 @@ pub mod regime;
 pub mod report;
 pub mod solution;
 pub mod stages;
+pub mod tehd;
 pub mod thermal;
 pub mod thermal_pad;
 

@@ -5,13 +5,17 @@
 //! model's [`DofMap`] (see [`super::coordinates`]). Changing the operating point (speed, load, viscosity,
 //! injection) never rebuilds this.
 
+use std::sync::Arc;
+
 use crate::mesh::grid::{graded_nodes, PadGrid, Refinement};
+use crate::mesh::pad3d::PadMesh;
 use crate::model::{Case, LoadSpec};
 use crate::physics::orifice::LocalOrifice;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm, Viscosity};
 use crate::model::Cavitation;
 
 use super::coordinates::{DofMap, PadDof, PadStructure};
+use super::flex::{pad_modes, ModeCache};
 use super::error::SolveError;
 use super::geometry::PadShape;
 
@@ -20,6 +24,11 @@ use super::geometry::PadShape;
 pub struct PadModel {
     pub film: PadFilm,
     pub structure: PadStructure,
+    /// The pad solid (film grid extruded through the thickness), shared by the elastic and thermal models;
+    /// built here when the pad is flexible, else by the thermal model when it needs one.
+    pub solid: Option<Arc<PadMesh>>,
+    /// The pad's retained bending modes (`PadDof::Mode(i)` is entry i), shared by identical pads.
+    pub modes: Option<Arc<crate::physics::pad_modes::PadModes>>,
 }
 
 impl PadModel {
@@ -50,10 +59,17 @@ impl BearingModel {
         let b = &case.bearing;
         let r = b.journal_radius_m;
         let mut pads = Vec::with_capacity(b.pads.len());
+        let mut cache = ModeCache::new();
         for (k, pad) in b.pads.iter().enumerate() {
             let grid = pad_grid(case, k);
-            let structure = PadStructure::rigid(pad, r, b.length_m);
-            let shape = PadShape::new(pad, r, b.assembled_clearance_m, &structure.dofs);
+            let flexible = pad_modes(case, k, &grid, &mut cache)?;
+            let mut structure = PadStructure::rigid(pad, r, b.length_m);
+            let mut fields = Vec::new();
+            if let Some(f) = &flexible {
+                structure = structure.with_modes(&f.properties());
+                fields = f.film_fields(&grid, r, pad.leading_edge_rad);
+            }
+            let shape = PadShape::new(pad, r, b.assembled_clearance_m, &structure.dofs).with_modes(fields);
             let orifices: Vec<LocalOrifice> = pad
                 .orifices
                 .iter()
@@ -61,7 +77,8 @@ impl BearingModel {
                 .collect();
             let geom = FilmGeometry::new(grid, r, pad.leading_edge_rad, &orifices, &shape);
             let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, error: e })?;
-            pads.push(PadModel { film, structure });
+            let (solid, modes) = flexible.map_or((None, None), |f| (Some(f.solid), Some(f.modes)));
+            pads.push(PadModel { film, structure, solid, modes });
         }
         let dofs = DofMap::new(pads.iter().map(|p| p.structure.dofs.clone()).collect());
         Ok(Self { pads, dofs, journal_radius: r, assembled_clearance: b.assembled_clearance_m, length: b.length_m })

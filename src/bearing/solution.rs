@@ -89,11 +89,29 @@ pub struct PadResult {
     pub cavitated_fraction: f64,
     /// The pad carries almost no load (a floating pad: see [`super::equilibrium::FLOATING_SHARE`]).
     pub unloaded: bool,
+    /// Amplitude of each retained bending mode (flexible pads) [m]: the largest film-face radial
+    /// displacement of the mode, positive opening the film where the mode's shape peaks.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mode_amplitudes_m: Vec<f64>,
+    /// Elastic radial displacement of the film face at each film node, Σ q_i φ_i [m] (empty for rigid pads).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub elastic_displacement_m: Vec<f64>,
+    /// The flexible pad's modes and solid layers, for drawing (`None` for rigid pads).
+    #[serde(skip)]
+    pub flex: Option<PadFlex>,
     #[serde(skip)]
     pub field: PadField,
     /// Thermal results (thermal model only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub thermal: Option<PadThermalResult>,
+}
+
+/// A flexible pad's retained modes (shared with the model) and the radii of its solid's node layers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PadFlex {
+    pub modes: std::sync::Arc<crate::physics::pad_modes::PadModes>,
+    /// Layer radii of the pad solid, film face first [m] (pad node = layer · film nodes + film node).
+    pub radii_m: Vec<f64>,
 }
 
 /// The 3-D pad temperature field, stored compactly on the extruded film grid.

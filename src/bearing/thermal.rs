@@ -42,6 +42,7 @@ use super::error::{Budget, Iteration, SolveError};
 use super::model::{BearingModel, OperatingPoint};
 use super::anderson::{flatten, unflatten, Anderson};
 use super::mixing::inlet_and_journal;
+use super::tehd::{self, Growth, GrowthField, TehdModel, GROWTH_TOL};
 use super::thermal_pad::{PadTemperatures, PadThermal, ThermalSetup};
 
 /// History depth of the Anderson acceleration of the thermal loop.
@@ -102,6 +103,16 @@ pub struct ThermalReport {
     pub thermal_seconds: f64,
     /// Of which the final BC1 pad conduction solves.
     pub pad_conduction_seconds: f64,
+    /// TEHD: largest change of the films' thermal growth after each outer iteration [m] (empty without
+    /// thermal growth; the loop also needs it below `GROWTH_TOL` × the assembled clearance).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub growth_change_m: Vec<f64>,
+    /// TEHD: journal growth α_j R (T_j − T_ref) and the range of the pads' film-face growth in the converged
+    /// films [m].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub journal_growth_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pad_growth_range_m: Option<[f64; 2]>,
     pub warnings: Vec<String>,
 }
 
@@ -133,14 +144,16 @@ impl ThermalModel {
                 )));
             }
             let conduction = (pad.thickness_m > 0.0).then(|| {
-                let mesh = PadMesh::extrude(
-                    &film.geom.grid,
-                    b.journal_radius_m,
-                    pad.leading_edge_rad,
-                    pad.bore_radius_m(b.journal_radius_m),
-                    pad.thickness_m,
-                    case.mesh.pad_radial_elements,
-                );
+                let mesh = pm.solid.clone().unwrap_or_else(|| {
+                    std::sync::Arc::new(PadMesh::extrude(
+                        &film.geom.grid,
+                        b.journal_radius_m,
+                        pad.leading_edge_rad,
+                        pad.bore_radius_m(b.journal_radius_m),
+                        pad.thickness_m,
+                        case.mesh.pad_radial_elements,
+                    ))
+                });
                 PadConduction::new(mesh)
             });
             if conduction.is_none() && !matches!(case.thermal.pad_film_bc, PadFilmBc::Bc1) {
@@ -237,6 +250,8 @@ pub struct ThdState {
     pub journal_temperature_c: f64,
     pub heat: FilmHeat,
     pub report: ThermalReport,
+    /// The thermal growth in the films of the converged state (TEHD), installed to assemble the solution.
+    pub growth: Option<GrowthField>,
 }
 
 fn setup(case: &Case, op: &OperatingPoint, k: usize, stabilisation: Stabilisation) -> ThermalSetup {
@@ -371,6 +386,11 @@ pub struct ThdRun {
     shares: Vec<f64>,
     /// Computing time spent inside [`ThdRun::step`] so far [s] (the time budget's count).
     work_seconds: f64,
+    /// TEHD ([`super::tehd`]): the growth model (built on first use), the growth in the films of the current
+    /// outer iteration, and the one the last temperatures give (installed at the next iteration).
+    tehd: Option<TehdModel>,
+    growth: Option<GrowthField>,
+    growth_next: Option<GrowthField>,
 }
 
 /// Forwards the caller's cancellation and suspension, and cancels once a time budget is spent.
@@ -423,6 +443,9 @@ impl ThdRun {
             uniform: vec![false; n],
             shares: vec![1.0; n],
             work_seconds: 0.0,
+            tehd: None,
+            growth: None,
+            growth_next: None,
         }
     }
 
@@ -449,6 +472,10 @@ impl ThdRun {
         let started = Instant::now();
         let deadline = Deadline::after(cancel, self.params.max_seconds - self.work_seconds);
         let result = self.outer_iteration(model, thermal, case, &deadline);
+        if self.growth.is_some() || self.growth_next.is_some() {
+            // The films are shared with other stages: they hold the growth only while the loop works.
+            tehd::clear(model);
+        }
         self.work_seconds += started.elapsed().as_secs_f64();
         match result {
             Err(SolveError::Cancelled) if !cancel.cancelled() && deadline.expired() => Err(self.budget_exceeded(time_budget)),
@@ -471,6 +498,10 @@ impl ThdRun {
         let n = model.pads.len();
         let params = self.params;
         self.report.outer_iterations += 1;
+        self.growth.clone_from(&self.growth_next);
+        if let Some(g) = &self.growth {
+            tehd::install(model, g);
+        }
         for k in 0..n {
             self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
         }
@@ -540,18 +571,19 @@ impl ThdRun {
         self.t_ok = self.t_try.take();
         let tt = Instant::now();
         let (sols, t_in, t_j, t_new) = film_temperatures(model, thermal, case, &self.op, &params)?;
+        let growth_change = self.update_growth(model, thermal, case, (&sols, &t_in, t_j, &t_new))?;
         let current = self.t_ok.as_ref().unwrap_or(&self.t_iso);
         let change = viscosity_change(&law, &t_new, current);
         self.report.viscosity_change.push(change);
         self.last_change = change;
         self.report.thermal_seconds += tt.elapsed().as_secs_f64();
-        if change < params.viscosity_tol {
+        if change < params.viscosity_tol && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m {
             self.report.converged = true;
             self.report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
             self.report.thermal_factorizations = self.factorizations0;
             let report = std::mem::take(&mut self.report);
             if exact {
-                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(Some);
+                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_growth(s)));
             }
             // The last equilibrium was solved loosely (early iterations are inexact on purpose): polish it with
             // the full tolerances on the same viscosity field, and take the temperatures of that state.
@@ -563,7 +595,7 @@ impl ThdRun {
             report.film_solves += eq.report.film_solves;
             let (sols, t_in, t_j, t_polished) = film_temperatures(model, thermal, case, &self.op, &params)?;
             report.viscosity_change.push(viscosity_change(&law, &t_polished, current));
-            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(Some);
+            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_growth(s)));
         }
         if self.report.outer_iterations >= params.max_iterations {
             return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
@@ -574,6 +606,49 @@ impl ThdRun {
             pt.t_prev = Some(t);
         }
         Ok(None)
+    }
+}
+
+/// TEHD steps of the loop ([`super::tehd`]), kept apart from the THD iteration itself.
+impl ThdRun {
+    /// Thermal growth for the temperatures just computed (`temps`: per-pad solutions, T_in per pad, T_j, film
+    /// temperatures); stored for the next outer iteration. Returns its change against the growth in the
+    /// films now (0 without thermal growth).
+    fn update_growth(&mut self, model: &BearingModel, thermal: &mut ThermalModel, case: &Case, temps: (&[PadTemperatures], &[f64], f64, &[Vec<f64>])) -> Result<f64, SolveError> {
+        let (sols, t_in, t_j, t_new) = temps;
+        if Growth::of(case).is_off() {
+            return Ok(0.0);
+        }
+        if self.tehd.is_none() {
+            let meshes: Vec<_> = thermal.pads.iter().map(|p| p.conduction.as_ref().map(|c| c.mesh.clone())).collect();
+            self.tehd = TehdModel::new(case, model, &meshes)?;
+        }
+        let Some(tehd) = self.tehd.as_mut() else { return Ok(0.0) };
+        let mut pad_c = Vec::with_capacity(sols.len());
+        for (k, sol) in sols.iter().enumerate() {
+            let s = setup(case, &self.op, k, self.params.stabilisation);
+            pad_c.push(if s.exchange == Exchange::Adiabatic {
+                thermal.pad_bc1(k, &t_new[k], &s.material).map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?
+            } else {
+                sol.pad(t_in[k], t_j)
+            });
+        }
+        let nodes: Vec<usize> = model.pads.iter().map(|p| p.film.geom.n_nodes()).collect();
+        let g = tehd.evaluate(&pad_c, t_j, &nodes)?;
+        let change = self.growth.as_ref().map_or_else(|| g.magnitude(), |old| g.change(old));
+        self.report.growth_change_m.push(change);
+        self.growth_next = Some(g);
+        Ok(change)
+    }
+
+    /// The converged state with the growth its films hold, reported.
+    fn with_growth(&self, mut state: ThdState) -> ThdState {
+        if let Some(g) = &self.growth {
+            state.report.journal_growth_m = Some(g.journal_m);
+            state.report.pad_growth_range_m = Some(g.pad_film_m.iter().flatten().fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &v| [lo.min(v), hi.max(v)]));
+        }
+        state.growth.clone_from(&self.growth);
+        state
     }
 }
 
@@ -652,5 +727,5 @@ fn finish(
         report.warnings.push(format!("energy balance closes to {:.2} % only", 100.0 * report.energy_balance_closure));
     }
     report.seconds = t0.elapsed().as_secs_f64();
-    Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report })
+    Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report, growth: None })
 }

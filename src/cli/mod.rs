@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `frf`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -13,6 +13,8 @@ mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_flex;
+#[cfg(not(target_arch = "wasm32"))]
 mod bench_frf;
 #[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
@@ -20,6 +22,8 @@ mod coefficients;
 mod convergence_map;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod frf;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod modes;
 #[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
@@ -141,6 +145,25 @@ pub enum Command {
         #[arg(long, default_value = "tiltpad")]
         tag: String,
     },
+    /// Pad bending modes on the pivot (frequency, modal mass and stiffness), optionally the mesh-convergence
+    /// table of the first pad's modes (thesis Table 3.1 style).
+    Modes {
+        case: PathBuf,
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Bending modes per pad (1–6).
+        #[arg(long, default_value_t = 3)]
+        count: usize,
+        /// Also the convergence table over film/solid meshes.
+        #[arg(long)]
+        table: bool,
+        /// JSON of the modes (and table) (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// CSV of the modes, or of the table with --table (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+    },
     /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
     /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
     Frf {
@@ -179,7 +202,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -301,6 +324,7 @@ pub fn run(command: Command) -> Result<()> {
             node,
             tag: &tag,
         }),
+        Command::Modes { case, set, count, table, json, csv } => modes::run(&modes::ModeArgs { case: &case, set: &set, count, table, json, csv }),
         Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
             frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
         }
@@ -320,7 +344,8 @@ pub fn run(command: Command) -> Result<()> {
         Command::Bench { repeats, root, only } => match only.as_deref() {
             None => bench::run(&root, repeats.max(1)),
             Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf"),
+            Some("flex") => bench::replace_section(&root, "## Flexible pads", &bench_flex::section(&root, repeats.clamp(1, 3))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex"),
         },
     }
 }

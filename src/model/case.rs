@@ -172,6 +172,9 @@ pub struct Physics {
     pub cavitation: Cavitation,
     /// Film thickness below which an equilibrium counts as touchdown [m].
     pub touchdown_film_m: f64,
+    /// Bending modes per tilting pad beyond the rigid tilt (pseudo-modal pad flexibility, model.md §5);
+    /// 0 = rigid pads.
+    pub pad_modes: usize,
 }
 
 /// Film–pad heat exchange (model.md §3).
@@ -204,6 +207,11 @@ pub struct Thermal {
     /// Given journal temperature [°C], else zero net heat flux.
     pub journal_temperature_c: Option<f64>,
     pub cavitated_film: CavitatedFilm,
+    /// Thermal expansion of the pads α_p and of the journal α_j [1/K] (0: no growth; TEHD when either is set).
+    pub pad_expansion_per_k: f64,
+    pub journal_expansion_per_k: f64,
+    /// Temperature at which the clearances are given [°C], else the supply temperature.
+    pub reference_temperature_c: Option<f64>,
 }
 
 impl Fidelity {

@@ -264,6 +264,9 @@ pub struct PhysicsFile {
     /// contact through their roughness). Default: 1 % of the assembled clearance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub touchdown_film_um: Option<f64>,
+    /// Bending modes per tilting pad beyond the rigid tilt (pad flexibility); 0 (default) = rigid pads.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_modes: Option<usize>,
 }
 
 /// Which film model: isothermal (one viscosity at `operating.film_temperature_c`) or thermohydrodynamic.
@@ -334,4 +337,13 @@ pub struct ThermalFile {
     /// Cavitated zones: `striated` (default) or `full_film`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cavitated_film: Option<CavitatedFilmFile>,
+    /// Pad thermal expansion coefficient [10⁻⁶/K] (default 0: no thermal growth of the pads).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_expansion_ppm_per_k: Option<f64>,
+    /// Journal thermal expansion coefficient [10⁻⁶/K] (default 0: no journal growth).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub journal_expansion_ppm_per_k: Option<f64>,
+    /// Temperature at which the clearances are given (default: the supply temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reference_temperature_c: Option<f64>,
 }

@@ -18,6 +18,8 @@ const UM: f64 = 1e-6;
 const BAR: f64 = 1e5;
 /// Largest pad count the solver accepts.
 pub const MAX_PADS: usize = 24;
+/// Most bending modes per pad (the thesis finds the first one carries almost all of the effect).
+pub const MAX_PAD_MODES: usize = 3;
 
 impl CaseFile {
     /// Validates every value and converts to SI.
@@ -34,7 +36,15 @@ impl CaseFile {
             Some(v) => Range::open_lo(0.0, 0.5 * cb / UM).check("physics.touchdown_film_um", v)? * UM,
             None => 0.01 * cb,
         };
-        let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown };
+        let pad_modes = match self.physics.pad_modes {
+            Some(v) if v > MAX_PAD_MODES => {
+                #[allow(clippy::cast_precision_loss)]
+                let value = v as f64;
+                return Err(CaseError::OutOfRange { key: "physics.pad_modes".into(), value, allowed: format!("an integer in [0, {MAX_PAD_MODES}]") });
+            }
+            v => v.unwrap_or(0),
+        };
+        let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
         let thermal = resolve_thermal(self, &operating)?;
         let hydraulics = self.hydraulics.as_ref().map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len())).transpose()?;
         let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal, hydraulics };
@@ -535,6 +545,9 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     })
 }
 
+/// Thermal expansion coefficients [10⁻⁶/K]: 0 (no growth) to 100 (well above any bearing metal's ≈ 10–25).
+const EXPANSION_PPM: Range = Range::closed(0.0, 100.0);
+
 /// `[thermal]`: documented defaults — isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply temperature,
 /// pad conductivity 45 W/(m K) (steel), carry-over λ = 0.8, inlet and journal temperatures computed,
 /// striated cavitated film.
@@ -562,5 +575,8 @@ fn resolve_thermal(file: &CaseFile, operating: &Operating) -> Result<Thermal, Ca
         inlet_temperature_c: opt_t("thermal.inlet_temperature_c", t.inlet_temperature_c)?,
         journal_temperature_c: opt_t("thermal.journal_temperature_c", t.journal_temperature_c)?,
         cavitated_film: t.cavitated_film.unwrap_or_default(),
+        pad_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.pad_expansion_ppm_per_k", t.pad_expansion_ppm_per_k.unwrap_or(0.0))?,
+        journal_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.journal_expansion_ppm_per_k", t.journal_expansion_ppm_per_k.unwrap_or(0.0))?,
+        reference_temperature_c: opt_t("thermal.reference_temperature_c", t.reference_temperature_c)?,
     })
 }

@@ -302,6 +302,14 @@ pub const KEYS: &[KeySpec] = &[
         "1 % of the assembled clearance",
         "Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (contact through the surface roughness).",
     ),
+    KeySpec {
+        key: "physics.pad_modes",
+        unit: "",
+        allowed: Allowed::Integer { lo: 0, hi: 3 },
+        typical: Some((0.0, 3.0)),
+        default: "0 (rigid pads)",
+        meaning: "Bending modes per tilting pad beyond the rigid tilt (pad flexibility by pseudo-modal reduction of the pad's finite-element model, with E, ν and density of the pads). Each mode adds a coordinate to the equilibrium and a row/column to the full coefficient matrices. The first bending mode carries almost all of the effect.",
+    },
     // [thermal]
     other(
         "thermal.model",
@@ -338,6 +346,23 @@ pub const KEYS: &[KeySpec] = &[
     ),
     num("thermal.inlet_temperature_c", "°C", TEMP, (0.0, 150.0), "from the groove mixing", "Leading-edge oil temperature of every pad, when measured. Unset: from the groove mixing balance."),
     num("thermal.journal_temperature_c", "°C", TEMP, (0.0, 150.0), "from zero net heat flux", "Journal surface temperature, when known. Unset: from zero net heat flux into the journal."),
+    num(
+        "thermal.pad_expansion_ppm_per_k",
+        "10⁻⁶/K",
+        Range::closed(0.0, 100.0),
+        (10.0, 20.0),
+        "0",
+        "TEHD: thermal expansion of the pads (steel ≈ 12, bronze ≈ 18). The pad's 3-D temperature strains its solid (clamped on the pivot patch); the film-face radial displacement changes the film thickness inside the thermal loop. 0: no pad growth.",
+    ),
+    num(
+        "thermal.journal_expansion_ppm_per_k",
+        "10⁻⁶/K",
+        Range::closed(0.0, 100.0),
+        (10.0, 20.0),
+        "0",
+        "TEHD: thermal expansion of the journal (steel ≈ 11–12): it grows by α R (T_journal − T_ref), closing every film by as much. 0: no journal growth.",
+    ),
+    num("thermal.reference_temperature_c", "°C", TEMP, (0.0, 60.0), "the supply temperature", "TEHD: temperature at which the clearances are given (the assembly temperature); growth is counted from it."),
     other(
         "thermal.cavitated_film",
         "",

@@ -5,12 +5,18 @@
 //!   Reynolds/Swift–Stieber complementarity), flows, friction and analytic perturbations.
 //! - [`viscosity`]: the two-point exponential viscosity law.
 //! - [`energy`]: the film energy equation (SUPG) with injection terms and film–pad exchange, and its balance.
+//! - [`pad_elastic`]: linear elasticity of a pad solid (incompatible-mode hexahedra, pivot support, static
+//!   solutions and modes).
+//! - [`pad_modes`]: the pad's bending modes on its pivot as pseudo-modal coordinates (film shapes, modal
+//!   mass and stiffness).
 //! - [`pad_thermal`]: steady 3-D heat conduction in a pad, free convection on its free faces.
 //! - [`hydraulics`]: servovalve, injection lines and nozzles of the controllable bearing, linearised.
 
 pub mod energy;
 pub mod hydraulics;
 pub mod orifice;
+pub mod pad_elastic;
+pub mod pad_modes;
 pub mod pad_thermal;
 pub mod reynolds;
 pub mod viscosity;

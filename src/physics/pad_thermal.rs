@@ -46,7 +46,8 @@ pub struct PadMaterial {
 /// The pad's conduction problem: mesh and element matrices (built once per geometry).
 #[derive(Debug, Clone)]
 pub struct PadConduction {
-    pub mesh: PadMesh,
+    /// The pad solid, shared with the elastic model ([`crate::bearing::model::PadModel::solid`]).
+    pub mesh: std::sync::Arc<PadMesh>,
     /// Unit-conductivity element matrices, one per hexahedron.
     conduction: Vec<[[f64; 8]; 8]>,
     /// Unit-coefficient face mass matrices of the free faces (same order as `mesh.free_faces`).
@@ -66,7 +67,7 @@ pub struct PadLayout {
 
 impl PadConduction {
     #[must_use]
-    pub fn new(mesh: PadMesh) -> Self {
+    pub fn new(mesh: std::sync::Arc<PadMesh>) -> Self {
         let conduction = mesh.boxes.iter().map(|b| b.conduction(1.0)).collect();
         let faces = mesh.free_faces.iter().map(|&(h, f)| mesh.boxes[h].face_mass(f)).collect();
         Self { mesh, conduction, faces }

@@ -143,8 +143,14 @@ impl PadMap {
     /// The map of `kind` from a pad's nodal fields (journal radius `radius_m`).
     #[must_use]
     pub fn from_field(field: &PadField, pad: usize, kind: FieldKind, radius_m: f64) -> Option<Self> {
-        let nodal = kind.nodal(field)?;
-        if field.s_m.len() < 2 || field.z_m.len() < 2 || nodal.is_empty() {
+        Self::from_nodal(field, pad, kind, radius_m, kind.nodal(field)?)
+    }
+
+    /// The map of other nodal values on a pad field's grid (same layout as the field's), coloured and
+    /// labelled as `kind` (e.g. a displacement shown as a length, like the film thickness).
+    #[must_use]
+    pub fn from_nodal(field: &PadField, pad: usize, kind: FieldKind, radius_m: f64, nodal: &[f64]) -> Option<Self> {
+        if field.s_m.len() < 2 || field.z_m.len() < 2 || nodal.is_empty() || nodal.len() != field.pressure_pa.len() {
             return None;
         }
         let rows = full_rows(field);

@@ -3,6 +3,7 @@
 //! --no-default-features` runs these tests).
 //!
 //! - [`colormap`]: perceptually uniform colour maps (viridis, inferno) as small tables.
+//! - [`deformation`]: a flexible pad's deformed cross-section, displacement and film maps, mode gallery.
 //! - [`field`]: a pad's scalar fields unwrapped onto (s, z), mirrored for half models, sampled and rasterised.
 //! - [`flowlines`]: streamlines of the film's mean velocity (Couette + Poiseuille, orifices as sources or sinks).
 //! - [`frf`]: Bode curves of the controllable bearing (G1, G2, G3, G, the rig's shaker chain), CSV.
@@ -18,6 +19,7 @@
 //! and their names say so.
 
 pub mod colormap;
+pub mod deformation;
 pub mod export;
 pub mod fidelity;
 pub mod field;

@@ -10,6 +10,9 @@ use super::plots::{frequency_ratios, sweep_speeds};
 
 /// The solution at the case's operating point (cross-section, fields, results panel).
 pub const SOLUTION: &[StageId] = &[StageId::Reduction];
+/// The pad deformation: the solution carries each flexible pad's modes, amplitudes and displacement (the
+/// films stage computes the modes when `physics.pad_modes > 0`).
+pub const DEFORMATION: &[StageId] = &[StageId::Reduction];
 /// Coefficients against the excitation-frequency ratio.
 pub const FREQUENCY_PLOTS: &[StageId] = &[StageId::Reduction, StageId::FrequencySweep];
 /// Coefficients against the running speed.

@@ -241,6 +241,9 @@ pub fn physics_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let touchdown = Num { key: "physics.touchdown_film_um", label: "Touchdown film", decimals: 2 };
     let cb = doc.file().bearing.assembled_clearance_um;
     out.merge(optional_ui(ui, doc, &touchdown, 0.01 * cb, |f| f.physics.touchdown_film_um, |f, v| f.physics.touchdown_film_um = v));
+    let modes = Num { key: "physics.pad_modes", label: "Pad bending modes", decimals: 0 };
+    #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    out.merge(optional_ui(ui, doc, &modes, 0.0, |f| f.physics.pad_modes.map(|v| v as f64), |f, v| f.physics.pad_modes = v.map(|x| x.round().max(0.0) as usize)));
     out
 }
 

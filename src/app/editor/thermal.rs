@@ -14,7 +14,7 @@ struct OptionalRow {
     set: fn(&mut crate::model::CaseFile, Option<f64>),
 }
 
-const ROWS: [OptionalRow; 7] = [
+const ROWS: [OptionalRow; 10] = [
     OptionalRow {
         num: Num { key: "thermal.h_oil_pad_w_per_m2_k", label: "Film–pad exchange H", decimals: 0 },
         default: |_| 4000.0,
@@ -56,6 +56,24 @@ const ROWS: [OptionalRow; 7] = [
         default: |f| f.operating.supply_temperature_c + 10.0,
         get: |f| f.thermal.journal_temperature_c,
         set: |f, v| f.thermal.journal_temperature_c = v,
+    },
+    OptionalRow {
+        num: Num { key: "thermal.pad_expansion_ppm_per_k", label: "Pad expansion α [10⁻⁶/K]", decimals: 1 },
+        default: |_| 0.0,
+        get: |f| f.thermal.pad_expansion_ppm_per_k,
+        set: |f, v| f.thermal.pad_expansion_ppm_per_k = v,
+    },
+    OptionalRow {
+        num: Num { key: "thermal.journal_expansion_ppm_per_k", label: "Journal expansion α [10⁻⁶/K]", decimals: 1 },
+        default: |_| 0.0,
+        get: |f| f.thermal.journal_expansion_ppm_per_k,
+        set: |f, v| f.thermal.journal_expansion_ppm_per_k = v,
+    },
+    OptionalRow {
+        num: Num { key: "thermal.reference_temperature_c", label: "Clearance reference temperature", decimals: 1 },
+        default: |f| f.operating.supply_temperature_c,
+        get: |f| f.thermal.reference_temperature_c,
+        set: |f, v| f.thermal.reference_temperature_c = v,
     },
 ];
 

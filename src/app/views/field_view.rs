@@ -11,6 +11,7 @@ use egui::{Align2, Color32, RichText, ColorImage, FontId, Pos2, Rect, Sense, Sha
 
 use crate::app::state::PadChoice;
 use crate::bearing::Solution;
+use crate::scene::colormap::ColorMap;
 use crate::scene::field::{common_range, nice_ticks, FieldKind, PadMap};
 use crate::scene::flowlines::{orifice_sites, pad_flowlines, Flowline, FlowlineParams};
 use crate::scene::summary::sig4;
@@ -218,10 +219,15 @@ fn draw_flowline(painter: &egui::Painter, frame: &ScreenFromPad, line: &Flowline
 }
 
 /// A vertical colour bar with ticks in display units.
-#[allow(clippy::cast_possible_truncation)]
 fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64, text_color: Color32) {
     let (unit, scale) = kind.unit();
-    let map = kind.colormap();
+    colour_bar(painter, rect, kind.colormap(), &format!("{} [{unit}]", kind.label()), scale, (lo, hi), text_color);
+}
+
+/// A vertical colour bar of `map` over the SI range `(lo, hi)`, ticks in display units (SI × `scale`),
+/// titled `title`.
+#[allow(clippy::cast_possible_truncation)]
+pub(crate) fn colour_bar(painter: &egui::Painter, rect: Rect, map: ColorMap, title: &str, scale: f64, (lo, hi): (f64, f64), text_color: Color32) {
     let steps = 64;
     for i in 0..steps {
         let t0 = i as f32 / steps as f32;
@@ -239,5 +245,5 @@ fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64
         painter.line_segment([Pos2::new(rect.right(), y), Pos2::new(rect.right() + 4.0, y)], Stroke::new(1.0, color));
         painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, sig4(v), FontId::proportional(11.0), color);
     }
-    painter.text(rect.center_top() - Vec2::new(0.0, 6.0), Align2::CENTER_BOTTOM, format!("{} [{unit}]", kind.label()), FontId::proportional(11.0), color);
+    painter.text(rect.center_top() - Vec2::new(0.0, 6.0), Align2::CENTER_BOTTOM, title, FontId::proportional(11.0), color);
 }

@@ -3,6 +3,7 @@
 
 pub mod bearing_view;
 pub mod coefficients_view;
+pub mod deformation_view;
 pub mod field_view;
 pub mod frf_view;
 pub mod placeholders;

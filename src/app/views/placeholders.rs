@@ -9,13 +9,6 @@ use crate::app::state::View;
 #[must_use]
 pub fn placeholder_text(view: View) -> Option<(&'static str, &'static str)> {
     match view {
-        View::PadDeformation => Some((
-            "Pad deformation — needs the pad flexibility model",
-            "Will show each pad's elastic and thermal deformation: the retained bending modes and the thermal \
-             growth of the film-side surface (exaggerated, with the rigid pad as reference), and how they change \
-             the film thickness. Computed from a 3-D finite-element pad model reduced to a few pseudo-modes \
-             (model.md §5).",
-        )),
         View::Frf => Some((
             "Frequency response — needs the hydraulics model",
             "Will show Bode plots of the controllable bearing as an actuator: servovalve, injection pipeline \
@@ -28,7 +21,7 @@ pub fn placeholder_text(view: View) -> Option<(&'static str, &'static str)> {
              logarithmic decrement, onset of instability) and the unbalance response with the API 617 limit, \
              using the full or the reduced bearing coefficients (model.md §10).",
         )),
-        View::Bearing | View::Fields | View::Coefficients => None,
+        View::Bearing | View::Fields | View::Coefficients | View::PadDeformation => None,
     }
 }
 

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use crate::bearing::coordinates::{Coord, PadStructure};
 use crate::bearing::error::SolveError;
+use crate::bearing::flex::modal_properties;
 use crate::bearing::progress::Cancel;
 use crate::bearing::solution::Solution;
 use crate::model::Case;
@@ -37,13 +38,18 @@ impl CoefficientsInputs {
     }
 }
 
-/// The full inertia matrix of a case's pads over the solution's coordinates (journal rows zero).
-pub(super) fn pad_inertia(case: &Case, coords: &[Coord]) -> Vec<Vec<f64>> {
+/// The full inertia matrix of a case's pads over the solution's coordinates (journal rows zero); a flexible
+/// pad's modal masses and couplings come with the modes the solution carries.
+pub(super) fn pad_inertia(case: &Case, solution: &Solution) -> Vec<Vec<f64>> {
+    let coords = &solution.full.coords;
     let n = coords.len();
     let mut m = vec![vec![0.0; n]; n];
     let b = &case.bearing;
     for (k, pad) in b.pads.iter().enumerate() {
-        let s = PadStructure::rigid(pad, b.journal_radius_m, b.length_m);
+        let mut s = PadStructure::rigid(pad, b.journal_radius_m, b.length_m);
+        if let Some(flex) = solution.pads.get(k).and_then(|p| p.flex.as_ref()) {
+            s = s.with_modes(&modal_properties(&flex.modes));
+        }
         let at = |dof| coords.iter().position(|c| *c == Coord::Pad { pad: k, dof });
         for (i, &di) in s.dofs.iter().enumerate() {
             for (j, &dj) in s.dofs.iter().enumerate() {
@@ -72,7 +78,7 @@ impl Stage for CoefficientsStage {
     fn poll(&mut self, inputs: &CoefficientsInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
         let film = if inputs.thermal.is_some() { ctx.output::<ThermalStage>()? } else { ctx.output::<EquilibriumStage>()? };
         let mut s = Solution::clone(film);
-        s.full.m = pad_inertia(ctx.case(), &s.full.coords);
+        s.full.m = pad_inertia(ctx.case(), &s);
         Ok(Progress::Done(Arc::new(s)))
     }
 }

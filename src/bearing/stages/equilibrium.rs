@@ -63,7 +63,7 @@ impl EquilibriumInputs {
             injection_temperature_c,
             excitation_ratio: _, // the reduction's
         } = operating;
-        let Physics { cavitation: _, touchdown_film_m: _ } = physics; // both read: kept whole below
+        let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _ } = physics; // kept whole below (pad_modes: the films')
         let structure = super::films::StructureInputs::of(case);
         Self {
             films: FilmsInputs::of(case),

@@ -2,13 +2,16 @@
 //!
 //! Reads the geometry the films are built on and the element counts; not the pivot stiffness values nor
 //! the pad density (they only enter the pads' structure, installed by the stages that solve with
-//! [`install_structure`]), not E or ν, not the fidelity name (its element counts are read) and not the
-//! node budget (checked when the case is validated).
+//! [`install_structure`]), not the fidelity name (its element counts are read) and not the node budget
+//! (checked when the case is validated). With `physics.pad_modes > 0` the films also carry the pads'
+//! bending modes (their film shapes are coordinates): then E, ν, the density and the pad solid's layers
+//! are read too ([`FlexInputs`]), and only then — a rigid case's films ignore them.
 
 use crate::bearing::coordinates::{pad_dofs, PadDof, PadStructure};
 use crate::bearing::error::SolveError;
+use crate::bearing::flex::modal_properties;
 use crate::bearing::model::BearingModel;
-use crate::model::{Bearing, Case, MeshSpec, Orifice, Pad};
+use crate::model::{Bearing, Case, MeshSpec, Orifice, Pad, Physics};
 
 use super::{Ctx, Poll, Progress, Request, Stage, StageId};
 use crate::bearing::progress::Cancel;
@@ -37,6 +40,49 @@ pub struct FilmsInputs {
     /// Circumferential, axial and orifice element counts.
     pub elements: [usize; 3],
     pub half_model: bool,
+    /// What the pads' bending modes read; `None` for rigid pads (`physics.pad_modes = 0`).
+    pub flex: Option<FlexInputs>,
+}
+
+/// What the pads' bending modes read besides the films' geometry (computed once per distinct pad and shared;
+/// an edit of speed, load or oil keeps them).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FlexInputs {
+    /// Bending modes per pad.
+    pub pad_modes: usize,
+    /// Element layers of the pad solid through the thickness.
+    pub pad_radial_elements: usize,
+    /// Per pad: Young's modulus [Pa], Poisson's ratio, density [kg/m³].
+    pub materials: Vec<[f64; 3]>,
+}
+
+impl FlexInputs {
+    /// Exhaustive over the pad's material fields (no `..`); `None` without modes.
+    fn of(pads: &[Pad], pad_modes: usize, pad_radial_elements: usize) -> Option<Self> {
+        let materials = pads
+            .iter()
+            .map(|pad| {
+                let Pad {
+                    kind: _,
+                    leading_edge_rad: _,
+                    arc_rad: _,
+                    pivot_rad: _,
+                    offset: _,
+                    clearance_m: _,
+                    preload: _,
+                    thickness_m: _, // in PadFilmInputs
+                    pivot_stiffness_n_per_m: _,
+                    pivot_transverse_stiffness_n_per_m: _, // the modes are computed on a rigid pivot
+                    density_kg_per_m3,
+                    youngs_modulus_pa,
+                    poisson_ratio,
+                    orifices: _,
+                } = pad;
+                [*youngs_modulus_pa, *poisson_ratio, *density_kg_per_m3]
+            })
+            .collect();
+        (pad_modes > 0).then_some(Self { pad_modes, pad_radial_elements, materials })
+    }
 }
 
 impl PadFilmInputs {
@@ -55,7 +101,7 @@ impl PadFilmInputs {
             pivot_transverse_stiffness_n_per_m: _, // kind and which stiffnesses are given: dofs
             density_kg_per_m3: _,                  // structure (coefficients)
             youngs_modulus_pa: _,
-            poisson_ratio: _, // read by no stage until the pads deform
+            poisson_ratio: _, // FlexInputs, when the pads bend
             orifices,
         } = pad;
         Self {
@@ -74,7 +120,8 @@ impl FilmsInputs {
     /// Exhaustive over the case, the bearing and the mesh (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics: _, thermal: _, hydraulics: _ } = case;
+        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _ } = case;
+        let Physics { cavitation: _, touchdown_film_m: _, pad_modes } = physics; // the equilibrium's; the modes
         let Bearing { journal_radius_m, length_m, assembled_clearance_m, pads } = bearing;
         let MeshSpec {
             fidelity: _, // its element counts are read
@@ -82,8 +129,8 @@ impl FilmsInputs {
             axial_elements,
             orifice_elements,
             half_model,
-            pad_radial_elements: _, // the thermal stage's pad solids
-            max_nodes: _,           // checked when the case is validated
+            pad_radial_elements, // the pad solids (the modes' here; the thermal stage's too)
+            max_nodes: _,        // checked when the case is validated
         } = mesh;
         Self {
             journal_radius_m: *journal_radius_m,
@@ -92,6 +139,7 @@ impl FilmsInputs {
             pads: pads.iter().map(PadFilmInputs::of).collect(),
             elements: [*circumferential_elements, *axial_elements, *orifice_elements],
             half_model: *half_model,
+            flex: FlexInputs::of(pads, *pad_modes, *pad_radial_elements),
         }
     }
 }
@@ -134,13 +182,26 @@ impl StructureInputs {
     }
 }
 
-/// Installs the case's pad structures in a model built for the same films.
+/// Installs the case's pad structures in a model built for the same films (a flexible pad keeps the
+/// modal mass and stiffness of the modes the model holds).
 ///
 /// # Errors
 /// A model built for other coordinates.
 pub fn install_structure(model: &mut BearingModel, case: &Case) -> Result<(), SolveError> {
     let b = &case.bearing;
-    model.set_structure(b.pads.iter().map(|p| PadStructure::rigid(p, b.journal_radius_m, b.length_m)).collect())
+    let structures = b
+        .pads
+        .iter()
+        .zip(&model.pads)
+        .map(|(p, pm)| {
+            let rigid = PadStructure::rigid(p, b.journal_radius_m, b.length_m);
+            match &pm.modes {
+                Some(modes) => rigid.with_modes(&modal_properties(modes)),
+                None => rigid,
+            }
+        })
+        .collect();
+    model.set_structure(structures)
 }
 
 #[derive(Default)]

@@ -68,7 +68,7 @@ impl Stage for FrfStage {
         let model = ctx.output_mut::<FilmsStage>()?;
         let t0 = Instant::now();
         let op = OperatingPoint::isothermal(&case);
-        let m = pad_inertia(&case, &sol.full.coords);
+        let m = pad_inertia(&case, &sol);
         let frf = FrfModel::linearise(model, &op, &case, &sol, m, &inputs.port_pads)?;
         Ok(Progress::Done(Arc::new(FrfModel { linearise_seconds: t0.elapsed().as_secs_f64(), ..frf })))
     }

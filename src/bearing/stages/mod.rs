@@ -8,9 +8,9 @@
 //!
 //! | stage            | reads from the case (and the request)                                    | reads the outputs of |
 //! |------------------|--------------------------------------------------------------------------|----------------------|
-//! | `Films`          | R, L, C_b; per pad θ_le, β, θ_p, C_p, t, orifices and its coordinates (kind, which pivot stiffnesses are given); element counts, half model | — |
+//! | `Films`          | R, L, C_b; per pad θ_le, β, θ_p, C_p, t, orifices and its coordinates (kind, which pivot stiffnesses are given); element counts, half model; with `physics.pad_modes > 0` the modes' E, ν, density, pad layers | — |
 //! | `Equilibrium`    | Films + pivot stiffness values, preloads (reported); µ(T), oil ρ (regime warnings); Ω, load, T_film, p_inj, T_inj; cavitation, touchdown film | Films |
-//! | `Thermal`        | Equilibrium + pad radial elements; oil c_p, k; T_supply; every `[thermal]` value — THD cases only | Films, Equilibrium |
+//! | `Thermal`        | Equilibrium + pad radial elements; oil c_p, k; T_supply; every `[thermal]` value (with pad growth: the pads' E, ν) — THD cases only | Films, Equilibrium |
 //! | `Coefficients`   | Equilibrium (+ Thermal for THD) + pad density (the inertia `M`)          | Equilibrium, Thermal |
 //! | `Reduction`      | Coefficients + ω/Ω: the solution the views show                          | Coefficients         |
 //! | `FrequencySweep` | Coefficients + the request's ratios ω/Ω                                  | Coefficients         |
@@ -22,10 +22,10 @@
 //! every builder until someone decides, stage by stage, whether it reads it.
 //!
 //! Read by no stage: the title and the case itself (stamped on the published solution), Young's modulus and
-//! Poisson's ratio (until the pads deform), the fidelity name (its element counts are read), the oil's
-//! name, and the node budget `mesh.max_nodes` (checked when the case is validated, before any stage runs), and of the `[hydraulics]` section everything
-//! but the ports' pads (the valve, lines and rig enter only the FRF view's frequency loop, run on the `Frf`
-//! stage's output).
+//! Poisson's ratio of rigid pads (`physics.pad_modes = 0`), the fidelity name (its element counts are read),
+//! the oil's name, the node budget `mesh.max_nodes` (checked when the case is validated, before any stage
+//! runs), and of the `[hydraulics]` section everything but the ports' pads (the valve, lines and rig enter
+//! only the FRF view's frequency loop, run on the `Frf` stage's output).
 //! Editing them runs nothing. The pivot stiffnesses and the pad density are not read by the films: the
 //! stages that solve install the pads' structure in the films' model ([`films::install_structure`],
 //! [`crate::bearing::BearingModel::set_structure`]) without rebuilding it; the density reaches only

@@ -146,6 +146,52 @@ fn pivot_stiffness_reruns_the_equilibrium_on_the_same_films() {
     assert_eq!(runs(&s)[0], 2);
 }
 
+fn flexible(set: &[&str]) -> Case {
+    let text = include_str!("../../../cases/compressor-bearing-flexible.toml");
+    let set: Vec<String> = std::iter::once("mesh.fidelity=preview").chain(set.iter().copied()).map(str::to_string).collect();
+    load_case(text, &set).unwrap().1
+}
+
+/// The modes of every pad of a solution (`None` for a rigid pad).
+fn modes_of(s: &Solution) -> Vec<Option<Arc<crate::physics::pad_modes::PadModes>>> {
+    s.pads.iter().map(|p| p.flex.as_ref().map(|f| f.modes.clone())).collect()
+}
+
+#[test]
+fn pad_modes_are_computed_once_per_pad_shape_and_kept_across_operating_edits() {
+    let mut s = Stages::new();
+    let first = s.run(&Request::solution(flexible(&[])), &NoCancel).unwrap().solution().unwrap();
+    // The staged solution is the one-shot solve (the modal masses reach the reduced coefficients).
+    let fresh = crate::bearing::solve_case(&flexible(&[])).unwrap();
+    assert_eq!(first.eccentricity_ratio.to_bits(), fresh.eccentricity_ratio.to_bits());
+    assert_eq!(first.full.m, fresh.full.m);
+    assert_eq!(first.reduced.k_n_per_m, fresh.reduced.k_n_per_m);
+    let modes = modes_of(&first);
+    // Five identical pads: one computation, shared.
+    let m0 = modes[0].clone().expect("flexible pads");
+    assert!(modes.iter().all(|m| m.as_ref().is_some_and(|m| Arc::ptr_eq(m, &m0))), "identical pads share one computation");
+    // Speed and load: the films (and the modes in them) are kept; the very same modes are used.
+    for edit in ["operating.speed_rpm=7000", "operating.load_n=3000"] {
+        let again = s.run(&Request::solution(flexible(&[edit])), &NoCancel).unwrap().solution().unwrap();
+        assert_eq!(runs(&s)[0], 1, "{edit} rebuilt the films");
+        assert!(modes_of(&again).iter().all(|m| m.as_ref().is_some_and(|m| Arc::ptr_eq(m, &m0))), "{edit} recomputed the modes");
+        assert_ne!(again.eccentricity_ratio, first.eccentricity_ratio, "{edit} changes the solution");
+    }
+    // What the modes read recomputes them: E (frequency ∝ √E) and density (∝ 1/√ρ).
+    let f0 = m0.modes[0].frequency_hz;
+    let stiff = s.run(&Request::solution(flexible(&["bearing.pads.youngs_modulus_gpa=800"])), &NoCancel).unwrap().solution().unwrap();
+    assert_eq!(runs(&s)[0], 2);
+    let f = modes_of(&stiff)[0].as_ref().unwrap().modes[0].frequency_hz;
+    assert!((f / f0 - 2.0).abs() < 1e-9, "E × 4 doubles the frequency: {f} / {f0}");
+    let light = s.run(&Request::solution(flexible(&["bearing.pads.density_kg_per_m3=1950"])), &NoCancel).unwrap().solution().unwrap();
+    assert_eq!(runs(&s)[0], 3);
+    let f = modes_of(&light)[0].as_ref().unwrap().modes[0].frequency_hz;
+    assert!((f / f0 - 2.0).abs() < 1e-9, "ρ / 4 doubles the frequency: {f} / {f0}");
+    // Rigid pads (no modes): E and ν are read by no stage (see edits_that_no_stage_reads_run_nothing).
+    let rigid = s.run(&Request::solution(flexible(&["physics.pad_modes=0"])), &NoCancel).unwrap().solution().unwrap();
+    assert!(modes_of(&rigid).iter().all(Option::is_none));
+}
+
 /// Asks every solve to pause as soon as it may (the web stepper with a spent frame budget).
 struct AlwaysSuspend;
 impl Cancel for AlwaysSuspend {

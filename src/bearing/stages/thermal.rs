@@ -37,13 +37,15 @@ pub struct ThermalInputs {
     pub supply_temperature_c: f64,
     /// Every `[thermal]` value.
     pub thermal: Thermal,
+    /// Per pad E [Pa] and ν, when the pads grow thermally (`thermal.pad_expansion_ppm_per_k > 0`).
+    pub pad_elastic: Option<Vec<[f64; 2]>>,
 }
 
 impl ThermalInputs {
     /// Exhaustive over the case and its sub-structs (no `..`); `None` for an isothermal case.
     #[must_use]
     pub fn of(case: &Case) -> Option<Self> {
-        let Case { title: _, bearing: _, lubricant, operating, mesh, physics: _, thermal, hydraulics: _ } = case;
+        let Case { title: _, bearing, lubricant, operating, mesh, physics: _, thermal, hydraulics: _ } = case;
         let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } = lubricant;
         let Operating {
             speed_rad_s: _,
@@ -74,7 +76,12 @@ impl ThermalInputs {
             inlet_temperature_c: _,
             journal_temperature_c: _,
             cavitated_film: _,
+            pad_expansion_per_k,
+            journal_expansion_per_k: _,
+            reference_temperature_c: _,
         } = thermal;
+        // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
+        let pad_elastic = (*pad_expansion_per_k != 0.0).then(|| bearing.pads.iter().map(|p| [p.youngs_modulus_pa, p.poisson_ratio]).collect());
         (*model == ThermalModelKind::Thd).then(|| Self {
             equilibrium: EquilibriumInputs::of(case),
             solids: PadSolidsInputs {
@@ -86,6 +93,7 @@ impl ThermalInputs {
             conductivity_w_per_m_k: *conductivity_w_per_m_k,
             supply_temperature_c: *supply_temperature_c,
             thermal: *thermal,
+            pad_elastic,
         })
     }
 }

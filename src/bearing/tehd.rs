@@ -1,0 +1,333 @@
+//! Thermal growth of the pads and the journal, fed back into the films inside the THD loop (TEHD,
+//! model.md §5–§7).
+//!
+//! ## Equations
+//! ```text
+//! h = h_rigid(q) + u_p(s, z) − δ_j                 each film's extra thickness (PadFilm::set_extra_thickness)
+//! δ_j = α_j R (T_j − T_ref)                        journal growth, uniform around the bearing
+//! K u = f_th,  f_th = ∫ Bᵀ D α_p (T − T_ref) m dV   pad solid (physics::pad_elastic), m = [1 1 1 0 0 0]ᵀ,
+//!                                                  supported statically determinately at its pivot line
+//! u_p = u · e_r on the film face                   positive away from the journal (opens the film)
+//! ```
+//! `T` is the pad's 3-D temperature on the pad mesh (the thermal model's, same mesh as the elastic one).
+//!
+//! Supports: the pivot line (the back-face node column nearest the pivot) is pinned in x and y; u_z = 0 on
+//! the mid-plane of a half model (else at the pivot line's node nearest z = 0); one in-plane component of the
+//! film-face node in that column, at the mid-plane, is fixed. These only remove rigid motions, so the pad
+//! expands freely (a uniform temperature rise is stress-free: a similarity about the pivot line). The last
+//! support fixes the pad's rotation about the pivot line, which is its tilt coordinate (the equilibrium
+//! solves the tilt); the rotation a Cartesian component leaves is removed afterwards, so that the node under
+//! the pivot moves only along the line through it (a uniform rise then gives the similarity exactly). Clamping the whole
+//! contact patch instead would restrain the back face's expansion and bend the pad (by about a third of the
+//! thickness growth on Fillon's pad). When no node column lies on the pivot, the pad is pinned at the nearest
+//! one: its thermal growth then carries the pivot's offset from it times the local strain (below α ΔT times
+//! half a column width).
+//! Housing and pivot growth are not modelled (docs/THERMAL.md).
+//!
+//! With both expansion coefficients zero ([`Growth::is_off`]) nothing is built and the THD loop is the
+//! rigid one.
+//!
+//! Identical pads (same mesh shape up to rotation, pivot position within the arc and material) share one
+//! factorised stiffness: the radial component of the displacement does not depend on the pad's angle.
+
+use crate::fem::solid8::{Elastic, Formulation};
+use crate::fem::SpdSolver;
+use crate::mesh::pad3d::PadMesh;
+use crate::model::Case;
+use crate::physics::pad_elastic::{thermal_forces, ElasticError, ElasticSystem, Solid, Supports};
+use crate::physics::reynolds::SampledField;
+
+use super::error::SolveError;
+use super::model::BearingModel;
+
+/// Convergence of the growth in the thermal loop: its largest change between outer iterations, relative to
+/// the assembled clearance.
+pub const GROWTH_TOL: f64 = 1e-4;
+
+/// Expansion coefficients and reference temperature of the thermal growth.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Growth {
+    /// Pad thermal expansion coefficient α_p [1/K].
+    pub pad_per_k: f64,
+    /// Journal thermal expansion coefficient α_j [1/K].
+    pub journal_per_k: f64,
+    /// Temperature at which the clearances are given [°C].
+    pub reference_c: f64,
+}
+
+impl Growth {
+    /// The growth of a case (`thermal.pad_expansion_per_k`, `thermal.journal_expansion_per_k`,
+    /// `thermal.reference_temperature_c`, default the supply temperature).
+    #[must_use]
+    pub fn of(case: &Case) -> Self {
+        let t = &case.thermal;
+        Self {
+            pad_per_k: t.pad_expansion_per_k,
+            journal_per_k: t.journal_expansion_per_k,
+            reference_c: t.reference_temperature_c.unwrap_or(case.operating.supply_temperature_c),
+        }
+    }
+
+    #[must_use]
+    pub fn is_off(&self) -> bool {
+        self.pad_per_k == 0.0 && self.journal_per_k == 0.0
+    }
+}
+
+/// A factorised pad solid clamped on its pivot patch.
+struct GrowthSolver {
+    solid: Solid,
+    system: ElasticSystem,
+    solver: SpdSolver,
+    material: Elastic,
+    /// Pivot position within the arc [rad] (sharing key with the mesh shape and material).
+    pivot_from_le: f64,
+    mesh: std::sync::Arc<PadMesh>,
+    /// The pinned pivot line (x, y) [m] and the film-face node whose tangential displacement the rotation
+    /// support sets to zero.
+    pin: [f64; 2],
+    anchor: usize,
+}
+
+impl GrowthSolver {
+    fn new(mesh: std::sync::Arc<PadMesh>, pivot_rad: f64, pivot_from_le: f64, material: Elastic, half: bool) -> Result<Self, ElasticError> {
+        let solid = Solid::from_pad(&mesh);
+        let (fixed, pin, anchor) = determinate_supports(&mesh, &solid, pivot_rad, half);
+        let supports = Supports::new(&solid, &fixed, &[], [0.0, 0.0]);
+        let system = ElasticSystem::assemble(&solid, &material, Formulation::Incompatible, supports)?;
+        let mut solver = SpdSolver::new(&system.pattern).map_err(ElasticError::Factor)?;
+        solver.factor(&system.pattern, &system.stiffness).map_err(ElasticError::Factor)?;
+        Ok(Self { solid, system, solver, material, pivot_from_le, mesh, pin, anchor })
+    }
+
+    /// Film-face radial displacement [m] for the pad temperature rise `dt` (all pad nodes) [K].
+    fn film_face(&mut self, alpha: f64, dt: &[f64]) -> Result<Vec<f64>, ElasticError> {
+        let f = thermal_forces(&self.solid, &self.material, alpha, dt)?;
+        let mut q = self.system.supports.reduce(&f);
+        self.solver.solve_in_place(&mut q);
+        let u = self.system.supports.expand(&q);
+        // Remove the rotation δ about the pivot line that the Cartesian rotation support leaves: the anchor
+        // node (under the pivot line) then has no displacement across the line–anchor direction.
+        let p = self.pin;
+        let xa = self.solid.nodes[self.anchor];
+        let (d, len) = ([xa[0] - p[0], xa[1] - p[1]], (xa[0] - p[0]).hypot(xa[1] - p[1]));
+        let across = [-d[1] / len, d[0] / len];
+        let delta = (u[3 * self.anchor] * across[0] + u[3 * self.anchor + 1] * across[1]) / len;
+        Ok((0..self.mesh.n_film)
+            .map(|i| {
+                let x = self.solid.nodes[i];
+                let theta = x[1].atan2(x[0]);
+                // u − δ ẑ × (x − P), radial component.
+                let rot = [-(x[1] - p[1]), x[0] - p[0]];
+                (u[3 * i] - delta * rot[0]) * theta.cos() + (u[3 * i + 1] - delta * rot[1]) * theta.sin()
+            })
+            .collect())
+    }
+}
+
+/// Pivot line pinned in x, y; u_z on the mid-plane (half model) or at one pivot-line node; one in-plane
+/// component of the film-face node under the pivot line at the mid-plane (the rotation about the line).
+/// Returns the fixed components, the pinned line (x, y) and the film-face anchor node.
+fn determinate_supports(mesh: &PadMesh, solid: &Solid, pivot_rad: f64, half: bool) -> (Vec<(usize, usize)>, [f64; 2], usize) {
+    let angle = |n: usize| {
+        let x = solid.nodes[n];
+        ((x[1].atan2(x[0]) - pivot_rad + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI).abs()
+    };
+    let back = mesh.layers * mesh.n_film..mesh.n_nodes();
+    let nearest = back.clone().map(angle).fold(f64::INFINITY, f64::min);
+    let line: Vec<usize> = back.filter(|&n| angle(n) <= nearest + 1e-9).collect();
+    let mid = |nodes: &mut dyn Iterator<Item = usize>| nodes.min_by(|&a, &b| solid.nodes[a][2].abs().total_cmp(&solid.nodes[b][2].abs()));
+    let mut fixed: Vec<(usize, usize)> = line.iter().flat_map(|&n| [(n, 0), (n, 1)]).collect();
+    if half {
+        fixed.extend((0..solid.n_nodes()).filter(|&n| solid.nodes[n][2].abs() < 1e-12).map(|n| (n, 2)));
+    } else if let Some(n) = mid(&mut line.iter().copied()) {
+        fixed.push((n, 2));
+    }
+    // The film-face node under the pivot line (same column), at the mid-plane: its component closest to the
+    // tangent stops the rotation about the line.
+    let anchor = mid(&mut (0..mesh.n_film).filter(|&n| angle(n) <= nearest + 1e-9)).unwrap_or(0);
+    let c = if pivot_rad.sin().abs() >= pivot_rad.cos().abs() { 0 } else { 1 };
+    fixed.push((anchor, c));
+    let pin = line.first().map_or([0.0, 0.0], |&n| [solid.nodes[n][0], solid.nodes[n][1]]);
+    (fixed, pin, anchor)
+}
+
+/// The thermal growth model of a bearing: one factorised solid per distinct pad.
+pub struct TehdModel {
+    pub growth: Growth,
+    journal_radius: f64,
+    solvers: Vec<GrowthSolver>,
+    /// Which solver each pad uses (`None`: no pad solid, only the journal grows under it).
+    solver_of: Vec<Option<usize>>,
+}
+
+/// One evaluation of the growth: each film's extra thickness at its nodes [m], and the journal growth [m].
+#[derive(Debug, Clone, PartialEq)]
+pub struct GrowthField {
+    pub pad_film_m: Vec<Vec<f64>>,
+    pub journal_m: f64,
+}
+
+impl GrowthField {
+    /// The extra film thickness of pad k at its nodes: `u_p − δ_j`.
+    #[must_use]
+    pub fn extra(&self, k: usize) -> Vec<f64> {
+        self.pad_film_m[k].iter().map(|u| u - self.journal_m).collect()
+    }
+
+    /// Largest extra film thickness (against no growth at all) [m].
+    #[must_use]
+    pub fn magnitude(&self) -> f64 {
+        self.journal_m.abs() + self.pad_film_m.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()))
+    }
+
+    /// Largest change of the extra film thickness against another evaluation [m].
+    #[must_use]
+    pub fn change(&self, other: &Self) -> f64 {
+        let dj = (self.journal_m - other.journal_m).abs();
+        let dp = self.pad_film_m.iter().flatten().zip(other.pad_film_m.iter().flatten()).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+        dj + dp
+    }
+}
+
+impl TehdModel {
+    /// The growth model of a case on its bearing model and pad meshes (`meshes[k]`: pad k's solid, shared
+    /// with the thermal model); `None` when the growth is off.
+    ///
+    /// # Errors
+    /// [`SolveError::Invalid`] naming the pad if its elastic model fails.
+    pub fn new(case: &Case, model: &BearingModel, meshes: &[Option<std::sync::Arc<PadMesh>>]) -> Result<Option<Self>, SolveError> {
+        let growth = Growth::of(case);
+        if growth.is_off() {
+            return Ok(None);
+        }
+        let mut solvers: Vec<GrowthSolver> = Vec::new();
+        let mut solver_of = Vec::with_capacity(model.pads.len());
+        for (k, (pad, mesh)) in case.bearing.pads.iter().zip(meshes).enumerate() {
+            let Some(mesh) = mesh.clone().filter(|_| growth.pad_per_k != 0.0) else {
+                solver_of.push(None);
+                continue;
+            };
+            let material = Elastic { youngs_modulus: pad.youngs_modulus_pa, poisson_ratio: pad.poisson_ratio, density: pad.density_kg_per_m3 };
+            let pivot_from_le = pad.pivot_rad - pad.leading_edge_rad;
+            let same = |s: &GrowthSolver| s.mesh.same_shape(&mesh) && (s.pivot_from_le - pivot_from_le).abs() < 1e-12 && s.material == material;
+            let index = match solvers.iter().position(same) {
+                Some(i) => i,
+                None => {
+                    let half = model.pads[k].film.geom.grid.half;
+                    let s = GrowthSolver::new(mesh, pad.pivot_rad, pivot_from_le, material, half)
+                        .map_err(|e| SolveError::Invalid(format!("pad {k} thermal growth: {e}")))?;
+                    solvers.push(s);
+                    solvers.len() - 1
+                }
+            };
+            solver_of.push(Some(index));
+        }
+        Ok(Some(Self { growth, journal_radius: case.bearing.journal_radius_m, solvers, solver_of }))
+    }
+
+    /// Distinct factorised pad solids.
+    #[must_use]
+    pub fn distinct_solids(&self) -> usize {
+        self.solvers.len()
+    }
+
+    /// The growth for the pads' temperatures (`pad_c[k]`: all pad nodes of pad k [°C], `None` without a
+    /// solid) and the journal temperature `t_j` [°C]; `film_nodes[k]`: pad k's film node count.
+    ///
+    /// # Errors
+    /// [`SolveError::Invalid`] naming the pad if its elastic solve fails.
+    pub fn evaluate(&mut self, pad_c: &[Option<Vec<f64>>], t_j: f64, film_nodes: &[usize]) -> Result<GrowthField, SolveError> {
+        let g = self.growth;
+        let mut pad_film_m = Vec::with_capacity(pad_c.len());
+        for (k, t) in pad_c.iter().enumerate() {
+            let u = match (self.solver_of.get(k).copied().flatten(), t) {
+                (Some(i), Some(t)) => {
+                    let dt: Vec<f64> = t.iter().map(|x| x - g.reference_c).collect();
+                    self.solvers[i].film_face(g.pad_per_k, &dt).map_err(|e| SolveError::Invalid(format!("pad {k} thermal growth: {e}")))?
+                }
+                _ => vec![0.0; film_nodes.get(k).copied().unwrap_or(0)],
+            };
+            pad_film_m.push(u);
+        }
+        Ok(GrowthField { pad_film_m, journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c) })
+    }
+}
+
+/// Installs a growth field as each film's extra thickness (nodal values, interpolated bilinearly to the
+/// quadrature points: the trace of the pad's trilinear displacement).
+pub fn install(model: &mut BearingModel, field: &GrowthField) {
+    for (k, pm) in model.pads.iter_mut().enumerate() {
+        let node = field.extra(k);
+        let g = &pm.film.geom;
+        let qp = g.elements.iter().zip(&g.qp).map(|(nodes, q)| q.each_ref().map(|p| (0..4).map(|a| p.n[a] * node[nodes[a]]).sum::<f64>())).collect();
+        pm.film.set_extra_thickness(Some(SampledField { qp, node }));
+    }
+}
+
+/// Removes any growth from the films.
+pub fn clear(model: &mut BearingModel) {
+    for pm in &mut model.pads {
+        pm.film.set_extra_thickness(None);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bearing::model::pad_grid;
+    use crate::model::load_case;
+
+    fn fillon(sets: &[&str]) -> Case {
+        let set: Vec<String> = std::iter::once("mesh.fidelity=preview").chain(sets.iter().copied()).map(str::to_string).collect();
+        load_case(include_str!("../../cases/fillon-a.toml"), &set).unwrap().1
+    }
+
+    fn meshes(case: &Case, model: &BearingModel) -> Vec<Option<std::sync::Arc<PadMesh>>> {
+        case.bearing
+            .pads
+            .iter()
+            .enumerate()
+            .map(|(k, p)| {
+                let grid = pad_grid(case, k);
+                let r = case.bearing.journal_radius_m;
+                debug_assert_eq!(grid.n_nodes(), model.pads[k].film.geom.n_nodes());
+                Some(std::sync::Arc::new(PadMesh::extrude(&grid, r, p.leading_edge_rad, p.bore_radius_m(r), p.thickness_m, case.mesh.pad_radial_elements)))
+            })
+            .collect()
+    }
+
+    /// A uniform temperature rise ΔT is stress-free: the pad grows as a similarity about its clamped pivot
+    /// point P, u = α ΔT (x − P), so the film face at angle φ from the pivot moves radially by
+    /// α ΔT (R_b − (R_b + t) cos φ) (−α t ΔT at the pivot: towards the journal). Clamping the patch restrains
+    /// only the patch's own growth, a local effect at the back.
+    #[test]
+    fn uniform_heating_is_a_similarity_about_the_pivot_and_identical_pads_share_a_solid() {
+        let case = fillon(&["thermal.pad_expansion_ppm_per_k=12", "thermal.journal_expansion_ppm_per_k=11", "thermal.reference_temperature_c=20"]);
+        let model = BearingModel::new(&case).unwrap();
+        let meshes = meshes(&case, &model);
+        let mut tehd = TehdModel::new(&case, &model, &meshes).unwrap().unwrap();
+        assert_eq!(tehd.distinct_solids(), 1, "four identical pads");
+        let dt = 30.0;
+        let pad_c: Vec<Option<Vec<f64>>> = meshes.iter().map(|m| m.as_ref().map(|m| vec![20.0 + dt; m.n_nodes()])).collect();
+        let nodes: Vec<usize> = model.pads.iter().map(|p| p.film.geom.n_nodes()).collect();
+        let g = tehd.evaluate(&pad_c, 50.0, &nodes).unwrap();
+        // Journal: α_j R ΔT_j.
+        assert!((g.journal_m - 1.1e-5 * 0.05 * 30.0).abs() < 1e-18, "{}", g.journal_m);
+        for k in 1..4 {
+            assert_eq!(g.pad_film_m[k], g.pad_film_m[0]);
+        }
+        let pad = &case.bearing.pads[0];
+        let (rb, t) = (pad.bore_radius_m(case.bearing.journal_radius_m), pad.thickness_m);
+        let geom = &model.pads[0].film.geom;
+        let scale = 1.2e-5 * dt * t;
+        let worst = (0..geom.n_nodes()).fold(0.0_f64, |m, n| {
+            let exact = 1.2e-5 * dt * (rb - (rb + t) * (geom.node_theta[n] - pad.pivot_rad).cos());
+            m.max((g.pad_film_m[0][n] - exact).abs() / scale)
+        });
+        eprintln!("uniform heating: largest deviation from the similarity {worst:.2e} of α t ΔT");
+        assert!(worst < 1e-9, "{worst}");
+        // Off without coefficients.
+        assert!(TehdModel::new(&fillon(&[]), &model, &meshes).unwrap().is_none());
+    }
+}
