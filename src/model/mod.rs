@@ -12,6 +12,7 @@ pub mod error;
 pub mod file;
 pub mod load;
 pub mod resolve;
+pub mod rotor;
 pub mod schema;
 
 pub use case::{

@@ -1,0 +1,23 @@
+//! The rotor–bearing system (model.md §10): a finite-element shaft with rigid disks on bearings.
+//!
+//! ```text
+//! M ü + (C + Ω G) u̇ + K u = f(t),   u = [x, y, a, b per shaft node…, appended pad coordinates…]
+//! ```
+//! - [`element`]: the Timoshenko (or Euler–Bernoulli) beam element with gyroscopic coupling;
+//! - [`assembly`]: the shaft, disks, supports and proportional damping ([`assembly::ShaftModel`], once per rotor);
+//! - [`coupling`]: bearings at their nodes, full (pad coordinates appended) or synchronously reduced;
+//! - [`eigen`]: damped modes (frequencies, logarithmic decrements, whirl, mode shapes).
+//!
+//! Units SI; Ω the spin speed [rad/s], counter-clockwise about +z as the bearing's journal turns. The
+//! rotor's description (sections, disks, bearings…) is [`crate::model::rotor`].
+
+pub mod assembly;
+pub mod coupling;
+pub mod eigen;
+pub mod element;
+pub mod error;
+pub mod stability;
+#[cfg(test)]
+mod closed_form;
+
+pub use error::RotorError;
