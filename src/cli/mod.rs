@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `rotor`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -14,6 +14,8 @@ mod bench;
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod rotor;
 #[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
@@ -135,6 +137,23 @@ pub enum Command {
         #[arg(long, default_value = "tiltpad")]
         tag: String,
     },
+    /// Rotor–bearing analysis over a speed range: damped modes, onset, critical speeds, unbalance response.
+    Rotor {
+        /// Rotor file (TOML; bearing cases relative to it).
+        rotor: PathBuf,
+        /// Spin speeds, rpm: `FROM:TO:N`.
+        #[arg(long, value_name = "FROM:TO:N")]
+        speeds: String,
+        /// Override the rotor's bearing coefficients: `full` or `reduced`.
+        #[arg(long, value_parser = ["full", "reduced"])]
+        coefficients: Option<String>,
+        /// Whole result as JSON (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// One row per speed as CSV (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+    },
     /// Print every case key with its unit, allowed values, default and meaning.
     Schema {
         /// Write the table as JSON instead (`-`: standard output).
@@ -248,6 +267,13 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
+        Command::Rotor { rotor, speeds, coefficients, json, csv } => rotor::run(&rotor::RotorArgs {
+            rotor: &rotor,
+            speeds: &speeds,
+            coefficients: coefficients.map(|c| if c == "full" { crate::model::rotor::CoefficientModel::Full } else { crate::model::rotor::CoefficientModel::Reduced }),
+            json,
+            csv,
+        }),
         Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
     }
 }

@@ -11,7 +11,7 @@
 //! [[rotor.section]]       # length_mm, outer_diameter_mm, inner_diameter_mm, elements
 //! [[rotor.disk]]          # node, mass_kg, polar_inertia_kg_m2, transverse_inertia_kg_m2
 //! [[rotor.unbalance]]     # node, amount_g_mm, phase_deg
-//! [[rotor.bearing]]       # node and either case = "bearing.toml" or k_n_per_m / c_ns_per_m [/ speeds_rpm]
+//! [[rotor.bearing]]       # node and either case = "bearing.toml" [set = ["key=value", …]] or k_n_per_m / c_ns_per_m [/ speeds_rpm]
 //! [[rotor.support]]       # node, stiffness_n_per_m, damping_ns_per_m (isotropic linear support)
 //! ```
 //! Nodes are numbered from 0 at the first section's left end; section i ends at node `Σ elements`. A bearing
@@ -149,6 +149,9 @@ pub struct BearingTable {
     /// Bearing case file (relative to the rotor file).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub case: Option<String>,
+    /// Overrides applied to the bearing case, as `--set` takes them (`"mesh.fidelity=preview"`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub set: Vec<String>,
     /// Stiffness rows `[xx, xy, yx, yy]`, one per speed in `speeds_rpm` (or one row).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub k_n_per_m: Vec<[f64; 4]>,
@@ -426,8 +429,9 @@ fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn F
     let support = match (&b.case, numbers) {
         (Some(name), false) => {
             let text = read_case(name).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("cannot read `{name}`: {e}") })?;
-            let (_, case) = super::load_case(&text, &[]).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("`{name}`: {e}") })?;
-            BearingSupport::Case { name: name.clone(), case: Box::new(case) }
+            let (_, case) = super::load_case(&text, &b.set).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("`{name}`: {e}") })?;
+            let name = if b.set.is_empty() { name.clone() } else { format!("{name} [{}]", b.set.join(", ")) };
+            BearingSupport::Case { name, case: Box::new(case) }
         }
         (None, true) => {
             let rows = b.k_n_per_m.len();

@@ -11,13 +11,19 @@
 //! Units SI; Ω the spin speed [rad/s], counter-clockwise about +z as the bearing's journal turns. The
 //! rotor's description (sections, disks, bearings…) is [`crate::model::rotor`].
 
+pub mod analysis;
 pub mod assembly;
+pub mod bearings;
+pub mod campbell;
 pub mod coupling;
 pub mod eigen;
 pub mod element;
 pub mod error;
 pub mod stability;
+pub mod unbalance;
 #[cfg(test)]
 mod closed_form;
+#[cfg(test)]
+mod full_vs_reduced;
 
 pub use error::RotorError;
