@@ -443,8 +443,8 @@ fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn F
             }
             let mut speeds = Vec::new();
             for (j, &s) in b.speeds_rpm.iter().enumerate() {
-                let lo = speeds.last().map_or(0.0, |&p: &f64| p / RPM);
-                speeds.push(check(&format!("{}[{j}]", key("speeds_rpm")), s, Range::open_lo(lo, 1e6))? * RPM);
+                let range = speeds.last().map_or(Range::closed(0.0, 1e6), |&p: &f64| Range::open_lo(p / RPM, 1e6));
+                speeds.push(check(&format!("{}[{j}]", key("speeds_rpm")), s, range)? * RPM);
             }
             let mat = |row: &[f64; 4], k: &str, j: usize| -> Result<[[f64; 2]; 2], CaseError> {
                 for &v in row {
@@ -459,4 +459,52 @@ fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn F
         _ => return Err(CaseError::Inconsistent { key: key("case"), message: "give either `case` or `k_n_per_m` and `c_ns_per_m`".into() }),
     };
     Ok(BearingPosition { node, support })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MINIMAL: &str = "[rotor]\n[[rotor.section]]\nlength_mm = 500.0\nouter_diameter_mm = 50.0\nelements = 4\n";
+
+    fn resolve(text: &str) -> Result<Rotor, CaseError> {
+        parse_rotor_file(text)?.resolve(&|name| Err(format!("no file {name}")))
+    }
+
+    #[test]
+    fn minimal_rotor_resolves_in_si() {
+        let r = resolve(MINIMAL).unwrap();
+        assert_eq!(r.n_nodes(), 5);
+        assert!((r.node_positions()[4] - 0.5).abs() < 1e-15);
+        let mass = 7850.0 * std::f64::consts::PI / 4.0 * 0.05_f64.powi(2) * 0.5;
+        assert!((r.mass() - mass).abs() < 1e-12 * mass);
+    }
+
+    #[test]
+    fn errors_name_the_key_and_the_range() {
+        let bad_node = format!("{MINIMAL}[[rotor.disk]]\nnode = 5\nmass_kg = 1.0\n");
+        match resolve(&bad_node) {
+            Err(CaseError::OutOfRange { key, value, allowed }) => {
+                assert_eq!((key.as_str(), value, allowed.as_str()), ("rotor.disk[0].node", 5.0, "integer in [0, 4]"));
+            }
+            other => panic!("{other:?}"),
+        }
+        let typo = MINIMAL.replace("length_mm", "length");
+        assert!(matches!(resolve(&typo), Err(CaseError::UnknownKey { key, .. }) if key.contains("rotor.section")));
+        let rows = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\nk_n_per_m = [[1.0, 0.0, 0.0, 1.0]]\nc_ns_per_m = [[1.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0]]\n");
+        assert!(matches!(resolve(&rows), Err(CaseError::Inconsistent { key, .. }) if key == "rotor.bearing[0].c_ns_per_m"));
+        let missing = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\ncase = \"b.toml\"\n");
+        assert!(matches!(resolve(&missing), Err(CaseError::Inconsistent { key, message }) if key == "rotor.bearing[0].case" && message.contains("no file b.toml")));
+        let id = MINIMAL.replace("elements = 4", "elements = 4\ninner_diameter_mm = 50.0");
+        assert!(matches!(resolve(&id), Err(CaseError::OutOfRange { key, .. }) if key == "rotor.section[0].inner_diameter_mm"));
+    }
+
+    #[test]
+    fn tabulated_coefficients_interpolate_and_hold() {
+        let t = CoefficientTable { speeds: vec![100.0, 200.0], k: vec![[[1.0, 2.0], [3.0, 4.0]], [[3.0, 2.0], [3.0, 8.0]]], c: vec![[[0.0; 2]; 2], [[2.0, 0.0], [0.0, 2.0]]] };
+        let (k, c) = t.at(150.0);
+        assert_eq!((k, c), ([[2.0, 2.0], [3.0, 6.0]], [[1.0, 0.0], [0.0, 1.0]]));
+        assert_eq!(t.at(50.0).0, t.k[0]);
+        assert_eq!(t.at(500.0).0, t.k[1]);
+    }
 }
