@@ -41,7 +41,7 @@ pub fn parse_speeds(spec: &str) -> Result<Vec<f64>> {
     let [a, b, n] = parts.as_slice() else { bail!("--speeds `{spec}`: expected FROM:TO:N in rpm") };
     let (a, b): (f64, f64) = (a.trim().parse().context("--speeds FROM")?, b.trim().parse().context("--speeds TO")?);
     let n: usize = n.trim().parse().context("--speeds N")?;
-    if !(a.is_finite() && b.is_finite() && a >= 0.0 && b > a && n >= 2 && n <= 10_000) {
+    if !(a.is_finite() && b.is_finite() && a >= 0.0 && b > a && (2..=10_000).contains(&n)) {
         bail!("--speeds `{spec}`: needs 0 ≤ FROM < TO and 2 ≤ N ≤ 10000");
     }
     #[allow(clippy::cast_precision_loss)]
