@@ -20,9 +20,10 @@
 //! - [`physics`]: one module per equation (Reynolds with injection and cavitation, viscosity, orifice flow,
 //!   film energy, pad heat conduction).
 //! - [`bearing`]: geometry of the film, equilibrium (Newton), the thermal (THD) loop, dynamic coefficients,
-//!   the solve job.
+//!   the solve job, and the cached, steppable stages (typed inputs, execution counters) the app asks through.
 //! - [`scene`]: results → plain drawables for the workbench (colour fields, flowlines, the bearing outline,
-//!   plot series, result rows, exports); no GUI types, built and tested without the `gui` feature.
+//!   plot series, result rows, exports) and the request the open views need; no GUI types, built and tested
+//!   without the `gui` feature.
 //! - [`study`]: sweeps over any case keys (grids) and design-space batches, one result row per point,
 //!   failed points kept as rows with their error; no I/O.
 //! - [`io`]: safe (atomic) writes, VTK `.vtu`/`.pvd` exports of the film and pad fields, reduced

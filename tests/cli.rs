@@ -123,3 +123,41 @@ fn thermal_solve_reports_temperatures_in_json_and_summary() {
     assert!(j["t_max_film_c"].is_null() && j["thermal"].is_null());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `tiltpad frf` writes every curve with its unit (CSV and JSON agree), the phase-lag note, the
+/// small-signal warning and timings; a case without hydraulics is refused naming the section.
+#[test]
+fn frf_writes_curves_as_csv_and_json() {
+    let dir = std::env::temp_dir().join(format!("tiltpad-frf-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (csv, json) = (dir.join("f.csv"), dir.join("f.json"));
+    let o = tiltpad()
+        .args(["frf", common::case_path("test-rig-pub5.toml").to_str().unwrap(), "--from", "10", "--to", "500", "--points", "20", "--amplitude-v", "2", "--csv"])
+        .arg(&csv)
+        .arg("--json")
+        .arg(&json)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("small-signal") && err.contains("§6.3"), "{err}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<&str> = text.lines().collect();
+    assert_eq!(rows.len(), 21);
+    let header: Vec<&str> = rows[0].split(',').collect();
+    for name in ["G1_mag_V_per_V", "G2_A_mag_bar_per_V", "G2_B_phase_deg", "G3_A_y_mag_N_per_bar", "G_y_mag_N_per_V", "H_direct_mag_µm_per_N", "H_chain_mag_µm_per_N"] {
+        assert!(header.contains(&name), "{name} missing from {header:?}");
+    }
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let curves = j["curves"]["curves"].as_array().unwrap();
+    let g = curves.iter().find(|c| c["name"] == "G_y").unwrap();
+    let col = header.iter().position(|h| *h == "G_y_mag_N_per_V").unwrap();
+    let last: f64 = rows[20].split(',').nth(col).unwrap().parse().unwrap();
+    let from_json = g["magnitude"][19].as_f64().unwrap();
+    assert!((last - from_json).abs() <= 1e-12 * from_json, "{last} vs {from_json}");
+    assert!(j["seconds"]["frf"].as_f64().unwrap() > 0.0);
+    let o = tiltpad().args(["frf", common::case_path("fillon-a.toml").to_str().unwrap()]).output().unwrap();
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("[hydraulics]"));
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -202,8 +202,19 @@ fn placeholder_views_say_what_they_will_show() {
     h.get_by_label_contains("bending modes");
     h.get_by_label("FRF").click();
     h.run();
-    h.get_by_label_contains("Bode plots");
+    h.get_by_label_contains("no [hydraulics] section");
     snapshot(&mut h, "placeholder_frf");
+}
+
+#[test]
+fn frf_view_shows_the_bode_plots_of_the_rig_and_its_limitations() {
+    let mut h = solved_app(Some(include_str!("../cases/test-rig-pub5.toml")), |p| p.view = View::Frf);
+    h.run_steps(3);
+    h.get_by_label_contains("Bode — 1000 rpm");
+    h.get_by_label_contains("§6.3");
+    h.get_by_role_and_label(Role::Slider, "air fraction");
+    h.get_by_label("Export CSV");
+    snapshot(&mut h, "frf_rig_pub5");
 }
 
 fn spin_button<'a>(h: &'a Harness<'_, WorkbenchApp>, label: &'a str) -> egui_kittest::Node<'a> {

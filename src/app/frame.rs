@@ -5,9 +5,8 @@ use egui::{Color32, RichText, Ui};
 use super::editor::editor_ui;
 use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
-use super::views::{bearing_view, coefficients_view, field_view, placeholders, results_panel};
+use super::views::{bearing_view, coefficients_view, field_view, frf_view, placeholders, results_panel};
 use super::{Pending, Status, WorkbenchApp};
-use crate::bearing::pipeline::Stage;
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
 
@@ -129,16 +128,11 @@ impl WorkbenchApp {
                 }
                 Status::Solving { stage, fraction } => {
                     ui.spinner();
-                    // The stage named is the one that just finished; say what runs now.
+                    // The stage worked on last, and how far it got.
                     let now = match stage {
-                        None => "building the model".to_string(),
-                        Some(Stage::Model) => "equilibrium".into(),
-                        Some(Stage::Thermal) if *fraction < 1.0 => "thermal (THD) loop".into(),
-                        Some(Stage::Thermal) => "thermal equilibrium done; coefficients and sweeps".into(),
-                        Some(Stage::Equilibrium) if *fraction < 1.0 => "equilibrium".into(),
-                        Some(Stage::Equilibrium | Stage::Reduction) => "coefficients and sweeps".into(),
-                        Some(Stage::FrequencySweep) => "speed sweep".into(),
-                        Some(Stage::SpeedSweep) => format!("speed sweep {:.0} %", 100.0 * fraction),
+                        None => "starting".to_string(),
+                        Some(s) if *fraction < 1.0 => format!("{} {:.0} %", s.label(), 100.0 * fraction),
+                        Some(s) => format!("{} done", s.label()),
                     };
                     ui.label(format!("Solving: {now}…"));
                 }
@@ -200,6 +194,7 @@ impl WorkbenchApp {
             }
             View::Fields => self.fields_ui(ui),
             View::Coefficients => self.coefficients_ui(ui),
+            View::Frf => self.frf_ui(ui),
             v => placeholders::placeholder_ui(ui, v),
         }
     }
@@ -251,6 +246,16 @@ impl WorkbenchApp {
         }
         let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
         field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, kind, self.persisted.pads, self.persisted.flowlines);
+    }
+
+    fn frf_ui(&mut self, ui: &mut Ui) {
+        let Some(case) = self.shown.as_ref().map(|s| s.solution.inputs.clone()) else {
+            ui.label("Waiting for the first result…");
+            return;
+        };
+        if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case) {
+            self.files.export(&self.export_name("frf", "csv"), "CSV", "csv", csv.into_bytes());
+        }
     }
 
     fn coefficients_ui(&mut self, ui: &mut Ui) {

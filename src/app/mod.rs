@@ -29,22 +29,17 @@ use std::sync::Arc;
 
 use web_time::Instant;
 
-use crate::bearing::pipeline::{Outcome, Request, SpeedPoint, Stage};
+use crate::bearing::stages::{Outcome, Request, SpeedPoint, StageId};
 use crate::bearing::{ReducedCoefficients, Solution};
 use crate::model::{parse_case_file, Case, Fidelity};
-use crate::scene::plots::{frequency_ratios, sweep_speeds};
 use document::Document;
 use files::Files;
-use state::{CoefficientAxis, Persisted, View};
+use state::Persisted;
 use views::field_view::FieldCache;
 use worker::{Event, Worker};
 
 /// Per-frame time the web build may spend solving [s].
 const WEB_SOLVE_BUDGET_S: f64 = 0.012;
-/// Frequency ratios of the background sweep.
-const RATIOS: (f64, f64, usize) = (0.0, 3.0, 31);
-/// Points of the background speed sweep.
-const SPEED_POINTS: usize = 11;
 
 /// The result on screen.
 #[derive(Clone)]
@@ -58,7 +53,7 @@ pub struct Shown {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Status {
     Idle,
-    Solving { stage: Option<Stage>, fraction: f64 },
+    Solving { stage: Option<StageId>, fraction: f64 },
     Failed(String),
 }
 
@@ -83,6 +78,7 @@ pub struct WorkbenchApp {
     /// A value is being dragged in the editor.
     dragging: bool,
     field_cache: FieldCache,
+    pub frf: views::frf_view::FrfView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -131,6 +127,7 @@ impl WorkbenchApp {
             status: Status::Idle,
             dragging: false,
             field_cache: FieldCache::default(),
+            frf: views::frf_view::FrfView::default(),
             pending: None,
             allow_close: false,
             notice: None,
@@ -159,13 +156,11 @@ impl WorkbenchApp {
         !self.worker.busy()
     }
 
-    /// The request the screen needs now, if the case is valid.
+    /// The request the open view needs now ([`crate::scene::request`]), if the case is valid.
     fn wanted_request(&self) -> Option<Request> {
         let case = self.doc.validation().as_ref().ok()?;
         let case = if self.dragging && self.persisted.preview_while_dragging { preview(case) } else { case.clone() };
-        let speeds = (self.persisted.view == View::Coefficients && self.persisted.axis == CoefficientAxis::Speed)
-            .then(|| sweep_speeds(case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU, SPEED_POINTS));
-        Some(Request { frequency_ratios: Some(frequency_ratios(RATIOS.0, RATIOS.1, RATIOS.2)), speeds_rpm: speeds, case: Some(case) })
+        Some(crate::scene::request::request(case, [self.persisted.view.needs(self.persisted.axis)]))
     }
 
     /// Submits the wanted request when it changed, and takes in the worker's events.
@@ -195,14 +190,14 @@ impl WorkbenchApp {
     }
 
     fn accept(&mut self, outcome: Outcome) {
-        let Some(solution) = outcome.solution else { return };
+        let Some(solution) = outcome.solution() else { return };
         // A speed sweep of the same case survives a first-phase result (the sweep follows in phase two).
         let keep_speed = self
             .shown
             .as_ref()
-            .filter(|s| outcome.speed_sweep.is_none() && s.solution.inputs == solution.inputs)
+            .filter(|s| outcome.speed_sweep().is_none() && s.solution.inputs == solution.inputs)
             .and_then(|s| s.speed_sweep.clone());
-        self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep, speed_sweep: outcome.speed_sweep.or(keep_speed) });
+        self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep(), speed_sweep: outcome.speed_sweep().or(keep_speed) });
     }
 
     /// The case of the shown result differs from the edited one (invalid, solving or failed).

@@ -4,7 +4,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::bearing::stages::StageId;
 use crate::scene::field::FieldKind;
+use crate::scene::request;
 
 /// The central view.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -30,6 +32,16 @@ impl View {
             Self::PadDeformation => "Pad deformation",
             Self::Frf => "FRF",
             Self::Rotor => "Rotor",
+        }
+    }
+
+    /// The stages whose results the view shows ([`crate::scene::request`]).
+    #[must_use]
+    pub fn needs(self, axis: CoefficientAxis) -> &'static [StageId] {
+        match (self, axis) {
+            (Self::Coefficients, CoefficientAxis::FrequencyRatio) => request::FREQUENCY_PLOTS,
+            (Self::Coefficients, CoefficientAxis::Speed) => request::SPEED_PLOTS,
+            (Self::Bearing | Self::Fields | Self::PadDeformation | Self::Frf | Self::Rotor, _) => request::SOLUTION,
         }
     }
 }

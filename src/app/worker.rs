@@ -1,11 +1,11 @@
 //! Background solving: the app submits a [`Request`]; the worker runs the cached, steppable
-//! [`Pipeline`] and reports progress, results and failures as [`Event`]s.
+//! [`Stages`] and reports progress, results and failures as [`Event`]s.
 //!
-//! - Native: a named thread owns the pipeline; jobs arrive over a channel, events go back over another
-//!   and wake the UI with `request_repaint`. A newer job cancels the running one: the pipeline's
+//! - Native: a named thread owns the stages; jobs arrive over a channel, events go back over another
+//!   and wake the UI with `request_repaint`. A newer job cancels the running one: the stages'
 //!   [`Cancel`] hook compares the job's id with the latest submitted id, so even a long equilibrium stops
 //!   within one film solve.
-//! - Web (no threads): the app calls [`Worker::poll`] every frame and the pipeline steps until a time
+//! - Web (no threads): the app calls [`Worker::poll`] every frame and the stages step until a time
 //!   budget is spent; one step is one stage, or the part of an equilibrium solve that fits the budget (the
 //!   coupled Newton suspends between pad placements and iterations, [`crate::bearing::Cancel::suspend`],
 //!   and the next frame resumes from its iterate), or one THD outer iteration. Isothermal sweep points are
@@ -17,13 +17,13 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
-use crate::bearing::pipeline::{Outcome, Pipeline, Request, Stage, Step};
+use crate::bearing::stages::{Outcome, Request, StageId, Stages, Step};
 use crate::bearing::{Cancel, SolveError};
 
 /// What the worker reports.
 #[derive(Debug, Clone)]
 pub enum Event {
-    Progress { job: u64, stage: Stage, fraction: f64 },
+    Progress { job: u64, stage: StageId, fraction: f64 },
     /// A phase finished: the outcome so far (the speed sweep only after the second phase).
     Solved { job: u64, outcome: Outcome, complete: bool },
     Failed { job: u64, error: String },
@@ -54,17 +54,18 @@ impl Running {
         if self.second_phase {
             self.request.clone()
         } else {
-            Request { speeds_rpm: None, ..self.request.clone() }
+            let first: Vec<StageId> = StageId::ALL.iter().copied().filter(|s| *s != StageId::SpeedSweep).collect();
+            self.request.only(&first)
         }
     }
 
-    /// One pipeline step; returns the event to report and whether the job is finished.
-    fn step(&mut self, pipeline: &mut Pipeline, cancel: &dyn Cancel) -> (Option<Event>, bool) {
+    /// One step of the stages; returns the event to report and whether the job is finished.
+    fn step(&mut self, stages: &mut Stages, cancel: &dyn Cancel) -> (Option<Event>, bool) {
         let job = self.job;
-        match pipeline.step(&self.phase_request(), cancel) {
+        match stages.step(&self.phase_request(), cancel) {
             Ok(Step::Pending { stage, fraction }) => (Some(Event::Progress { job, stage, fraction }), false),
             Ok(Step::Done(outcome)) => {
-                let more = !self.second_phase && self.request.speeds_rpm.is_some();
+                let more = !self.second_phase && self.request.wanted.contains(&StageId::SpeedSweep);
                 self.second_phase = true;
                 (Some(Event::Solved { job, outcome, complete: !more }), !more)
             }
@@ -154,7 +155,7 @@ mod native {
     use std::sync::Arc;
 
     use super::{Event, Running, Superseded};
-    use crate::bearing::pipeline::Pipeline;
+    use crate::bearing::stages::Stages;
 
     pub struct Thread {
         jobs: Sender<Running>,
@@ -166,7 +167,7 @@ mod native {
             let (jobs, job_rx) = channel::<Running>();
             let (event_tx, events) = channel::<Event>();
             let spawned = std::thread::Builder::new().name("tiltpad-solver".into()).spawn(move || {
-                let mut pipeline = Pipeline::new();
+                let mut stages = Stages::new();
                 while let Ok(mut running) = job_rx.recv() {
                     // Only the newest waiting job matters.
                     while let Ok(newer) = job_rx.try_recv() {
@@ -177,7 +178,7 @@ mod native {
                         if latest.load(Ordering::Relaxed) != running.job {
                             break;
                         }
-                        let (event, finished) = running.step(&mut pipeline, &cancel);
+                        let (event, finished) = running.step(&mut stages, &cancel);
                         if let Some(e) = event {
                             if event_tx.send(e).is_err() {
                                 return;
@@ -214,7 +215,7 @@ mod web {
     use web_time::Instant;
 
     use super::{Event, Running, Superseded};
-    use crate::bearing::pipeline::Pipeline;
+    use crate::bearing::stages::Stages;
     use crate::bearing::Cancel;
 
     /// Cancels a superseded job, and suspends the equilibrium once the frame's budget is spent.
@@ -234,14 +235,14 @@ mod web {
     }
 
     pub struct Stepper {
-        pipeline: Pipeline,
+        stages: Stages,
         running: Option<Running>,
         repaint: egui::Context,
     }
 
     impl Stepper {
         pub fn new(repaint: egui::Context) -> Self {
-            Self { pipeline: Pipeline::new(), running: None, repaint }
+            Self { stages: Stages::new(), running: None, repaint }
         }
 
         pub fn start(&mut self, running: Running) {
@@ -255,7 +256,7 @@ mod web {
             let mut events = Vec::new();
             while let Some(running) = self.running.as_mut() {
                 let cancel = Budgeted { superseded: Superseded { latest: latest.clone(), job: running.job }, start, budget_s };
-                let (event, finished) = running.step(&mut self.pipeline, &cancel);
+                let (event, finished) = running.step(&mut self.stages, &cancel);
                 events.extend(event);
                 if finished {
                     self.running = None;
@@ -280,7 +281,9 @@ mod tests {
     fn request(speed_rpm: f64, sweep: bool) -> Request {
         let set = [format!("operating.speed_rpm={speed_rpm}"), "mesh.fidelity=\"preview\"".to_string()];
         let case = load_case(include_str!("../../cases/compressor-bearing.toml"), &set).unwrap().1;
-        Request { case: Some(case), frequency_ratios: Some(vec![0.5, 1.0]), speeds_rpm: sweep.then(|| vec![8000.0, 9000.0]) }
+        let mut wanted = vec![StageId::Reduction, StageId::FrequencySweep];
+        wanted.extend(sweep.then_some(StageId::SpeedSweep));
+        Request { case, wanted, frequency_ratios: vec![0.5, 1.0], speeds_rpm: if sweep { vec![8000.0, 9000.0] } else { Vec::new() } }
     }
 
     /// Polls until the latest job completes; returns every event seen.
@@ -300,11 +303,11 @@ mod tests {
         let mut w = Worker::new(egui::Context::default());
         let job = w.submit(request(9000.0, true));
         let events = run_until_done(&mut w);
-        assert!(events.iter().any(|e| matches!(e, Event::Progress { stage: Stage::Equilibrium, .. })));
+        assert!(events.iter().any(|e| matches!(e, Event::Progress { stage: StageId::Equilibrium, .. })));
         let solved: Vec<(bool, bool)> = events
             .iter()
             .filter_map(|e| match e {
-                Event::Solved { job: j, outcome, complete } if *j == job => Some((*complete, outcome.speed_sweep.is_some())),
+                Event::Solved { job: j, outcome, complete } if *j == job => Some((*complete, outcome.speed_sweep().is_some())),
                 _ => None,
             })
             .collect();
@@ -322,7 +325,7 @@ mod tests {
         // Only the newest job's events reach the app, and its solution is at its speed.
         assert!(events.iter().all(|e| event_job(e) == second));
         let speed = events.iter().find_map(|e| match e {
-            Event::Solved { outcome, .. } => outcome.solution.as_ref().map(|s| s.derived.speed_rpm),
+            Event::Solved { outcome, .. } => outcome.solution().map(|s| s.derived.speed_rpm),
             _ => None,
         });
         assert!((speed.unwrap() - 7000.0).abs() < 1e-9);

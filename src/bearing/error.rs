@@ -9,6 +9,8 @@ use thiserror::Error;
 pub enum Iteration {
     /// The thermal (THD) outer loop: equilibrium, film and pad temperatures, viscosity update.
     Thermal,
+    /// The static equilibrium (all its methods together).
+    Equilibrium,
 }
 
 impl Iteration {
@@ -17,6 +19,7 @@ impl Iteration {
     pub fn residual_name(self) -> &'static str {
         match self {
             Self::Thermal => "largest relative viscosity change",
+            Self::Equilibrium => "relative force residual",
         }
     }
 }
@@ -25,6 +28,7 @@ impl std::fmt::Display for Iteration {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
             Self::Thermal => "thermal (THD) loop",
+            Self::Equilibrium => "equilibrium",
         })
     }
 }
@@ -36,6 +40,8 @@ pub enum Budget {
     Iterations(usize),
     /// At most this much computing time [s].
     Seconds(f64),
+    /// At most this many film solves.
+    FilmSolves(usize),
 }
 
 impl std::fmt::Display for Budget {
@@ -43,6 +49,7 @@ impl std::fmt::Display for Budget {
         match self {
             Self::Iterations(n) => write!(f, "iteration budget ({n} iterations)"),
             Self::Seconds(s) => write!(f, "time budget ({s} s)"),
+            Self::FilmSolves(n) => write!(f, "work budget ({n} film solves)"),
         }
     }
 }
@@ -51,14 +58,22 @@ impl std::fmt::Display for Budget {
 pub enum SolveError {
     #[error(transparent)]
     Case(#[from] CaseError),
-    #[error("pad {pad}: {source}")]
-    Film { pad: usize, source: FilmError },
+    /// A film solve failed (its message is part of this one, not a separate cause).
+    #[error("pad {pad}: {error}")]
+    Film { pad: usize, error: FilmError },
     /// The load cannot be carried without the film closing.
     #[error(
         "touchdown: the film closes on pad {pad} (h_min {h_min_um:.3} µm at ε = {eccentricity_ratio:.3}) before \
          the load is carried; reduce the load, raise the speed or viscosity, or inject"
     )]
     Touchdown { pad: usize, h_min_um: f64, eccentricity_ratio: f64 },
+    /// The bearing has no static stiffness along a direction in which the load has a component (e.g. two
+    /// tilting pads whose pivot line is perpendicular to the load: their forces pass through the pivots).
+    #[error(
+        "no stiffness along the {axis_deg:.0}° axis: a load component of {load_component_n:.3e} N acts where the \
+         bearing cannot carry it (tilting-pad forces pass through the pivots); turn the load or the pads"
+    )]
+    NoStiffness { axis_deg: f64, load_component_n: f64 },
     /// Newton (and its fallbacks) stopped without meeting the tolerance.
     #[error("equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})")]
     NotConverged { iterations: usize, residual: f64, reason: String },

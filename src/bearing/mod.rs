@@ -1,22 +1,26 @@
 //! The bearing: film geometry and coordinates ([`geometry`]), the model built once per mesh ([`model`]),
 //! static equilibrium ([`equilibrium`]), the thermal (THD) loop around it ([`thermal`], with the per-pad
 //! thermal systems in [`thermal_pad`]), dynamic coefficients ([`coefficients`]), the flow-regime checks of
-//! a solved film ([`regime`]) and the solve job ([`job`]) that turns a case into a [`Solution`].
+//! a solved film ([`regime`]), the solve job ([`job`]) that turns a case into a [`Solution`], and the
+//! cached, steppable [`stages`] the app asks for results through.
 
 pub mod anderson;
 pub mod coefficients;
 pub mod coordinates;
 pub mod equilibrium;
 pub mod error;
+pub mod frf;
+pub mod frf_job;
 pub mod geometry;
+pub mod injection;
 pub mod job;
 pub mod mixing;
 pub mod model;
-pub mod pipeline;
 pub mod progress;
 pub mod regime;
 pub mod report;
 pub mod solution;
+pub mod stages;
 pub mod thermal;
 pub mod thermal_pad;
 
@@ -28,6 +32,6 @@ pub use report::SolveReport;
 pub use error::SolveError;
 pub use job::{solve_case, solve_operating_point, solve_point};
 pub use model::{BearingModel, OperatingPoint};
-pub use pipeline::{Outcome, Pipeline, Request, Stage, StageCounters, Step};
+pub use stages::{Outcome, Request, StageId, Stages, Step};
 pub use solution::Solution;
 pub use thermal::{ThermalModel, ThermalParams, ThermalReport};

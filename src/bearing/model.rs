@@ -60,11 +60,29 @@ impl BearingModel {
                 .map(|o| LocalOrifice { s0: (o.angle_rad - pad.leading_edge_rad) * r, z0: o.axial_m, diameter: o.diameter_m, length: o.length_m })
                 .collect();
             let geom = FilmGeometry::new(grid, r, pad.leading_edge_rad, &orifices, &shape);
-            let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, source: e })?;
+            let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, error: e })?;
             pads.push(PadModel { film, structure });
         }
         let dofs = DofMap::new(pads.iter().map(|p| p.structure.dofs.clone()).collect());
         Ok(Self { pads, dofs, journal_radius: r, assembled_clearance: b.assembled_clearance_m, length: b.length_m })
+    }
+
+    /// Replaces every pad's structure (pivot springs, inertia) without rebuilding the films: an edit of a
+    /// pivot stiffness or of the pad density keeps the meshes and factorisations.
+    ///
+    /// # Errors
+    /// If a structure's coordinates differ from the model's (they shape the films: rebuild the model).
+    pub fn set_structure(&mut self, structures: Vec<PadStructure>) -> Result<(), SolveError> {
+        if structures.len() != self.pads.len() {
+            return Err(SolveError::Invalid(format!("{} pad structures for a model of {} pads", structures.len(), self.pads.len())));
+        }
+        for (k, (pm, s)) in self.pads.iter_mut().zip(structures).enumerate() {
+            if s.dofs != pm.structure.dofs {
+                return Err(SolveError::Invalid(format!("pad {k}: coordinates {:?} differ from the model's {:?}", s.dofs, pm.structure.dofs)));
+            }
+            pm.structure = s;
+        }
+        Ok(())
     }
 
     /// Length of the global coordinate vector.

@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `rotor`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `frf`, `rotor`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -13,7 +13,13 @@ mod bench;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_frf;
+#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
+#[cfg(not(target_arch = "wasm32"))]
+mod convergence_map;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod frf;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod rotor;
 #[cfg(not(target_arch = "wasm32"))]
@@ -154,6 +160,30 @@ pub enum Command {
         #[arg(long, value_name = "OUT")]
         csv: Option<PathBuf>,
     },
+    /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
+    /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
+    Frf {
+        case: PathBuf,
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Lowest frequency [Hz] (0 allowed: the band is then linear, else logarithmic).
+        #[arg(long, default_value_t = 1.0)]
+        from: f64,
+        /// Highest frequency [Hz].
+        #[arg(long, default_value_t = 1000.0)]
+        to: f64,
+        #[arg(long, default_value_t = 400)]
+        points: usize,
+        /// Control-signal amplitude [V] to check against the valve model's small-signal range.
+        #[arg(long, value_name = "V")]
+        amplitude_v: Option<f64>,
+        /// CSV of magnitude and phase per curve (`-`: standard output; the default without --json).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// JSON of the curves, notes and timings.
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+    },
     /// Print every case key with its unit, allowed values, default and meaning.
     Schema {
         /// Write the table as JSON instead (`-`: standard output).
@@ -168,7 +198,42 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
+        /// Re-measure one section only (`frf`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        #[arg(long, value_name = "SECTION")]
+        only: Option<String>,
     },
+    /// Convergence map of the equilibrium: every shipped case and a generated family of 144 bearings, load
+    /// direction every `--step-deg` × Sommerfeld number 10 … 0.01; counts converged / physical error /
+    /// failure (run in --release; the 30° grid, 7296 points, takes about 40 min on two busy cores, the 5°
+    /// grid six times that).
+    ConvergenceMap {
+        /// Directions every 30° and the 4-pad family only (a quick check).
+        #[arg(long)]
+        quick: bool,
+        /// Step of the load direction [deg].
+        #[arg(long, default_value_t = 5.0, value_parser = parse_step_deg)]
+        step_deg: f64,
+        /// Write every point as CSV.
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// Write the table into docs/VALIDATION.md (between its markers).
+        #[arg(long)]
+        update_doc: bool,
+        /// Project root (where `cases/` and `docs/` are).
+        #[arg(long, default_value = ".")]
+        root: PathBuf,
+    },
+}
+
+/// `--step-deg`: a divisor of 360 between 1 and 90.
+#[cfg(not(target_arch = "wasm32"))]
+fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
+    let v: f64 = s.parse().map_err(|e| format!("{e}"))?;
+    let n = 360.0 / v;
+    if !(1.0..=90.0).contains(&v) || (n - n.round()).abs() > 1e-9 {
+        return Err(format!("--step-deg {v}: must divide 360 and lie in 1 … 90"));
+    }
+    Ok(v)
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -255,6 +320,9 @@ pub fn run(command: Command) -> Result<()> {
             node,
             tag: &tag,
         }),
+        Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
+            frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
+        }
         Command::Schema { json } => {
             match json {
                 Some(out) => {
@@ -274,6 +342,11 @@ pub fn run(command: Command) -> Result<()> {
             json,
             csv,
         }),
-        Command::Bench { repeats, root } => bench::run(&root, repeats.max(1)),
+        Command::ConvergenceMap { quick, step_deg, csv, update_doc, root } => convergence_map::run(&root, quick, step_deg, csv.as_deref(), update_doc),
+        Command::Bench { repeats, root, only } => match only.as_deref() {
+            None => bench::run(&root, repeats.max(1)),
+            Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf"),
+        },
     }
 }

@@ -17,6 +17,7 @@ pub struct Case {
     pub mesh: MeshSpec,
     pub physics: Physics,
     pub thermal: Thermal,
+    pub hydraulics: Option<super::hydraulics::Hydraulics>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -17,6 +17,7 @@
 //! [mesh]               # fidelity or explicit element counts, node budget (max_nodes)
 //! [physics]            # cavitation model, …
 //! [thermal]            # isothermal | thd, film–pad exchange (bc1/bc2/bc3), pad conduction, inlet mixing
+//! [hydraulics]         # servovalve, ports and injection lines, test rig (see super::hydraulics)
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -37,6 +38,9 @@ pub struct CaseFile {
     pub physics: PhysicsFile,
     #[serde(default)]
     pub thermal: ThermalFile,
+    /// The controllable bearing's valve, lines and rig ([`super::hydraulics`]); absent for a passive bearing.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hydraulics: Option<super::hydraulics::HydraulicsFile>,
 }
 
 /// `[bearing]`

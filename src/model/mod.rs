@@ -10,6 +10,7 @@ pub mod case;
 pub mod edit;
 pub mod error;
 pub mod file;
+pub mod hydraulics;
 pub mod load;
 pub mod resolve;
 pub mod rotor;

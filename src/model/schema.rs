@@ -345,6 +345,34 @@ pub const KEYS: &[KeySpec] = &[
         "striated",
         "Striated: in a ruptured zone oil fills only the fraction of the gap that carries the flow entering it (mass conservation of the Couette flow); shear and heat capacity scale with it. Full film: as the thesis assumes.",
     ),
+    // [hydraulics]
+    num("hydraulics.supply_pressure_bar", "bar", Range::positive(1000.0), (10.0, 200.0), "", "Supply pressure at the servovalve's P port. Sets the valve's flow gain (Bernoulli: ∝ √(supply − return)); the thesis' rig used 20, 40 and 80 bar."),
+    num("hydraulics.return_pressure_bar", "bar", Range::closed(0.0, 1000.0), (0.0, 5.0), "0", "Tank pressure at the valve's T port; must stay below the supply."),
+    num("hydraulics.valve.natural_frequency_hz", "Hz", Range::positive(1e5), (20.0, 500.0), "", "Natural frequency ω_V/2π of the spool's second-order response (G1 = x_V/u_V); its bandwidth limits the active force at high frequency."),
+    num("hydraulics.valve.damping_ratio", "–", Range::positive(10.0), (0.3, 1.2), "", "Damping ratio ξ_V of the spool's second-order response."),
+    num("hydraulics.valve.rated_flow_l_per_min", "L/min", Range::positive(1e4), (1.0, 100.0), "", "Datasheet rated flow at full-scale signal and rated pressure drop."),
+    num("hydraulics.valve.rated_drop_bar", "bar", Range::positive(1000.0), (35.0, 140.0), "", "Datasheet pressure drop at which the rated flow is given (over both metering edges)."),
+    num("hydraulics.valve.full_scale_v", "V", Range::positive(1000.0), (1.0, 10.0), "10", "Full-scale control signal. The linear valve model holds up to about 10 % of it (small signals)."),
+    num(
+        "hydraulics.valve.flow_pressure_coefficient_l_per_min_bar",
+        "L/(min·bar)",
+        Range::closed(0.0, 1000.0),
+        (0.0, 0.1),
+        "0",
+        "Flow–pressure coefficient K_c = −K_pq: port flow lost per unit load pressure. Terminates the lines at the valve end (damps their acoustic modes) and limits the static pressure gain.",
+    ),
+    num("hydraulics.valve.leakage_l_per_min", "L/min", Range::closed(0.0, 1e4), (0.0, 2.0), "0", "Null leakage into each port (underlapped spool). Static only: it sets the nozzle pressure with the spool centred, not the small-signal responses."),
+    other("hydraulics.port[].valve_port", "", Allowed::Choice(&["A", "B"]), "", "Which valve port feeds this line: A (driven with the signal) or B (against it)."),
+    other("hydraulics.port[].pads", "", Allowed::Rule("list of pad indices, 0-based, each pad on at most one port"), "", "The pads whose orifices this line feeds; they share its nozzle-end pressure."),
+    num("hydraulics.port[].line_length_mm", "mm", Range::positive(1e5), (100.0, 3000.0), "", "Length of the injection line from the valve port to the nozzles. Its quarter-wave modes f_i = (2i−1) c0/(4 l) shape G2; 700 mm on the thesis' rig."),
+    num("hydraulics.port[].line_diameter_mm", "mm", Range::positive(1000.0), (2.0, 12.0), "", "Inner diameter of the injection line (area, laminar friction 32 µ/(ρ D²))."),
+    num("hydraulics.port[].bulk_modulus_gpa", "GPa", Range::positive(100.0), (1.0, 2.0), "1.5", "Bulk modulus of the air-free oil (mineral oils 1.4–1.7 GPa)."),
+    num("hydraulics.port[].air_fraction", "–", Range::closed(0.0, 0.5), (0.0, 0.02), "0", "Volume fraction of entrained air at the line's static pressure. A little air lowers the line's modes dramatically (1 % at a few bar: 470 Hz → about 100 Hz)."),
+    num("hydraulics.port[].wall_compliance_per_gpa", "1/GPa", Range::closed(0.0, 1000.0), (0.0, 1.0), "0", "Compliance of the line's wall, added to the oil's 1/β (a hose is much softer than a steel tube)."),
+    other("hydraulics.port[].modes", "", Allowed::Integer { lo: 1, hi: super::hydraulics::MAX_MODES }, "4", "Acoustic modes kept in the line's modal model (the quasi-static rest is added back)."),
+    num("hydraulics.rig.mass_kg", "kg", Range::positive(1e6), (5.0, 500.0), "", "Effective mass of the rig's rotor and tilting frame on its one vertical degree of freedom."),
+    num("hydraulics.rig.support_stiffness_n_per_m", "N/m", Range::closed(0.0, 1e12), (1e5, 1e8), "", "Stiffness of the rig's support (parallel to the bearing film)."),
+    num("hydraulics.rig.support_damping_ns_per_m", "N·s/m", Range::closed(0.0, 1e9), (0.0, 1e4), "0", "Damping of the rig's support."),
 ];
 
 /// The row of a key as written in a file, a `--set` override or a validation message:
@@ -467,7 +495,8 @@ mod tests {
 
     #[test]
     fn validation_enforces_the_documented_ranges() {
-        let text = include_str!("../../cases/compressor-bearing.toml");
+        let compressor = include_str!("../../cases/compressor-bearing.toml");
+        let rig = include_str!("../../cases/test-rig-pub5.toml");
         let mut checked = 0;
         for k in KEYS {
             let range = match k.allowed {
@@ -485,6 +514,7 @@ mod tests {
             for v in outside {
                 let mut set = context(k.key);
                 set.push(format!("{key}={v:?}"));
+                let text = if k.key.starts_with("hydraulics.") { rig } else { compressor };
                 match load_case(text, &set) {
                     Err(CaseError::OutOfRange { key: got, allowed, .. }) => {
                         assert!(spec(&got).is_some_and(|s| s.key == k.key), "{}: error names `{got}`", k.key);

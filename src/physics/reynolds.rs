@@ -50,6 +50,9 @@ use crate::physics::orifice::LocalOrifice;
 use nalgebra::DMatrix;
 use thiserror::Error;
 
+mod injection;
+pub use injection::InjectionResponse;
+
 /// Largest number of active-set iterations for the Reynolds cavitation condition.
 pub const MAX_ACTIVE_SET_ITERATIONS: usize = 60;
 /// Sub-cells per direction for elements cut by an orifice edge.
@@ -764,6 +767,28 @@ impl PadFilm {
     }
 
     fn linearize_impl(&mut self, inp: &FilmInputs<'_>, with_damping: bool) -> FilmLinearization {
+        let fields = self.perturbation_fields(inp, with_damping);
+        let g = &self.geom;
+        let n = g.n_nodes();
+        let m = g.n_dofs();
+        let mut stiffness = DMatrix::zeros(m, m);
+        let mut damping = DMatrix::zeros(m, m);
+        for j in 0..m {
+            for k in 0..m {
+                let dk = &fields[k * n..(k + 1) * n];
+                stiffness[(j, k)] = -g.sym * g.loads[j].iter().zip(dk).map(|(a, b)| a * b).sum::<f64>();
+                if with_damping {
+                    let dc = &fields[(m + k) * n..(m + k + 1) * n];
+                    damping[(j, k)] = -g.sym * g.loads[j].iter().zip(dc).map(|(a, b)| a * b).sum::<f64>();
+                }
+            }
+        }
+        FilmLinearization { stiffness, damping }
+    }
+
+    /// The pressure perturbation fields `∂p/∂q_k` (columns `0..m`) and, with `with_damping`, `∂p/∂q̇_k`
+    /// (columns `m..2m`), each of length n, by back-substitution with the factorisation of the last solve.
+    fn perturbation_fields(&mut self, inp: &FilmInputs<'_>, with_damping: bool) -> Vec<f64> {
         let g = &self.geom;
         let n = g.n_nodes();
         let m = g.n_dofs();
@@ -797,6 +822,14 @@ impl PadFilm {
                 }
             }
         }
+        self.back_substitute(&mut rhs);
+        rhs
+    }
+
+    /// Solves `A x = r` for every column of `rhs` (length n each) with the factorisation of the last solve:
+    /// fixed rows zeroed first; under Gümbel cavitation the clipped nodes are zeroed after.
+    fn back_substitute(&mut self, rhs: &mut [f64]) {
+        let n = self.geom.n_nodes();
         for col in rhs.chunks_mut(n) {
             for i in 0..n {
                 if self.fixed[i] {
@@ -804,8 +837,8 @@ impl PadFilm {
                 }
             }
         }
-        self.solver.solve_many_in_place(&mut rhs, n);
-        if gumbel {
+        self.solver.solve_many_in_place(rhs, n);
+        if self.solved_with == Some(Cavitation::Gumbel) {
             for col in rhs.chunks_mut(n) {
                 for i in 0..n {
                     if self.cavitated[i] {
@@ -814,19 +847,6 @@ impl PadFilm {
                 }
             }
         }
-        let mut stiffness = DMatrix::zeros(m, m);
-        let mut damping = DMatrix::zeros(m, m);
-        for j in 0..m {
-            for k in 0..m {
-                let dk = &rhs[k * n..(k + 1) * n];
-                stiffness[(j, k)] = -g.sym * g.loads[j].iter().zip(dk).map(|(a, b)| a * b).sum::<f64>();
-                if with_damping {
-                    let dc = &rhs[(m + k) * n..(m + k + 1) * n];
-                    damping[(j, k)] = -g.sym * g.loads[j].iter().zip(dc).map(|(a, b)| a * b).sum::<f64>();
-                }
-            }
-        }
-        FilmLinearization { stiffness, damping }
     }
 
     /// Consistent flows of the last solve (whole pad).

@@ -5,8 +5,10 @@
 //! - [`colormap`]: perceptually uniform colour maps (viridis, inferno) as small tables.
 //! - [`field`]: a pad's scalar fields unwrapped onto (s, z), mirrored for half models, sampled and rasterised.
 //! - [`flowlines`]: streamlines of the film's mean velocity (Couette + Poiseuille, orifices as sources or sinks).
+//! - [`frf`]: Bode curves of the controllable bearing (G1, G2, G3, G, the rig's shaker chain), CSV.
 //! - [`outline`]: the bearing cross-section to scale with an exaggerated clearance.
 //! - [`plots`]: reduced coefficients against frequency ratio or speed, the full-matrix table.
+//! - [`request`]: the stages the open views need, joined into the request the app sends.
 //! - [`summary`]: the results panel's rows in display units.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
 //! - [`fidelity`]: the measured time and error of each fidelity level (from `tiltpad bench`).
@@ -20,6 +22,8 @@ pub mod export;
 pub mod fidelity;
 pub mod field;
 pub mod flowlines;
+pub mod frf;
 pub mod outline;
 pub mod plots;
+pub mod request;
 pub mod summary;

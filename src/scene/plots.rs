@@ -6,7 +6,7 @@
 //! ω/Ω). Display units: stiffness in MN/m, damping in kN·s/m.
 
 use crate::bearing::coefficients::{FullCoefficients, ReducedCoefficients};
-use crate::bearing::pipeline::SpeedPoint;
+use crate::bearing::stages::SpeedPoint;
 
 /// Display factor from N/m to MN/m.
 pub const STIFFNESS_MN_PER_M: f64 = 1e-6;
@@ -113,7 +113,7 @@ pub fn matrix_table(full: &FullCoefficients) -> MatrixTable {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::pipeline::SweepValues;
+    use crate::bearing::stages::SweepValues;
 
     fn rc(k: f64, c: f64) -> ReducedCoefficients {
         ReducedCoefficients { omega_rad_s: 1.0, k_n_per_m: [[k, 2.0 * k], [3.0 * k, 4.0 * k]], c_ns_per_m: [[c, 0.0], [0.0, c]] }

@@ -7,13 +7,15 @@
 //! such as temperatures of an isothermal solve) or the error that point met (an invalid value, a
 //! touchdown, a non-converged solve). Rows come out one at a time, in order, so a caller can write each
 //! as it completes. No I/O and no GUI here: the command line (`tiltpad sweep`, `tiltpad batch`) drives
-//! it, and the workbench's "any input against any output" sweep can reuse it.
+//! it, and the workbench's "any input against any output" sweep can reuse it. [`convergence`] is the
+//! equilibrium's convergence map over load direction and magnitude.
 //!
 //! Determinism: with warm starts off (batches), a row depends only on the base case and its own
 //! overrides, so a batch split into shards gives the same rows as one run; only the `seconds` column (wall
 //! time) differs between runs.
 
 pub mod columns;
+pub mod convergence;
 pub mod designs;
 pub mod grid;
 pub mod run;

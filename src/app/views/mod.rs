@@ -4,5 +4,6 @@
 pub mod bearing_view;
 pub mod coefficients_view;
 pub mod field_view;
+pub mod frf_view;
 pub mod placeholders;
 pub mod results_panel;

@@ -14,7 +14,7 @@ use super::super::coordinates::JOURNAL_DOFS;
 use super::super::error::SolveError;
 use super::super::model::BearingModel;
 use super::eval::{coupled_residual, eval_all, external_load, total_force, Ctx};
-use super::journal::{bearing_stiffness, journal_step};
+use super::journal::{bearing_stiffness, journal_step, pads_ahead, unsupported_direction};
 use super::pad::{follow_journal, solve_pad};
 use super::{Cancel, Found, PadState, Progress, Resume, Stall, SUFFICIENT_DECREASE, UNLOADED_SHARE};
 
@@ -47,6 +47,11 @@ pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, c
     // Unloaded pads already re-examined in this solve.
     let mut rechecked = vec![false; model.pads.len()];
     let none_moved = vec![false; model.pads.len()];
+    // Walks along an unsupported load taken so far (each loads one more pad).
+    let mut walks = 0;
+    // Step limit of the line search [m]: `max_step` Cb, doubled after each capped step taken whole.
+    let base_radius = ctx.params.max_step * model.assembled_clearance;
+    let mut radius = base_radius;
     place_hard_pads(model, &mut u, &mut states, &none_moved, ctx)?;
     for it in 0..ctx.params.max_iterations {
         if cancel.cancelled() {
@@ -71,21 +76,36 @@ pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, c
             }
             continue;
         }
-        let step = match newton_step(model, &states, &r) {
-            Ok(s) => s,
-            Err(reason) => return Ok(Progress::Done(Err(stall(&u, &states, w, &reason, ctx)))),
+        let step = newton_step(model, &states, &r);
+        let accepted = match &step {
+            Ok(s) => line_search(model, (&u, &states), s, merit, w, radius, ctx)?,
+            Err(_) => None,
         };
-        match line_search(model, &u, &states, &step, merit, w, ctx)? {
-            Some((u2, s2)) => {
-                u = u2;
-                states = s2;
-            }
-            None => {
-                // Leave the films at the last accepted point.
-                let _ = eval_all(model, &u, ctx);
-                return Ok(Progress::Done(Err(stall(&u, &states, w, "line search found no decrease", ctx))));
+        if let Some(((u2, s2), full_capped)) = accepted {
+            u = u2;
+            states = s2;
+            // A capped step taken whole: the films are far from their load (soft pivots under a heavy load),
+            // so let the steps grow; otherwise back to the base limit.
+            radius = if full_capped { 2.0 * radius } else { base_radius };
+            continue;
+        }
+        // No Newton progress. If part of the load acts where no pad holds the journal (every pad floats, or
+        // the loaded pads leave a direction without stiffness), walk along it until another pad picks up load.
+        let kred = bearing_stiffness(&model.pads, &states);
+        if walks < model.pads.len() {
+            if let Some(d) = unsupported_direction(&kred, &Vector2::new(r[0], r[1]), tol).filter(|d| pads_ahead(&model.pads, *d)) {
+                walks += 1;
+                if let Some((u2, s2)) = advance_until_loaded(model, &u, &states, d, ctx)? {
+                    u = u2;
+                    states = s2;
+                    continue;
+                }
             }
         }
+        // Leave the films at the last accepted point.
+        let _ = eval_all(model, &u, ctx);
+        let reason = step.err().unwrap_or_else(|| "line search found no decrease".into());
+        return Ok(Progress::Done(Err(stall(&u, &states, w, &reason, ctx))));
     }
     Ok(Progress::Done(Err(stall(&u, &states, w, "iteration limit", ctx))))
 }
@@ -134,7 +154,7 @@ fn place_hard_pads(model: &mut BearingModel, u: &mut [f64], states: &mut [PadSta
     for k in 0..model.pads.len() {
         let pm = &model.pads[k];
         let nd = pm.dofs().len();
-        if nd == 0 || ctx.held(k) {
+        if nd == 0 || (ctx.held(k) && states[k].unloaded) {
             continue;
         }
         let own_ok = (0..nd).all(|d| states[k].lin.stiffness[(JOURNAL_DOFS + d, JOURNAL_DOFS + d)] + pm.structure.stiffness[(d, d)] > 0.0);
@@ -168,7 +188,7 @@ fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<V
     let n = model.n_dofs();
     let kred = bearing_stiffness(&model.pads, states);
     // Pads are not in equilibrium yet, so a residual along a zero-stiffness direction is allowed here.
-    let (_, held) = journal_step(&kred, &Vector2::new(r[0], r[1]), f64::INFINITY)?;
+    let (_, held) = journal_step(&kred, &Vector2::new(r[0], r[1]), f64::INFINITY).map_err(|e| e.to_string())?;
     let unit = |i: usize| {
         let mut b = vec![0.0; n];
         b[i] = 1.0;
@@ -200,32 +220,73 @@ fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<V
     Ok((&bm * y).iter().copied().collect())
 }
 
-/// Backtracking on the merit, the journal step limited to `max_step` Cb and every film kept open. A trial
+/// Steps of the walk along an unbalanced force while every pad floats, as a fraction of Cb, and their number.
+const WALK_STEP: f64 = 0.05;
+const WALK_STEPS: usize = 60;
+
+/// Moves the journal along the unit direction `d` in steps of [`WALK_STEP`] Cb, every pad with coordinates
+/// following it rigidly ([`follow_journal`]), until a pad that floats now picks up load; `None` if a film
+/// closes first or none does within [`WALK_STEPS`].
+fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState], d: Vector2<f64>, ctx: &mut Ctx<'_>) -> Result<Option<Accepted>, SolveError> {
+    let cb = model.assembled_clearance;
+    let follows: Vec<bool> = model.pads.iter().enumerate().map(|(k, pm)| !(pm.dofs().is_empty() || ctx.held(k) && states[k].unloaded)).collect();
+    let floating: Vec<bool> = follows.iter().zip(states).map(|(f, s)| *f && s.unloaded).collect();
+    for i in 1..=WALK_STEPS {
+        #[allow(clippy::cast_precision_loss)]
+        let de = [WALK_STEP * cb * i as f64 * d[0], WALK_STEP * cb * i as f64 * d[1]];
+        let mut trial = u.to_vec();
+        trial[0] += de[0];
+        trial[1] += de[1];
+        for k in (0..model.pads.len()).filter(|k| follows[*k]) {
+            let slice = model.dofs.pad_slice(k);
+            let q = follow_journal(&model.pads[k], &u[slice.clone()], de);
+            trial[slice].copy_from_slice(&q);
+        }
+        let Ok(mut st2) = eval_all(model, &trial, ctx) else { return Ok(None) };
+        for (a, b) in st2.iter_mut().zip(states) {
+            a.unloaded |= b.unloaded && ctx.share(a) < UNLOADED_SHARE;
+        }
+        place_hard_pads(model, &mut trial, &mut st2, &floating, ctx)?;
+        if st2.iter().zip(&floating).any(|(s, f)| *f && !s.unloaded) {
+            return Ok(Some((trial, st2)));
+        }
+    }
+    Ok(None)
+}
+
+/// Backtracking on the merit, the step limited to `max_step` Cb (journal motion or film change) and every
+/// film kept open. A trial
 /// point is judged with its unloaded pads placed again (what the next iteration starts from).
 fn line_search(
     model: &mut BearingModel,
-    u: &[f64],
-    states: &[PadState],
+    (u, states): (&[f64], &[PadState]),
     step: &[f64],
     merit: f64,
     w: [f64; 2],
+    radius: f64,
     ctx: &mut Ctx<'_>,
-) -> Result<Option<Accepted>, SolveError> {
+) -> Result<Option<(Accepted, bool)>, SolveError> {
     let tol = ctx.params.force_tol * ctx.force_scale;
-    let cb = model.assembled_clearance;
     let js = step[0].hypot(step[1]);
-    let mut alpha = if js > ctx.params.max_step * cb { ctx.params.max_step * cb / js } else { 1.0 };
+    // The step is limited where it changes the films: by `radius` of journal motion, or, when the pads move
+    // with the journal, of film thickness change.
+    let mut dh_max = 0.0_f64;
+    let mut closing = 1.0_f64;
     for (kk, pm) in model.pads.iter().enumerate() {
         let dh = pm.film.nodal_thickness_delta(&model.local(kk, step));
         for (h, d) in pm.film.h.node.iter().zip(&dh) {
+            dh_max = dh_max.max(d.abs());
             if *d < 0.0 {
-                alpha = alpha.min(FILM_CLOSING_FRACTION * h / -d);
+                closing = closing.min(FILM_CLOSING_FRACTION * h / -d);
             }
         }
     }
+    let mut alpha = if js > radius && dh_max > radius { radius / js.min(dh_max) } else { 1.0 };
+    let capped = alpha < 1.0 && alpha < closing;
+    alpha = alpha.min(closing);
     // Unloaded pads are held by the Newton step; on a trial point they follow the journal.
     let moved: Vec<bool> = model.pads.iter().zip(states).enumerate().map(|(k, (pm, st))| st.unloaded && !pm.dofs().is_empty() && !ctx.held(k)).collect();
-    for _ in 0..LINE_SEARCH_HALVINGS {
+    for halving in 0..LINE_SEARCH_HALVINGS {
         let mut trial: Vec<f64> = u.iter().zip(step).map(|(a, d)| a + alpha * d).collect();
         let de = [alpha * step[0], alpha * step[1]];
         for (k, _) in moved.iter().enumerate().filter(|m| *m.1) {
@@ -240,7 +301,7 @@ fn line_search(
             place_hard_pads(model, &mut trial, &mut st2, &moved, ctx)?;
             let (r2, m2) = coupled_residual(model, &trial, &st2, w, ctx.force_scale);
             if m2.sqrt() < (1.0 - SUFFICIENT_DECREASE * alpha) * merit.sqrt() || (r2[0].hypot(r2[1]) <= tol && m2 <= merit) {
-                return Ok(Some((trial, st2)));
+                return Ok(Some(((trial, st2), capped && halving == 0)));
             }
         }
         alpha *= 0.5;

@@ -8,7 +8,7 @@ use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization, FilmSolveInfo};
 
 use super::super::coordinates::JOURNAL_DOFS;
-use super::super::error::SolveError;
+use super::super::error::{Budget, Iteration, SolveError};
 use super::super::model::{BearingModel, OperatingPoint, PadModel};
 use super::{EquilibriumParams, PadState, SolveReport, FLOATING_SHARE, UNLOADED_SHARE};
 
@@ -53,6 +53,8 @@ pub(crate) struct Ctx<'a> {
     pub report: SolveReport,
     /// Along the load, the film closed before the force balanced: (pad, thinnest film [m], ε) there.
     pub closes_before_balance: Option<(usize, f64, f64)>,
+    /// A load component was met along a direction without stiffness: (axis [deg], component [N]).
+    pub no_stiffness: Option<(f64, f64)>,
     /// Pads found at the onset of pressure are searched for a loaded root further on (the final
     /// placements; see `pad::loaded_root_beyond`).
     pub thorough_onset: bool,
@@ -64,7 +66,7 @@ pub(crate) struct Ctx<'a> {
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
-        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, thorough_onset: false, budget, started }
+        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, budget, started }
     }
 
     /// Seconds since the solve started.
@@ -73,25 +75,32 @@ impl<'a> Ctx<'a> {
     }
 
     /// Which budget is spent, if any.
-    pub fn exhausted(&self) -> Option<String> {
+    pub fn exhausted(&self) -> Option<Budget> {
         if self.report.film_solves > self.budget {
-            Some(format!("work budget of {} film solves exhausted", self.budget))
-        } else if self.started.elapsed().as_secs_f64() > self.params.max_seconds {
-            Some(format!("time budget of {} s exhausted", self.params.max_seconds))
+            Some(Budget::FilmSolves(self.budget))
+        } else if self.elapsed() > self.params.max_seconds {
+            Some(Budget::Seconds(self.params.max_seconds))
         } else {
             None
         }
     }
 
-    /// A film failure on pad k as a solve error; running out of a budget is non-convergence.
+    /// The error of a spent budget.
+    pub fn budget_error(&self, budget: Budget) -> SolveError {
+        SolveError::BudgetExceeded {
+            what: Iteration::Equilibrium,
+            budget,
+            iterations: self.report.iterations,
+            seconds: self.elapsed(),
+            residual: self.report.residual_history.last().copied().unwrap_or(1.0),
+        }
+    }
+
+    /// A film failure on pad k as a solve error; running out of a budget is that budget's error.
     pub fn film_error(&self, k: usize, e: FilmError) -> SolveError {
         match self.exhausted() {
-            Some(reason) => SolveError::NotConverged {
-                iterations: self.report.iterations,
-                residual: self.report.residual_history.last().copied().unwrap_or(1.0),
-                reason,
-            },
-            None => SolveError::Film { pad: k, source: e },
+            Some(b) => self.budget_error(b),
+            None => SolveError::Film { pad: k, error: e },
         }
     }
 
@@ -101,7 +110,8 @@ impl<'a> Ctx<'a> {
         f[0].hypot(f[1]) / self.force_scale
     }
 
-    /// The pad's coordinates are held at their start values (an outer thermal loop holds unloaded pads).
+    /// The pad's coordinates are held at their start values while it carries no load (an outer thermal loop
+    /// holds unloaded pads, so that they cannot flip between equivalent pressure-free states).
     pub fn held(&self, k: usize) -> bool {
         self.op.held_pads.get(k).copied().unwrap_or(false)
     }
@@ -129,8 +139,8 @@ fn account(ctx: &mut Ctx<'_>, k: usize, info: FilmSolveInfo) {
 
 /// Evaluates pad k at local coordinates: forces and linearisation.
 pub(super) fn eval_pad(pm: &mut PadModel, k: usize, local: &[f64], ctx: &mut Ctx<'_>) -> Result<(Vec<f64>, FilmLinearization), FilmError> {
-    if let Some(reason) = ctx.exhausted() {
-        return Err(FilmError::Input(reason));
+    if let Some(b) = ctx.exhausted() {
+        return Err(FilmError::Input(b.to_string()));
     }
     let (forces, lin, info) = film_eval(pm, k, local, ctx.op)?;
     account(ctx, k, info);
@@ -224,8 +234,8 @@ fn eval_films(model: &mut BearingModel, u: &[f64], op: &OperatingPoint) -> Vec<F
 
 /// Evaluates every pad at the global coordinates `u` (one film solve each, no pad iteration).
 pub(super) fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -> Result<Vec<PadState>, (usize, FilmError)> {
-    if let Some(reason) = ctx.exhausted() {
-        return Err((0, FilmError::Input(reason)));
+    if let Some(b) = ctx.exhausted() {
+        return Err((0, FilmError::Input(b.to_string())));
     }
     let results = eval_films(model, u, ctx.op);
     let mut states = Vec::with_capacity(model.pads.len());
@@ -237,9 +247,9 @@ pub(super) fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -
         let sc = pad_scales(pm, &forces, ctx.force_scale);
         let residual = (0..q.len()).map(|d| relative(forces[JOURNAL_DOFS + d] - structural_force(pm, &q, d), sc[d])).fold(0.0, f64::max);
         let mut st = PadState { q, forces, lin, unloaded: false, residual };
-        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load); a held pad is
-        // treated as unloaded (its coordinates are not solved for).
-        st.unloaded = ctx.share(&st) < UNLOADED_SHARE || ctx.held(k);
+        // An unloaded pad's relative residual is meaningless (its scale is its vanishing load); a held pad
+        // that picks up load is solved like any other.
+        st.unloaded = ctx.share(&st) < UNLOADED_SHARE;
         if st.unloaded {
             st.residual = 0.0;
         }

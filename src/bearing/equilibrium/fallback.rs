@@ -17,7 +17,7 @@ use crate::physics::reynolds::FilmError;
 use super::super::error::SolveError;
 use super::super::model::BearingModel;
 use super::eval::{assemble_u, external_load, load_direction, min_film, solve_all_pads, Ctx};
-use super::journal::{bearing_stiffness, journal_step};
+use super::journal::{bearing_stiffness, journal_step, pads_surround, StepFailure};
 use super::{Cancel, Found, Stall, SUFFICIENT_DECREASE};
 
 /// Backtracking halvings of a journal Newton step.
@@ -37,17 +37,27 @@ pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cance
         Ok(f) => return Ok(f),
         Err(s) => ctx.report.warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
     }
-    match named(super::polar::polar_search(model, ctx, cancel)?, "polar bracketing search") {
+    if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
+        // Outside the cone of the pads no search can find stiffness: that is the answer.
+        if !pads_surround(&model.pads, external_load(ctx.op, 1.0)) {
+            return Err(SolveError::NoStiffness { axis_deg, load_component_n });
+        }
+    }
+    // The searches below start from a centred journal, with the pads where `u0` has them (pads held by an
+    // outer thermal loop keep their coordinates).
+    let mut centred = u0.to_vec();
+    centred[..2].fill(0.0);
+    match named(super::polar::polar_search(model, &centred, ctx, cancel)?, "polar bracketing search") {
         Ok(f) => return Ok(f),
         Err(s) => ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason)),
     }
-    if let Some(u_scan) = scan_along_load(model, ctx, cancel)? {
+    if let Some(u_scan) = scan_along_load(model, &centred, ctx, cancel)? {
         match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, "scan along the load + Newton") {
             Ok(f) => return Ok(f),
             Err(s) => ctx.report.warn(format!("Newton after the load-direction scan failed ({}); using load continuation", s.reason)),
         }
     }
-    continuation(model, ctx, cancel)
+    continuation(model, &centred, ctx, cancel)
 }
 
 /// Newton on the journal position for load fraction `fraction`, from `u0`.
@@ -61,7 +71,7 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
         Err((_, FilmError::Contact { .. })) => {
             // Start from the centre if the guess closes a film.
             journal = [0.0, 0.0];
-            u.iter_mut().for_each(|v| *v = 0.0);
+            u[..2].fill(0.0);
             solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| ctx.film_error(k, e))?
         }
         Err((k, e)) => return Err(ctx.film_error(k, e)),
@@ -81,7 +91,12 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
         }
         let mut step = match journal_step(&bearing_stiffness(&model.pads, &states), &r, tol) {
             Ok((step, _)) => step,
-            Err(reason) => return Ok(Err(stall(journal, r, reason, ctx.force_scale))),
+            Err(reason) => {
+                if let StepFailure::NoStiffness { axis_deg, component } = reason {
+                    ctx.no_stiffness = Some((axis_deg, component));
+                }
+                return Ok(Err(stall(journal, r, reason.to_string(), ctx.force_scale)));
+            }
         };
         let max = ctx.params.max_step * cb;
         if step.norm() > max {
@@ -119,14 +134,14 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
 
 /// Walks the journal along the load direction from the centre in steps of 0.1 Cb until the residual along
 /// the load changes sign with a restoring slope; returns the coordinates there (or `None`).
-fn scan_along_load(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Option<Vec<f64>>, SolveError> {
+fn scan_along_load(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Option<Vec<f64>>, SolveError> {
     let w = external_load(ctx.op, 1.0);
     let dir = load_direction(ctx.op);
     if dir == [0.0, 0.0] {
         return Ok(None);
     }
     let cb = model.assembled_clearance;
-    let mut u = vec![0.0; model.n_dofs()];
+    let mut u = centred.to_vec();
     let mut prev: Option<(f64, Vec<f64>)> = None;
     for i in 0..=SCAN_STEPS {
         if cancel.cancelled() {
@@ -151,9 +166,9 @@ fn scan_along_load(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Can
 }
 
 /// Load continuation from a centred journal; touchdown when a step fails with a film nearly closed.
-fn continuation(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
+fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
     let cb = model.assembled_clearance;
-    let mut u = vec![0.0; model.n_dofs()];
+    let mut u = centred.to_vec();
     let mut last = Stall { journal: [0.0; 2], residual: 0.0, reason: String::new() };
     for s in 1..=CONTINUATION_STEPS {
         #[allow(clippy::cast_precision_loss)]
@@ -172,8 +187,19 @@ fn continuation(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel
             }
         }
     }
-    if let (Some((pad, hmin, ecc)), None) = (ctx.closes_before_balance, ctx.exhausted()) {
+    if let Some(b) = ctx.exhausted() {
+        return Err(ctx.budget_error(b));
+    }
+    if let Some((pad, hmin, ecc)) = ctx.closes_before_balance {
         return Err(SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: ecc });
+    }
+    if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
+        if !pads_surround(&model.pads, external_load(ctx.op, 1.0)) {
+            return Err(SolveError::NoStiffness { axis_deg, load_component_n });
+        }
+        // Pads surround the load, so some pad can carry it: the missing stiffness is where the search
+        // stopped, not an answer.
+        last.reason = format!("{} (pads surround the load, yet the search stopped with no stiffness along {axis_deg:.0}°)", last.reason);
     }
     Err(SolveError::NotConverged { iterations: ctx.report.iterations, residual: last.residual, reason: last.reason })
 }

@@ -38,8 +38,8 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
         let local = model.local(k, &u);
         if model.pads[k].film.coordinates() != local.as_slice() {
             let film = &mut model.pads[k].film;
-            film.set_coordinates(&local).map_err(|e| SolveError::Film { pad: k, source: e })?;
-            film.solve(&op.film_inputs(k), true).map_err(|e| SolveError::Film { pad: k, source: e })?;
+            film.set_coordinates(&local).map_err(|e| SolveError::Film { pad: k, error: e })?;
+            film.solve(&op.film_inputs(k), true).map_err(|e| SolveError::Film { pad: k, error: e })?;
             ctx.report.film_solves += 1;
         }
         let share = ctx.share(p);

@@ -46,17 +46,39 @@ pub(super) fn bearing_stiffness(pads: &[PadModel], states: &[PadState]) -> Matri
     pads.iter().zip(states).map(|(pm, st)| condensed_journal_stiffness(pm, st)).sum()
 }
 
+/// Why a journal step could not be taken.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum StepFailure {
+    /// A load component of `component` [N] acts along `axis_deg`, where the bearing has no stiffness.
+    NoStiffness { axis_deg: f64, component: f64 },
+    Other(String),
+}
+
+impl std::fmt::Display for StepFailure {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NoStiffness { axis_deg, component } => {
+                write!(f, "a load component of {component:.3e} N acts along the {axis_deg:.0}° axis, where the bearing has no stiffness")
+            }
+            Self::Other(s) => f.write_str(s),
+        }
+    }
+}
+
 /// Newton step `K Δ = r` by singular values: directions without stiffness are not moved along; a load
 /// component there above `tol` cannot be carried. Returns the step and the held direction, if any.
-pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Result<(Vector2<f64>, Option<Vector2<f64>>), String> {
+pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StepFailure> {
     if !k.iter().all(|v| v.is_finite()) {
-        return Err("non-finite bearing stiffness".into());
+        return Err(StepFailure::Other("non-finite bearing stiffness".into()));
     }
     let svd = k.svd(true, true);
-    let (Some(u), Some(vt)) = (svd.u, svd.v_t) else { return Err("singular value decomposition failed".into()) };
+    let (Some(u), Some(vt)) = (svd.u, svd.v_t) else { return Err(StepFailure::Other("singular value decomposition failed".into())) };
     let smax = svd.singular_values.max();
     if smax <= 0.0 {
-        return Err("the bearing has no stiffness at this position".into());
+        if r.norm() > 10.0 * tol {
+            return Err(StepFailure::NoStiffness { axis_deg: r[1].atan2(r[0]).to_degrees().rem_euclid(180.0), component: r.norm() });
+        }
+        return Err(StepFailure::Other("the bearing has no stiffness at this position".into()));
     }
     let mut step = Vector2::zeros();
     let mut held = None;
@@ -67,13 +89,70 @@ pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Resu
             step += vi * (ri / svd.singular_values[i]);
         } else {
             if ri.abs() > 10.0 * tol {
-                return Err(format!(
-                    "a load component of {ri:.3e} N acts along ({:.2}, {:.2}), where the bearing has no stiffness",
-                    ui[0], ui[1]
-                ));
+                let axis_deg = ui[1].atan2(ui[0]).to_degrees().rem_euclid(180.0);
+                return Err(StepFailure::NoStiffness { axis_deg, component: ri.abs() });
             }
             held = Some(vi);
         }
     }
     Ok((step, held))
+}
+
+/// The unit direction along which part of the unbalanced force `r` (above `tol`) acts where `k` has no
+/// stiffness: `r` itself when nothing holds the journal. `None` when every load component is supported.
+pub(super) fn unsupported_direction(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Option<Vector2<f64>> {
+    let smax = k.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    if !smax.is_finite() {
+        return None;
+    }
+    if smax == 0.0 {
+        return (r.norm() > tol).then(|| r / r.norm());
+    }
+    let svd = k.svd(true, false);
+    let u = svd.u?;
+    let smax = svd.singular_values.max();
+    (0..2).find_map(|i| {
+        let ui = u.column(i).into_owned();
+        let ri = ui.dot(r);
+        (svd.singular_values[i] <= STIFFNESS_RANK_TOL * smax && ri.abs() > tol).then(|| ui * ri.signum())
+    })
+}
+
+/// Whether the pads surround the load direction `w`: it lies inside the cone of the pads' outward normals
+/// (each pad's mean film normal, from its journal shapes `∂h/∂e = −(cos θ, sin θ)`), so that pressure on
+/// them can balance it. Only outside that cone is "no stiffness" an answer rather than a failure.
+pub(super) fn pads_surround(pads: &[PadModel], w: [f64; 2]) -> bool {
+    use std::f64::consts::{PI, TAU};
+    let mut angles: Vec<f64> = pad_normals(pads).iter().map(|n| n[1].atan2(n[0]).rem_euclid(TAU)).collect();
+    if angles.is_empty() || w[0].hypot(w[1]) == 0.0 {
+        return false;
+    }
+    angles.sort_by(f64::total_cmp);
+    let phi = w[1].atan2(w[0]).rem_euclid(TAU);
+    // The load on a pad, or in a gap between consecutive pad normals of under a half turn.
+    let on_pad = angles.iter().any(|a| ((phi - a + PI).rem_euclid(TAU) - PI).abs() < 1e-6);
+    on_pad || (0..angles.len()).any(|i| {
+        let a = angles[i];
+        let b = if i + 1 < angles.len() { angles[i + 1] } else { angles[0] + TAU };
+        let gap = b - a;
+        let inside = (phi - a).rem_euclid(TAU) <= gap;
+        inside && gap < PI - 1e-9
+    })
+}
+
+/// Each pad's mean outward film normal (towards the pad from the bearing centre), from its journal shapes.
+fn pad_normals(pads: &[PadModel]) -> Vec<[f64; 2]> {
+    pads.iter()
+        .map(|pm| {
+            let s = &pm.film.geom.shapes;
+            let (cx, cy) = (-s[0].node.iter().sum::<f64>(), -s[1].node.iter().sum::<f64>());
+            let n = cx.hypot(cy);
+            if n > 0.0 { [cx / n, cy / n] } else { [0.0, 0.0] }
+        })
+        .collect()
+}
+
+/// Whether moving the journal along `d` approaches some pad (a walk along `d` can load one).
+pub(super) fn pads_ahead(pads: &[PadModel], d: Vector2<f64>) -> bool {
+    pad_normals(pads).iter().any(|n| n[0] * d[0] + n[1] * d[1] > 1e-6)
 }

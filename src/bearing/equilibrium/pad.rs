@@ -28,8 +28,12 @@ pub(super) fn solve_pad(pm: &mut PadModel, k: usize, journal: [f64; 2], q: &[f64
     let local: Vec<f64> = journal.iter().chain(q).copied().collect();
     if pm.dofs().is_empty() || ctx.held(k) {
         let (forces, lin) = eval_pad(pm, k, &local, ctx)?;
-        let unloaded = !pm.dofs().is_empty();
-        return Ok(PadState { q: q.to_vec(), forces, lin, unloaded, residual: 0.0 });
+        let share = forces[0].hypot(forces[1]) / ctx.force_scale;
+        // A held pad stays held only while it carries no load; one that picks up load is solved.
+        if pm.dofs().is_empty() || share < UNLOADED_SHARE {
+            let unloaded = !pm.dofs().is_empty();
+            return Ok(PadState { q: q.to_vec(), forces, lin, unloaded, residual: 0.0 });
+        }
     }
     let others: Vec<usize> = (0..q.len()).filter(|&d| pm.dofs()[d] != PadDof::Tilt).collect();
     match others.as_slice() {

@@ -169,7 +169,7 @@ impl Search<'_, '_, '_> {
 }
 
 /// Runs the polar bracketing search (force-prescribed loads only).
-pub(super) fn polar_search(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+pub(super) fn polar_search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
     let w = external_load(ctx.op, 1.0);
     let stall = |reason: &str| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: reason.to_string() }));
     if w[0].hypot(w[1]) <= 0.0 {
@@ -178,7 +178,7 @@ pub(super) fn polar_search(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: 
     let psi_w = w[1].atan2(w[0]);
     let tol = ctx.params.force_tol * ctx.force_scale;
     let cb = model.assembled_clearance;
-    let warm = vec![0.0; model.n_dofs()];
+    let warm = centred.to_vec();
     let mut search = Search { model, ctx, w, warm, tol };
     let mut guess = 0.3 * cb;
     let Some(mid) = search.ray(psi_w, guess, cancel)? else { return stall("no restoring root along the load") };
@@ -190,8 +190,8 @@ pub(super) fn polar_search(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: 
     let up = mid.h > 0.0;
     if up { (a, ra) = (psi_w, Some(mid)) } else { (b, rb) = (psi_w, Some(mid)) }
     loop {
-        let done_a = ra.as_ref().is_some_and(|r: &RayRoot| r.h.abs() <= tol && r.g.abs() <= tol);
-        let done_b = rb.as_ref().is_some_and(|r: &RayRoot| r.h.abs() <= tol && r.g.abs() <= tol);
+        let done_a = ra.as_ref().is_some_and(|r: &RayRoot| r.g.hypot(r.h) <= tol);
+        let done_b = rb.as_ref().is_some_and(|r: &RayRoot| r.g.hypot(r.h) <= tol);
         if done_a || done_b || (ra.is_some() && rb.is_some()) {
             break;
         }
@@ -213,7 +213,7 @@ pub(super) fn polar_search(model: &mut BearingModel, ctx: &mut Ctx<'_>, cancel: 
     let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
     for _ in 0..MAX_BRACKET_ITERATIONS {
         for r in [ra.as_ref(), rb.as_ref()].into_iter().flatten() {
-            if r.h.abs() <= tol && r.g.abs() <= tol {
+            if r.g.hypot(r.h) <= tol {
                 let residual = r.g.hypot(r.h) / search.ctx.force_scale;
                 search.ctx.report.residual_history.push(residual);
                 let pads = r.states.clone();

@@ -1,0 +1,206 @@
+//! The FRF view: Bode plots (magnitude, unwrapped phase) of the controllable bearing — G1, G2, G3, G and the
+//! rig's calibrated-shaker chain — against frequency on a log axis, line modes marked, with sliders for air
+//! fraction, line length and valve bandwidth that re-run only the frequency loop, CSV export, and the
+//! model's limitations stated.
+//!
+//! The bearing's equilibrium and linearisation ([`FrfModel`]) are computed once per case on the UI thread
+//! (isothermal; a few tens of ms at preview fidelity in release builds) and cached; the sliders change a
+//! copy of the case's hydraulics and re-run [`FrfModel::sweep`] (400 frequencies, below a millisecond).
+
+use egui::{Color32, RichText, Ui};
+use egui_plot::{HoverPosition, Legend, Line, Plot, VLine};
+
+use crate::bearing::frf_job::{band, FrfModel};
+use crate::model::Case;
+use crate::scene::frf::FrfCurves;
+
+const COLORS: [Color32; 12] = [
+    Color32::from_rgb(86, 180, 233),
+    Color32::from_rgb(230, 159, 0),
+    Color32::from_rgb(0, 158, 115),
+    Color32::from_rgb(204, 121, 167),
+    Color32::from_rgb(213, 94, 0),
+    Color32::from_rgb(0, 114, 178),
+    Color32::from_rgb(240, 228, 66),
+    Color32::from_gray(160),
+    Color32::from_rgb(150, 110, 220),
+    Color32::from_rgb(120, 200, 120),
+    Color32::from_rgb(240, 120, 120),
+    Color32::from_rgb(100, 210, 210),
+];
+
+const GROUPS: [&str; 5] = ["G1", "G2", "G3", "G", "rig"];
+
+/// The view's runtime state (not persisted).
+#[derive(Default)]
+pub struct FrfView {
+    /// The case the cached model belongs to, and the model (or why it failed).
+    cache: Option<(Case, Result<FrfModel, String>)>,
+    /// Slider values: air fraction [–], line length [mm], valve natural frequency [Hz]; `None` = the case's.
+    air_fraction: Option<f64>,
+    line_length_mm: Option<f64>,
+    valve_hz: Option<f64>,
+    db: bool,
+    hidden: [bool; 5],
+    curves: Option<(Case, FrfCurves)>,
+    /// Control amplitude to check against the valve's small-signal range [V].
+    amplitude_v: f64,
+}
+
+/// What the view asks the app to do.
+pub enum FrfAction {
+    ExportCsv(String),
+}
+
+impl FrfView {
+    /// Computes the model for `case` unless cached; the error, if it failed.
+    fn ensure(&mut self, case: &Case) -> Option<String> {
+        let fresh = self.cache.as_ref().is_some_and(|(c, _)| c == case);
+        if !fresh {
+            self.cache = Some((case.clone(), FrfModel::new(case).map_err(|e| e.to_string())));
+            (self.air_fraction, self.line_length_mm, self.valve_hz, self.curves) = (None, None, None, None);
+        }
+        self.cache.as_ref().and_then(|(_, m)| m.as_ref().err().cloned())
+    }
+}
+
+/// The case with the sliders applied to its hydraulics.
+fn adjusted(case: &Case, air: f64, length_mm: f64, valve_hz: f64) -> Case {
+    let mut c = case.clone();
+    if let Some(h) = c.hydraulics.as_mut() {
+        h.valve.natural_frequency_rad_s = valve_hz * std::f64::consts::TAU;
+        for p in &mut h.ports {
+            p.air_fraction = air;
+            p.line_length_m = length_mm * 1e-3;
+        }
+    }
+    c
+}
+
+fn log_ticks(value: f64) -> String {
+    let v = 10f64.powf(value);
+    if v >= 1.0 { format!("{v:.0}") } else { format!("{v:.2}") }
+}
+
+/// Draws the view for `case` (the shown solution's inputs).
+pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case) -> Option<FrfAction> {
+    let Some(h) = case.hydraulics.clone() else {
+        ui.add_space(16.0);
+        ui.label(RichText::new("Frequency response of the controllable bearing").heading());
+        ui.label("This case has no [hydraulics] section (servovalve, ports, injection lines). Open the shipped \"Test rig, Publ. 5\" case to see the FRFs.");
+        return None;
+    };
+    if let Some(e) = view.ensure(case) {
+        ui.label(RichText::new(format!("No operating point for the FRFs: {e}")).color(Color32::from_rgb(230, 120, 60)));
+        return None;
+    }
+    let (air0, len0, hz0) = (h.ports[0].air_fraction, h.ports[0].line_length_m * 1e3, h.valve.natural_frequency_rad_s / std::f64::consts::TAU);
+    let mut air = view.air_fraction.unwrap_or(air0);
+    let mut len = view.line_length_mm.unwrap_or(len0);
+    let mut hz = view.valve_hz.unwrap_or(hz0);
+    let mut changed = false;
+    ui.spacing_mut().slider_width = 110.0;
+    ui.horizontal(|ui| {
+        changed |= ui.add(egui::Slider::new(&mut air, 0.0..=0.03).text("air fraction")).changed();
+        changed |= ui.add(egui::Slider::new(&mut len, 100.0..=3000.0).text("line length [mm]")).changed();
+    });
+    ui.horizontal(|ui| {
+        changed |= ui.add(egui::Slider::new(&mut hz, 20.0..=500.0).logarithmic(true).text("valve ω_V/2π [Hz]")).changed();
+        ui.add(egui::Slider::new(&mut view.amplitude_v, 0.0..=h.valve.full_scale_v).text("signal [V]"));
+    });
+    if changed {
+        (view.air_fraction, view.line_length_mm, view.valve_hz) = (Some(air), Some(len), Some(hz));
+    }
+    let adj = adjusted(case, air, len, hz);
+    let Some((_, Ok(model))) = view.cache.as_ref() else { return None };
+    if view.curves.as_ref().is_none_or(|(c, _)| *c != adj) {
+        match model.sweep(&adj, &band(1.0, 1000.0, 400)) {
+            Ok(s) => {
+                let names: Vec<&str> = h.ports.iter().map(|p| if p.sign > 0.0 { "A" } else { "B" }).collect();
+                let title = format!(
+                    "{:.0} rpm, ε = {:.3}, supply {:.0} bar",
+                    case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU,
+                    model.eccentricity_ratio,
+                    h.supply_pressure_pa / 1e5
+                );
+                view.curves = Some((adj.clone(), FrfCurves::new(&s, &names, title)));
+            }
+            Err(e) => {
+                ui.label(e.to_string());
+                return None;
+            }
+        }
+    }
+    let (_, curves) = view.curves.as_ref()?;
+    let mut action = None;
+    ui.horizontal_wrapped(|ui| {
+        for (g, hidden) in GROUPS.iter().zip(view.hidden.iter_mut()) {
+            let mut shown = !*hidden;
+            if ui.checkbox(&mut shown, *g).changed() {
+                *hidden = !shown;
+            }
+        }
+        ui.separator();
+        ui.selectable_value(&mut view.db, false, "log |G|");
+        ui.selectable_value(&mut view.db, true, "dB");
+        if ui.button("Export CSV").clicked() {
+            action = Some(FrfAction::ExportCsv(curves.csv()));
+        }
+    });
+    ui.label(RichText::new(format!("Bode — {}", curves.title)).strong());
+    bode_ui(ui, curves, &view.hidden, view.db);
+    let limit = 0.1 * h.valve.full_scale_v;
+    if view.amplitude_v > limit {
+        ui.label(RichText::new(format!("Signal {:.2} V exceeds the small-signal range of the linear valve model ({limit:.2} V, 10 % of full scale).", view.amplitude_v)).color(Color32::from_rgb(230, 120, 60)));
+    }
+    for n in &curves.notes {
+        ui.label(RichText::new(n).italics().weak());
+    }
+    action
+}
+
+fn bode_ui(ui: &mut Ui, curves: &FrfCurves, hidden: &[bool; 5], db: bool) {
+    let visible = |g: &str| GROUPS.iter().position(|x| *x == g).is_none_or(|i| !hidden[i]);
+    let lf: Vec<f64> = curves.frequency_hz.iter().map(|f| f.log10()).collect();
+    let height = ((ui.available_height() - 60.0) / 2.0).max(140.0);
+    // The central area can be wider than what is visible beside the results panel: keep to the visible part.
+    let width = ui.available_width().min(ui.clip_rect().width());
+    let modes: Vec<f64> = curves.line_modes_hz.iter().flatten().copied().filter(|f| (1.0..=1000.0).contains(f)).collect();
+    let hover = |p: &HoverPosition<'_>, unit: &str| -> Option<String> {
+        match p {
+            HoverPosition::NearDataPoint { plot_name, position, .. } => Some(format!("{plot_name}\n{:.1} Hz\n{:.3} {unit}", 10f64.powf(position.x), position.y)),
+            HoverPosition::Elsewhere { .. } => None,
+        }
+    };
+    let link = ui.scope_id().with("frf_bode");
+    let mag_unit = if db { "dB" } else { "log10 |G|" };
+    for (id, unit) in [("frf_magnitude", mag_unit), ("frf_phase", "deg")] {
+        let mut plot = Plot::new(id).height(height).width(width);
+        if id == "frf_magnitude" {
+            plot = plot.legend(Legend::default().position(egui_plot::Corner::LeftBottom));
+        }
+        plot
+            .x_axis_label("frequency [Hz]")
+            .y_axis_label(unit)
+            .x_axis_formatter(|m, _| log_ticks(m.value))
+            .label_formatter(move |p| hover(p, unit))
+            .link_axis(link, [true, false])
+            .allow_scroll(false)
+            .show(ui, |p| {
+                for (c, color) in curves.curves.iter().filter(|c| visible(c.group)).zip(COLORS.iter().cycle()) {
+                    let y: Vec<f64> = if id == "frf_phase" {
+                        c.phase_deg.clone()
+                    } else if db {
+                        c.magnitude.iter().map(|m| 20.0 * m.max(1e-300).log10()).collect()
+                    } else {
+                        c.magnitude.iter().map(|m| m.max(1e-300).log10()).collect()
+                    };
+                    let pts: Vec<[f64; 2]> = lf.iter().zip(&y).map(|(x, y)| [*x, *y]).collect();
+                    p.line(Line::new(format!("{} [{}]", c.name, c.unit), pts).color(*color).width(1.6));
+                }
+                for f in &modes {
+                    p.vline(VLine::new("line modes", f.log10()).color(Color32::from_gray(140)).style(egui_plot::LineStyle::dashed_loose()));
+                }
+            });
+    }
+}

@@ -1,0 +1,162 @@
+//! The equilibrium stage: the isothermal static equilibrium and the full linearisation
+//! ([`step_operating_point`]), resumable between frames.
+//!
+//! Suspension is a return value: when the caller asks to pause ([`Cancel::suspend`]) the solve returns
+//! its iterate, kept here under the inputs it works towards, and the next poll resumes from it; after
+//! [`MAX_SUSPENSIONS`] it runs to the end (bounded work even if every part is slow). The last converged
+//! coordinates warm-start the next solve on the same films.
+
+use std::sync::Arc;
+
+use crate::bearing::equilibrium::EquilibriumParams;
+use crate::bearing::error::SolveError;
+use crate::bearing::job::{solve_operating_point, step_operating_point};
+use crate::bearing::model::OperatingPoint;
+use crate::bearing::progress::{Cancel, NoSuspend};
+use crate::bearing::report::SolveReport;
+use crate::bearing::solution::Solution;
+use crate::model::{Case, Lubricant, Operating, Physics, ViscosityLaw};
+
+use super::films::{install_structure, FilmsInputs, FilmsStage};
+use super::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
+
+/// Suspensions of one equilibrium before it must run to the end.
+pub const MAX_SUSPENSIONS: usize = 40;
+
+/// The inputs of the isothermal equilibrium.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EquilibriumInputs {
+    pub films: FilmsInputs,
+    /// Radial and transverse pivot stiffness per pad (the structure's springs; the density is not read).
+    pub stiffness_n_per_m: Vec<[Option<f64>; 2]>,
+    /// Reported with the solution.
+    pub preloads: Vec<f64>,
+    pub viscosity: ViscosityLaw,
+    /// Oil density: the flow-regime warnings.
+    pub oil_density_kg_per_m3: f64,
+    pub speed_rad_s: f64,
+    pub load: crate::model::LoadSpec,
+    pub film_temperature_c: f64,
+    pub injection_pressure_pa: Vec<f64>,
+    pub injection_temperature_c: f64,
+    pub physics: Physics,
+}
+
+impl EquilibriumInputs {
+    /// Exhaustive over the case and its sub-structs (no `..`).
+    #[must_use]
+    pub fn of(case: &Case) -> Self {
+        let Case { title: _, bearing: _, lubricant, operating, mesh: _, physics, thermal: _, hydraulics: _ } = case;
+        let Lubricant {
+            name: _,
+            viscosity,
+            density_kg_per_m3,
+            specific_heat_j_per_kg_k: _,
+            conductivity_w_per_m_k: _, // the thermal stage's
+        } = lubricant;
+        let Operating {
+            speed_rad_s,
+            load,
+            supply_temperature_c: _, // the thermal stage's
+            film_temperature_c,
+            injection_pressure_pa,
+            injection_temperature_c,
+            excitation_ratio: _, // the reduction's
+        } = operating;
+        let Physics { cavitation: _, touchdown_film_m: _ } = physics; // both read: kept whole below
+        let structure = super::films::StructureInputs::of(case);
+        Self {
+            films: FilmsInputs::of(case),
+            stiffness_n_per_m: structure.stiffness_n_per_m,
+            preloads: case.bearing.pads.iter().map(|p| p.preload).collect(),
+            viscosity: *viscosity,
+            oil_density_kg_per_m3: *density_kg_per_m3,
+            speed_rad_s: *speed_rad_s,
+            load: *load,
+            film_temperature_c: *film_temperature_c,
+            injection_pressure_pa: injection_pressure_pa.clone(),
+            injection_temperature_c: *injection_temperature_c,
+            physics: *physics,
+        }
+    }
+}
+
+/// A suspended solve: where to resume it, and the work of its parts so far (added to its final report).
+#[derive(Debug, Clone, Default)]
+struct Suspensions {
+    coordinates: Vec<f64>,
+    placed_pads: usize,
+    suspensions: usize,
+    report: SolveReport,
+}
+
+impl Suspensions {
+    /// One more part of the solve has been suspended.
+    fn add(&mut self, part: SolveReport) {
+        self.suspensions += 1;
+        let mut r = part;
+        r.add_earlier(std::mem::take(&mut self.report));
+        self.report = r;
+    }
+
+    /// The final report covers the whole solve: earlier parts' work first.
+    fn merge_into(self, r: &mut SolveReport) {
+        r.add_earlier(self.report);
+        r.method = format!("{} (resumed {} times, one part per frame)", r.method, self.suspensions);
+    }
+}
+
+#[derive(Default)]
+pub struct EquilibriumStage {
+    /// A solve paused by [`Cancel::suspend`], under the inputs it works towards.
+    suspended: Cached<EquilibriumInputs, Suspensions>,
+    /// Last converged coordinates, under the films they were solved on.
+    warm: Cached<FilmsInputs, Vec<f64>>,
+}
+
+impl Stage for EquilibriumStage {
+    const LABEL: &'static str = "equilibrium";
+    const NEEDS: &'static [StageId] = &[StageId::Films];
+    type Inputs = EquilibriumInputs;
+    type Output = Arc<Solution>;
+
+    fn inputs(req: &Request) -> Option<EquilibriumInputs> {
+        Some(EquilibriumInputs::of(&req.case))
+    }
+
+    fn poll(&mut self, inputs: &EquilibriumInputs, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
+        let case = ctx.case().clone();
+        let model = ctx.output_mut::<FilmsStage>()?;
+        install_structure(model, &case)?;
+        let op = OperatingPoint::isothermal(&case);
+        let resumed = self.suspended.take(inputs);
+        let may_suspend = resumed.as_ref().is_none_or(|r| r.suspensions < MAX_SUSPENSIONS);
+        let no_suspend = NoSuspend(cancel);
+        let cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
+        let warm = self.warm.get(&inputs.films).cloned();
+        let start = resumed.as_ref().map(|r| r.coordinates.clone()).or(warm);
+        let params = EquilibriumParams { placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads), ..EquilibriumParams::default() };
+        let attempt = match step_operating_point(model, &case, &op, start.as_deref(), params, cancel) {
+            // A failed warm start retries cold before giving up.
+            Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled) => {
+                self.warm = Cached::default();
+                solve_operating_point(model, &case, &op, None, cancel).map(Progress::Done)
+            }
+            r => r,
+        };
+        let mut sol = match attempt? {
+            Progress::Done(s) => s,
+            Progress::Suspended(r) => {
+                let mut so_far = resumed.unwrap_or_default();
+                so_far.add(r.report);
+                self.suspended.put(inputs.clone(), Suspensions { coordinates: r.coordinates, placed_pads: r.placed_pads, ..so_far });
+                return Ok(Progress::Suspended(0.5));
+            }
+        };
+        if let Some(so_far) = resumed {
+            so_far.merge_into(&mut sol.report);
+        }
+        self.warm.put(inputs.films.clone(), sol.coordinates.clone());
+        Ok(Progress::Done(Arc::new(sol)))
+    }
+}

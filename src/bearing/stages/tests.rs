@@ -1,0 +1,293 @@
+//! Execution counters: what reruns on which edit; suspension and resumption.
+
+use super::*;
+use crate::bearing::model::BearingModel;
+use crate::bearing::progress::NoCancel;
+use crate::model::load_case;
+
+fn case(set: &[&str]) -> Case {
+    let text = include_str!("../../../cases/fillon-a.toml");
+    // These tests are about the isothermal stages; the thermal stage has its own test below.
+    let set: Vec<String> = std::iter::once("thermal.model=\"isothermal\"").chain(set.iter().copied()).map(str::to_string).collect();
+    load_case(&text.replace("fidelity = \"standard\"", "fidelity = \"preview\""), &set).unwrap().1
+}
+
+const RATIOS: [f64; 3] = [0.5, 1.0, 2.0];
+
+fn with_sweep(case: Case) -> Request {
+    Request { case, wanted: vec![StageId::Reduction, StageId::FrequencySweep], frequency_ratios: RATIOS.to_vec(), speeds_rpm: Vec::new() }
+}
+
+/// Runs of (Films, Equilibrium, Thermal, Coefficients, Reduction, FrequencySweep, SpeedSweep).
+fn runs(s: &Stages) -> [usize; 7] {
+    let v: Vec<usize> = s.all_runs().into_iter().map(|(_, n)| n).collect();
+    v.try_into().unwrap()
+}
+
+#[test]
+fn stages_rerun_only_when_their_inputs_change() {
+    let mut s = Stages::new();
+    let mut req = with_sweep(case(&[]));
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [1, 1, 0, 1, 1, 1, 0]);
+    // Same request: nothing runs.
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [1, 1, 0, 1, 1, 1, 0]);
+    // The title and the excitation ratio do not enter the equilibrium.
+    req.case = case(&["title=\"renamed\"", "operating.excitation_ratio=0.5"]);
+    let o = s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [1, 1, 0, 1, 2, 1, 0]);
+    let sol = o.solution().unwrap();
+    assert_eq!(sol.title, "renamed");
+    assert_eq!(sol.inputs, req.case);
+    // The load changes the equilibrium and everything after it, not the films.
+    req.case = case(&["operating.load_n=8000"]);
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [1, 2, 0, 2, 3, 2, 0]);
+    // The mesh changes everything.
+    req.case = case(&["operating.load_n=8000", "mesh.circumferential_elements=20"]);
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [2, 3, 0, 3, 4, 3, 0]);
+}
+
+#[test]
+fn edits_that_no_stage_reads_run_nothing() {
+    let mut s = Stages::new();
+    let base = case(&[]);
+    let first = s.run(&with_sweep(base.clone()), &NoCancel).unwrap().solution().unwrap();
+    assert_eq!(runs(&s), [1, 1, 0, 1, 1, 1, 0]);
+    for edit in [
+        "bearing.pads.youngs_modulus_gpa=100",
+        "bearing.pads.poisson_ratio=0.25",
+        "mesh.max_nodes=5000000",
+        "lubricant.name=\"another oil\"",
+    ] {
+        let edited = case(&[edit]);
+        assert_ne!(edited, base, "{edit} edits the case");
+        let again = s.run(&with_sweep(edited.clone()), &NoCancel).unwrap().solution().unwrap();
+        assert_eq!(runs(&s), [1, 1, 0, 1, 1, 1, 0], "{edit} ran a stage");
+        // The published solution carries the edited case, with the same numbers.
+        assert_eq!(again.inputs, edited);
+        assert_eq!(again.eccentricity_ratio.to_bits(), first.eccentricity_ratio.to_bits());
+    }
+}
+
+#[test]
+fn pad_density_reruns_only_what_depends_on_inertia() {
+    let mut s = Stages::new();
+    let light = s.run(&with_sweep(case(&[])), &NoCancel).unwrap().solution().unwrap();
+    let heavy = s.run(&with_sweep(case(&["bearing.pads.density_kg_per_m3=15600"])), &NoCancel).unwrap().solution().unwrap();
+    // Films, equilibrium untouched; coefficients, reduction and the frequency sweep rerun.
+    assert_eq!(runs(&s), [1, 1, 0, 2, 2, 2, 0]);
+    // The inertia is proportional to the density; the film's K and C are unchanged.
+    let m_max = light.full.m.iter().flatten().fold(0.0_f64, |a, &x| a.max(x.abs()));
+    assert!(m_max > 0.0);
+    for (a, b) in light.full.m.iter().flatten().zip(heavy.full.m.iter().flatten()) {
+        assert!((b - 2.0 * a).abs() <= 1e-12 * m_max, "{b} vs 2 × {a}");
+    }
+    assert_eq!(light.full.k, heavy.full.k);
+    assert_eq!(light.full.c, heavy.full.c);
+    // The same inertia as a solve from scratch of the heavy case.
+    let fresh = crate::bearing::solve_case(&case(&["bearing.pads.density_kg_per_m3=15600"])).unwrap();
+    for (a, b) in fresh.full.m.iter().flatten().zip(heavy.full.m.iter().flatten()) {
+        assert!((a - b).abs() <= 1e-12 * m_max, "{a} vs {b}");
+    }
+}
+
+#[test]
+fn pivot_stiffness_reruns_the_equilibrium_on_the_same_films() {
+    let mut s = Stages::new();
+    let soft = case(&["bearing.pads.pivot_stiffness_n_per_m=2e8"]);
+    let stiff = case(&["bearing.pads.pivot_stiffness_n_per_m=2e9"]);
+    let a = s.run(&Request::solution(soft), &NoCancel).unwrap().solution().unwrap();
+    let b = s.run(&Request::solution(stiff.clone()), &NoCancel).unwrap().solution().unwrap();
+    // The films are kept (their coordinates are the same); everything from the equilibrium on reruns.
+    assert_eq!(runs(&s), [1, 2, 0, 2, 2, 0, 0]);
+    // The stiffer spring moves the pivots less, and the result is the one of a solve from scratch.
+    let pivot = |s: &Solution| s.pads.iter().map(|p| p.pivot_displacement_m.unwrap().abs()).fold(0.0, f64::max);
+    assert!(pivot(&b) < 0.5 * pivot(&a), "{} vs {}", pivot(&b), pivot(&a));
+    let fresh = crate::bearing::solve_case(&stiff).unwrap();
+    let rel = |x: f64, y: f64| ((x - y) / y).abs();
+    assert!(rel(b.eccentricity_ratio, fresh.eccentricity_ratio) < 1e-6, "{} vs {}", b.eccentricity_ratio, fresh.eccentricity_ratio);
+    assert!(rel(pivot(&b), pivot(&fresh)) < 1e-5);
+    assert!(rel(b.reduced.k_n_per_m[1][1], fresh.reduced.k_n_per_m[1][1]) < 1e-5);
+    // Removing the spring changes the pads' coordinates: new films.
+    s.run(&Request::solution(case(&[])), &NoCancel).unwrap();
+    assert_eq!(runs(&s)[0], 2);
+}
+
+/// Asks every solve to pause as soon as it may (the web stepper with a spent frame budget).
+struct AlwaysSuspend;
+impl Cancel for AlwaysSuspend {
+    fn cancelled(&self) -> bool {
+        false
+    }
+    fn suspend(&self) -> bool {
+        true
+    }
+}
+
+#[test]
+fn a_suspended_equilibrium_resumes_from_its_iterate_and_reaches_the_same_solution() {
+    let req = Request::solution(case(&["operating.load_n=12000"]));
+    let whole = Stages::new().run(&req, &NoCancel).unwrap().solution().unwrap();
+    let mut s = Stages::new();
+    let mut equilibrium_steps = 0;
+    let parts = loop {
+        match s.step(&req, &AlwaysSuspend).unwrap() {
+            Step::Done(o) => break o.solution().unwrap(),
+            Step::Pending { stage: StageId::Equilibrium, .. } => equilibrium_steps += 1,
+            Step::Pending { .. } => {}
+        }
+        assert!(equilibrium_steps <= MAX_SUSPENSIONS + 1, "suspensions are bounded");
+    };
+    // The cold start places one pad per step, then one Newton iteration per step (the last converges).
+    let pads = parts.pads.len();
+    assert!(equilibrium_steps > pads, "the solve was split: {equilibrium_steps} steps for {pads} pads");
+    assert_eq!(s.runs(StageId::Equilibrium), 1);
+    assert!(parts.report.method.contains("resumed"), "{}", parts.report.method);
+    assert!(parts.report.iterations + pads >= equilibrium_steps, "the report counts every part: {}", parts.report.iterations);
+    assert_eq!(parts.report.residual_history.len(), parts.report.iterations);
+    assert!(parts.report.residual < 1e-9, "converged: {:e}", parts.report.residual);
+    let rel = |a: f64, b: f64| ((a - b) / b).abs();
+    assert!(rel(parts.eccentricity_ratio, whole.eccentricity_ratio) < 1e-6, "{} vs {}", parts.eccentricity_ratio, whole.eccentricity_ratio);
+    assert!(rel(parts.reduced.k_n_per_m[1][1], whole.reduced.k_n_per_m[1][1]) < 1e-5);
+}
+
+fn speed_request(case: Case) -> Request {
+    Request { case, wanted: vec![StageId::SpeedSweep], frequency_ratios: Vec::new(), speeds_rpm: vec![2000.0, 3000.0, 4000.0] }
+}
+
+#[test]
+fn suspended_speed_sweep_points_resume_and_match_whole_ones() {
+    let req = speed_request(case(&[]));
+    let whole = Stages::new().run(&req, &NoCancel).unwrap().speed_sweep().unwrap();
+    let mut s = Stages::new();
+    let mut sweep_steps = 0;
+    let parts = loop {
+        match s.step(&req, &AlwaysSuspend).unwrap() {
+            Step::Done(o) => break o.speed_sweep().unwrap(),
+            Step::Pending { stage: StageId::SpeedSweep, .. } => sweep_steps += 1,
+            Step::Pending { .. } => {}
+        }
+        assert!(sweep_steps <= 3 * (MAX_SUSPENSIONS + 1), "suspensions are bounded");
+    };
+    assert!(sweep_steps > 3, "points were split: {sweep_steps} steps");
+    assert_eq!(s.runs(StageId::SpeedSweep), 1);
+    assert_eq!(parts.len(), 3);
+    for (a, b) in parts.iter().zip(whole.iter()) {
+        let (ea, eb) = (a.result.as_ref().unwrap().eccentricity_ratio, b.result.as_ref().unwrap().eccentricity_ratio);
+        assert!(((ea - eb) / eb).abs() < 1e-6, "{} rpm: {ea} vs {eb}", a.speed_rpm);
+    }
+}
+
+#[test]
+fn speed_sweep_runs_point_by_point_and_is_cached() {
+    let mut s = Stages::new();
+    let req = speed_request(case(&[]));
+    let mut steps = 0;
+    let out = loop {
+        steps += 1;
+        match s.step(&req, &NoCancel).unwrap() {
+            Step::Done(o) => break o,
+            Step::Pending { .. } => {}
+        }
+    };
+    // films, three sweep points, done: the sweep does not wait for the equilibrium at the case's speed.
+    assert_eq!(steps, 5);
+    assert_eq!(runs(&s), [1, 0, 0, 0, 0, 0, 1]);
+    let sweep = out.speed_sweep().unwrap();
+    assert_eq!(sweep.len(), 3);
+    let e: Vec<f64> = sweep.iter().map(|p| p.result.as_ref().unwrap().eccentricity_ratio).collect();
+    assert!(e[0] > e[1] && e[1] > e[2], "eccentricity falls with speed: {e:?}");
+    // The 4000 rpm point is the case's own solution.
+    let own = crate::bearing::solve_case(&req.case).unwrap();
+    assert!(((e[2] - own.eccentricity_ratio) / own.eccentricity_ratio).abs() < 1e-6, "{} vs {}", e[2], own.eccentricity_ratio);
+    // Cached; the case's speed is not an input of the sweep.
+    s.run(&req, &NoCancel).unwrap();
+    s.run(&speed_request(case(&["operating.speed_rpm=3000"])), &NoCancel).unwrap();
+    assert_eq!(s.runs(StageId::SpeedSweep), 1);
+}
+
+#[test]
+fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
+    let thd = |extra: &[&str]| {
+        let mut set = vec!["thermal.model=\"thd\""];
+        set.extend_from_slice(extra);
+        case(&set)
+    };
+    let mut s = Stages::new();
+    let mut req = Request::solution(thd(&[]));
+    // The loop runs one outer iteration per step.
+    let mut thermal_steps = 0;
+    let o = loop {
+        match s.step(&req, &NoCancel).unwrap() {
+            Step::Done(o) => break o,
+            Step::Pending { stage: StageId::Thermal, .. } => thermal_steps += 1,
+            Step::Pending { .. } => {}
+        }
+    };
+    assert_eq!(runs(&s), [1, 1, 1, 1, 1, 0, 0]);
+    let sol = o.solution().unwrap();
+    let t = sol.thermal.as_ref().expect("thermal results");
+    assert!(t.report.converged && t.t_max_film_c > 40.0);
+    assert_eq!(thermal_steps, t.report.outer_iterations, "one step per outer iteration");
+    assert!(thermal_steps > 2);
+    // The same state as the loop run in one go.
+    let mut m = BearingModel::new(&req.case).unwrap();
+    let whole = crate::bearing::solve_point(&mut m, &mut None, &req.case, None, &NoCancel).unwrap();
+    let w = whole.thermal.as_ref().unwrap();
+    assert!((w.t_max_film_c - t.t_max_film_c).abs() < 1e-3, "{} vs {}", w.t_max_film_c, t.t_max_film_c);
+    assert!(sol.pads.iter().all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
+    // A thermal setting reruns only the thermal stage (and those after it).
+    req.case = thd(&["thermal.convection_w_per_m2_k=150"]);
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [1, 1, 2, 2, 2, 0, 0]);
+    // The excitation ratio reruns only the reduction.
+    req.case = thd(&["thermal.convection_w_per_m2_k=150", "operating.excitation_ratio=0.5"]);
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [1, 1, 2, 2, 3, 0, 0]);
+}
+
+#[test]
+fn every_stage_reads_only_stages_registered_before_it() {
+    for (i, s) in StageId::ALL.iter().enumerate() {
+        assert_eq!(s.index(), i);
+        for n in s.needs() {
+            assert!(n.index() < i, "{s:?} reads {n:?}, registered after it");
+        }
+    }
+    // What a wanted stage pulls in: the reduction reads films, equilibrium, thermal (when it applies) and
+    // coefficients; the speed sweep only the films.
+    let needed = |w: &[StageId]| -> Vec<StageId> { Stages::needed(w).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect() };
+    use StageId::*;
+    assert_eq!(needed(&[Reduction]), vec![Films, Equilibrium, Thermal, Coefficients, Reduction]);
+    assert_eq!(needed(&[SpeedSweep]), vec![Films, SpeedSweep]);
+}
+
+#[test]
+fn a_stage_reads_only_what_it_declared_and_only_when_current() {
+    let mut s = Stages::new();
+    let req = Request::solution(case(&[]));
+    let refusal = |reader: StageId, s: &mut Stages| -> String {
+        let ctx = Ctx { slots: &mut s.slots, req: &req, reader };
+        match reader {
+            StageId::Films => ctx.output::<equilibrium::EquilibriumStage>().map(|_| ()),
+            StageId::Coefficients => ctx.output::<thermal::ThermalStage>().map(|_| ()),
+            _ => ctx.output::<coefficients::CoefficientsStage>().map(|_| ()),
+        }
+        .map_or_else(|e| e.to_string(), |()| "read".into())
+    };
+    // The films declare no upstream stage.
+    assert!(refusal(StageId::Films, &mut s).contains("not declared in NEEDS"));
+    // Declared, but not computed yet.
+    assert!(refusal(StageId::Reduction, &mut s).contains("not current"));
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(refusal(StageId::Reduction, &mut s), "read");
+    // The thermal stage does not apply to an isothermal case.
+    assert!(refusal(StageId::Coefficients, &mut s).contains("does not apply"));
+    // An edit that changes the coefficients' inputs makes the old output unreadable.
+    let edited = Request::solution(case(&["operating.load_n=8000"]));
+    let ctx = Ctx { slots: &mut s.slots, req: &edited, reader: StageId::Reduction };
+    assert!(ctx.output::<coefficients::CoefficientsStage>().is_err());
+}

@@ -1,0 +1,131 @@
+//! The thermal stage (THD cases): the thermal loop around the equilibrium ([`ThdRun`]), warm-started from
+//! the isothermal equilibrium, one outer iteration per poll. The pad solids and thermal systems
+//! ([`ThermalModel`]) are kept under the films and pad-mesh inputs they are built from.
+
+use std::sync::Arc;
+
+use crate::bearing::error::SolveError;
+use crate::bearing::job::assemble_thd_solution;
+use crate::bearing::progress::{Cancel, NoSuspend};
+use crate::bearing::solution::Solution;
+use crate::bearing::thermal::{ThdRun, ThermalModel, ThermalParams};
+use crate::model::{Case, Lubricant, MeshSpec, Operating, PadFilmBc, Thermal, ThermalModelKind};
+
+use super::equilibrium::{EquilibriumInputs, EquilibriumStage};
+use super::films::{install_structure, FilmsInputs, FilmsStage};
+use super::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
+
+/// Outer iterations a THD loop typically needs (for the progress fraction only).
+const THERMAL_ITERATIONS_EXPECTED: f64 = 10.0;
+
+/// What the pad solids and thermal systems are built from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PadSolidsInputs {
+    pub films: FilmsInputs,
+    pub pad_radial_elements: usize,
+    /// Whether the film is adiabatic to the pad (BC1: a pad without a solid is allowed).
+    pub bc1: bool,
+}
+
+/// The inputs of the THD solution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalInputs {
+    pub equilibrium: EquilibriumInputs,
+    pub solids: PadSolidsInputs,
+    pub specific_heat_j_per_kg_k: f64,
+    pub conductivity_w_per_m_k: f64,
+    pub supply_temperature_c: f64,
+    /// Every `[thermal]` value.
+    pub thermal: Thermal,
+}
+
+impl ThermalInputs {
+    /// Exhaustive over the case and its sub-structs (no `..`); `None` for an isothermal case.
+    #[must_use]
+    pub fn of(case: &Case) -> Option<Self> {
+        let Case { title: _, bearing: _, lubricant, operating, mesh, physics: _, thermal, hydraulics: _ } = case;
+        let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } = lubricant;
+        let Operating {
+            speed_rad_s: _,
+            load: _,
+            supply_temperature_c,
+            film_temperature_c: _,
+            injection_pressure_pa: _,
+            injection_temperature_c: _,
+            excitation_ratio: _, // the rest: EquilibriumInputs
+        } = operating;
+        let MeshSpec {
+            fidelity: _,
+            circumferential_elements: _,
+            axial_elements: _,
+            orifice_elements: _,
+            half_model: _,
+            pad_radial_elements,
+            max_nodes: _,
+        } = mesh;
+        // Every field is read (kept whole below).
+        let Thermal {
+            model,
+            pad_film_bc,
+            convection_w_per_m2_k: _,
+            ambient_temperature_c: _,
+            pad_conductivity_w_per_m_k: _,
+            carry_over: _,
+            inlet_temperature_c: _,
+            journal_temperature_c: _,
+            cavitated_film: _,
+        } = thermal;
+        (*model == ThermalModelKind::Thd).then(|| Self {
+            equilibrium: EquilibriumInputs::of(case),
+            solids: PadSolidsInputs {
+                films: FilmsInputs::of(case),
+                pad_radial_elements: *pad_radial_elements,
+                bc1: matches!(pad_film_bc, PadFilmBc::Bc1),
+            },
+            specific_heat_j_per_kg_k: *specific_heat_j_per_kg_k,
+            conductivity_w_per_m_k: *conductivity_w_per_m_k,
+            supply_temperature_c: *supply_temperature_c,
+            thermal: *thermal,
+        })
+    }
+}
+
+#[derive(Default)]
+pub struct ThermalStage {
+    solids: Cached<PadSolidsInputs, ThermalModel>,
+    /// A loop under way, under the inputs it works towards (a failed run is dropped).
+    run: Cached<ThermalInputs, ThdRun>,
+}
+
+impl Stage for ThermalStage {
+    const LABEL: &'static str = "thermal (THD) loop";
+    const NEEDS: &'static [StageId] = &[StageId::Films, StageId::Equilibrium];
+    type Inputs = ThermalInputs;
+    type Output = Arc<Solution>;
+
+    fn inputs(req: &Request) -> Option<ThermalInputs> {
+        ThermalInputs::of(&req.case)
+    }
+
+    fn poll(&mut self, inputs: &ThermalInputs, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
+        let case = ctx.case().clone();
+        let start = ctx.output::<EquilibriumStage>()?.coordinates.clone();
+        let model = ctx.output_mut::<FilmsStage>()?;
+        install_structure(model, &case)?;
+        if self.solids.get(&inputs.solids).is_none() {
+            self.solids.put(inputs.solids.clone(), ThermalModel::new(&case, model)?);
+        }
+        let tm = self.solids.get_mut(&inputs.solids).ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
+        let mut run = match self.run.take(inputs) {
+            Some(run) => run,
+            None => ThdRun::new(model, tm, &case, ThermalParams::default(), Some(&start)),
+        };
+        let Some(state) = run.step(model, tm, &case, &NoSuspend(cancel))? else {
+            #[allow(clippy::cast_precision_loss)]
+            let fraction = (run.outer_iterations() as f64 / THERMAL_ITERATIONS_EXPECTED).min(0.95);
+            self.run.put(inputs.clone(), run);
+            return Ok(Progress::Suspended(fraction));
+        };
+        Ok(Progress::Done(Arc::new(assemble_thd_solution(model, &case, &state))))
+    }
+}

@@ -1,0 +1,88 @@
+//! `tiltpad frf`: the controllable bearing's frequency responses over a band (model.md §8, §9) — G1, G2,
+//! G3, G per port and force component, and with a rig the calibrated-shaker chain — as CSV and JSON.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+use serde_json::json;
+
+use crate::bearing::frf_job::{band, FrfModel};
+use crate::io::write_file;
+use crate::model::Case;
+use crate::scene::frf::FrfCurves;
+
+use super::read_case;
+use super::rows::announce;
+
+/// The band and where the curves go.
+pub struct FrfArgs<'a> {
+    pub case: &'a Path,
+    pub set: &'a [String],
+    pub from_hz: f64,
+    pub to_hz: f64,
+    pub points: usize,
+    /// Control amplitude to check against the valve's small-signal range [V].
+    pub amplitude_v: Option<f64>,
+    pub csv: Option<PathBuf>,
+    pub json: Option<PathBuf>,
+}
+
+/// Port names (`A`, `B`) of a case, in its order.
+#[must_use]
+pub fn port_names(case: &Case) -> Vec<&'static str> {
+    case.hydraulics.as_ref().map_or_else(Vec::new, |h| h.ports.iter().map(|p| if p.sign > 0.0 { "A" } else { "B" }).collect())
+}
+
+/// Computes and writes the curves.
+///
+/// # Errors
+/// Bad band, an invalid case or one without `[hydraulics]`, a failed equilibrium, or an unwritable output.
+pub fn run(args: &FrfArgs<'_>) -> Result<()> {
+    if !(args.from_hz >= 0.0 && args.to_hz > args.from_hz && args.to_hz.is_finite()) {
+        bail!("--from {} --to {}: need 0 ≤ from < to", args.from_hz, args.to_hz);
+    }
+    if !(2..=100_000).contains(&args.points) {
+        bail!("--points {}: allowed 2 to 100000", args.points);
+    }
+    let (_, case) = read_case(args.case, args.set)?;
+    let model = FrfModel::new(&case).with_context(|| format!("solving {}", args.case.display()))?;
+    let freqs = band(args.from_hz, args.to_hz, args.points);
+    let sweep = model.sweep(&case, &freqs)?;
+    let h = case.hydraulics.as_ref().context("no [hydraulics]")?;
+    let title = format!(
+        "{} — {:.0} rpm, ε = {:.3}, supply {:.0} bar",
+        case.title,
+        case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU,
+        model.eccentricity_ratio,
+        h.supply_pressure_pa / 1e5
+    );
+    let mut curves = FrfCurves::new(&sweep, &port_names(&case), title);
+    if let Some(a) = args.amplitude_v {
+        curves.check_signal(a, 0.1 * h.valve.full_scale_v);
+    }
+    eprintln!(
+        "{}: equilibrium {:.3} s, linearisation {:.4} s, {} frequencies {:.4} s",
+        curves.title, model.report.seconds, model.linearise_seconds, args.points, sweep.seconds
+    );
+    for n in &curves.notes {
+        eprintln!("note: {n}");
+    }
+    if args.csv.is_none() && args.json.is_none() {
+        print!("{}", curves.csv());
+    }
+    if let Some(p) = &args.csv {
+        write_file(p, curves.csv().as_bytes())?;
+        announce(p);
+    }
+    if let Some(p) = &args.json {
+        let doc = json!({
+            "curves": curves,
+            "seconds": { "equilibrium": model.report.seconds, "linearisation": model.linearise_seconds, "frf": sweep.seconds },
+        });
+        let mut text = serde_json::to_string_pretty(&doc)?;
+        text.push('\n');
+        write_file(p, text.as_bytes())?;
+        announce(p);
+    }
+    Ok(())
+}
