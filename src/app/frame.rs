@@ -195,7 +195,8 @@ impl WorkbenchApp {
             View::Fields => self.fields_ui(ui),
             View::Coefficients => self.coefficients_ui(ui),
             View::Frf => self.frf_ui(ui),
-            v => placeholders::placeholder_ui(ui, v),
+            View::Rotor => super::views::rotor_view::rotor_ui(ui, &mut self.rotor),
+            v @ View::PadDeformation => placeholders::placeholder_ui(ui, v),
         }
     }
 

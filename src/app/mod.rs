@@ -19,6 +19,7 @@ pub mod editor;
 pub mod files;
 mod frame;
 pub mod presets;
+pub mod rotor_worker;
 pub mod state;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
@@ -79,6 +80,7 @@ pub struct WorkbenchApp {
     dragging: bool,
     field_cache: FieldCache,
     pub frf: views::frf_view::FrfView,
+    pub rotor: views::rotor_view::RotorView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -128,6 +130,7 @@ impl WorkbenchApp {
             dragging: false,
             field_cache: FieldCache::default(),
             frf: views::frf_view::FrfView::default(),
+            rotor: views::rotor_view::RotorView::default(),
             pending: None,
             allow_close: false,
             notice: None,

@@ -7,3 +7,4 @@ pub mod field_view;
 pub mod frf_view;
 pub mod placeholders;
 pub mod results_panel;
+pub mod rotor_view;

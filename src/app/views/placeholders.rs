@@ -22,13 +22,7 @@ pub fn placeholder_text(view: View) -> Option<(&'static str, &'static str)> {
              (acoustic modes) and film, G = F/u = G1·G2·G3, magnitude and phase against frequency (model.md §8), \
              with the measured extra phase lag the model does not contain stated beside it.",
         )),
-        View::Rotor => Some((
-            "Rotor — needs the rotor–bearing model",
-            "Will show the rotor–bearing system: Campbell diagram and stability map (eigenvalues against speed, \
-             logarithmic decrement, onset of instability) and the unbalance response with the API 617 limit, \
-             using the full or the reduced bearing coefficients (model.md §10).",
-        )),
-        View::Bearing | View::Fields | View::Coefficients => None,
+        View::Bearing | View::Fields | View::Coefficients | View::Rotor => None,
     }
 }
 
