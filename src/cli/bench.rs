@@ -306,6 +306,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     let _ = writeln!(md, "\nFitted t ∝ nodes^a over a {range:.0}× range: **a = {exponent:.2}** (sparse Cholesky of a 2-D grid with nested-dissection-like ordering grows as n^1.5 at worst; the coupled Newton needs a nearly constant number of film solves).");
     md.push_str(&super::bench_batch::section(root, repeats.min(3))?);
     md.push_str(&super::bench_frf::section(root, repeats)?);
+    md.push_str(&super::bench_rotor::section(root, repeats.min(3))?);
     let _ = writeln!(
         md,
         "\n## Notes\n\n\

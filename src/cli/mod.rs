@@ -15,6 +15,8 @@ mod bench_batch;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_frf;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_rotor;
+#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
 mod convergence_map;
@@ -198,7 +200,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `rotor`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -346,7 +348,8 @@ pub fn run(command: Command) -> Result<()> {
         Command::Bench { repeats, root, only } => match only.as_deref() {
             None => bench::run(&root, repeats.max(1)),
             Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf"),
+            Some("rotor") => bench::replace_section(&root, "## Rotor–bearing analysis", &bench_rotor::section(&root, repeats.max(1))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf, rotor"),
         },
     }
 }

@@ -51,7 +51,11 @@ pub struct AnalysisReport {
     pub bearing_solves: usize,
     pub eigen_solutions: usize,
     pub system_dofs: usize,
+    /// Wall time of the whole analysis, and the parts spent in bearing solves and in eigen-solutions
+    /// (sweep and onset bisection) [s].
     pub seconds: f64,
+    pub bearing_seconds: f64,
+    pub eigen_seconds: f64,
     pub warnings: Vec<String>,
 }
 
@@ -115,10 +119,14 @@ impl Analysis {
         let Some(&omega) = self.params.speeds_rad_s.get(self.done.len()) else {
             return Ok(Step::Finished);
         };
+        let t0 = Instant::now();
         let coeffs = self.bearings.at(omega)?;
+        let t1 = Instant::now();
+        self.report.bearing_seconds += t1.duration_since(t0).as_secs_f64();
         let sys = assemble(&self.shaft, &self.bearings.nodes, &coeffs, omega);
         self.report.system_dofs = self.report.system_dofs.max(sys.n_dofs());
         let modes = damped_modes(&sys, self.shaft.n_nodes)?;
+        self.report.eigen_seconds += t1.elapsed().as_secs_f64();
         self.report.eigen_solutions += 1;
         // the response uses the synchronously reduced bearings (identical to the full system at Ω)
         let orbits = if self.rotor.unbalances.is_empty() || omega == 0.0 { Vec::new() } else { response(&sys, &self.rotor.unbalances, omega, &self.nodes)? };
@@ -135,8 +143,17 @@ impl Analysis {
         let sweep: Vec<SpeedPoint> = self.done.iter().map(|r| r.point.clone()).collect();
         let nodes = self.bearings.nodes.clone();
         let bearings = &mut self.bearings;
-        let mut provider = |w: f64| bearings.at(w);
+        let mut bearing_seconds = 0.0;
+        let mut provider = |w: f64| {
+            let t = Instant::now();
+            let c = bearings.at(w);
+            bearing_seconds += t.elapsed().as_secs_f64();
+            c
+        };
+        let t = Instant::now();
         let onset = onset(&self.shaft, &nodes, &mut provider, &sweep, self.params.onset_tol)?;
+        self.report.bearing_seconds += bearing_seconds;
+        self.report.eigen_seconds += t.elapsed().as_secs_f64() - bearing_seconds;
         if let Some(o) = onset {
             self.report.eigen_solutions += o.probes;
         } else if sweep.first().is_some_and(|p| p.min_log_dec() <= 0.0) {
