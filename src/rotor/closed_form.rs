@@ -23,7 +23,7 @@ use super::element::{BeamSection, BeamTheory};
 use super::stability::{modes_at, onset, SpeedPoint};
 use crate::model::rotor::{CoefficientModel, Disk, Rotor};
 
-fn uniform(l: f64, d: f64, n: usize, density: f64, youngs: f64, theory: BeamTheory) -> Rotor {
+pub(super) fn uniform(l: f64, d: f64, n: usize, density: f64, youngs: f64, theory: BeamTheory) -> Rotor {
     #[allow(clippy::cast_precision_loss)]
     let le = l / n as f64;
     let s = BeamSection { length_m: le, outer_diameter_m: d, inner_diameter_m: 0.0, density_kg_per_m3: density, youngs_modulus_pa: youngs, poisson_ratio: 0.3 };

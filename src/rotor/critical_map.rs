@@ -77,26 +77,12 @@ pub fn bearing_stiffness_curves(bearings: &mut BearingSet, speeds: &[f64]) -> Re
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::rotor::{CoefficientModel, Rotor};
-    use crate::rotor::element::{BeamSection, BeamTheory};
+    use crate::model::rotor::Rotor;
+    use crate::rotor::element::BeamTheory;
     use std::f64::consts::PI;
 
     fn beam(n: usize) -> Rotor {
-        #[allow(clippy::cast_precision_loss)]
-        let s = BeamSection { length_m: 1.0 / n as f64, outer_diameter_m: 0.05, inner_diameter_m: 0.0, density_kg_per_m3: 7800.0, youngs_modulus_pa: 2e11, poisson_ratio: 0.3 };
-        Rotor {
-            title: String::new(),
-            representative: false,
-            theory: BeamTheory::EulerBernoulli,
-            coefficients: CoefficientModel::Reduced,
-            elements: vec![s; n],
-            disks: Vec::new(),
-            unbalances: Vec::new(),
-            bearings: Vec::new(),
-            supports: Vec::new(),
-            damping: None,
-            operating_range: None,
-        }
+        crate::rotor::closed_form::uniform(1.0, 0.05, n, 7800.0, 2e11, BeamTheory::EulerBernoulli)
     }
 
     #[test]
