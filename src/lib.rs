@@ -42,6 +42,7 @@ pub mod io;
 pub mod mesh;
 pub mod model;
 pub mod physics;
+pub mod rotor;
 pub mod scene;
 pub mod study;
 pub mod cli;

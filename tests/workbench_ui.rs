@@ -199,11 +199,8 @@ fn coefficient_view_against_speed_runs_a_background_sweep() {
 }
 
 #[test]
-fn placeholder_views_say_what_they_will_show() {
-    let mut h = solved_app(None, |p| p.view = View::Rotor);
-    h.get_by_label_contains("Campbell diagram");
-    h.get_by_label("Pad deformation").click();
-    h.run();
+fn views_without_their_inputs_say_what_is_missing() {
+    let mut h = solved_app(None, |p| p.view = View::PadDeformation);
     h.get_by_label_contains("bending modes");
     h.get_by_label("FRF").click();
     h.run();
@@ -421,4 +418,41 @@ fn the_edited_case_and_the_view_survive_a_restart() {
     assert_eq!(app.doc.file().operating.speed_rpm, 7500.0);
     assert_eq!(app.doc.name, "compressor-bearing.toml");
     assert!(app.doc.is_dirty(), "the restored edit is still unsaved");
+}
+
+/// Steps frames until the rotor view's analysis has finished.
+fn wait_for_rotor(h: &mut Harness<'_, WorkbenchApp>) {
+    let start = Instant::now();
+    h.run_steps(2);
+    while !(h.state().rotor.is_idle() && h.state().rotor.result().is_some()) {
+        assert!(start.elapsed() < Duration::from_secs(300), "rotor analysis did not finish");
+        std::thread::sleep(Duration::from_millis(10));
+        h.step();
+    }
+    h.run_steps(3);
+}
+
+#[test]
+fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_onset() {
+    let mut h = solved_app(None, |p| p.view = View::Rotor);
+    wait_for_rotor(&mut h);
+    h.get_by_label_contains("representative shaft, not the thesis' rotor");
+    let full = h.state().rotor.result().unwrap().clone();
+    let onset_full = full.onset.as_ref().expect("an onset inside the view's sweep").speed_rad_s * 30.0 / std::f64::consts::PI;
+    h.get_by_label_contains(&format!("Onset of instability: {onset_full:.0} rpm"));
+    assert!(!full.critical_speeds.is_empty(), "the 1× line crosses a forward mode");
+    snapshot(&mut h, "rotor_campbell");
+    h.get_by_label("Stability map").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_stability");
+    h.get_by_label("Mode shapes").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_mode_shape");
+    h.get_by_label("Unbalance response").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_unbalance");
+    h.get_by_label("reduced 2×2").click();
+    wait_for_rotor(&mut h);
+    let reduced = h.state().rotor.result().unwrap().onset.as_ref().map_or(f64::INFINITY, |o| o.speed_rad_s * 30.0 / std::f64::consts::PI);
+    assert!(reduced > onset_full, "reduced coefficients overestimate the stable range: full {onset_full:.0}, reduced {reduced:.0} rpm");
 }

@@ -5,7 +5,7 @@ use egui::{Color32, RichText, Ui};
 use super::editor::editor_ui;
 use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
-use super::views::{bearing_view, coefficients_view, deformation_view, field_view, frf_view, placeholders, results_panel};
+use super::views::{bearing_view, coefficients_view, deformation_view, field_view, frf_view, results_panel};
 use super::{Pending, Status, WorkbenchApp};
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
@@ -201,7 +201,7 @@ impl WorkbenchApp {
                     ui.label("Waiting for the first result…");
                 }
             },
-            v @ View::Rotor => placeholders::placeholder_ui(ui, v),
+            View::Rotor => super::views::rotor_view::rotor_ui(ui, &mut self.rotor),
         }
     }
 

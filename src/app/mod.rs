@@ -1,8 +1,8 @@
 //! The workbench: an eframe app that edits a case, solves it in the background and shows the result.
 //!
 //! Layout: a menu bar; the editor on the left; the results panel on the right; a status bar; the views
-//! (bearing cross-section, pad fields with flowlines, coefficients, and placeholders for what later
-//! versions add) in the centre.
+//! (bearing cross-section, pad fields with flowlines, coefficients, pad deformation, FRFs, rotor) in the
+//! centre.
 //!
 //! State is split by lifetime: [`state::Persisted`] (the case and view settings, saved by eframe between
 //! sessions) and the runtime state in [`WorkbenchApp`] (worker, shown result, caches, dialogs).
@@ -19,6 +19,7 @@ pub mod editor;
 pub mod files;
 mod frame;
 pub mod presets;
+pub mod rotor_worker;
 pub mod state;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
@@ -82,6 +83,7 @@ pub struct WorkbenchApp {
     field_cache: FieldCache,
     pub frf: views::frf_view::FrfView,
     pub deformation: views::deformation_view::DeformationView,
+    pub rotor: views::rotor_view::RotorView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -132,6 +134,7 @@ impl WorkbenchApp {
             field_cache: FieldCache::default(),
             frf: views::frf_view::FrfView::default(),
             deformation: views::deformation_view::DeformationView::default(),
+            rotor: views::rotor_view::RotorView::default(),
             pending: None,
             allow_close: false,
             notice: None,

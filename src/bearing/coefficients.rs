@@ -75,7 +75,7 @@ fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
 /// Pad coordinates that take part in the condensation: those connected to the journal through non-zero
 /// stiffness, damping or inertia couplings (directly or through other pad coordinates). The others — the
 /// coordinates of a floating pad, whose film carries nothing — are decoupled and dropped.
-fn active_pad_dofs(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>) -> Vec<usize> {
+pub(crate) fn active_pad_dofs(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>) -> Vec<usize> {
     let n = k.nrows();
     let scale = [k, c, m].iter().map(|a| a.iter().fold(0.0_f64, |s, v| s.max(v.abs()))).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE);
     let coupled = |i: usize, j: usize| [k, c, m].iter().any(|a| a[(i, j)].abs() > 1e-14 * scale || a[(j, i)].abs() > 1e-14 * scale);

@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -17,6 +17,8 @@ mod bench_flex;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench_frf;
 #[cfg(not(target_arch = "wasm32"))]
+mod bench_rotor;
+#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
 #[cfg(not(target_arch = "wasm32"))]
 mod convergence_map;
@@ -24,6 +26,8 @@ mod convergence_map;
 pub mod frf;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod modes;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod rotor;
 #[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
@@ -164,6 +168,23 @@ pub enum Command {
         #[arg(long, value_name = "OUT")]
         csv: Option<PathBuf>,
     },
+    /// Rotor–bearing analysis over a speed range: damped modes, onset, critical speeds, unbalance response.
+    Rotor {
+        /// Rotor file (TOML; bearing cases relative to it).
+        rotor: PathBuf,
+        /// Spin speeds, rpm: `FROM:TO:N`.
+        #[arg(long, value_name = "FROM:TO:N")]
+        speeds: String,
+        /// Override the rotor's bearing coefficients: `full` or `reduced`.
+        #[arg(long, value_parser = ["full", "reduced"])]
+        coefficients: Option<String>,
+        /// Whole result as JSON (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// One row per speed as CSV (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+    },
     /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
     /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
     Frf {
@@ -202,7 +223,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`, `flex`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`, `rotor`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -340,12 +361,20 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
+        Command::Rotor { rotor, speeds, coefficients, json, csv } => rotor::run(&rotor::RotorArgs {
+            rotor: &rotor,
+            speeds: &speeds,
+            coefficients: coefficients.map(|c| if c == "full" { crate::model::rotor::CoefficientModel::Full } else { crate::model::rotor::CoefficientModel::Reduced }),
+            json,
+            csv,
+        }),
         Command::ConvergenceMap { quick, step_deg, csv, update_doc, root } => convergence_map::run(&root, quick, step_deg, csv.as_deref(), update_doc),
         Command::Bench { repeats, root, only } => match only.as_deref() {
             None => bench::run(&root, repeats.max(1)),
             Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
             Some("flex") => bench::replace_section(&root, "## Flexible pads", &bench_flex::section(&root, repeats.clamp(1, 3))?),
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex"),
+            Some("rotor") => bench::replace_section(&root, "## Rotor–bearing analysis", &bench_rotor::section(&root, repeats.max(1))?),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor"),
         },
     }
 }

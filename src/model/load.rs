@@ -45,7 +45,7 @@ pub fn from_table(table: toml::Table) -> Result<CaseFile, CaseError> {
 }
 
 /// Turns a serde message into a typed error with a dotted key.
-fn schema_error(path: &str, message: &str) -> CaseError {
+pub(crate) fn schema_error(path: &str, message: &str) -> CaseError {
     let path = path.trim_start_matches('.').replace(".[", "[").replace("[", ".").replace(']', "");
     let path = if path == "." { String::new() } else { path };
     let join = |leaf: &str| if path.is_empty() { leaf.to_string() } else { format!("{path}.{leaf}") };

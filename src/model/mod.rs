@@ -13,6 +13,7 @@ pub mod file;
 pub mod hydraulics;
 pub mod load;
 pub mod resolve;
+pub mod rotor;
 pub mod schema;
 
 pub use case::{

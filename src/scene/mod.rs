@@ -9,6 +9,7 @@
 //! - [`frf`]: Bode curves of the controllable bearing (G1, G2, G3, G, the rig's shaker chain), CSV.
 //! - [`outline`]: the bearing cross-section to scale with an exaggerated clearance.
 //! - [`plots`]: reduced coefficients against frequency ratio or speed, the full-matrix table.
+//! - [`rotor`]: Campbell diagram, stability map, mode shapes, unbalance Bode and the sketch of a rotor analysis.
 //! - [`request`]: the stages the open views need, joined into the request the app sends.
 //! - [`summary`]: the results panel's rows in display units.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
@@ -28,4 +29,5 @@ pub mod frf;
 pub mod outline;
 pub mod plots;
 pub mod request;
+pub mod rotor;
 pub mod summary;

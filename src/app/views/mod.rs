@@ -6,5 +6,5 @@ pub mod coefficients_view;
 pub mod deformation_view;
 pub mod field_view;
 pub mod frf_view;
-pub mod placeholders;
 pub mod results_panel;
+pub mod rotor_view;

@@ -1,0 +1,359 @@
+//! The rotor view (`View::Rotor`): a shipped rotor (its bearing cases at preview fidelity) analysed over a
+//! speed range in the background ([`crate::app::rotor_worker`]), shown as a sketch of the rotor and, by tab,
+//! the Campbell diagram (1× line, critical speeds), the stability map (log dec, onset marked), the mode
+//! shapes (deflected shaft, forward blue / backward orange, exaggerated) and the unbalance Bode plot with
+//! the API 617 line. Full or synchronously reduced bearing coefficients are selectable.
+//!
+//! Drawables come from [`crate::scene::rotor`]; nothing here computes physics. The sketch does not edit
+//! the rotor (the rotor file does).
+
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Stroke, Ui};
+use egui_plot::{HLine, Legend, Line, LineStyle, Plot, Points, VLine};
+
+use crate::app::presets::PRESETS;
+use crate::app::rotor_worker::{RotorEvent, RotorRunner};
+use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
+use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
+use crate::rotor::eigen::Whirl;
+use crate::scene::rotor::{mode_curves, mode_shape, sketch, unbalance_bode, RotorSketch, SketchItem};
+
+/// Shipped rotors: file name and text (bearing cases are the shipped presets named by file name).
+pub const ROTOR_PRESETS: [(&str, &str); 1] = [("compressor-rotor.toml", include_str!("../../../cases/rotors/compressor-rotor.toml"))];
+
+/// Speeds analysed [rpm]: from `FIRST_RPM` to `MAX_FACTOR` × the top of the operating range.
+const FIRST_RPM: f64 = 1000.0;
+const MAX_FACTOR: f64 = 1.3;
+const SPEEDS: usize = 41;
+/// Modes per whirl direction on the Campbell diagram and the stability map.
+const RANKS: usize = 4;
+
+const FORWARD: Color32 = Color32::from_rgb(0, 114, 178);
+const BACKWARD: Color32 = Color32::from_rgb(230, 159, 0);
+const LIMIT: Color32 = Color32::from_rgb(213, 94, 0);
+
+/// The plot shown under the sketch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RotorTab {
+    #[default]
+    Campbell,
+    Stability,
+    ModeShape,
+    Unbalance,
+}
+
+impl RotorTab {
+    const ALL: [Self; 4] = [Self::Campbell, Self::Stability, Self::ModeShape, Self::Unbalance];
+    fn label(self) -> &'static str {
+        match self {
+            Self::Campbell => "Campbell diagram",
+            Self::Stability => "Stability map",
+            Self::ModeShape => "Mode shapes",
+            Self::Unbalance => "Unbalance response",
+        }
+    }
+}
+
+/// The view's runtime state (not persisted).
+pub struct RotorView {
+    pub preset: usize,
+    pub coefficients: CoefficientModel,
+    pub tab: RotorTab,
+    /// Speed point and mode (ascending frequency) of the mode-shape tab.
+    pub speed_index: usize,
+    pub mode_index: usize,
+    runner: Option<RotorRunner>,
+    /// What was submitted: (preset, coefficients), the rotor, and the result (or why it failed).
+    submitted: Option<(usize, CoefficientModel)>,
+    rotor: Option<Result<Rotor, String>>,
+    result: Option<Result<Arc<AnalysisResult>, String>>,
+    progress: Option<(usize, usize)>,
+}
+
+impl Default for RotorView {
+    fn default() -> Self {
+        Self { preset: 0, coefficients: CoefficientModel::Full, tab: RotorTab::Campbell, speed_index: 0, mode_index: 0, runner: None, submitted: None, rotor: None, result: None, progress: None }
+    }
+}
+
+/// The shipped rotor `preset` with its bearing cases at preview fidelity.
+///
+/// # Errors
+/// The rotor file's validation error (a shipped file: a bug).
+pub fn preset_rotor(preset: usize) -> Result<Rotor, String> {
+    let (_, text) = ROTOR_PRESETS.get(preset).ok_or("no such rotor preset")?;
+    let mut file = parse_rotor_file(text).map_err(|e| e.to_string())?;
+    for b in &mut file.rotor.bearing {
+        if b.case.is_some() {
+            b.set.push("mesh.fidelity=\"preview\"".into());
+        }
+    }
+    let read = |name: &str| {
+        let base = name.rsplit('/').next().unwrap_or(name);
+        PRESETS.iter().find(|(n, _)| *n == base).map(|(_, t)| (*t).to_string()).ok_or_else(|| format!("{name}: not a shipped case"))
+    };
+    file.resolve(&read).map_err(|e| e.to_string())
+}
+
+/// The view's speeds [rad/s] for `rotor`.
+fn speeds(rotor: &Rotor) -> Vec<f64> {
+    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| b * 30.0 / std::f64::consts::PI) * MAX_FACTOR;
+    #[allow(clippy::cast_precision_loss)]
+    (0..SPEEDS).map(|i| (FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64) * std::f64::consts::PI / 30.0).collect()
+}
+
+impl RotorView {
+    /// Nothing is being analysed.
+    #[must_use]
+    pub fn is_idle(&self) -> bool {
+        self.runner.as_ref().is_none_or(|r| !r.busy())
+    }
+
+    /// The finished analysis, if any.
+    #[must_use]
+    pub fn result(&self) -> Option<&AnalysisResult> {
+        self.result.as_ref().and_then(|r| r.as_ref().ok()).map(AsRef::as_ref)
+    }
+
+    /// Starts the analysis when the preset or the coefficient model changed; takes in the runner's events.
+    fn drive(&mut self, ctx: &egui::Context) {
+        let wanted = (self.preset, self.coefficients);
+        if self.submitted != Some(wanted) {
+            self.submitted = Some(wanted);
+            let rotor = preset_rotor(self.preset).map(|mut r| {
+                r.coefficients = self.coefficients;
+                r
+            });
+            let runner = self.runner.get_or_insert_with(|| RotorRunner::new(ctx.clone()));
+            if let Ok(r) = &rotor {
+                runner.start(r, AnalysisParams::new(speeds(r)));
+            }
+            self.rotor = Some(rotor);
+            (self.result, self.progress) = (None, None);
+        }
+        let Some(runner) = self.runner.as_mut() else { return };
+        for e in runner.poll() {
+            match e {
+                RotorEvent::Progress { done, of } => self.progress = Some((done, of)),
+                RotorEvent::Done(r) => (self.result, self.progress) = (Some(r), None),
+            }
+        }
+    }
+}
+
+/// Draws the view.
+pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
+    view.drive(ui.ctx());
+    ui.horizontal(|ui| {
+        let label = ui.label("Rotor");
+        egui::ComboBox::from_id_salt("rotor-preset")
+            .selected_text(ROTOR_PRESETS[view.preset].0)
+            .show_ui(ui, |ui| {
+                for (i, (name, _)) in ROTOR_PRESETS.iter().enumerate() {
+                    ui.selectable_value(&mut view.preset, i, *name);
+                }
+            })
+            .response
+            .labelled_by(label.id);
+        ui.separator();
+        ui.label("Bearings");
+        ui.selectable_value(&mut view.coefficients, CoefficientModel::Full, "full coefficients").on_hover_text("Journal and pad coordinates with the pads' inertia (no reduction).");
+        ui.selectable_value(&mut view.coefficients, CoefficientModel::Reduced, "reduced 2×2").on_hover_text("Synchronously reduced (ω = Ω): overestimates the stable range.");
+    });
+    let rotor = match &view.rotor {
+        Some(Ok(r)) => r.clone(),
+        Some(Err(e)) => {
+            ui.label(RichText::new(format!("Cannot read the rotor: {e}")).color(LIMIT));
+            return;
+        }
+        None => return,
+    };
+    let title = if rotor.representative { format!("{} — representative shaft, not the thesis' rotor", rotor.title) } else { rotor.title.clone() };
+    ui.label(RichText::new(format!("{title} — {:.0} kg", rotor.mass())).strong());
+    sketch_ui(ui, &sketch(&rotor));
+    let result = match &view.result {
+        Some(Ok(r)) => r.clone(),
+        Some(Err(e)) => {
+            ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT));
+            return;
+        }
+        None => {
+            ui.horizontal(|ui| {
+                ui.spinner();
+                let (done, of) = view.progress.unwrap_or((0, SPEEDS));
+                ui.label(format!("Analysing: speed {done} of {of} (bearings solved at each speed, preview fidelity)…"));
+            });
+            return;
+        }
+    };
+    ui.horizontal(|ui| {
+        for t in RotorTab::ALL {
+            ui.selectable_value(&mut view.tab, t, t.label());
+        }
+    });
+    summary_ui(ui, &result);
+    match view.tab {
+        RotorTab::Campbell | RotorTab::Stability => curves_ui(ui, &result, &rotor, view.tab),
+        RotorTab::ModeShape => mode_shape_ui(ui, view, &result, &rotor),
+        RotorTab::Unbalance => unbalance_ui(ui, &result),
+    }
+}
+
+fn summary_ui(ui: &mut Ui, r: &AnalysisResult) {
+    let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
+    let onset = r.onset.as_ref().map_or_else(|| "none in the sweep".to_string(), |o| format!("{:.0} rpm", rpm(o.speed_rad_s)));
+    let critical: Vec<String> = r.critical_speeds.iter().map(|c| format!("{:.0}", rpm(c.speed_rad_s))).collect();
+    ui.label(format!(
+        "Onset of instability: {onset}. 1× critical speeds: {} rpm. {} bearing solves, {} eigen-solutions, {} DOFs.",
+        if critical.is_empty() { "none".to_string() } else { critical.join(", ") },
+        r.report.bearing_solves,
+        r.report.eigen_solutions,
+        r.report.system_dofs
+    ));
+    for w in &r.report.warnings {
+        ui.label(RichText::new(w).color(LIMIT));
+    }
+}
+
+fn whirl_color(w: Whirl) -> Color32 {
+    match w {
+        Whirl::Forward => FORWARD,
+        Whirl::Backward => BACKWARD,
+    }
+}
+
+fn plot(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
+    let width = ui.available_width().min(ui.clip_rect().width());
+    Plot::new(id.to_string()).height(height).width(width).allow_scroll(false).legend(Legend::default().position(egui_plot::Corner::LeftTop))
+}
+
+fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
+    let c = mode_curves(r, rotor, RANKS);
+    let height = (ui.available_height() - 10.0).max(160.0);
+    let campbell = tab == RotorTab::Campbell;
+    let (id, y_label, curves) = if campbell { ("rotor_campbell", "damped natural frequency [Hz]", &c.frequency_hz) } else { ("rotor_stability", "logarithmic decrement [–]", &c.log_dec) };
+    plot(id, ui, height).x_axis_label("speed [rpm]").y_axis_label(y_label).show(ui, |p| {
+        for curve in curves {
+            let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
+            p.line(Line::new(curve.name.clone(), curve.points.clone()).color(whirl_color(curve.whirl)).style(style).width(1.6));
+        }
+        if let Some([a, b]) = c.operating_rpm {
+            for x in [a, b] {
+                p.vline(VLine::new("operating range", x).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
+            }
+        }
+        if campbell {
+            p.line(Line::new("1×", c.one_x.to_vec()).color(Color32::from_gray(120)).style(LineStyle::dashed_dense()));
+            p.points(Points::new("1× critical speeds", c.critical.clone()).radius(5.0).color(LIMIT));
+        } else {
+            p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
+            if let Some(x) = c.onset_rpm {
+                p.vline(VLine::new(format!("onset {x:.0} rpm"), x).color(LIMIT).width(2.0));
+            }
+        }
+    });
+}
+
+fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &Rotor) {
+    let last = r.speeds.len().saturating_sub(1);
+    view.speed_index = view.speed_index.min(last);
+    let index_rpm: Vec<f64> = (0..r.speeds.len()).map(|i| r.speeds[i].point.speed_rad_s * 30.0 / std::f64::consts::PI).collect();
+    ui.horizontal(|ui| {
+        ui.add(egui::Slider::new(&mut view.speed_index, 0..=last).custom_formatter(|v, _| format!("{:.0} rpm", index_rpm.get(nearest_index(v)).copied().unwrap_or(0.0))).text("speed"));
+        let modes = &r.speeds[view.speed_index].point.modes.modes;
+        view.mode_index = view.mode_index.min(modes.len().saturating_sub(1));
+        let describe = |i: usize| modes.get(i).map_or_else(String::new, |m| format!("{} {:.1} Hz, δ {:.3}", if m.whirl == Whirl::Forward { "forward" } else { "backward" }, m.frequency_hz(), m.log_dec));
+        let label = ui.label("Mode");
+        egui::ComboBox::from_id_salt("rotor-mode")
+            .selected_text(describe(view.mode_index))
+            .show_ui(ui, |ui| {
+                for i in 0..modes.len().min(2 * RANKS) {
+                    ui.selectable_value(&mut view.mode_index, i, describe(i));
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    let Some(s) = mode_shape(r, rotor, view.speed_index, view.mode_index) else {
+        ui.label("No mode at this speed.");
+        return;
+    };
+    let z_mm: Vec<f64> = s.z_m.iter().map(|z| z * 1e3).collect();
+    let color = whirl_color(s.whirl);
+    let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
+    plot("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0)).x_axis_label("axial position [mm]").y_axis_label("deflection (largest = 1)").show(ui, |p| {
+        p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
+        p.line(Line::new("x", z_mm.iter().zip(&s.x).map(|(z, v)| [*z, *v]).collect::<Vec<_>>()).color(color).width(2.5));
+        p.line(Line::new("y", z_mm.iter().zip(&s.y).map(|(z, v)| [*z, *v]).collect::<Vec<_>>()).color(color).style(LineStyle::dashed_loose()).width(1.5));
+        for z in &bearings {
+            p.vline(VLine::new("bearings", *z).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
+        }
+    });
+}
+
+fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult) {
+    let b = unbalance_bode(r);
+    let height = ((ui.available_height() - 20.0) / 2.0).max(120.0);
+    let link = ui.scope_id().with("rotor_bode");
+    let colors = [FORWARD, BACKWARD, Color32::from_rgb(0, 158, 115), Color32::from_rgb(204, 121, 167), Color32::from_rgb(86, 180, 233)];
+    plot("rotor_unbalance_amplitude", ui, height).x_axis_label("speed [rpm]").y_axis_label("orbit major axis, peak to peak [µm]").link_axis(link, [true, false]).show(ui, |p| {
+        for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
+            p.line(Line::new(format!("node {}", n.node), n.amplitude_um.clone()).color(*color).width(1.6));
+        }
+        p.line(Line::new("API 617 limit 25.4 sqrt(12000/N) µm", b.api617_um.clone()).color(LIMIT).style(LineStyle::dashed_dense()).width(2.0));
+    });
+    plot("rotor_unbalance_phase", ui, height).x_axis_label("speed [rpm]").y_axis_label("phase of x [deg]").link_axis(link, [true, false]).show(ui, |p| {
+        for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
+            p.line(Line::new(format!("node {}", n.node), n.phase_deg.clone()).color(*color).width(1.6));
+        }
+    });
+}
+
+/// A slider value (an index held as `f64`) as an index.
+#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)] // rounded and clamped at 0
+fn nearest_index(v: f64) -> usize {
+    v.round().max(0.0) as usize
+}
+
+/// The rotor to scale along its axis, diameters exaggerated to fit the strip.
+#[allow(clippy::cast_possible_truncation)] // millimetres to screen points
+fn sketch_ui(ui: &mut Ui, s: &RotorSketch) {
+    let width = ui.available_width().min(ui.clip_rect().width());
+    let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 90.0), egui::Sense::hover());
+    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "rotor sketch"));
+    let painter = ui.painter_at(rect);
+    let margin = 12.0;
+    let sx = (rect.width() - 2.0 * margin) / s.length_mm.max(1e-9) as f32;
+    let sy = 30.0 / s.max_diameter_mm.max(1e-9) as f32;
+    let x = |z: f64| rect.left() + margin + z as f32 * sx;
+    let mid = rect.center().y - 6.0;
+    let fill = Color32::from_gray(170);
+    for [z0, z1, d, di] in &s.sections {
+        let (h, hi) = (*d as f32 * sy / 2.0, *di as f32 * sy / 2.0);
+        painter.rect_filled(egui::Rect::from_min_max(egui::pos2(x(*z0), mid - h), egui::pos2(x(*z1), mid + h)), 0.0, fill);
+        if hi > 0.0 {
+            painter.rect_filled(egui::Rect::from_min_max(egui::pos2(x(*z0), mid - hi), egui::pos2(x(*z1), mid + hi)), 0.0, ui.visuals().extreme_bg_color);
+        }
+    }
+    for (z, item, _) in &s.items {
+        let px = x(*z);
+        match item {
+            SketchItem::Disk => {
+                painter.rect_filled(egui::Rect::from_center_size(egui::pos2(px, mid), egui::vec2(6.0, 60.0)), 1.0, FORWARD);
+            }
+            SketchItem::Bearing => {
+                let top = mid + 17.0;
+                painter.add(egui::Shape::convex_polygon(vec![egui::pos2(px, top), egui::pos2(px - 7.0, top + 12.0), egui::pos2(px + 7.0, top + 12.0)], BACKWARD, Stroke::NONE));
+            }
+            SketchItem::Numbers | SketchItem::Support => {
+                let c = egui::pos2(px, mid + 24.0);
+                painter.line_segment([c - egui::vec2(5.0, 5.0), c + egui::vec2(5.0, 5.0)], Stroke::new(2.0, LIMIT));
+                painter.line_segment([c - egui::vec2(5.0, -5.0), c + egui::vec2(5.0, -5.0)], Stroke::new(2.0, LIMIT));
+            }
+        }
+    }
+    let text = ui.visuals().weak_text_color();
+    painter.text(egui::pos2(rect.left() + margin, rect.bottom() - 2.0), egui::Align2::LEFT_BOTTOM, format!("0 — {:.0} mm (diameters ×{:.0})", s.length_mm, sy / sx), egui::FontId::proportional(11.0), text);
+    painter.text(egui::pos2(rect.right() - margin, rect.bottom() - 2.0), egui::Align2::RIGHT_BOTTOM, "blue: disks, orange: bearings, red ×: coefficients by numbers", egui::FontId::proportional(11.0), text);
+}

@@ -1,0 +1,170 @@
+//! `tiltpad rotor`: the rotor–bearing analysis over a speed range — damped natural frequencies, logarithmic
+//! decrements and whirl directions per speed, the instability onset, the 1× critical speeds and the
+//! unbalance response (with the API 617 limit) — as a summary, JSON (`--json`) and CSV (`--csv`, one row
+//! per speed).
+
+use std::fmt::Write as _;
+use std::path::Path;
+use std::path::PathBuf;
+
+use anyhow::{bail, Context, Result};
+
+use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
+use crate::rotor::analysis::{run as run_analysis, AnalysisParams, AnalysisResult};
+use crate::rotor::eigen::Whirl;
+
+use super::rows::announce;
+use super::{is_stdout, write_atomic};
+
+const RPM: f64 = std::f64::consts::PI / 30.0;
+/// Modes written per speed in the CSV and the summary.
+const MODES: usize = 6;
+
+/// Reads a rotor file and the bearing cases it names (relative to it).
+///
+/// # Errors
+/// I/O and validation errors, naming the file and the key.
+pub fn read_rotor(path: &Path) -> Result<Rotor> {
+    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read rotor file {}", path.display()))?;
+    let file = parse_rotor_file(&text).with_context(|| format!("invalid rotor file {}", path.display()))?;
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).map_err(|e| format!("{}: {e}", dir.join(name).display()));
+    file.resolve(&read).with_context(|| format!("invalid rotor file {}", path.display()))
+}
+
+/// Parses `FROM:TO:N` (rpm) into N speeds [rad/s].
+///
+/// # Errors
+/// A malformed range.
+pub fn parse_speeds(spec: &str) -> Result<Vec<f64>> {
+    let parts: Vec<&str> = spec.split(':').collect();
+    let [a, b, n] = parts.as_slice() else { bail!("--speeds `{spec}`: expected FROM:TO:N in rpm") };
+    let (a, b): (f64, f64) = (a.trim().parse().context("--speeds FROM")?, b.trim().parse().context("--speeds TO")?);
+    let n: usize = n.trim().parse().context("--speeds N")?;
+    if !(a.is_finite() && b.is_finite() && a >= 0.0 && b > a && (2..=10_000).contains(&n)) {
+        bail!("--speeds `{spec}`: needs 0 ≤ FROM < TO and 2 ≤ N ≤ 10000");
+    }
+    #[allow(clippy::cast_precision_loss)]
+    Ok((0..n).map(|i| (a + (b - a) * i as f64 / (n - 1) as f64) * RPM).collect())
+}
+
+/// Arguments of `tiltpad rotor`.
+pub struct RotorArgs<'a> {
+    pub rotor: &'a Path,
+    pub speeds: &'a str,
+    pub coefficients: Option<CoefficientModel>,
+    pub json: Option<PathBuf>,
+    pub csv: Option<PathBuf>,
+}
+
+/// Runs the analysis and writes the outputs.
+///
+/// # Errors
+/// Input, solve and I/O errors.
+pub fn run(args: &RotorArgs<'_>) -> Result<()> {
+    let mut rotor = read_rotor(args.rotor)?;
+    if let Some(c) = args.coefficients {
+        rotor.coefficients = c;
+    }
+    let speeds = parse_speeds(args.speeds)?;
+    let result = run_analysis(&rotor, AnalysisParams::new(speeds)).with_context(|| format!("analysing {}", args.rotor.display()))?;
+    let text = summary(&rotor, &result);
+    if is_stdout(args.json.as_ref()) || is_stdout(args.csv.as_ref()) {
+        eprint!("{text}");
+    } else {
+        print!("{text}");
+    }
+    if let Some(out) = &args.json {
+        let mut s = serde_json::to_string_pretty(&result)?;
+        s.push('\n');
+        write_atomic(out, s.as_bytes())?;
+        announce(out);
+    }
+    if let Some(out) = &args.csv {
+        write_atomic(out, csv_text(&result)?.as_bytes())?;
+        announce(out);
+    }
+    Ok(())
+}
+
+fn whirl(w: Whirl) -> &'static str {
+    match w {
+        Whirl::Forward => "F",
+        Whirl::Backward => "B",
+    }
+}
+
+/// The human-readable summary.
+#[must_use]
+pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}{}", r.title, if r.representative { "  [REPRESENTATIVE rotor: not all data published]" } else { "" });
+    let _ = writeln!(
+        s,
+        "{} elements, {:.1} kg, {} bearing(s), coefficients {:?}; system {} coordinates",
+        rotor.elements.len(),
+        rotor.mass(),
+        rotor.bearings.len(),
+        rotor.coefficients,
+        r.report.system_dofs
+    );
+    let _ = writeln!(s, "{} bearing solves, {} eigen-solutions, {:.2} s", r.report.bearing_solves, r.report.eigen_solutions, r.report.seconds);
+    match r.onset {
+        Some(o) => {
+            let _ = writeln!(s, "instability onset: {:.0} rpm (± {:.0})", o.speed_rad_s / RPM, o.bracket_rad_s / RPM / 2.0);
+        }
+        None => {
+            let _ = writeln!(s, "instability onset: none in the sweep");
+        }
+    }
+    for c in &r.critical_speeds {
+        let _ = writeln!(s, "critical speed (1×, forward mode {}): {:.0} rpm, log dec {:.3}", c.rank + 1, c.speed_rad_s / RPM, c.log_dec);
+    }
+    for w in &r.report.warnings {
+        let _ = writeln!(s, "warning: {w}");
+    }
+    let _ = writeln!(s, "{:>9}  modes: frequency [Hz] / log dec / whirl", "rpm");
+    for p in &r.speeds {
+        let _ = write!(s, "{:>9.0} ", p.point.speed_rad_s / RPM);
+        for m in p.point.modes.modes.iter().take(MODES) {
+            let _ = write!(s, " {:>8.2}/{:>7.3}/{}", m.frequency_hz(), m.log_dec, whirl(m.whirl));
+        }
+        let _ = writeln!(s);
+    }
+    s
+}
+
+/// One row per speed: modes, then the response at each response node and the API 617 limit.
+///
+/// # Errors
+/// CSV writer errors.
+pub fn csv_text(r: &AnalysisResult) -> Result<String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut head = vec!["speed_rpm".to_string(), "min_log_dec".to_string()];
+    for i in 1..=MODES {
+        head.extend([format!("mode{i}_hz"), format!("mode{i}_log_dec"), format!("mode{i}_whirl")]);
+    }
+    for n in &r.response_nodes {
+        head.extend([format!("node{n}_pp_um"), format!("node{n}_x_phase_deg")]);
+    }
+    head.push("api617_limit_um".into());
+    w.write_record(&head)?;
+    for p in &r.speeds {
+        let mut row = vec![format!("{}", p.point.speed_rad_s / RPM), format!("{}", p.point.min_log_dec())];
+        for i in 0..MODES {
+            match p.point.modes.modes.get(i) {
+                Some(m) => row.extend([format!("{}", m.frequency_hz()), format!("{}", m.log_dec), whirl(m.whirl).to_string()]),
+                None => row.extend([String::new(), String::new(), String::new()]),
+            }
+        }
+        for n in &r.response_nodes {
+            match p.orbits.iter().find(|o| o.node == *n) {
+                Some(o) => row.extend([format!("{}", o.major_pp_m * 1e6), format!("{}", o.x_phase_rad.to_degrees())]),
+                None => row.extend([String::new(), String::new()]),
+            }
+        }
+        row.push(if p.api617_limit_um.is_finite() { format!("{}", p.api617_limit_um) } else { String::new() });
+        w.write_record(&row)?;
+    }
+    Ok(String::from_utf8(w.into_inner()?)?)
+}

@@ -1,0 +1,510 @@
+//! The rotor description: shaft sections, rigid disks, unbalances, bearing positions (each a bearing case or
+//! coefficients given by numbers), linear supports and proportional damping — as the user writes it (TOML,
+//! engineering units in the key names) and validated into SI ([`Rotor`]).
+//!
+//! Layout (see `cases/rotors/*.toml`):
+//!
+//! ```toml
+//! title = "…"
+//! [rotor]                 # beam_theory, coefficients (full | reduced), material, operating range, representative
+//! [rotor.damping]         # ratio on the free–free flexible modes `modes` (1 = first flexible mode)
+//! [[rotor.section]]       # length_mm, outer_diameter_mm, inner_diameter_mm, elements
+//! [[rotor.disk]]          # node, mass_kg, polar_inertia_kg_m2, transverse_inertia_kg_m2
+//! [[rotor.unbalance]]     # node, amount_g_mm, phase_deg
+//! [[rotor.bearing]]       # node and either case = "bearing.toml" [set = ["key=value", …]] or k_n_per_m / c_ns_per_m [/ speeds_rpm]
+//! [[rotor.support]]       # node, stiffness_n_per_m, damping_ns_per_m (isotropic linear support)
+//! ```
+//! Nodes are numbered from 0 at the first section's left end; section i ends at node `Σ elements`. A bearing
+//! case path is relative to the rotor file. Coefficient rows are `[xx, xy, yx, yy]`, one per tabulated speed
+//! (one row and no `speeds_rpm` for constant coefficients); between tabulated speeds they are interpolated
+//! linearly, outside they are held at the end values.
+
+use serde::{Deserialize, Serialize};
+
+use super::error::{CaseError, Range};
+use super::Case;
+use crate::rotor::element::{BeamSection, BeamTheory};
+
+/// Which bearing coefficients enter the rotor equations.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CoefficientModel {
+    /// Full K, C, M over journal and pad coordinates (pad coordinates appended to the rotor's).
+    #[default]
+    Full,
+    /// 2×2 K, C reduced at the running speed (synchronous reduction).
+    Reduced,
+}
+
+/// The rotor file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RotorFile {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub title: Option<String>,
+    pub rotor: RotorTable,
+}
+
+/// `[rotor]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RotorTable {
+    /// The rotor is a representative one (its data are not all published); shown with every result.
+    #[serde(default)]
+    pub representative: bool,
+    #[serde(default)]
+    pub beam_theory: BeamTheory,
+    #[serde(default)]
+    pub coefficients: CoefficientModel,
+    #[serde(default = "default_density")]
+    pub density_kg_per_m3: f64,
+    #[serde(default = "default_youngs")]
+    pub youngs_modulus_gpa: f64,
+    #[serde(default = "default_poisson")]
+    pub poisson_ratio: f64,
+    /// Operating speed range (for the API 617 line and the separation margins).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_speed_rpm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_speed_rpm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub damping: Option<DampingTable>,
+    pub section: Vec<SectionTable>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub disk: Vec<DiskTable>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub unbalance: Vec<UnbalanceTable>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub bearing: Vec<BearingTable>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub support: Vec<SupportTable>,
+}
+
+fn default_density() -> f64 {
+    7850.0
+}
+fn default_youngs() -> f64 {
+    211.0
+}
+fn default_poisson() -> f64 {
+    0.3
+}
+
+/// `[rotor.damping]`: Rayleigh damping `C = αM + βK` giving `ratio` on two free–free flexible modes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DampingTable {
+    pub ratio: f64,
+    #[serde(default = "default_modes")]
+    pub modes: [usize; 2],
+}
+
+fn default_modes() -> [usize; 2] {
+    [1, 2]
+}
+
+/// `[[rotor.section]]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SectionTable {
+    pub length_mm: f64,
+    pub outer_diameter_mm: f64,
+    #[serde(default)]
+    pub inner_diameter_mm: f64,
+    #[serde(default = "one")]
+    pub elements: usize,
+}
+
+fn one() -> usize {
+    1
+}
+
+/// `[[rotor.disk]]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DiskTable {
+    pub node: usize,
+    pub mass_kg: f64,
+    #[serde(default)]
+    pub polar_inertia_kg_m2: f64,
+    #[serde(default)]
+    pub transverse_inertia_kg_m2: f64,
+}
+
+/// `[[rotor.unbalance]]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UnbalanceTable {
+    pub node: usize,
+    pub amount_g_mm: f64,
+    #[serde(default)]
+    pub phase_deg: f64,
+}
+
+/// `[[rotor.bearing]]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BearingTable {
+    pub node: usize,
+    /// Bearing case file (relative to the rotor file).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub case: Option<String>,
+    /// Overrides applied to the bearing case, as `--set` takes them (`"mesh.fidelity=preview"`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub set: Vec<String>,
+    /// Stiffness rows `[xx, xy, yx, yy]`, one per speed in `speeds_rpm` (or one row).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub k_n_per_m: Vec<[f64; 4]>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub c_ns_per_m: Vec<[f64; 4]>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub speeds_rpm: Vec<f64>,
+}
+
+/// `[[rotor.support]]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SupportTable {
+    pub node: usize,
+    pub stiffness_n_per_m: f64,
+    #[serde(default)]
+    pub damping_ns_per_m: f64,
+}
+
+// ---------------------------------------------------------------------------------------------- SI form
+
+/// A rigid disk at a node [kg, kg·m²].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Disk {
+    pub node: usize,
+    pub mass: f64,
+    pub polar: f64,
+    pub transverse: f64,
+}
+
+/// An unbalance `m e` [kg·m] at a node, at angle `phase` [rad] from +x at t = 0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Unbalance {
+    pub node: usize,
+    pub amount: f64,
+    pub phase: f64,
+}
+
+/// 2×2 coefficients given by numbers, constant or tabulated against speed [SI].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CoefficientTable {
+    /// Speeds [rad/s]; empty for constant coefficients (one row).
+    pub speeds: Vec<f64>,
+    pub k: Vec<[[f64; 2]; 2]>,
+    pub c: Vec<[[f64; 2]; 2]>,
+}
+
+impl CoefficientTable {
+    /// Constant coefficients.
+    #[must_use]
+    pub fn constant(k: [[f64; 2]; 2], c: [[f64; 2]; 2]) -> Self {
+        Self { speeds: Vec::new(), k: vec![k], c: vec![c] }
+    }
+
+    /// K, C at speed `omega` [rad/s]: linear interpolation, held at the ends.
+    #[must_use]
+    pub fn at(&self, omega: f64) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+        let n = self.speeds.len();
+        if n < 2 {
+            return (self.k[0], self.c[0]);
+        }
+        let i = self.speeds.partition_point(|&s| s <= omega).clamp(1, n - 1);
+        let t = ((omega - self.speeds[i - 1]) / (self.speeds[i] - self.speeds[i - 1])).clamp(0.0, 1.0);
+        let lerp = |a: &[[f64; 2]; 2], b: &[[f64; 2]; 2]| {
+            let mut r = [[0.0; 2]; 2];
+            for p in 0..2 {
+                for q in 0..2 {
+                    r[p][q] = a[p][q] + t * (b[p][q] - a[p][q]);
+                }
+            }
+            r
+        };
+        (lerp(&self.k[i - 1], &self.k[i]), lerp(&self.c[i - 1], &self.c[i]))
+    }
+}
+
+/// What a bearing position holds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub enum BearingSupport {
+    /// A bearing case, solved at each speed; `name` is the path as written (identical names share solves).
+    Case { name: String, case: Box<Case> },
+    /// Coefficients given by numbers.
+    Numbers(CoefficientTable),
+}
+
+/// A bearing at a node.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BearingPosition {
+    pub node: usize,
+    pub support: BearingSupport,
+}
+
+/// An isotropic linear support [N/m, N·s/m].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Support {
+    pub node: usize,
+    pub stiffness: f64,
+    pub damping: f64,
+}
+
+/// Proportional damping: `ratio` on the free–free flexible modes `modes` (1-based).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ModalDamping {
+    pub ratio: f64,
+    pub modes: [usize; 2],
+}
+
+/// A validated rotor [SI].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Rotor {
+    pub title: String,
+    pub representative: bool,
+    pub theory: BeamTheory,
+    pub coefficients: CoefficientModel,
+    /// One per element, in order along the shaft.
+    pub elements: Vec<BeamSection>,
+    pub disks: Vec<Disk>,
+    pub unbalances: Vec<Unbalance>,
+    pub bearings: Vec<BearingPosition>,
+    pub supports: Vec<Support>,
+    pub damping: Option<ModalDamping>,
+    /// Operating speed range [rad/s].
+    pub operating_range: Option<[f64; 2]>,
+}
+
+impl Rotor {
+    /// Number of shaft nodes.
+    #[must_use]
+    pub fn n_nodes(&self) -> usize {
+        self.elements.len() + 1
+    }
+
+    /// Axial position of every node [m].
+    #[must_use]
+    pub fn node_positions(&self) -> Vec<f64> {
+        let mut z = vec![0.0];
+        for e in &self.elements {
+            z.push(z[z.len() - 1] + e.length_m);
+        }
+        z
+    }
+
+    /// Total mass (shaft and disks) [kg].
+    #[must_use]
+    pub fn mass(&self) -> f64 {
+        self.elements.iter().map(BeamSection::mass).sum::<f64>() + self.disks.iter().map(|d| d.mass).sum::<f64>()
+    }
+}
+
+// ---------------------------------------------------------------------------------------------- validation
+
+const RPM: f64 = std::f64::consts::PI / 30.0;
+
+fn check(key: &str, value: f64, range: Range) -> Result<f64, CaseError> {
+    range.check(key, value)
+}
+
+fn check_node(key: &str, node: usize, n_nodes: usize) -> Result<usize, CaseError> {
+    if node < n_nodes {
+        Ok(node)
+    } else {
+        #[allow(clippy::cast_precision_loss)]
+        Err(CaseError::OutOfRange { key: key.into(), value: node as f64, allowed: format!("integer in [0, {}]", n_nodes - 1) })
+    }
+}
+
+/// Parses a rotor file's text.
+///
+/// # Errors
+/// [`CaseError::Syntax`] or a schema error naming the key.
+pub fn parse_rotor_file(text: &str) -> Result<RotorFile, CaseError> {
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| CaseError::Syntax { message: e.to_string() })?;
+    serde_path_to_error::deserialize::<_, RotorFile>(toml::Value::Table(table)).map_err(|e| {
+        let path = e.path().to_string();
+        super::load::schema_error(&path, &e.into_inner().to_string())
+    })
+}
+
+impl RotorFile {
+    /// Validates and converts to SI; `read_case` returns the text of a bearing case file by the name written
+    /// in the rotor file (the caller resolves it relative to the rotor file).
+    ///
+    /// # Errors
+    /// The first invalid value, named by its key.
+    pub fn resolve(&self, read_case: &dyn Fn(&str) -> Result<String, String>) -> Result<Rotor, CaseError> {
+        let r = &self.rotor;
+        let density = check("rotor.density_kg_per_m3", r.density_kg_per_m3, Range::positive(1e5))?;
+        let youngs = check("rotor.youngs_modulus_gpa", r.youngs_modulus_gpa, Range::positive(1e4))? * 1e9;
+        let nu = check("rotor.poisson_ratio", r.poisson_ratio, Range::closed(0.0, 0.5))?;
+        if r.section.is_empty() {
+            return Err(CaseError::MissingKey { key: "rotor.section".into(), meaning: "at least one shaft section".into() });
+        }
+        let mut elements = Vec::new();
+        for (i, s) in r.section.iter().enumerate() {
+            let key = |k: &str| format!("rotor.section[{i}].{k}");
+            let l = check(&key("length_mm"), s.length_mm, Range::positive(1e5))? * 1e-3;
+            let od = check(&key("outer_diameter_mm"), s.outer_diameter_mm, Range::positive(1e4))? * 1e-3;
+            let id = check(&key("inner_diameter_mm"), s.inner_diameter_mm, Range { lo: 0.0, hi: s.outer_diameter_mm, open_lo: false, open_hi: true })? * 1e-3;
+            if s.elements == 0 || s.elements > 200 {
+                #[allow(clippy::cast_precision_loss)]
+                return Err(CaseError::OutOfRange { key: key("elements"), value: s.elements as f64, allowed: "integer in [1, 200]".into() });
+            }
+            #[allow(clippy::cast_precision_loss)]
+            let le = l / s.elements as f64;
+            for _ in 0..s.elements {
+                elements.push(BeamSection { length_m: le, outer_diameter_m: od, inner_diameter_m: id, density_kg_per_m3: density, youngs_modulus_pa: youngs, poisson_ratio: nu });
+            }
+        }
+        let n_nodes = elements.len() + 1;
+        let disks = r.disk.iter().enumerate().map(|(i, d)| {
+            let key = |k: &str| format!("rotor.disk[{i}].{k}");
+            Ok(Disk {
+                node: check_node(&key("node"), d.node, n_nodes)?,
+                mass: check(&key("mass_kg"), d.mass_kg, Range::closed(0.0, 1e6))?,
+                polar: check(&key("polar_inertia_kg_m2"), d.polar_inertia_kg_m2, Range::closed(0.0, 1e6))?,
+                transverse: check(&key("transverse_inertia_kg_m2"), d.transverse_inertia_kg_m2, Range::closed(0.0, 1e6))?,
+            })
+        }).collect::<Result<Vec<_>, CaseError>>()?;
+        let unbalances = r.unbalance.iter().enumerate().map(|(i, u)| {
+            let key = |k: &str| format!("rotor.unbalance[{i}].{k}");
+            Ok(Unbalance {
+                node: check_node(&key("node"), u.node, n_nodes)?,
+                amount: check(&key("amount_g_mm"), u.amount_g_mm, Range::closed(0.0, 1e9))? * 1e-6,
+                phase: check(&key("phase_deg"), u.phase_deg, Range::closed(-360.0, 360.0))?.to_radians(),
+            })
+        }).collect::<Result<Vec<_>, CaseError>>()?;
+        let bearings = r.bearing.iter().enumerate().map(|(i, b)| resolve_bearing(i, b, n_nodes, read_case)).collect::<Result<Vec<_>, CaseError>>()?;
+        let supports = r.support.iter().enumerate().map(|(i, s)| {
+            let key = |k: &str| format!("rotor.support[{i}].{k}");
+            Ok(Support {
+                node: check_node(&key("node"), s.node, n_nodes)?,
+                stiffness: check(&key("stiffness_n_per_m"), s.stiffness_n_per_m, Range::closed(0.0, 1e15))?,
+                damping: check(&key("damping_ns_per_m"), s.damping_ns_per_m, Range::closed(0.0, 1e12))?,
+            })
+        }).collect::<Result<Vec<_>, CaseError>>()?;
+        let damping = match &r.damping {
+            None => None,
+            Some(d) => {
+                let ratio = check("rotor.damping.ratio", d.ratio, Range::closed(0.0, 0.5))?;
+                if d.modes[0] == 0 || d.modes[1] <= d.modes[0] || d.modes[1] > 20 {
+                    return Err(CaseError::Inconsistent { key: "rotor.damping.modes".into(), message: format!("{:?}: two increasing flexible-mode numbers in [1, 20]", d.modes) });
+                }
+                Some(ModalDamping { ratio, modes: d.modes })
+            }
+        };
+        let operating_range = match (r.min_speed_rpm, r.max_speed_rpm) {
+            (Some(lo), Some(hi)) => {
+                let lo = check("rotor.min_speed_rpm", lo, Range::positive(1e6))?;
+                let hi = check("rotor.max_speed_rpm", hi, Range::open_lo(lo, 1e6))?;
+                Some([lo * RPM, hi * RPM])
+            }
+            (None, None) => None,
+            _ => return Err(CaseError::Inconsistent { key: "rotor.max_speed_rpm".into(), message: "give both rotor.min_speed_rpm and rotor.max_speed_rpm, or neither".into() }),
+        };
+        Ok(Rotor {
+            title: self.title.clone().unwrap_or_default(),
+            representative: r.representative,
+            theory: r.beam_theory,
+            coefficients: r.coefficients,
+            elements,
+            disks,
+            unbalances,
+            bearings,
+            supports,
+            damping,
+            operating_range,
+        })
+    }
+}
+
+fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn Fn(&str) -> Result<String, String>) -> Result<BearingPosition, CaseError> {
+    let key = |k: &str| format!("rotor.bearing[{i}].{k}");
+    let node = check_node(&key("node"), b.node, n_nodes)?;
+    let numbers = !b.k_n_per_m.is_empty() || !b.c_ns_per_m.is_empty();
+    let support = match (&b.case, numbers) {
+        (Some(name), false) => {
+            let text = read_case(name).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("cannot read `{name}`: {e}") })?;
+            let (_, case) = super::load_case(&text, &b.set).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("`{name}`: {e}") })?;
+            let name = if b.set.is_empty() { name.clone() } else { format!("{name} [{}]", b.set.join(", ")) };
+            BearingSupport::Case { name, case: Box::new(case) }
+        }
+        (None, true) => {
+            let rows = b.k_n_per_m.len();
+            let expected = if b.speeds_rpm.is_empty() { 1 } else { b.speeds_rpm.len() };
+            for (k, n) in [("k_n_per_m", rows), ("c_ns_per_m", b.c_ns_per_m.len())] {
+                if n != expected {
+                    return Err(CaseError::Inconsistent { key: key(k), message: format!("{n} rows; needs {expected} (one per entry of speeds_rpm, or one row without speeds_rpm)") });
+                }
+            }
+            let mut speeds = Vec::new();
+            for (j, &s) in b.speeds_rpm.iter().enumerate() {
+                let range = speeds.last().map_or(Range::closed(0.0, 1e6), |&p: &f64| Range::open_lo(p / RPM, 1e6));
+                speeds.push(check(&format!("{}[{j}]", key("speeds_rpm")), s, range)? * RPM);
+            }
+            let mat = |row: &[f64; 4], k: &str, j: usize| -> Result<[[f64; 2]; 2], CaseError> {
+                for &v in row {
+                    check(&format!("{}[{j}]", key(k)), v, Range::closed(-1e15, 1e15))?;
+                }
+                Ok([[row[0], row[1]], [row[2], row[3]]])
+            };
+            let k = b.k_n_per_m.iter().enumerate().map(|(j, r)| mat(r, "k_n_per_m", j)).collect::<Result<Vec<_>, _>>()?;
+            let c = b.c_ns_per_m.iter().enumerate().map(|(j, r)| mat(r, "c_ns_per_m", j)).collect::<Result<Vec<_>, _>>()?;
+            BearingSupport::Numbers(CoefficientTable { speeds, k, c })
+        }
+        _ => return Err(CaseError::Inconsistent { key: key("case"), message: "give either `case` or `k_n_per_m` and `c_ns_per_m`".into() }),
+    };
+    Ok(BearingPosition { node, support })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MINIMAL: &str = "[rotor]\n[[rotor.section]]\nlength_mm = 500.0\nouter_diameter_mm = 50.0\nelements = 4\n";
+
+    fn resolve(text: &str) -> Result<Rotor, CaseError> {
+        parse_rotor_file(text)?.resolve(&|name| Err(format!("no file {name}")))
+    }
+
+    #[test]
+    fn minimal_rotor_resolves_in_si() {
+        let r = resolve(MINIMAL).unwrap();
+        assert_eq!(r.n_nodes(), 5);
+        assert!((r.node_positions()[4] - 0.5).abs() < 1e-15);
+        let mass = 7850.0 * std::f64::consts::PI / 4.0 * 0.05_f64.powi(2) * 0.5;
+        assert!((r.mass() - mass).abs() < 1e-12 * mass);
+    }
+
+    #[test]
+    fn errors_name_the_key_and_the_range() {
+        let bad_node = format!("{MINIMAL}[[rotor.disk]]\nnode = 5\nmass_kg = 1.0\n");
+        match resolve(&bad_node) {
+            Err(CaseError::OutOfRange { key, value, allowed }) => {
+                assert_eq!((key.as_str(), value, allowed.as_str()), ("rotor.disk[0].node", 5.0, "integer in [0, 4]"));
+            }
+            other => panic!("{other:?}"),
+        }
+        let typo = MINIMAL.replace("length_mm", "length");
+        assert!(matches!(resolve(&typo), Err(CaseError::UnknownKey { key, .. }) if key.contains("rotor.section")));
+        let rows = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\nk_n_per_m = [[1.0, 0.0, 0.0, 1.0]]\nc_ns_per_m = [[1.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0]]\n");
+        assert!(matches!(resolve(&rows), Err(CaseError::Inconsistent { key, .. }) if key == "rotor.bearing[0].c_ns_per_m"));
+        let missing = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\ncase = \"b.toml\"\n");
+        assert!(matches!(resolve(&missing), Err(CaseError::Inconsistent { key, message }) if key == "rotor.bearing[0].case" && message.contains("no file b.toml")));
+        let id = MINIMAL.replace("elements = 4", "elements = 4\ninner_diameter_mm = 50.0");
+        assert!(matches!(resolve(&id), Err(CaseError::OutOfRange { key, .. }) if key == "rotor.section[0].inner_diameter_mm"));
+    }
+
+    #[test]
+    fn tabulated_coefficients_interpolate_and_hold() {
+        let t = CoefficientTable { speeds: vec![100.0, 200.0], k: vec![[[1.0, 2.0], [3.0, 4.0]], [[3.0, 2.0], [3.0, 8.0]]], c: vec![[[0.0; 2]; 2], [[2.0, 0.0], [0.0, 2.0]]] };
+        let (k, c) = t.at(150.0);
+        assert_eq!((k, c), ([[2.0, 2.0], [3.0, 6.0]], [[1.0, 0.0], [0.0, 1.0]]));
+        assert_eq!(t.at(50.0).0, t.k[0]);
+        assert_eq!(t.at(500.0).0, t.k[1]);
+    }
+}

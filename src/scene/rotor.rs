@@ -1,0 +1,270 @@
+//! Plain drawables of a rotor analysis ([`crate::rotor::analysis::AnalysisResult`]) for the rotor view:
+//!
+//! - Campbell diagram: damped natural frequency `f_d = Im λ / 2π` [Hz] of the first forward and backward
+//!   modes against spin speed [rpm] (followed by rank within their whirl direction, as
+//!   [`crate::rotor::campbell`] does), the 1× line `f = N / 60` and the 1× critical speeds;
+//! - stability map: logarithmic decrement `δ = −2π Re λ / Im λ` of the same modes against speed, the onset
+//!   (δ = 0 crossing of the least damped mode) marked;
+//! - mode shape: the real part of a mode's (x, y) amplitudes along the shaft at t = 0 and a quarter period
+//!   later (scaled so the largest amplitude is 1), with its whirl;
+//! - unbalance Bode: the orbit's major axis, peak to peak [µm], and x phase [deg] at the response nodes
+//!   against speed, the API 617 limit `A = 25.4 √(12000/N)` µm;
+//! - rotor sketch: shaft sections (axial position and diameters [mm]), disks, bearings.
+//!
+//! No egui here: the view ([`crate::app::views::rotor_view`]) only draws these.
+
+use crate::model::rotor::{BearingSupport, Rotor};
+use crate::rotor::analysis::AnalysisResult;
+use crate::rotor::campbell::nth_mode;
+use crate::rotor::eigen::Whirl;
+
+const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+
+/// One curve against speed: points `[speed_rpm, value]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Curve {
+    pub name: String,
+    pub whirl: Whirl,
+    pub points: Vec<[f64; 2]>,
+}
+
+/// Campbell diagram and stability map of the first modes of each whirl direction.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModeCurves {
+    /// Damped natural frequency [Hz] against speed [rpm].
+    pub frequency_hz: Vec<Curve>,
+    /// Logarithmic decrement [–] against speed [rpm].
+    pub log_dec: Vec<Curve>,
+    /// The 1× line over the sweep: `[speed_rpm, speed_rpm / 60]`.
+    pub one_x: [[f64; 2]; 2],
+    /// 1× critical speeds: `[speed_rpm, frequency_hz]`.
+    pub critical: Vec<[f64; 2]>,
+    /// Onset of instability [rpm], if inside the sweep.
+    pub onset_rpm: Option<f64>,
+    /// Operating speed range [rpm], if the rotor gives one.
+    pub operating_rpm: Option<[f64; 2]>,
+}
+
+/// The first `ranks` forward and backward modes of `result` as curves.
+#[must_use]
+pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> ModeCurves {
+    let mut frequency_hz = Vec::new();
+    let mut log_dec = Vec::new();
+    for whirl in [Whirl::Forward, Whirl::Backward] {
+        for rank in 0..ranks {
+            let (mut f, mut d) = (Vec::new(), Vec::new());
+            for s in &result.speeds {
+                if let Some((w, dec)) = nth_mode(&s.point, whirl, rank) {
+                    let rpm = s.point.speed_rad_s * RPM_PER_RAD_S;
+                    f.push([rpm, w / std::f64::consts::TAU]);
+                    d.push([rpm, dec]);
+                }
+            }
+            let tag = if whirl == Whirl::Forward { "F" } else { "B" };
+            let name = format!("{tag}{}", rank + 1);
+            frequency_hz.push(Curve { name: name.clone(), whirl, points: f });
+            log_dec.push(Curve { name, whirl, points: d });
+        }
+    }
+    let first = result.speeds.first().map_or(0.0, |s| s.point.speed_rad_s * RPM_PER_RAD_S);
+    let last = result.speeds.last().map_or(0.0, |s| s.point.speed_rad_s * RPM_PER_RAD_S);
+    ModeCurves {
+        frequency_hz,
+        log_dec,
+        one_x: [[first, first / 60.0], [last, last / 60.0]],
+        critical: result.critical_speeds.iter().map(|c| [c.speed_rad_s * RPM_PER_RAD_S, c.order * c.speed_rad_s / std::f64::consts::TAU]).collect(),
+        onset_rpm: result.onset.as_ref().map(|o| o.speed_rad_s * RPM_PER_RAD_S),
+        operating_rpm: rotor.operating_range.map(|[a, b]| [a * RPM_PER_RAD_S, b * RPM_PER_RAD_S]),
+    }
+}
+
+/// A mode's deflected shaft.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModeShape {
+    pub speed_rpm: f64,
+    pub frequency_hz: f64,
+    pub log_dec: f64,
+    pub whirl: Whirl,
+    /// Axial node positions [m].
+    pub z_m: Vec<f64>,
+    /// Deflection in x and y at t = 0 (real parts; the largest amplitude is 1).
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+}
+
+/// The `index`-th mode (ascending frequency) at speed point `speed`, if both exist.
+#[must_use]
+pub fn mode_shape(result: &AnalysisResult, rotor: &Rotor, speed: usize, index: usize) -> Option<ModeShape> {
+    let s = result.speeds.get(speed)?;
+    let m = s.point.modes.modes.get(index)?;
+    Some(ModeShape {
+        speed_rpm: s.point.speed_rad_s * RPM_PER_RAD_S,
+        frequency_hz: m.frequency_hz(),
+        log_dec: m.log_dec,
+        whirl: m.whirl,
+        z_m: rotor.node_positions(),
+        x: m.shape.iter().map(|p| p[0].re).collect(),
+        y: m.shape.iter().map(|p| p[1].re).collect(),
+    })
+}
+
+/// Unbalance response at one node against speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NodeResponse {
+    pub node: usize,
+    /// Major axis of the orbit, peak to peak [µm], against speed [rpm].
+    pub amplitude_um: Vec<[f64; 2]>,
+    /// Phase of x [deg] against speed [rpm].
+    pub phase_deg: Vec<[f64; 2]>,
+}
+
+/// Unbalance Bode plot with the API 617 limit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnbalanceBode {
+    pub nodes: Vec<NodeResponse>,
+    /// API 617 limit [µm] against speed [rpm].
+    pub api617_um: Vec<[f64; 2]>,
+}
+
+/// The unbalance response of `result` per response node.
+#[must_use]
+pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
+    let nodes = result
+        .response_nodes
+        .iter()
+        .map(|&node| {
+            let (mut a, mut p) = (Vec::new(), Vec::new());
+            for s in &result.speeds {
+                if let Some(o) = s.orbits.iter().find(|o| o.node == node) {
+                    let rpm = s.point.speed_rad_s * RPM_PER_RAD_S;
+                    a.push([rpm, o.major_pp_m * 1e6]);
+                    p.push([rpm, o.x_phase_rad.to_degrees()]);
+                }
+            }
+            NodeResponse { node, amplitude_um: a, phase_deg: p }
+        })
+        .collect();
+    let api617_um = result.speeds.iter().filter(|s| s.api617_limit_um.is_finite()).map(|s| [s.point.speed_rad_s * RPM_PER_RAD_S, s.api617_limit_um]).collect();
+    UnbalanceBode { nodes, api617_um }
+}
+
+/// What sits at a node of the sketch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SketchItem {
+    Disk,
+    /// A bearing case solved per speed.
+    Bearing,
+    /// Coefficients given by numbers (seal, aerodynamic cross-coupling, …).
+    Numbers,
+    Support,
+}
+
+/// The rotor as drawn: sections and what sits on the shaft [mm].
+#[derive(Debug, Clone, PartialEq)]
+pub struct RotorSketch {
+    /// `[z_start, z_end, outer diameter, inner diameter]` per element [mm].
+    pub sections: Vec<[f64; 4]>,
+    /// `(z [mm], item, node)`.
+    pub items: Vec<(f64, SketchItem, usize)>,
+    pub length_mm: f64,
+    pub max_diameter_mm: f64,
+}
+
+/// The sketch of `rotor`.
+#[must_use]
+pub fn sketch(rotor: &Rotor) -> RotorSketch {
+    let z: Vec<f64> = rotor.node_positions().iter().map(|z| z * 1e3).collect();
+    let sections: Vec<[f64; 4]> = rotor.elements.iter().enumerate().map(|(i, e)| [z[i], z[i + 1], e.outer_diameter_m * 1e3, e.inner_diameter_m * 1e3]).collect();
+    let mut items: Vec<(f64, SketchItem, usize)> = rotor.disks.iter().map(|d| (z[d.node], SketchItem::Disk, d.node)).collect();
+    for b in &rotor.bearings {
+        let kind = match b.support {
+            BearingSupport::Case { .. } => SketchItem::Bearing,
+            BearingSupport::Numbers(_) => SketchItem::Numbers,
+        };
+        items.push((z[b.node], kind, b.node));
+    }
+    items.extend(rotor.supports.iter().map(|s| (z[s.node], SketchItem::Support, s.node)));
+    RotorSketch { max_diameter_mm: sections.iter().map(|s| s[2]).fold(0.0, f64::max), length_mm: z.last().copied().unwrap_or(0.0), sections, items }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::rotor::parse_rotor_file;
+    use crate::rotor::analysis::{run, AnalysisParams};
+
+    const JEFFCOTT: &str = r#"
+title = "two-bearing shaft"
+[rotor]
+density_kg_per_m3 = 7850.0
+youngs_modulus_gpa = 211.0
+poisson_ratio = 0.3
+[[rotor.section]]
+length_mm = 1000.0
+outer_diameter_mm = 50.0
+elements = 10
+[[rotor.disk]]
+node = 5
+mass_kg = 20.0
+polar_inertia_kg_m2 = 0.2
+transverse_inertia_kg_m2 = 0.1
+[[rotor.unbalance]]
+node = 5
+amount_g_mm = 100.0
+[[rotor.bearing]]
+node = 0
+k_n_per_m = [[1e7, 0.0, 0.0, 1e7]]
+c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
+[[rotor.bearing]]
+node = 10
+k_n_per_m = [[1e7, 0.0, 0.0, 1e7]]
+c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
+"#;
+
+    fn analysed() -> (Rotor, AnalysisResult) {
+        let rotor = parse_rotor_file(JEFFCOTT).unwrap().resolve(&|_| Err("no cases".into())).unwrap();
+        let speeds = (0..=20).map(|i| f64::from(i) * 300.0 / RPM_PER_RAD_S).collect();
+        let r = run(&rotor, AnalysisParams::new(speeds)).unwrap();
+        (rotor, r)
+    }
+
+    #[test]
+    fn curves_follow_the_analysis_and_the_critical_speed_lies_on_the_one_x_line() {
+        let (rotor, r) = analysed();
+        let c = mode_curves(&r, &rotor, 2);
+        assert_eq!(c.frequency_hz.len(), 4);
+        let f1 = &c.frequency_hz[0];
+        assert_eq!(f1.points.len(), r.speeds.len());
+        let (w, _) = nth_mode(&r.speeds[7].point, Whirl::Forward, 0).unwrap();
+        assert!((f1.points[7][1] - w / std::f64::consts::TAU).abs() < 1e-12);
+        assert!(!c.critical.is_empty());
+        for [rpm, hz] in &c.critical {
+            assert!((hz - rpm / 60.0).abs() < 1e-9 * hz, "{rpm} rpm, {hz} Hz");
+        }
+    }
+
+    #[test]
+    fn mode_shape_is_normalised_and_unbalance_peaks_near_the_critical_speed() {
+        let (rotor, r) = analysed();
+        let s = mode_shape(&r, &rotor, 10, 0).unwrap();
+        assert_eq!(s.z_m.len(), rotor.n_nodes());
+        let biggest = s.x.iter().chain(&s.y).fold(0.0_f64, |m, v| m.max(v.abs()));
+        assert!(biggest <= 1.0 + 1e-12 && biggest > 0.5, "{biggest}");
+        let b = unbalance_bode(&r);
+        let mid = b.nodes.iter().find(|n| n.node == 5).unwrap();
+        let peak = mid.amplitude_um.iter().max_by(|a, b| a[1].total_cmp(&b[1])).unwrap()[0];
+        let critical = mode_curves(&r, &rotor, 1).critical[0][0];
+        assert!((peak - critical).abs() <= 300.0, "peak at {peak} rpm, critical {critical} rpm");
+        assert_eq!(b.api617_um.len(), r.speeds.len() - 1);
+    }
+
+    #[test]
+    fn sketch_places_disks_and_bearings_at_their_nodes() {
+        let (rotor, _) = analysed();
+        let s = sketch(&rotor);
+        assert_eq!(s.sections.len(), 10);
+        assert!((s.length_mm - 1000.0).abs() < 1e-9);
+        assert!(s.items.iter().any(|&(z, item, node)| item == SketchItem::Disk && node == 5 && (z - 500.0).abs() < 1e-9));
+        assert_eq!(s.items.iter().filter(|i| i.1 == SketchItem::Numbers).count(), 2);
+    }
+}
