@@ -20,6 +20,7 @@ pub mod files;
 mod frame;
 pub mod presets;
 pub mod state;
+pub mod sweep_job;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
@@ -79,6 +80,7 @@ pub struct WorkbenchApp {
     dragging: bool,
     field_cache: FieldCache,
     pub frf: views::frf_view::FrfView,
+    pub sweep: views::sweep_view::SweepView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -128,6 +130,7 @@ impl WorkbenchApp {
             dragging: false,
             field_cache: FieldCache::default(),
             frf: views::frf_view::FrfView::default(),
+            sweep: views::sweep_view::SweepView::default(),
             pending: None,
             allow_close: false,
             notice: None,

@@ -2,6 +2,7 @@
 //! tooltips that explain the physics, and validation messages in place.
 
 mod bearing;
+mod limits;
 mod operation;
 mod thermal;
 pub mod widgets;
@@ -13,7 +14,7 @@ pub use widgets::EditOutput;
 
 /// The groups, in order: title, function that draws the rows, open by default.
 type GroupUi = fn(&mut Ui, &mut Document) -> EditOutput;
-const GROUPS: [(&str, GroupUi, bool); 8] = [
+const GROUPS: [(&str, GroupUi, bool); 9] = [
     ("Geometry", bearing::geometry_ui, true),
     ("Pads", bearing::pads_ui, true),
     ("Orifices", bearing::orifices_ui, false),
@@ -22,6 +23,7 @@ const GROUPS: [(&str, GroupUi, bool); 8] = [
     ("Physics model", operation::physics_ui, false),
     ("Thermal model", thermal::thermal_ui, false),
     ("Fidelity", operation::fidelity_ui, false),
+    ("Design limits", limits::limits_ui, false),
 ];
 
 /// Draws the editor; returns what changed.
@@ -50,7 +52,7 @@ mod tests {
     /// there); only the editor's own choices (how a value is given) have none.
     #[test]
     fn every_editor_key_has_a_schema_row() {
-        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs")];
+        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs"), include_str!("limits.rs")];
         let mut keys = 0;
         for src in sources {
             for part in src.split("key: \"").skip(1) {

@@ -3,7 +3,10 @@
 
 pub mod bearing_view;
 pub mod coefficients_view;
+pub mod compare_panel;
 pub mod field_view;
 pub mod frf_view;
+pub mod limits_view;
 pub mod placeholders;
 pub mod results_panel;
+pub mod sweep_view;

@@ -28,7 +28,7 @@ pub fn placeholder_text(view: View) -> Option<(&'static str, &'static str)> {
              logarithmic decrement, onset of instability) and the unbalance response with the API 617 limit, \
              using the full or the reduced bearing coefficients (model.md §10).",
         )),
-        View::Bearing | View::Fields | View::Coefficients => None,
+        View::Bearing | View::Fields | View::Coefficients | View::Sweep => None,
     }
 }
 

@@ -23,7 +23,8 @@
 //! Read by no stage: the title and the case itself (stamped on the published solution), Young's modulus and
 //! Poisson's ratio (until the pads deform), the fidelity name (its element counts are read), the oil's
 //! name, and the node budget `mesh.max_nodes` (checked when the case is validated, before any stage runs), and the `[hydraulics]` section (read by the
-//! FRF view, which builds its own `FrfModel` until it becomes a stage).
+//! FRF view, which builds its own `FrfModel` until it becomes a stage), and the design limits `[limits]` (checked
+//! on the published solution by [`crate::bearing::limits`]).
 //! Editing them runs nothing. The pivot stiffnesses and the pad density are not read by the films: the
 //! stages that solve install the pads' structure in the films' model ([`films::install_structure`],
 //! [`crate::bearing::BearingModel::set_structure`]) without rebuilding it; the density reaches only
