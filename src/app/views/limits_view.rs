@@ -22,6 +22,6 @@ pub fn limits_ui(ui: &mut Ui, checks: &[Check]) {
     }
     ui.label(RichText::new("Design limits exceeded:").color(EXCEEDED).strong()).on_hover_text(tip);
     for c in bad {
-        ui.label(RichText::new(format!("{}", crate::scene::limits::text(c))).color(EXCEEDED));
+        ui.label(RichText::new(crate::scene::limits::text(c)).color(EXCEEDED));
     }
 }
