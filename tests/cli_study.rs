@@ -389,3 +389,26 @@ fn a_sweep_writes_a_paraview_collection() {
     assert!(pa != pb);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Design limits in the sweep CSV and in `solve`'s summary and JSON: the compressor bearing at its own load
+/// is within the conventions; at 18 kN its specific load W/(L·D) = 18000 / (44.45 mm · 101.6 mm) = 3.99 MPa
+/// exceeds the 3.5 MPa convention; a limit set on the command line applies.
+#[test]
+fn sweeps_and_solves_mark_the_exceeded_design_limits() {
+    let o = run(&["sweep", &case("compressor-bearing.toml"), "--set", PREVIEW, "--vary", "operating.load_n=1918,18000", "--csv", "-"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let r = rows(&String::from_utf8_lossy(&o.stdout));
+    let k = col(&r, "limits_exceeded");
+    assert_eq!(r[1][k], "", "{:?}", r[1]);
+    assert!(r[2][k].split(';').any(|n| n == "specific_load"), "{:?}", r[2]);
+    let o = run(&["solve", &case("compressor-overload.toml"), "--set", PREVIEW, "--set", "limits.max_peak_pressure_mpa=1", "--json", "-"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let summary = stderr(&o);
+    assert!(summary.contains("DESIGN LIMITS EXCEEDED") && summary.contains("W/(L·D) 3.986 MPa > limit 3.500 MPa"), "{summary}");
+    assert!(summary.contains("> limit 1.000 MPa"), "{summary}");
+    let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let checks = j["design_limits"]["checks"].as_array().unwrap();
+    let p = checks.iter().find(|c| c["kind"] == "max_peak_pressure").unwrap();
+    assert_eq!((p["limit"].as_f64(), p["exceeded"].as_bool()), (Some(1e6), Some(true)));
+    assert_eq!(j["design_limits"]["limits"]["max_specific_load_pa"].as_f64(), Some(3.5e6));
+}

@@ -16,16 +16,18 @@ use egui_kittest::{Harness, SnapshotOptions};
 use tiltpad::app::state::{CoefficientAxis, PadChoice, Persisted, View};
 use tiltpad::app::WorkbenchApp;
 use tiltpad::scene::field::FieldKind;
+use tiltpad::scene::summary::sig4;
+use tiltpad::scene::sweep::SweepSpec;
 
 const SIZE: [f32; 2] = [1400.0, 860.0];
 
 /// The app on a shipped case (the compressor bearing unless `preset_toml` is given), solved.
 fn solved_app(preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
-    solved_app_sized(SIZE, preset_toml, setup)
+    solved_app_at(SIZE, preset_toml, setup)
 }
 
-/// As [`solved_app`], in a window of `size` (a tall one keeps opened editor groups in view).
-fn solved_app_sized(size: [f32; 2], preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
+/// [`solved_app`] in a window of `size` points.
+fn solved_app_at(size: [f32; 2], preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
     let mut persisted = Persisted::default();
     if let Some(text) = preset_toml {
         persisted.case_toml = Some(text.to_string());
@@ -223,7 +225,7 @@ fn frf_view_shows_the_bode_plots_of_the_rig_and_its_limitations() {
 /// line (the FRF stage reads the ports' pads, so nothing is re-solved: the FRF model stays the same object).
 #[test]
 fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
-    let mut h = solved_app_sized([1400.0, 2600.0], Some(include_str!("../cases/test-rig-pub5.toml")), |p| p.view = View::Frf);
+    let mut h = solved_app_at([1400.0, 2600.0], Some(include_str!("../cases/test-rig-pub5.toml")), |p| p.view = View::Frf);
     let model = h.state().shown.clone().unwrap().frf.expect("the FRF view asks for the FRF stage");
     h.get_by_label("Hydraulics (controllable bearing)").click();
     h.run_steps(2);
@@ -455,4 +457,100 @@ fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_o
     wait_for_rotor(&mut h);
     let reduced = h.state().rotor.result().unwrap().onset.as_ref().map_or(f64::INFINITY, |o| o.speed_rad_s * 30.0 / std::f64::consts::PI);
     assert!(reduced > onset_full, "reduced coefficients overestimate the stable range: full {onset_full:.0}, reduced {reduced:.0} rpm");
+}
+
+/// Edits the case as the editor would, then waits for the result.
+fn edit_and_solve(h: &mut Harness<'_, WorkbenchApp>, key: &str, f: impl FnOnce(&mut tiltpad::model::CaseFile)) {
+    h.state_mut().doc.edit(key, false, f);
+    h.run_steps(2);
+    wait_for_solve(h);
+}
+
+#[test]
+fn design_limits_are_marked_in_the_results_panel_and_the_bearing_view() {
+    let mut h = solved_app(None, |_| {});
+    h.get_by_label("Within the design limits");
+    // The compressor bearing at 18 kN: W/(L·D) = 18000 / (44.45 mm · 101.6 mm) = 3.986 MPa > 3.5 MPa.
+    edit_and_solve(&mut h, "operating.load_n", |f| f.operating.load_n = Some(18000.0));
+    h.get_by_label("Design limits exceeded:");
+    h.get_by_label("W/(L·D) 3.986 MPa > limit 3.500 MPa");
+    h.get_by_label("Exceeds design limit: W/(L·D) 3.986 MPa > limit 3.500 MPa");
+    snapshot(&mut h, "bearing_view_limits_exceeded");
+    // A limit raised in the case clears its marks (limits enter no solver stage: nothing is re-solved).
+    edit_and_solve(&mut h, "limits.max_specific_load_mpa", |f| f.limits.max_specific_load_mpa = Some(5.0));
+    assert!(!h.state().result_is_stale());
+    assert!(h.query_by_label_contains("W/(L·D) 3.986 MPa >").is_none());
+}
+
+#[test]
+fn a_load_sweep_plots_three_outputs_with_their_units() {
+    let mut h = solved_app(None, |p| {
+        p.view = View::Sweep;
+        p.sweep = SweepSpec {
+            key: "operating.load_n".into(),
+            from: 1000.0,
+            to: 4000.0,
+            count: 4,
+            outputs: vec!["eccentricity_ratio".into(), "h_min_um".into(), "p_max_mpa".into()],
+            against_sommerfeld: false,
+            preview: true,
+        };
+    });
+    h.get_by_label("Run sweep").click();
+    let start = Instant::now();
+    while !h.state().sweep.job.as_ref().is_some_and(|j| j.done()) {
+        assert!(start.elapsed() < Duration::from_secs(180), "sweep did not finish");
+        std::thread::sleep(Duration::from_millis(10));
+        h.step();
+    }
+    h.run_steps(3);
+    let table = h.state().sweep.job.as_ref().unwrap().table.clone();
+    let eps = table.series("eccentricity_ratio", false);
+    assert_eq!(eps.iter().map(|p| p[0]).collect::<Vec<_>>(), [1000.0, 2000.0, 3000.0, 4000.0]);
+    assert!(eps.windows(2).all(|w| w[1][1] > w[0][1]), "{eps:?}");
+    for label in ["eccentricity ratio [–]", "h min [µm]", "p max [MPa]", "4 points of operating.load_n (preview fidelity)"] {
+        h.get_by_label(label);
+    }
+    assert!(table.csv().lines().next().unwrap().contains("flow_sides_out_l_per_min"));
+    snapshot(&mut h, "sweep_load_three_outputs");
+}
+
+#[test]
+fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
+    let mut h = solved_app_at([1280.0, 720.0], None, |_| {});
+    let fast = h.state().shown.clone().unwrap().solution;
+    h.get_by_label("Pin current result").click();
+    h.run_steps(2);
+    assert_eq!(h.state().persisted.pins.len(), 1);
+    assert_eq!(h.state().persisted.pins[0].name, "pin 1");
+    spin_button(&h, "Speed").set_value_accesskit(6000.0);
+    h.run_steps(2);
+    wait_for_solve(&mut h);
+    let slow = h.state().shown.clone().unwrap().solution;
+    h.get_by_label("Live vs \"pin 1\"");
+    // The ε row: live, pinned and their difference.
+    for v in [slow.eccentricity_ratio, fast.eccentricity_ratio, slow.eccentricity_ratio - fast.eccentricity_ratio] {
+        assert!(h.query_all_by_label(&sig4(v)).next().is_some(), "{} not shown", sig4(v));
+    }
+    snapshot(&mut h, "compare_pinned_1280x720");
+    h.get_by_label("Remove \"pin 1\"").click();
+    h.run_steps(2);
+    assert!(h.state().persisted.pins.is_empty());
+}
+
+#[test]
+fn locked_scales_survive_two_edits() {
+    let mut h = solved_app(None, |_| {});
+    h.get_by_label_contains("journal displacement × 50");
+    h.get_by_label("Lock scales").click();
+    h.run_steps(2);
+    assert_eq!(h.state().persisted.outline_lock.map(|l| l.exaggeration), Some(50.0));
+    // Edit 1: pads bored to the assembled clearance (Cp = 102 µm): unlocked, 50.8 mm / 6 / 102 µm ≈ 83 → × 100.
+    edit_and_solve(&mut h, "bearing.pads.bore_radius_mm", |f| f.bearing.pads.bore_radius_mm = Some(50.902));
+    // Edit 2: another speed.
+    edit_and_solve(&mut h, "operating.speed_rpm", |f| f.operating.speed_rpm = 6000.0);
+    h.get_by_label_contains("journal displacement × 50");
+    h.get_by_label_contains("Lock scales").click();
+    h.run_steps(2);
+    h.get_by_label_contains("journal displacement × 100");
 }

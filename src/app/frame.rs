@@ -5,7 +5,7 @@ use egui::{Color32, RichText, Ui};
 use super::editor::editor_ui;
 use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
-use super::views::{bearing_view, coefficients_view, deformation_view, field_view, frf_view, results_panel};
+use super::views::{bearing_view, coefficients_view, compare_panel, deformation_view, field_view, frf_view, limits_view, results_panel, sweep_view};
 use super::{Pending, Status, WorkbenchApp};
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
@@ -170,7 +170,20 @@ impl WorkbenchApp {
         let fidelity = format!("{:?}", shown.solution.inputs.mesh.fidelity).to_lowercase();
         ui.label(RichText::new(format!("{} — {fidelity} mesh", shown.solution.title)).small());
         let s = summary::summary(&shown.solution);
-        egui::ScrollArea::vertical().id_salt("results-scroll").show(ui, |ui| results_panel::results_panel_ui(ui, &s, self.hide_timings));
+        limits_view::limits_ui(ui, &crate::bearing::limits::check(&shown.solution.inputs.limits, &shown.solution));
+        let (solution, text) = (shown.solution.clone(), self.doc.text().ok());
+        let pins = &mut self.persisted.pins;
+        let action = egui::ScrollArea::vertical()
+            .id_salt("results-scroll")
+            .show(ui, |ui| {
+                let action = compare_panel::compare_ui(ui, pins, &solution, text.as_deref());
+                results_panel::results_panel_ui(ui, &s, self.hide_timings);
+                action
+            })
+            .inner;
+        if let Some(compare_panel::CompareAction::ExportCsv(csv)) = action {
+            self.files.export(&self.export_name("pins", "csv"), "CSV", "csv", csv.into_bytes());
+        }
     }
 
     fn central_ui(&mut self, ui: &mut Ui) {
@@ -187,9 +200,11 @@ impl WorkbenchApp {
                 let case = self.shown.as_ref().map(|s| s.solution.inputs.clone()).or_else(|| self.doc.validation().as_ref().ok().cloned());
                 if let Some(case) = case {
                     let solution = self.shown.as_ref().map(|s| s.solution.as_ref());
-                    let o = outline::bearing_outline(&case, solution);
+                    let o = outline::bearing_outline_with(&case, solution, self.persisted.outline_lock);
+                    bearing_view::lock_ui(ui, &mut self.persisted.outline_lock, o.scales());
                     let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
-                    bearing_view::bearing_view_ui(ui, &o, &pads, stale);
+                    let checks = solution.map(|s| crate::bearing::limits::check(&s.inputs.limits, s)).unwrap_or_default();
+                    bearing_view::bearing_view_ui(ui, &o, &pads, &checks, stale);
                 }
             }
             View::Fields => self.fields_ui(ui),
@@ -202,6 +217,7 @@ impl WorkbenchApp {
                 }
             },
             View::Rotor => super::views::rotor_view::rotor_ui(ui, &mut self.rotor),
+            View::Sweep => self.sweep_ui(ui),
         }
     }
 
@@ -261,6 +277,14 @@ impl WorkbenchApp {
         };
         if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case, model.as_deref()) {
             self.files.export(&self.export_name("frf", "csv"), "CSV", "csv", csv.into_bytes());
+        }
+    }
+
+    fn sweep_ui(&mut self, ui: &mut Ui) {
+        let text = self.doc.validation().is_ok().then(|| self.doc.text().ok()).flatten();
+        let current = self.shown.as_ref().map(|s| s.solution.clone());
+        if let Some(sweep_view::SweepAction::ExportCsv(csv)) = sweep_view::sweep_view_ui(ui, &mut self.sweep, &mut self.persisted.sweep, text, current.as_deref()) {
+            self.files.export(&self.export_name("sweep", "csv"), "CSV", "csv", csv.into_bytes());
         }
     }
 

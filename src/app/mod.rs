@@ -21,6 +21,7 @@ mod frame;
 pub mod presets;
 pub mod rotor_worker;
 pub mod state;
+pub mod sweep_job;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
@@ -84,6 +85,7 @@ pub struct WorkbenchApp {
     pub frf: views::frf_view::FrfView,
     pub deformation: views::deformation_view::DeformationView,
     pub rotor: views::rotor_view::RotorView,
+    pub sweep: views::sweep_view::SweepView,
     pending: Option<Pending>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
@@ -135,6 +137,7 @@ impl WorkbenchApp {
             frf: views::frf_view::FrfView::default(),
             deformation: views::deformation_view::DeformationView::default(),
             rotor: views::rotor_view::RotorView::default(),
+            sweep: views::sweep_view::SweepView::default(),
             pending: None,
             allow_close: false,
             notice: None,

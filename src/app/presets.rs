@@ -1,7 +1,7 @@
 //! The shipped cases (`cases/*.toml`), built into the binary so the web build has them too.
 
 /// File name and text of every shipped case; the first is the default (the compressor bearing).
-pub const PRESETS: [(&str, &str); 9] = [
+pub const PRESETS: [(&str, &str); 10] = [
     ("compressor-bearing.toml", include_str!("../../cases/compressor-bearing.toml")),
     ("test-rig.toml", include_str!("../../cases/test-rig.toml")),
     ("test-rig-pub5.toml", include_str!("../../cases/test-rig-pub5.toml")),
@@ -11,6 +11,7 @@ pub const PRESETS: [(&str, &str); 9] = [
     ("plain-2groove-ld05.toml", include_str!("../../cases/plain-2groove-ld05.toml")),
     ("compressor-bearing-flexible.toml", include_str!("../../cases/compressor-bearing-flexible.toml")),
     ("fillon-a-tehd.toml", include_str!("../../cases/fillon-a-tehd.toml")),
+    ("compressor-overload.toml", include_str!("../../cases/compressor-overload.toml")),
 ];
 
 /// The default case's name and text.

@@ -18,10 +18,11 @@ pub enum View {
     PadDeformation,
     Frf,
     Rotor,
+    Sweep,
 }
 
 impl View {
-    pub const ALL: [Self; 6] = [Self::Bearing, Self::Fields, Self::Coefficients, Self::PadDeformation, Self::Frf, Self::Rotor];
+    pub const ALL: [Self; 7] = [Self::Bearing, Self::Fields, Self::Coefficients, Self::PadDeformation, Self::Frf, Self::Rotor, Self::Sweep];
 
     #[must_use]
     pub fn label(self) -> &'static str {
@@ -32,6 +33,7 @@ impl View {
             Self::PadDeformation => "Pad deformation",
             Self::Frf => "FRF",
             Self::Rotor => "Rotor",
+            Self::Sweep => "Sweep",
         }
     }
 
@@ -43,7 +45,7 @@ impl View {
             (Self::Coefficients, CoefficientAxis::Speed) => request::SPEED_PLOTS,
             (Self::Frf, _) => request::FRF,
             (Self::PadDeformation, _) => request::DEFORMATION,
-            (Self::Bearing | Self::Fields | Self::Rotor, _) => request::SOLUTION,
+            (Self::Bearing | Self::Fields | Self::Rotor | Self::Sweep, _) => request::SOLUTION,
         }
     }
 }
@@ -82,6 +84,12 @@ pub struct Persisted {
     /// Solve at preview fidelity while a value is dragged, at the case's fidelity on release.
     pub preview_while_dragging: bool,
     pub editor_width: f32,
+    /// Locked film exaggeration and pressure scale of the bearing view (`None`: chosen per picture).
+    pub outline_lock: Option<crate::scene::outline::OutlineScales>,
+    /// Pinned reference results (Compare in the results panel).
+    pub pins: Vec<crate::scene::compare::Pin>,
+    /// The sweep view's input, range and outputs.
+    pub sweep: crate::scene::sweep::SweepSpec,
 }
 
 impl Default for Persisted {
@@ -98,6 +106,9 @@ impl Default for Persisted {
             axis: CoefficientAxis::FrequencyRatio,
             preview_while_dragging: true,
             editor_width: 360.0,
+            outline_lock: None,
+            pins: Vec::new(),
+            sweep: crate::scene::sweep::SweepSpec::default(),
         }
     }
 }

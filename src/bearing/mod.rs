@@ -1,7 +1,7 @@
 //! The bearing: film geometry and coordinates ([`geometry`]), the model built once per mesh ([`model`]),
 //! static equilibrium ([`equilibrium`]), the thermal (THD) loop around it ([`thermal`], with the per-pad
 //! thermal systems in [`thermal_pad`] and the thermal growth of pads and journal in [`tehd`]), dynamic coefficients ([`coefficients`]), the flow-regime checks of
-//! a solved film ([`regime`]), the solve job ([`job`]) that turns a case into a [`Solution`], and the
+//! a solved film ([`regime`]), the design-limit checks of a solution ([`limits`]), the solve job ([`job`]) that turns a case into a [`Solution`], and the
 //! cached, steppable [`stages`] the app asks for results through.
 
 pub mod anderson;
@@ -15,6 +15,7 @@ pub mod frf_job;
 pub mod geometry;
 pub mod injection;
 pub mod job;
+pub mod limits;
 pub mod mixing;
 pub mod model;
 pub mod progress;

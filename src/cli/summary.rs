@@ -52,6 +52,10 @@ pub fn solution_json(s: &Solution) -> Value {
         "t_max_film_c": s.thermal.as_ref().map(|t| t.t_max_film_c),
         "t_max_pad_c": s.thermal.as_ref().and_then(|t| t.t_max_pad_c),
         "thermal": s.thermal,
+        "design_limits": {
+            "limits": s.inputs.limits,
+            "checks": crate::bearing::limits::check(&s.inputs.limits, s),
+        },
         "inputs": {
             "case": s.inputs,
             "assembled_clearance_m": s.derived.assembled_clearance_m,
@@ -153,6 +157,7 @@ pub fn summary_text(s: &Solution) -> String {
             let _ = writeln!(o, "  warning: {w}");
         }
     }
+    let _ = writeln!(o, "{}", limits_line(s));
     let rep = &s.report;
     let _ = writeln!(
         o,
@@ -168,4 +173,17 @@ pub fn summary_text(s: &Solution) -> String {
         let _ = writeln!(o, "  warning: {w}");
     }
     o
+}
+
+/// One line: the design limits the solution exceeds, or that it meets them all.
+#[must_use]
+pub fn limits_line(s: &Solution) -> String {
+    let checks = crate::bearing::limits::check(&s.inputs.limits, s);
+    let bad: Vec<String> = checks.iter().filter(|c| c.exceeded).map(crate::scene::limits::text).collect();
+    if bad.is_empty() {
+        let all: Vec<String> = checks.iter().map(crate::scene::limits::text).collect();
+        format!("  design limits met: {}", all.join(", "))
+    } else {
+        format!("  DESIGN LIMITS EXCEEDED: {}", bad.join("; "))
+    }
 }

@@ -18,6 +18,8 @@ pub struct Case {
     pub physics: Physics,
     pub thermal: Thermal,
     pub hydraulics: Option<super::hydraulics::Hydraulics>,
+    /// Design limits (read by no solver stage: checked on the solution).
+    pub limits: super::limits::Limits,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]

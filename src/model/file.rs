@@ -18,6 +18,7 @@
 //! [physics]            # cavitation model, …
 //! [thermal]            # isothermal | thd, film–pad exchange (bc1/bc2/bc3), pad conduction, inlet mixing
 //! [hydraulics]         # servovalve, ports and injection lines, test rig (see super::hydraulics)
+//! [limits]             # design limits: h_min, pad temperature, specific load, p_max, Reynolds (see super::limits)
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -41,6 +42,9 @@ pub struct CaseFile {
     /// The controllable bearing's valve, lines and rig ([`super::hydraulics`]); absent for a passive bearing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hydraulics: Option<super::hydraulics::HydraulicsFile>,
+    /// Design limits the results are checked against ([`super::limits`]); absent keys take the conventions.
+    #[serde(default, skip_serializing_if = "super::limits::LimitsFile::is_empty")]
+    pub limits: super::limits::LimitsFile,
 }
 
 /// `[bearing]`

@@ -2,7 +2,7 @@
 //! options. Case files are TOML in engineering units ([`file`]); they are validated and converted to SI once
 //! ([`resolve`]) into a [`Case`] that the solver reads; [`budget`] counts the mesh nodes a case would
 //! allocate, so that an oversized one is refused before anything is built. [`schema`] lists every key with
-//! its unit, allowed values and meaning (for `tiltpad schema` and the editor); [`edit`] writes an edited
+//! its unit, allowed values and meaning (for `tiltpad schema` and the editor); [`limits`] holds the design limits results are checked against; [`edit`] writes an edited
 //! case back into the user's own file, keeping its comments.
 
 pub mod budget;
@@ -11,6 +11,7 @@ pub mod edit;
 pub mod error;
 pub mod file;
 pub mod hydraulics;
+pub mod limits;
 pub mod load;
 pub mod resolve;
 pub mod rotor;

@@ -47,7 +47,8 @@ impl CaseFile {
         let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
         let thermal = resolve_thermal(self, &operating)?;
         let hydraulics = self.hydraulics.as_ref().map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len())).transpose()?;
-        let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal, hydraulics };
+        let limits = super::limits::resolve_limits(&self.limits)?;
+        let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal, hydraulics, limits };
         super::budget::check(&case)?;
         Ok(case)
     }

@@ -398,6 +398,12 @@ pub const KEYS: &[KeySpec] = &[
     num("hydraulics.rig.mass_kg", "kg", Range::positive(1e6), (5.0, 500.0), "", "Effective mass of the rig's rotor and tilting frame on its one vertical degree of freedom."),
     num("hydraulics.rig.support_stiffness_n_per_m", "N/m", Range::closed(0.0, 1e12), (1e5, 1e8), "", "Stiffness of the rig's support (parallel to the bearing film)."),
     num("hydraulics.rig.support_damping_ns_per_m", "N·s/m", Range::closed(0.0, 1e9), (0.0, 1e4), "0", "Damping of the rig's support."),
+    // [limits] (conventions, see super::limits)
+    num("limits.min_film_thickness_um", "µm", super::limits::MIN_FILM_RANGE, (5.0, 30.0), "10 (convention)", "Smallest acceptable film thickness on any pad. ISO 7902-3 permits about 3–20 µm depending on journal diameter and speed; 10 µm is a convention for 100–250 mm journals."),
+    num("limits.max_pad_temperature_c", "°C", super::limits::PAD_TEMPERATURE_RANGE, (90.0, 130.0), "120 (convention)", "Hottest acceptable pad (babbitt) temperature; checked on THD solves (the film maximum when the pads have no solid). Tin babbitt softens above about 120–130 °C."),
+    num("limits.max_specific_load_mpa", "MPa", super::limits::SPECIFIC_LOAD_RANGE, (1.0, 5.0), "3.5 (convention)", "Highest acceptable unit load W/(L·D). Tilting-pad journal bearings commonly run at 1–3.5 MPa."),
+    num("limits.max_peak_pressure_mpa", "MPa", super::limits::PEAK_PRESSURE_RANGE, (10.0, 40.0), "20 (convention)", "Highest acceptable film pressure (babbitt fatigue). Published allowables range from about 15 to 35 MPa with babbitt thickness and temperature."),
+    num("limits.max_reynolds", "–", super::limits::REYNOLDS_RANGE, (500.0, 2000.0), "1000 (convention)", "Highest acceptable local film Reynolds number ρ Ω R h / µ: above the laminar–turbulent transition (1000–1500) the laminar model underestimates loss and temperature."),
 ];
 
 /// The row of a key as written in a file, a `--set` override or a validation message:

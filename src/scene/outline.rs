@@ -72,6 +72,23 @@ pub struct BearingOutline {
     pub extent_m: f64,
 }
 
+/// The scales of a drawing: the film exaggeration and the pressure drawn at a third of the radius. A view
+/// that locks them passes them back ([`bearing_outline_with`]) so two pictures compare (issue: without the
+/// lock the exaggeration is chosen per case, and the pressure scale per solution).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct OutlineScales {
+    pub exaggeration: f64,
+    pub pressure_scale_pa: f64,
+}
+
+impl BearingOutline {
+    /// The scales this drawing used.
+    #[must_use]
+    pub fn scales(&self) -> OutlineScales {
+        OutlineScales { exaggeration: self.exaggeration, pressure_scale_pa: self.pressure_scale_pa }
+    }
+}
+
 /// A round exaggeration factor (1, 2 or 5 × 10ⁿ) near `raw`.
 #[must_use]
 pub fn round_factor(raw: f64) -> f64 {
@@ -90,17 +107,27 @@ fn polar(r: f64, theta: f64) -> Point {
 
 /// Builds the cross-section of a case, at the solution's equilibrium when one is given.
 #[must_use]
-#[allow(clippy::cast_precision_loss, clippy::too_many_lines)]
 pub fn bearing_outline(case: &Case, solution: Option<&Solution>) -> BearingOutline {
+    bearing_outline_with(case, solution, None)
+}
+
+/// [`bearing_outline`] with locked scales: `Some` keeps the given exaggeration and pressure scale
+/// (pressures above the locked scale are drawn past a third of the radius), `None` chooses them.
+#[must_use]
+#[allow(clippy::cast_precision_loss, clippy::too_many_lines)]
+pub fn bearing_outline_with(case: &Case, solution: Option<&Solution>, lock: Option<OutlineScales>) -> BearingOutline {
     let b = &case.bearing;
     let r = b.journal_radius_m;
     let cp_max = b.pads.iter().map(|p| p.clearance_m).fold(b.assembled_clearance_m, f64::max);
-    let k = round_factor(r / 6.0 / cp_max);
+    let k = lock.map_or_else(|| round_factor(r / 6.0 / cp_max), |l| l.exaggeration);
     let e = solution.map_or([0.0, 0.0], |s| s.journal_position_m);
     let rho_j = |theta: f64| r + k * (e[0] * theta.cos() + e[1] * theta.sin());
     let journal: Vec<Point> = (0..=180).map(|i| f64::from(i) * TAU / 180.0).map(|t| polar(rho_j(t), t)).collect();
 
-    let p_max = solution.map_or(0.0, |s| s.p_max_pa);
+    let p_max = match (lock, solution) {
+        (Some(l), Some(_)) if l.pressure_scale_pa > 0.0 => l.pressure_scale_pa,
+        (_, s) => s.map_or(0.0, |s| s.p_max_pa),
+    };
     let p_len = r / 3.0;
     let mut pads = Vec::with_capacity(b.pads.len());
     let mut extent = r;
@@ -232,5 +259,20 @@ mod tests {
         let (from, to, w) = o.load.unwrap();
         assert!((to[1] - from[1]) < 0.0 && (to[0] - from[0]).abs() < 1e-12 && (w - 1918.0).abs() < 1e-9);
         assert!(o.pads.iter().all(|p| p.orifices.len() == 1 && !p.injecting && p.pressure.is_empty()));
+    }
+
+    /// Locked scales survive edits: a case whose clearance would choose another exaggeration keeps the
+    /// locked one (and its pressure scale), and unlocked it chooses its own again.
+    #[test]
+    fn locked_scales_stay_across_edits() {
+        let case = compressor();
+        let lock = bearing_outline(&case, None).scales();
+        assert_eq!(lock.exaggeration, 50.0);
+        // Half the clearances: 50.8/6/0.0605 ≈ 140 → 100 when free.
+        let tight = load_case(include_str!("../../cases/compressor-bearing.toml"), &["bearing.assembled_clearance_um=51".into(), "bearing.pads.bore_radius_mm=50.8605".into()]).unwrap().1;
+        assert_eq!(bearing_outline(&tight, None).exaggeration, 100.0);
+        let locked = bearing_outline_with(&tight, None, Some(lock));
+        assert_eq!(locked.scales(), lock);
+        assert!((locked.journal_centre[0]).abs() < 1e-15);
     }
 }

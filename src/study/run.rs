@@ -31,9 +31,15 @@ pub struct Row {
     pub inputs: Vec<(String, String)>,
     /// Output cells in [`COLUMNS`] order, or the error.
     pub result: Result<Vec<Option<f64>>, PointError>,
+    /// Names of the design limits the point's solution exceeds ([`crate::bearing::limits`]); empty for a
+    /// point within them and for a failed point.
+    pub limits_exceeded: Vec<&'static str>,
     /// Wall time of the point [s] (the only column that differs from run to run).
     pub seconds: f64,
 }
+
+/// The CSV column (and JSON key) listing the exceeded design limits, `;`-separated.
+pub const LIMITS_COLUMN: &str = "limits_exceeded";
 
 fn cell(v: Option<f64>) -> String {
     v.map_or_else(String::new, |x| format!("{x:?}"))
@@ -46,12 +52,13 @@ fn json_value(raw: &str) -> serde_json::Value {
 }
 
 impl Row {
-    /// CSV header: the index column, the input keys, the output columns, `seconds`, `error`.
+    /// CSV header: the index column, the input keys, the output columns, `limits_exceeded`, `seconds`, `error`.
     #[must_use]
     pub fn header(index_name: &str, input_keys: &[String]) -> Vec<String> {
         let mut h = vec![index_name.to_string()];
         h.extend(input_keys.iter().cloned());
         h.extend(COLUMNS.iter().map(|c| c.name.to_string()));
+        h.push(LIMITS_COLUMN.into());
         h.push("seconds".into());
         h.push("error".into());
         h
@@ -66,6 +73,7 @@ impl Row {
             Ok(cells) => r.extend(cells.iter().map(|&c| cell(c))),
             Err(_) => r.extend(std::iter::repeat_n(String::new(), COLUMNS.len())),
         }
+        r.push(self.limits_exceeded.join(";"));
         r.push(format!("{:?}", self.seconds));
         r.push(self.error_text());
         r
@@ -90,6 +98,7 @@ impl Row {
         obj.insert(index_name.to_string(), self.index.into());
         obj.insert("inputs".into(), inputs.into());
         obj.insert("outputs".into(), outputs.into());
+        obj.insert(LIMITS_COLUMN.into(), self.limits_exceeded.clone().into());
         obj.insert("seconds".into(), self.seconds.into());
         obj.insert("error".into(), error.into());
         serde_json::Value::Object(obj)
@@ -169,7 +178,10 @@ impl Runner {
             Ok(s) => (Ok(outputs(&s)), Some(s)),
             Err(e) => (Err(e), None),
         };
-        (Row { index, inputs: overrides.to_vec(), result, seconds }, solution)
+        let limits_exceeded = solution.as_ref().map_or_else(Vec::new, |s| {
+            crate::bearing::limits::exceeded(&s.inputs.limits, s).iter().map(|c| c.kind.name()).collect()
+        });
+        (Row { index, inputs: overrides.to_vec(), result, limits_exceeded, seconds }, solution)
     }
 }
 

@@ -3,6 +3,7 @@
 
 mod bearing;
 mod hydraulics;
+mod limits;
 mod operation;
 mod thermal;
 pub mod widgets;
@@ -24,6 +25,7 @@ const GROUPS: [(&str, GroupUi, bool); 9] = [
     ("Thermal model", thermal::thermal_ui, false),
     ("Fidelity", operation::fidelity_ui, false),
     ("Hydraulics (controllable bearing)", hydraulics::hydraulics_ui, false),
+    ("Design limits", limits::limits_ui, false),
 ];
 
 /// Draws the editor; returns what changed.
@@ -52,7 +54,7 @@ mod tests {
     /// there); only the editor's own choices (how a value is given) have none.
     #[test]
     fn every_editor_key_has_a_schema_row() {
-        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs"), include_str!("hydraulics.rs")];
+        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs"), include_str!("hydraulics.rs"), include_str!("limits.rs")];
         let mut keys = 0;
         for src in sources {
             for part in src.split("key: \"").skip(1) {

@@ -3,7 +3,8 @@
 
 use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
 
-use crate::scene::outline::{BearingOutline, Point};
+use crate::bearing::limits::{Check, LimitKind};
+use crate::scene::outline::{BearingOutline, OutlineScales, Point};
 use crate::scene::summary::PadRow;
 
 const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
@@ -60,9 +61,23 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
     painter.add(Shape::convex_polygon(vec![to, to - dir * head + n * head * 0.45, to - dir * head - n * head * 0.45], stroke.color, Stroke::NONE));
 }
 
+/// The "Lock scales" toggle: locked, the film exaggeration and the pressure scale stay those of the
+/// picture on screen when it was locked, so pictures before and after an edit compare.
+pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineScales) {
+    let mut locked = lock.is_some();
+    let text = match lock {
+        Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, l.pressure_scale_pa * 1e-6),
+        None => "Lock scales".to_string(),
+    };
+    if ui.checkbox(&mut locked, text).on_hover_text("Keep the film exaggeration and the pressure scale fixed across edits, so two pictures compare.").changed() {
+        *lock = locked.then_some(current);
+    }
+}
+
 /// Draws the cross-section into the available space.
 #[allow(clippy::too_many_lines)]
-pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], stale: bool) {
+/// `checks`: the solution's design-limit checks (exceeded ones are listed, h_min below its limit marked).
+pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], checks: &[Check], stale: bool) {
     // Scale and colour notes, as text a screen reader finds.
     ui.label(format!("To scale, except film thickness and journal displacement × {}", outline.exaggeration));
     ui.horizontal_wrapped(|ui| {
@@ -78,6 +93,10 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], s
             ui.colored_label(Color32::from_rgb(230, 150, 60), "Showing the last valid result");
         }
     });
+    for c in checks.iter().filter(|c| c.exceeded) {
+        ui.colored_label(super::limits_view::EXCEEDED, format!("Exceeds design limit: {}", crate::scene::limits::text(c)));
+    }
+    let film_limit = checks.iter().find(|c| c.kind == LimitKind::MinFilmThickness).map_or(0.0, |c| c.limit);
     let size = ui.available_size();
     let (response, painter) = ui.allocate_painter(size, Sense::hover());
     let rect = response.rect;
@@ -140,7 +159,8 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], s
             painter.line_segment([a, b], Stroke::new(2.5, H_MIN));
             painter.circle_filled(a, 2.5, H_MIN);
             let away = (b - jc).normalized();
-            painter.text(b + away * 30.0, Align2::CENTER_CENTER, format!("{:.1} µm", h * 1e6), FontId::proportional(11.0), H_MIN);
+            let below = if h < film_limit { " < limit" } else { "" };
+            painter.text(b + away * 30.0, Align2::CENTER_CENTER, format!("{:.1} µm{below}", h * 1e6), FontId::proportional(11.0), H_MIN);
         }
     }
     // Hovering a pad shows its results.

@@ -46,7 +46,7 @@ impl EquilibriumInputs {
     /// Exhaustive over the case and its sub-structs (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing: _, lubricant, operating, mesh: _, physics, thermal: _, hydraulics: _ } = case;
+        let Case { title: _, bearing: _, lubricant, operating, mesh: _, physics, thermal: _, hydraulics: _, limits: _ } = case;
         let Lubricant {
             name: _,
             viscosity,

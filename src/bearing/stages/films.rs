@@ -120,7 +120,7 @@ impl FilmsInputs {
     /// Exhaustive over the case, the bearing and the mesh (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _ } = case;
+        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _, limits: _ } = case;
         let Physics { cavitation: _, touchdown_film_m: _, pad_modes } = physics; // the equilibrium's; the modes
         let Bearing { journal_radius_m, length_m, assembled_clearance_m, pads } = bearing;
         let MeshSpec {

@@ -25,7 +25,8 @@
 //! Poisson's ratio of rigid pads (`physics.pad_modes = 0`), the fidelity name (its element counts are read),
 //! the oil's name, the node budget `mesh.max_nodes` (checked when the case is validated, before any stage
 //! runs), and of the `[hydraulics]` section everything but the ports' pads (the valve, lines and rig enter
-//! only the FRF view's frequency loop, run on the `Frf` stage's output).
+//! only the FRF view's frequency loop, run on the `Frf` stage's output), and the design limits `[limits]`
+//! (checked on the published solution by [`crate::bearing::limits`]).
 //! Editing them runs nothing. The pivot stiffnesses and the pad density are not read by the films: the
 //! stages that solve install the pads' structure in the films' model ([`films::install_structure`],
 //! [`crate::bearing::BearingModel::set_structure`]) without rebuilding it; the density reaches only

@@ -45,7 +45,7 @@ impl ThermalInputs {
     /// Exhaustive over the case and its sub-structs (no `..`); `None` for an isothermal case.
     #[must_use]
     pub fn of(case: &Case) -> Option<Self> {
-        let Case { title: _, bearing, lubricant, operating, mesh, physics: _, thermal, hydraulics: _ } = case;
+        let Case { title: _, bearing, lubricant, operating, mesh, physics: _, thermal, hydraulics: _, limits: _ } = case;
         let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } = lubricant;
         let Operating {
             speed_rad_s: _,

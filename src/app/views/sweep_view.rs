@@ -1,0 +1,191 @@
+//! The sweep view: any numeric case key against any output columns ([`crate::scene::sweep`]), one plot
+//! per output with its unit, the current case's point marked, points beyond a design limit marked, the
+//! Sommerfeld chart (ε and the coefficients against S) one click away, CSV export with every column.
+//!
+//! The points are solved by a [`SweepJob`] (a thread on native, one point per frame on the web); the view
+//! only reads its table.
+
+use egui::{Color32, ComboBox, DragValue, RichText, Ui};
+use egui_plot::{Legend, Line, MarkerShape, Plot, Points, VLine};
+
+use crate::app::sweep_job::SweepJob;
+use crate::bearing::Solution;
+use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
+use crate::study::COLUMNS;
+
+const LINE: Color32 = Color32::from_rgb(86, 180, 233);
+const CURRENT: Color32 = Color32::from_rgb(230, 159, 0);
+const OVER_LIMIT: Color32 = Color32::from_rgb(235, 70, 60);
+/// ε and the reduced coefficients: the designers' chart against the Sommerfeld number.
+const SOMMERFELD_CHART: [&str; 5] = ["eccentricity_ratio", "kxx_n_per_m", "kyy_n_per_m", "cxx_ns_per_m", "cyy_ns_per_m"];
+
+/// The view's runtime state (the spec itself is persisted with the view settings).
+#[derive(Default)]
+pub struct SweepView {
+    pub job: Option<SweepJob>,
+    pub error: Option<String>,
+}
+
+/// What the view asks the app to do.
+pub enum SweepAction {
+    ExportCsv(String),
+}
+
+/// The value of a dotted key in a case text (the first entry of a per-pad list); `None` when absent.
+#[must_use]
+pub fn key_value(text: &str, key: &str) -> Option<f64> {
+    let table: toml::Table = text.parse().ok()?;
+    let mut v = toml::Value::Table(table);
+    for part in key.split('.') {
+        v = v.get(part)?.clone();
+    }
+    match v {
+        toml::Value::Float(x) => Some(x),
+        #[allow(clippy::cast_precision_loss)]
+        toml::Value::Integer(i) => Some(i as f64),
+        toml::Value::Array(a) => a.first().and_then(|x| x.as_float().or_else(|| x.as_integer().map(|i| i as f64))),
+        _ => None,
+    }
+}
+
+fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
+    let mut run = false;
+    ui.horizontal_wrapped(|ui| {
+        let label = ui.label("Input");
+        let before = spec.key.clone();
+        ComboBox::from_id_salt("sweep-key")
+            .selected_text(&spec.key)
+            .height(400.0)
+            .show_ui(ui, |ui| {
+                for k in sweepable_keys() {
+                    ui.selectable_value(&mut spec.key, k.key.to_string(), k.key).on_hover_text(k.meaning);
+                }
+            })
+            .response
+            .labelled_by(label.id);
+        if spec.key != before {
+            if let Some((lo, hi)) = crate::model::schema::spec(&spec.key).and_then(|s| s.typical) {
+                (spec.from, spec.to) = (lo, hi);
+            }
+        }
+        let unit = spec.unit();
+        let speed = 0.01 * (spec.to - spec.from).abs().max(1e-9);
+        let label = ui.label("from");
+        ui.add(DragValue::new(&mut spec.from).speed(speed)).labelled_by(label.id);
+        let label = ui.label("to");
+        ui.add(DragValue::new(&mut spec.to).speed(speed)).labelled_by(label.id);
+        ui.label(unit);
+        let label = ui.label("points");
+        ui.add(DragValue::new(&mut spec.count).range(2..=MAX_POINTS)).labelled_by(label.id);
+        ui.checkbox(&mut spec.preview, "preview fidelity").on_hover_text("Solve the points on the coarse preview mesh (faster; see the Fidelity group for its error).");
+        run = ui.button("Run sweep").clicked();
+    });
+    ui.horizontal_wrapped(|ui| {
+        ui.menu_button(format!("Outputs ({})", spec.outputs.len()), |ui| {
+            for c in COLUMNS {
+                let (name, unit) = column_label(c.name);
+                let mut on = spec.outputs.iter().any(|o| o == c.name);
+                if ui.checkbox(&mut on, format!("{name} [{unit}]")).changed() {
+                    if on {
+                        spec.outputs.push(c.name.to_string());
+                    } else {
+                        spec.outputs.retain(|o| o != c.name);
+                    }
+                }
+            }
+        });
+        ui.checkbox(&mut spec.against_sommerfeld, "against the Sommerfeld number")
+            .on_hover_text("Abscissa S = µ N L D / W (R/Cb)² of each point instead of the swept value.");
+        if ui.button("Sommerfeld chart").on_hover_text("ε and the reduced coefficients against S, from a load sweep.").clicked() {
+            spec.outputs = SOMMERFELD_CHART.iter().map(|s| (*s).to_string()).collect();
+            spec.against_sommerfeld = true;
+        }
+    });
+    run
+}
+
+/// Draws the view; `text` is the edited case (TOML) the sweep starts from, `current` the shown solution.
+pub fn sweep_view_ui(ui: &mut Ui, view: &mut SweepView, spec: &mut SweepSpec, text: Option<String>, current: Option<&Solution>) -> Option<SweepAction> {
+    let key_x = |key: &str| text.as_deref().and_then(|t| key_value(t, key));
+    let run = controls_ui(ui, spec);
+    let current_x = view.job.as_ref().and_then(|j| key_x(&j.spec.key)).or_else(|| key_x(&spec.key));
+    if run {
+        match text {
+            Some(text) => match SweepJob::start(text, spec, ui.ctx()) {
+                Ok(job) => (view.job, view.error) = (Some(job), None),
+                Err(e) => view.error = Some(e.to_string()),
+            },
+            None => view.error = Some("the case is invalid: fix it in the editor first".into()),
+        }
+    }
+    if let Some(e) = &view.error {
+        ui.label(RichText::new(format!("Cannot sweep: {e}")).color(OVER_LIMIT));
+    }
+    let Some(job) = view.job.as_mut() else {
+        ui.label(RichText::new("Choose an input, its range and the outputs, then run the sweep.").weak());
+        return None;
+    };
+    job.poll();
+    let mut action = None;
+    let (done, total) = job.progress();
+    ui.horizontal(|ui| {
+        if job.done() {
+            ui.label(format!("{done} points of {} ({})", job.spec.key, if job.spec.preview { "preview fidelity" } else { "the case's fidelity" }));
+        } else {
+            ui.spinner();
+            ui.label(format!("Solving point {} of {total}…", done + 1));
+            ui.ctx().request_repaint_after(std::time::Duration::from_millis(50));
+        }
+        if ui.add_enabled(done > 0, egui::Button::new("Export sweep CSV")).clicked() {
+            action = Some(SweepAction::ExportCsv(job.table.csv()));
+        }
+    });
+    plots_ui(ui, job, spec, current, current_x);
+    action
+}
+
+/// `key_x`: the swept key's value in the edited case (absent from the file: not marked).
+fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solution>, key_x: Option<f64>) {
+    let table = &job.table;
+    let against_s = spec.against_sommerfeld;
+    let x_label = if against_s { "Sommerfeld number S [–]".to_string() } else { format!("{} [{}]", job.spec.key, job.spec.unit()) };
+    let current_cells = current.map(crate::study::columns::outputs);
+    let current_x = if against_s { current.and_then(|s| s.sommerfeld) } else { key_x };
+    let n = spec.outputs.len().max(1);
+    #[allow(clippy::cast_precision_loss)]
+    let height = ((ui.available_height() - 40.0) / n as f32 - 24.0).max(90.0);
+    egui::ScrollArea::vertical().id_salt("sweep-plots").show(ui, |ui| {
+        for name in &spec.outputs {
+            let Some(k) = COLUMNS.iter().position(|c| c.name == name.as_str()) else { continue };
+            let (label, unit) = column_label(name);
+            ui.label(RichText::new(format!("{label} [{unit}]")).strong());
+            let series = table.series(name, against_s);
+            let flagged = table.series_over_limits(name, against_s);
+            Plot::new(("sweep-plot", name.as_str()))
+                .height(height)
+                .legend(Legend::default())
+                .x_axis_label(x_label.clone())
+                .y_axis_label(unit)
+                .allow_scroll(false)
+                .show(ui, |p| {
+                    p.line(Line::new(label.clone(), series.clone()).color(LINE).width(1.8));
+                    p.points(Points::new(label.clone(), series).color(LINE).radius(2.5));
+                    if !flagged.is_empty() {
+                        p.points(Points::new("beyond a design limit", flagged).color(OVER_LIMIT).shape(MarkerShape::Cross).radius(6.0));
+                    }
+                    if let Some(x) = current_x {
+                        p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
+                        if let Some(y) = current_cells.as_ref().and_then(|c| c[k]) {
+                            p.points(Points::new("this case", vec![[x, y]]).color(CURRENT).shape(MarkerShape::Diamond).radius(6.0));
+                        }
+                    }
+                });
+        }
+        for (x, why) in table.failures() {
+            ui.label(RichText::new(format!("No solution at {x}: {why}")).color(Color32::from_rgb(230, 120, 60)));
+        }
+        for (x, names) in table.limit_marks() {
+            ui.label(RichText::new(format!("At {x}: beyond the design limits {names}")).color(OVER_LIMIT));
+        }
+    });
+}

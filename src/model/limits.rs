@@ -1,0 +1,115 @@
+//! Design limits (`[limits]`): the values a designer does not want a solution to cross.
+//!
+//! ```text
+//! h_min        ≥ min_film_thickness      smallest film thickness on any pad
+//! T_pad,max    ≤ max_pad_temperature     hottest pad point (THD; the film maximum without pad solids)
+//! W / (L D)    ≤ max_specific_load       load per projected area
+//! p_max        ≤ max_peak_pressure       largest film pressure
+//! Re_max       ≤ max_reynolds            largest local film Reynolds number ρ Ω R h / µ (laminar model)
+//! ```
+//!
+//! Every key is optional; an absent key takes the default below. The defaults are **conventions** of
+//! common practice for babbitted, oil-lubricated industrial journal bearings, not standards and not
+//! properties of a material; a design review replaces them with the machine's own values:
+//!
+//! - `min_film_thickness_um` = 10 µm: ISO 7902-3 lists permissible minimum film thicknesses that grow with
+//!   journal diameter and sliding speed, of about 3–20 µm for 25–1000 mm journals; 10 µm is a convention for
+//!   the 100–250 mm turbomachinery class (it leaves room for roughness, misalignment and particles).
+//! - `max_pad_temperature_c` = 120 °C: tin babbitt loses fatigue strength and creeps above roughly
+//!   120–130 °C; alarm levels of about 115–120 °C and trips at 125–130 °C are common (Nicholas, *Tilting Pad
+//!   Bearing Design*, Turbomachinery Symposium 1994, on metal-temperature limits).
+//! - `max_specific_load_mpa` = 3.5 MPa: tilting-pad journal bearings commonly run at 1–3.5 MPa unit load
+//!   W/(L·D) (Nicholas 1994 on load limits); the upper end of that range.
+//! - `max_peak_pressure_mpa` = 20 MPa: a conservative convention for babbitt fatigue under steady load;
+//!   published allowables vary widely with babbitt thickness and temperature (roughly 15–35 MPa).
+//! - `max_reynolds` = 1000: the low end of the 1000–1500 laminar–turbulent transition reported for
+//!   journal bearings ([`crate::bearing::regime::LAMINAR_REYNOLDS`]); above it the laminar model this solver
+//!   uses underestimates loss and temperature.
+
+use serde::{Deserialize, Serialize};
+
+use super::error::{CaseError, Range};
+
+/// `[limits]` as written: every value optional (default: the convention in the module doc).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct LimitsFile {
+    /// Smallest acceptable film thickness h_min.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min_film_thickness_um: Option<f64>,
+    /// Highest acceptable pad (babbitt) temperature.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_pad_temperature_c: Option<f64>,
+    /// Highest acceptable specific load W/(L·D).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_specific_load_mpa: Option<f64>,
+    /// Highest acceptable peak film pressure.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_peak_pressure_mpa: Option<f64>,
+    /// Highest acceptable local film Reynolds number.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_reynolds: Option<f64>,
+}
+
+impl LimitsFile {
+    /// No key given (the section is then not written back).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        *self == Self::default()
+    }
+}
+
+/// Design limits, SI (temperatures °C).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Limits {
+    pub min_film_thickness_m: f64,
+    pub max_pad_temperature_c: f64,
+    pub max_specific_load_pa: f64,
+    pub max_peak_pressure_pa: f64,
+    pub max_reynolds: f64,
+}
+
+impl Default for Limits {
+    /// The conventions of the module doc.
+    fn default() -> Self {
+        Self {
+            min_film_thickness_m: DEFAULT_MIN_FILM_UM * 1e-6,
+            max_pad_temperature_c: DEFAULT_MAX_PAD_TEMPERATURE_C,
+            max_specific_load_pa: DEFAULT_MAX_SPECIFIC_LOAD_MPA * 1e6,
+            max_peak_pressure_pa: DEFAULT_MAX_PEAK_PRESSURE_MPA * 1e6,
+            max_reynolds: DEFAULT_MAX_REYNOLDS,
+        }
+    }
+}
+
+pub const DEFAULT_MIN_FILM_UM: f64 = 10.0;
+pub const DEFAULT_MAX_PAD_TEMPERATURE_C: f64 = 120.0;
+pub const DEFAULT_MAX_SPECIFIC_LOAD_MPA: f64 = 3.5;
+pub const DEFAULT_MAX_PEAK_PRESSURE_MPA: f64 = 20.0;
+/// The regime check's laminar limit ([`crate::bearing::regime::LAMINAR_REYNOLDS`], a test keeps them equal).
+pub const DEFAULT_MAX_REYNOLDS: f64 = 1000.0;
+
+/// Allowed ranges (also the schema's).
+pub const MIN_FILM_RANGE: Range = Range::positive(1000.0);
+pub const PAD_TEMPERATURE_RANGE: Range = Range::closed(-60.0, 400.0);
+pub const SPECIFIC_LOAD_RANGE: Range = Range::positive(1000.0);
+pub const PEAK_PRESSURE_RANGE: Range = Range::positive(10_000.0);
+pub const REYNOLDS_RANGE: Range = Range::positive(1e7);
+
+/// Validates `[limits]` and converts to SI.
+///
+/// # Errors
+/// A value outside its range, naming its key.
+pub fn resolve_limits(file: &LimitsFile) -> Result<Limits, CaseError> {
+    let d = Limits::default();
+    let get = |v: Option<f64>, range: Range, key: &str, default: f64, scale: f64| -> Result<f64, CaseError> {
+        v.map_or(Ok(default), |x| Ok(range.check(key, x)? * scale))
+    };
+    Ok(Limits {
+        min_film_thickness_m: get(file.min_film_thickness_um, MIN_FILM_RANGE, "limits.min_film_thickness_um", d.min_film_thickness_m, 1e-6)?,
+        max_pad_temperature_c: get(file.max_pad_temperature_c, PAD_TEMPERATURE_RANGE, "limits.max_pad_temperature_c", d.max_pad_temperature_c, 1.0)?,
+        max_specific_load_pa: get(file.max_specific_load_mpa, SPECIFIC_LOAD_RANGE, "limits.max_specific_load_mpa", d.max_specific_load_pa, 1e6)?,
+        max_peak_pressure_pa: get(file.max_peak_pressure_mpa, PEAK_PRESSURE_RANGE, "limits.max_peak_pressure_mpa", d.max_peak_pressure_pa, 1e6)?,
+        max_reynolds: get(file.max_reynolds, REYNOLDS_RANGE, "limits.max_reynolds", d.max_reynolds, 1.0)?,
+    })
+}

@@ -1,0 +1,130 @@
+//! Pinned solutions: the live result compared with named references, as plain rows.
+//!
+//! A [`Pin`] keeps what a comparison needs and survives a restart (it is serialisable and small): its
+//! name, the case text it was solved from, and the output cells of [`crate::study::COLUMNS`] (ε, attitude,
+//! load, S, h_min, p_max, temperatures, power loss, flows, K and C terms). [`compare`] lines the live
+//! cells up with a pin's, column by column, with the difference `live − pinned` and, where the pinned
+//! value is not zero, the relative difference `(live − pinned) / |pinned|`. [`pins_csv`] writes the pins
+//! and the live result as one table (one row each, every column).
+
+use serde::{Deserialize, Serialize};
+
+use crate::bearing::Solution;
+use crate::scene::sweep::column_label;
+use crate::study::COLUMNS;
+
+/// A named reference solution.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Pin {
+    pub name: String,
+    /// The case as TOML when it was pinned (to reopen it).
+    pub case_toml: String,
+    /// Column names, in the order of `cells` (kept so a pin read after the columns changed still lines up).
+    pub columns: Vec<String>,
+    pub cells: Vec<Option<f64>>,
+}
+
+impl Pin {
+    /// Pins `solution` (solved from `case_toml`) under `name`.
+    #[must_use]
+    pub fn new(name: &str, case_toml: &str, solution: &Solution) -> Self {
+        Self {
+            name: name.to_string(),
+            case_toml: case_toml.to_string(),
+            columns: COLUMNS.iter().map(|c| c.name.to_string()).collect(),
+            cells: crate::study::columns::outputs(solution),
+        }
+    }
+
+    /// The pinned value of a column.
+    #[must_use]
+    pub fn value(&self, column: &str) -> Option<f64> {
+        self.columns.iter().position(|c| c == column).and_then(|k| self.cells.get(k).copied().flatten())
+    }
+}
+
+/// One line of a comparison.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CompareRow {
+    pub column: &'static str,
+    pub label: String,
+    pub unit: &'static str,
+    pub live: Option<f64>,
+    pub pinned: Option<f64>,
+    /// live − pinned.
+    pub difference: Option<f64>,
+    /// (live − pinned) / |pinned|, when the pinned value is not zero.
+    pub relative: Option<f64>,
+}
+
+/// Columns a comparison leaves out (solver bookkeeping, not a result).
+const SKIP: [&str; 1] = ["iterations"];
+
+/// The live solution against a pin, every output column.
+#[must_use]
+pub fn compare(live: &Solution, pin: &Pin) -> Vec<CompareRow> {
+    let cells = crate::study::columns::outputs(live);
+    COLUMNS
+        .iter()
+        .zip(cells)
+        .filter(|(c, _)| !SKIP.contains(&c.name))
+        .map(|(c, live)| {
+            let (label, unit) = column_label(c.name);
+            let pinned = pin.value(c.name);
+            let difference = live.zip(pinned).map(|(a, b)| a - b);
+            let relative = difference.zip(pinned).and_then(|(d, b)| (b != 0.0).then(|| d / b.abs()));
+            CompareRow { column: c.name, label, unit, live, pinned, difference, relative }
+        })
+        .collect()
+}
+
+/// The pins and the live result as CSV: `name` then every output column.
+#[must_use]
+pub fn pins_csv(pins: &[Pin], live: Option<&Solution>) -> String {
+    let mut w = csv::WriterBuilder::new().from_writer(Vec::new());
+    let mut ok = w.write_record(std::iter::once("name").chain(COLUMNS.iter().map(|c| c.name))).is_ok();
+    let cell = |v: Option<f64>| v.map_or_else(String::new, |x| format!("{x:?}"));
+    for p in pins {
+        ok &= w.write_record(std::iter::once(p.name.clone()).chain(COLUMNS.iter().map(|c| cell(p.value(c.name))))).is_ok();
+    }
+    if let Some(s) = live {
+        ok &= w.write_record(std::iter::once("live".to_string()).chain(crate::study::columns::outputs(s).into_iter().map(cell))).is_ok();
+    }
+    let bytes = w.into_inner().unwrap_or_default();
+    if ok { String::from_utf8_lossy(&bytes).into_owned() } else { String::new() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Pin the 9000 rpm solution, compare the 6000 rpm one: the differences are the values' differences,
+    /// a pin compared with its own solution differs by exactly zero, and a pin round-trips through JSON.
+    #[test]
+    fn a_pin_compares_column_by_column_and_round_trips() {
+        let fast = crate::bearing::limits::compressor_preview(&[]);
+        let slow = crate::bearing::limits::compressor_preview(&["operating.speed_rpm=6000"]);
+        let pin = Pin::new("9000 rpm", "title = \"x\"", &fast);
+        let rows = compare(&slow, &pin);
+        let eps = rows.iter().find(|r| r.column == "eccentricity_ratio").unwrap();
+        assert_eq!(eps.pinned, Some(fast.eccentricity_ratio));
+        assert_eq!(eps.difference, Some(slow.eccentricity_ratio - fast.eccentricity_ratio));
+        assert!(eps.difference.unwrap() > 0.0, "slower, the journal sinks");
+        assert_eq!(eps.relative, Some((slow.eccentricity_ratio - fast.eccentricity_ratio) / fast.eccentricity_ratio));
+        // Isothermal: no temperatures on either side, no difference.
+        let t = rows.iter().find(|r| r.column == "t_max_film_c").unwrap();
+        assert_eq!((t.live, t.pinned, t.difference), (None, None, None));
+        assert!(!rows.iter().any(|r| r.column == "iterations"));
+        assert!(compare(&fast, &pin).iter().all(|r| r.difference.is_none_or(|d| d == 0.0)));
+        // Through JSON (serde_json's float parsing may differ in the last bit).
+        let back: Pin = serde_json::from_str(&serde_json::to_string(&pin).unwrap()).unwrap();
+        assert_eq!((&back.name, &back.case_toml, &back.columns), (&pin.name, &pin.case_toml, &pin.columns));
+        for (a, b) in back.cells.iter().zip(&pin.cells) {
+            assert_eq!(a.is_some(), b.is_some());
+            assert!(a.zip(*b).is_none_or(|(a, b)| (a - b).abs() <= 1e-15 * b.abs()), "{a:?} {b:?}");
+        }
+        let csv = pins_csv(&[pin], Some(&slow));
+        assert_eq!(csv.lines().count(), 3);
+        assert!(csv.lines().nth(1).unwrap().starts_with("9000 rpm,") && csv.lines().nth(2).unwrap().starts_with("live,"));
+    }
+}
