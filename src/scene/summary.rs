@@ -57,22 +57,10 @@ pub fn small(x: f64) -> String {
     if x.abs() < 1e-12 { "< 1e-12".into() } else { format!("{x:.1e}") }
 }
 
-/// Four significant figures, without scientific notation for ordinary magnitudes.
+/// Four significant figures ([`crate::number::sig`]).
 #[must_use]
 pub fn sig4(x: f64) -> String {
-    if !x.is_finite() {
-        return format!("{x}");
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let mag = x.abs().log10().floor();
-    if !(-4.0..6.0).contains(&mag) {
-        return format!("{x:.3e}");
-    }
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let decimals = (3.0 - mag).max(0.0) as usize;
-    format!("{x:.decimals$}")
+    crate::number::sig(x, 4)
 }
 
 /// Builds the summary of a solution.
@@ -219,7 +207,7 @@ mod tests {
         assert_eq!(sig4(9000.0), "9000");
         assert_eq!(sig4(0.012345), "0.01235");
         assert_eq!(sig4(123.456), "123.5");
-        assert_eq!(sig4(2.5e7), "2.500e7");
+        assert_eq!(sig4(2.5e7), "2.5e7");
         assert_eq!(sig4(0.0), "0");
     }
 }

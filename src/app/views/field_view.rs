@@ -233,11 +233,12 @@ fn legend(painter: &egui::Painter, rect: Rect, kind: FieldKind, lo: f64, hi: f64
     painter.rect_stroke(rect, 0.0, Stroke::new(1.0, Color32::from_gray(160)), egui::StrokeKind::Outside);
     let color = text_color;
     let (lo_d, hi_d) = (lo * scale, hi * scale);
-    for v in nice_ticks(lo_d, hi_d, 5) {
+    let values = nice_ticks(lo_d, hi_d, 5);
+    for (&v, label) in values.iter().zip(crate::number::ticks(&values)) {
         let t = if hi_d > lo_d { ((v - lo_d) / (hi_d - lo_d)) as f32 } else { 0.5 };
         let y = rect.bottom() - t * rect.height();
         painter.line_segment([Pos2::new(rect.right(), y), Pos2::new(rect.right() + 4.0, y)], Stroke::new(1.0, color));
-        painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, sig4(v), FontId::proportional(11.0), color);
+        painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, label, FontId::proportional(11.0), color);
     }
     painter.text(rect.center_top() - Vec2::new(0.0, 6.0), Align2::CENTER_BOTTOM, format!("{} [{unit}]", kind.label()), FontId::proportional(11.0), color);
 }
