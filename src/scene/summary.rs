@@ -139,10 +139,10 @@ pub fn summary(s: &Solution) -> Summary {
         title: "Solver report",
         rows: vec![
             row("Method", r.method.clone(), "", "How equilibrium was found: coupled Newton on journal and pad coordinates; pad assembly (nested Newton), a scan along the load and load continuation as fallbacks."),
-            row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations."),
-            row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations."),
+            row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations, over the whole solve (THD: every equilibrium of the thermal loop and its isothermal start)."),
+            row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations (THD: with the film-energy and pad-conduction factorisations)."),
             row("Residual", format!("{} (pads {})", small(r.residual), small(r.pad_residual)), "–", "Final force residual relative to the force scale, and the largest pad residual."),
-            row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the equilibrium and coefficient solve."),
+            row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the whole solve (THD: the isothermal start and the thermal loop)."),
             row("Film nodes", s.derived.film_nodes.to_string(), "", "Finite-element nodes over all pads (mesh fidelity)."),
         ],
     };
