@@ -61,6 +61,8 @@ pub struct Pad {
     /// Transverse pivot stiffness (across the pivot line) [N/m]; `None` = rigid.
     pub pivot_transverse_stiffness_n_per_m: Option<f64>,
     pub density_kg_per_m3: f64,
+    /// No inertia: the pad's mass and moment of inertia are zero (the density is then not used for them).
+    pub massless: bool,
     pub youngs_modulus_pa: f64,
     pub poisson_ratio: f64,
     pub orifices: Vec<Orifice>,
