@@ -214,7 +214,8 @@ impl WorkbenchApp {
 /// The case at preview fidelity (explicit element counts dropped), for fast solves while dragging.
 fn preview(case: &Case) -> Case {
     let mut c = case.clone();
-    let (nx, nz, no) = Fidelity::Preview.elements();
+    let (_, nz, no) = Fidelity::Preview.elements();
+    let nx = Fidelity::Preview.circumferential_elements(c.bearing.longest_arc_rad());
     c.mesh.fidelity = Fidelity::Preview;
     c.mesh.circumferential_elements = nx;
     c.mesh.axial_elements = nz;

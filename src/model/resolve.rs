@@ -507,6 +507,7 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
         }
         Ok(v)
     };
+    let nx0 = fidelity.circumferential_elements(bearing.longest_arc_rad()).max(nx0);
     let nx = count("mesh.circumferential_elements", m.circumferential_elements, nx0, 4, 2000)?;
     let nz = count("mesh.axial_elements", m.axial_elements, nz0, 2, 1000)?;
     let no = count("mesh.orifice_elements", m.orifice_elements, no0, 2, 64)?;

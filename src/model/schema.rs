@@ -272,7 +272,7 @@ pub const KEYS: &[KeySpec] = &[
         "",
         Allowed::Choice(&["preview", "standard", "reference"]),
         "standard",
-        "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks). Each orifice is refined further.",
+        "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks); pads longer than 80° get proportionally more along the arc (a 360° bore: 4.5×). Each orifice is refined further.",
     ),
     count("mesh.circumferential_elements", 4, 2000, "from the fidelity", "Explicit element count along each pad's arc (before orifice refinement), overriding the fidelity level."),
     count("mesh.axial_elements", 2, 1000, "from the fidelity", "Explicit element count across the full axial length (even with the half model), overriding the fidelity level."),
