@@ -19,6 +19,7 @@ pub mod editor;
 pub mod files;
 mod frame;
 pub mod presets;
+pub mod save_dialog;
 pub mod state;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
@@ -80,6 +81,7 @@ pub struct WorkbenchApp {
     field_cache: FieldCache,
     pub frf: views::frf_view::FrfView,
     pending: Option<Pending>,
+    save_dialog: Option<save_dialog::SaveDialog>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
     pub notice: Option<String>,
@@ -129,6 +131,7 @@ impl WorkbenchApp {
             field_cache: FieldCache::default(),
             frf: views::frf_view::FrfView::default(),
             pending: None,
+            save_dialog: None,
             allow_close: false,
             notice: None,
             frame_time_s: 0.0,
@@ -148,6 +151,17 @@ impl WorkbenchApp {
             }
             Err(e) => self.notice = Some(format!("Cannot open {name}: {e}")),
         }
+    }
+
+    /// Saves and exports ask for a name in the workbench's own dialog, as without a desktop portal.
+    pub fn use_workbench_save_dialog(&mut self) {
+        self.files.native_dialogs = false;
+    }
+
+    /// Screen rectangle of the central view in the last frame.
+    #[must_use]
+    pub fn view_rect(&self) -> Option<egui::Rect> {
+        self.view_rect
     }
 
     /// Nothing is being solved and no result is pending.

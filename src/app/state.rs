@@ -80,6 +80,9 @@ pub struct Persisted {
     /// Solve at preview fidelity while a value is dragged, at the case's fidelity on release.
     pub preview_while_dragging: bool,
     pub editor_width: f32,
+    /// The editor and results side panels are shown (each can be collapsed to give the view room).
+    pub editor_open: bool,
+    pub results_open: bool,
 }
 
 impl Default for Persisted {
@@ -96,6 +99,8 @@ impl Default for Persisted {
             axis: CoefficientAxis::FrequencyRatio,
             preview_while_dragging: true,
             editor_width: 360.0,
+            editor_open: true,
+            results_open: true,
         }
     }
 }
