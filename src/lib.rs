@@ -30,7 +30,8 @@
 //! - [`io`]: safe (atomic) writes, VTK `.vtu`/`.pvd` exports of the film and pad fields, reduced
 //!   coefficients for ROSS and as CSV.
 //! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
-//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `schema`, `bench`).
+//! - [`number`]: numbers as text at the edges (significant digits, CSV cells, tick labels).
+//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `schema`, `bench`).
 
 // Lints: `[lints]` in Cargo.toml. Library paths that user input reaches never unwrap or expect (test
 // builds may; `[lints]` cannot tell test targets apart, so this one stays here).
@@ -41,6 +42,7 @@ pub mod fem;
 pub mod io;
 pub mod mesh;
 pub mod model;
+pub mod number;
 pub mod physics;
 pub mod rotor;
 pub mod scene;

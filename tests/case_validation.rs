@@ -167,3 +167,22 @@ fn thermal_table() {
     let e = err(&["thermal.pad_bc=\"bc1\""]);
     assert!(matches!(e, CaseError::UnknownKey { .. }), "{e:?}");
 }
+
+/// Massless pads are a key of their own (`massless = true`), not a tiny density; a density given with it
+/// is refused with the key named.
+#[test]
+fn massless_pads_are_an_explicit_option() {
+    let mass = |case: &tiltpad::model::Case| {
+        let b = &case.bearing;
+        tiltpad::bearing::coordinates::PadStructure::rigid(&b.pads[0], b.journal_radius_m, b.length_m).mass
+    };
+    let someya = common::case("someya-4pad-lbp.toml", &[]);
+    assert!(someya.bearing.pads.iter().all(|p| p.massless));
+    assert!(mass(&someya).iter().all(|&v| v == 0.0), "{:?}", mass(&someya));
+    // The same bearing with steel pads has inertia.
+    let steel = common::case("someya-4pad-lbp.toml", &["bearing.pads.massless=false"]);
+    assert!(!steel.bearing.pads[0].massless && steel.bearing.pads[0].density_kg_per_m3 == 7800.0);
+    assert!(mass(&steel).iter().any(|&v| v > 0.0));
+    let e = err(&["bearing.pads.massless=true", "bearing.pads.density_kg_per_m3=7800"]);
+    assert_names(&e, "bearing.pads.density_kg_per_m3", &["massless"]);
+}

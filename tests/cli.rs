@@ -188,3 +188,19 @@ fn frf_writes_curves_as_csv_and_json() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("[hydraulics]"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `--help` tells that no arguments opens the workbench, and every sweep option says what it does.
+#[test]
+fn help_names_the_workbench_and_describes_the_sweep_options() {
+    let o = tiltpad().arg("--help").output().unwrap();
+    assert!(o.status.success());
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("without arguments opens the interactive workbench"), "{text}");
+    let o = tiltpad().args(["sweep", "--help"]).output().unwrap();
+    let text = String::from_utf8_lossy(&o.stdout);
+    // clap prints an option's description on its line; an undescribed option's line ends after its value.
+    for option in ["<CASE>", "--vary <KEY=VALUES>", "--param <KEY>", "--from <FROM>", "--to <TO>", "--steps <STEPS>", "--set <KEY=VALUE>", "--csv <OUT>", "--jsonl <OUT>", "--vtu <OUT.pvd>"] {
+        let line = text.lines().find(|l| l.trim_start().starts_with(option)).unwrap_or_else(|| panic!("{option} missing: {text}"));
+        assert!(line.trim().len() > option.len() + 4, "{option} has no description: {line:?}");
+    }
+}

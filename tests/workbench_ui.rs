@@ -553,4 +553,122 @@ fn locked_scales_survive_two_edits() {
     h.get_by_label_contains("Lock scales").click();
     h.run_steps(2);
     h.get_by_label_contains("journal displacement × 100");
+
+/// Without a desktop portal, an export asks for a name in the workbench's own dialog: nothing is written
+/// before a name is typed, and an existing file is replaced only after the user confirms.
+#[test]
+fn exports_without_a_portal_ask_for_a_name_and_never_overwrite_silently() {
+    let mut h = solved_app(None, |_| {});
+    h.state_mut().use_workbench_save_dialog();
+    let dir = std::env::temp_dir().join(format!("tiltpad-save-as-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let written = |dir: &std::path::Path| -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        names.sort();
+        names
+    };
+    let export = |h: &mut Harness<'_, WorkbenchApp>| {
+        h.get_by_label("File").click();
+        h.run_steps(2);
+        h.get_by_label("Export results as JSON…").click();
+        h.run_steps(3);
+        // Point the dialog at the test's directory (it opens on the working directory).
+        h.get_by_role_and_label(Role::TextInput, "Directory").focus();
+        h.run_steps(1);
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        h.get_by_role_and_label(Role::TextInput, "Directory").type_text(&dir.display().to_string());
+        h.run_steps(2);
+    };
+    export(&mut h);
+    h.get_by_label_contains("Nothing is written until you do");
+    // No name typed: Save is disabled (clicking it does nothing), and nothing is written.
+    let save = h.get_by_role_and_label(Role::Button, "Save");
+    assert!(save.accesskit_node().is_disabled());
+    save.click();
+    h.run_steps(2);
+    assert!(written(&dir).is_empty());
+    h.get_by_role_and_label(Role::TextInput, "File name").focus();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, "File name").type_text("run1");
+    h.run_steps(2);
+    h.get_by_label_contains(&format!("Writes {}", dir.join("run1.json").display()));
+    h.get_by_role_and_label(Role::Button, "Save").click();
+    h.run_steps(3);
+    assert_eq!(written(&dir), ["run1.json"]);
+    let first = std::fs::read_to_string(dir.join("run1.json")).unwrap();
+    assert!(first.contains("eccentricity"), "{first}");
+    h.get_by_label_contains("Exported");
+    // The same name again: the dialog asks; "Keep it" leaves the file as it was.
+    std::fs::write(dir.join("run1.json"), "kept").unwrap();
+    export(&mut h);
+    h.get_by_role_and_label(Role::TextInput, "File name").focus();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, "File name").type_text("run1.json");
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Save").click();
+    h.run_steps(2);
+    h.get_by_label_contains("run1.json exists. Replace it?");
+    h.get_by_label("Keep it").click();
+    h.run_steps(2);
+    assert_eq!(std::fs::read_to_string(dir.join("run1.json")).unwrap(), "kept");
+    // Save again, and replace this time.
+    h.get_by_role_and_label(Role::Button, "Save").click();
+    h.run_steps(2);
+    h.get_by_label("Replace").click();
+    h.run_steps(3);
+    assert_eq!(std::fs::read_to_string(dir.join("run1.json")).unwrap(), first);
+    assert_eq!(written(&dir), ["run1.json"], "no temporary file left");
+    assert!(h.query_by_label("Save as").is_none(), "the dialog closed");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A thermal field chosen on a THD case, then an isothermal case: the selector names the field drawn
+/// (pressure), not the one the isothermal result does not have.
+#[test]
+fn the_field_selector_names_the_drawn_field_after_switching_to_an_isothermal_case() {
+    let mut h = solved_app(Some(include_str!("../cases/fillon-a.toml")), |p| {
+        p.view = View::Fields;
+        p.field = FieldKind::PadTemperature;
+        p.flowlines = false;
+        p.case_saved = true;
+    });
+    let selected = |h: &Harness<'_, WorkbenchApp>| h.get_by_role_and_label(Role::ComboBox, "Field").value();
+    assert_eq!(selected(&h).as_deref(), Some("Pad surface temperature"));
+    h.get_by_label_contains("Colour scale: Pad surface temperature");
+    open_preset(&mut h, "compressor-bearing.toml");
+    wait_for_solve(&mut h);
+    assert!(h.state().shown.clone().unwrap().solution.thermal.is_none());
+    assert_eq!(selected(&h).as_deref(), Some("Pressure"));
+    h.get_by_label_contains("Colour scale: Pressure");
+}
+
+/// At 1280×720 the side panels leave the view a third of the window, the tabs wrap inside it and
+/// nothing of it lies under the results panel; either side panel can be collapsed for more room.
+#[test]
+fn the_layout_fits_1280_by_720() {
+    let persisted = Persisted { view: View::Fields, ..Persisted::default() };
+    let mut h = Harness::builder().with_size([1280.0, 720.0]).build_eframe(move |cc| {
+        let mut app = WorkbenchApp::with_state(&cc.egui_ctx, persisted);
+        app.hide_timings = true;
+        app
+    });
+    wait_for_solve(&mut h);
+    snapshot(&mut h, "layout_1280x720");
+    let results_left = h.get_by_role_and_label(Role::Label, "Results").rect().left();
+    let view = h.state().view_rect().expect("a view");
+    // The editor and results panels grow to their content (about 450 and 390 points): the view keeps a third.
+    assert!(view.width() > 0.32 * 1280.0, "{view:?}");
+    assert!(view.right() <= results_left, "view {view:?} under the results panel at {results_left}");
+    for tab in ["Bearing", "Rotor"] {
+        let r = h.get_by_role_and_label(Role::Button, tab).rect();
+        assert!(r.right() <= results_left && r.left() >= view.left() - 1.0, "{tab} tab at {r:?}");
+    }
+    let legend = h.get_by_label_contains("Colour scale: Pressure").rect();
+    assert!(legend.right() <= results_left, "{legend:?}");
+    // Collapsing the results panel gives the view its width.
+    h.get_by_label("Show results").click();
+    h.run();
+    let wider = h.state().view_rect().unwrap();
+    assert!(wider.width() > view.width() + 200.0, "{view:?} → {wider:?}");
+    assert!(h.query_by_role_and_label(Role::Label, "Results").is_none());
 }

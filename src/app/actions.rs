@@ -4,6 +4,7 @@
 use egui::{Key, KeyboardShortcut, Modifiers};
 
 use super::files::{encode_png, FileEvent};
+use super::save_dialog::{SaveDialog, SaveOutcome};
 use super::presets::PRESETS;
 use super::{Pending, WorkbenchApp};
 
@@ -98,18 +99,39 @@ impl WorkbenchApp {
 
     pub(super) fn take_file_events(&mut self) {
         for e in self.files.poll() {
-            match e {
-                FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
-                FileEvent::SavedCase { name, path, saved, text } => {
-                    self.notice = Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
-                    if *saved == *self.doc.file() {
-                        self.doc.mark_saved(name, path, text);
-                    }
+            self.file_event(e);
+        }
+    }
+
+    fn file_event(&mut self, e: FileEvent) {
+        match e {
+            FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
+            FileEvent::SavedCase { name, path, saved, text } => {
+                self.notice = Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
+                if *saved == *self.doc.file() {
+                    self.doc.mark_saved(name, path, text);
                 }
-                FileEvent::Exported { name, path } => {
-                    self.notice = Some(format!("Exported {}", path.map_or(name, |p| p.display().to_string())));
-                }
-                FileEvent::Error(e) => self.notice = Some(e),
+            }
+            FileEvent::Exported { name, path } => {
+                self.notice = Some(format!("Exported {}", path.map_or(name, |p| p.display().to_string())));
+            }
+            FileEvent::NameNeeded(pending) => self.save_dialog = Some(SaveDialog::new(*pending)),
+            FileEvent::Error(e) => self.notice = Some(e),
+        }
+    }
+
+    /// The workbench's own "Save as" dialog, while one is open.
+    pub(super) fn save_dialog_ui(&mut self, ctx: &egui::Context) {
+        let Some(dialog) = &mut self.save_dialog else { return };
+        match dialog.ui(ctx) {
+            SaveOutcome::Open => {}
+            SaveOutcome::Cancelled => {
+                self.save_dialog = None;
+                self.notice = Some("Not saved".into());
+            }
+            SaveOutcome::Done(event) => {
+                self.save_dialog = None;
+                self.file_event(event);
             }
         }
     }

@@ -19,6 +19,8 @@ pub enum FileEvent {
     SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile>, text: String },
     /// An export was written (to `path`, when known).
     Exported { name: String, path: Option<std::path::PathBuf> },
+    /// No native dialog: the workbench asks for a name itself ([`super::save_dialog`]).
+    NameNeeded(Box<super::save_dialog::PendingSave>),
     Error(String),
 }
 
@@ -27,13 +29,15 @@ pub struct Files {
     tx: Sender<FileEvent>,
     rx: Receiver<FileEvent>,
     repaint: egui::Context,
+    /// Save through the system's dialog (false: the workbench's own name dialog).
+    pub native_dialogs: bool,
 }
 
 impl Files {
     #[must_use]
     pub fn new(repaint: egui::Context) -> Self {
         let (tx, rx) = channel();
-        Self { tx, rx, repaint }
+        Self { tx, rx, repaint, native_dialogs: dialogs_available() }
     }
 
     /// Events since the last call.
@@ -119,15 +123,10 @@ impl Files {
     }
 
     fn save_bytes(&self, name: &str, filter: &str, extension: &str, bytes: Vec<u8>, done: impl FnOnce(String, Option<std::path::PathBuf>) -> FileEvent + Send + 'static) {
-        #[cfg(not(target_arch = "wasm32"))]
-        if !dialogs_available() {
-            // Without a dialog, write into the working directory under the suggested name.
-            let path = std::path::PathBuf::from(name);
-            let event = match crate::io::write_file(&path, &bytes) {
-                Ok(()) => done(name.to_string(), std::fs::canonicalize(&path).ok()),
-                Err(e) => FileEvent::Error(e.to_string()),
-            };
-            let _ = self.tx.send(event);
+        if !self.native_dialogs {
+            // Without a dialog, the workbench asks for a name: nothing is written under a name not typed.
+            let pending = super::save_dialog::PendingSave { suggested: name.to_string(), extension: extension.to_string(), bytes, done: Box::new(done) };
+            let _ = self.tx.send(FileEvent::NameNeeded(Box::new(pending)));
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());

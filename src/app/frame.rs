@@ -26,15 +26,24 @@ impl WorkbenchApp {
 
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
+        // On windows narrower than ~1330 points the side panels start narrower, so the view keeps about half
+        // the width; each can also be collapsed (menu bar) or dragged closed.
+        let width = ctx.content_rect().width();
+        let doc = &mut self.doc;
         let edit = egui::Panel::left("editor")
             .resizable(true)
-            .default_size(self.persisted.editor_width)
-            .show(ui, |ui| egui::ScrollArea::vertical().id_salt("editor-scroll").show(ui, |ui| editor_ui(ui, &mut self.doc)).inner)
-            .inner;
-        self.dragging = edit.dragging;
-        egui::Panel::right("results").resizable(true).default_size(330.0).show(ui, |ui| self.results_ui(ui));
+            .default_size(self.persisted.editor_width.min(0.27 * width))
+            .show_collapsible(ui, &mut self.persisted.editor_open, |ui| {
+                egui::ScrollArea::vertical().id_salt("editor-scroll").show(ui, |ui| editor_ui(ui, doc)).inner
+            })
+            .map(|r| r.inner);
+        self.dragging = edit.is_some_and(|e| e.dragging);
+        let mut results_open = self.persisted.results_open;
+        egui::Panel::right("results").resizable(true).default_size(330.0_f32.min(0.25 * width)).show_collapsible(ui, &mut results_open, |ui| self.results_ui(ui));
+        self.persisted.results_open = results_open;
         egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
         self.guard_ui(&ctx);
+        self.save_dialog_ui(&ctx);
         if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
             let screen = ctx.content_rect();
             ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("drop"))).text(
@@ -115,6 +124,9 @@ impl WorkbenchApp {
                 self.doc.redo();
             }
             ui.separator();
+            ui.toggle_value(&mut self.persisted.editor_open, "Show editor").on_hover_text("Show or hide the editor panel (the view gets its room).");
+            ui.toggle_value(&mut self.persisted.results_open, "Show results").on_hover_text("Show or hide the results panel (the view gets its room).");
+            ui.separator();
             let dirty = if self.doc.is_dirty() { " *" } else { "" };
             ui.label(RichText::new(format!("{}{dirty}", self.doc.name)).strong()).on_hover_text("Case file (* = unsaved changes)");
         });
@@ -187,7 +199,7 @@ impl WorkbenchApp {
     }
 
     fn central_ui(&mut self, ui: &mut Ui) {
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             for v in View::ALL {
                 ui.selectable_value(&mut self.persisted.view, v, v.label());
             }
@@ -228,10 +240,13 @@ impl WorkbenchApp {
         };
         let available = FieldKind::available(&shown.solution);
         let n_pads = shown.solution.pads.len();
+        // The chosen field when this result has it (a THD field after switching to isothermal: pressure);
+        // the selector names what is drawn.
+        let drawn = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
         ui.horizontal(|ui| {
             let label = ui.label("Field");
             egui::ComboBox::from_id_salt("field-kind")
-                .selected_text(self.persisted.field.label())
+                .selected_text(drawn.label())
                 .show_ui(ui, |ui| {
                     for k in FieldKind::ALL {
                         let ok = available.contains(&k);
@@ -266,7 +281,7 @@ impl WorkbenchApp {
                 self.persisted.pads = PadChoice::All;
             }
         }
-        let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
+        let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { drawn };
         field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, kind, self.persisted.pads, self.persisted.flowlines);
     }
 

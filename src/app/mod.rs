@@ -20,6 +20,7 @@ pub mod files;
 mod frame;
 pub mod presets;
 pub mod rotor_worker;
+pub mod save_dialog;
 pub mod state;
 pub mod sweep_job;
 pub mod views;
@@ -87,6 +88,7 @@ pub struct WorkbenchApp {
     pub rotor: views::rotor_view::RotorView,
     pub sweep: views::sweep_view::SweepView,
     pending: Option<Pending>,
+    save_dialog: Option<save_dialog::SaveDialog>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
     pub notice: Option<String>,
@@ -139,6 +141,7 @@ impl WorkbenchApp {
             rotor: views::rotor_view::RotorView::default(),
             sweep: views::sweep_view::SweepView::default(),
             pending: None,
+            save_dialog: None,
             allow_close: false,
             notice: None,
             frame_time_s: 0.0,
@@ -158,6 +161,17 @@ impl WorkbenchApp {
             }
             Err(e) => self.notice = Some(format!("Cannot open {name}: {e}")),
         }
+    }
+
+    /// Saves and exports ask for a name in the workbench's own dialog, as without a desktop portal.
+    pub fn use_workbench_save_dialog(&mut self) {
+        self.files.native_dialogs = false;
+    }
+
+    /// Screen rectangle of the central view in the last frame.
+    #[must_use]
+    pub fn view_rect(&self) -> Option<egui::Rect> {
+        self.view_rect
     }
 
     /// Nothing is being solved and no result is pending.
@@ -224,7 +238,8 @@ impl WorkbenchApp {
 /// The case at preview fidelity (explicit element counts dropped), for fast solves while dragging.
 fn preview(case: &Case) -> Case {
     let mut c = case.clone();
-    let (nx, nz, no) = Fidelity::Preview.elements();
+    let (_, nz, no) = Fidelity::Preview.elements();
+    let nx = Fidelity::Preview.circumferential_elements(c.bearing.longest_arc_rad());
     c.mesh.fidelity = Fidelity::Preview;
     c.mesh.circumferential_elements = nx;
     c.mesh.axial_elements = nz;

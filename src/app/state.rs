@@ -90,6 +90,9 @@ pub struct Persisted {
     pub pins: Vec<crate::scene::compare::Pin>,
     /// The sweep view's input, range and outputs.
     pub sweep: crate::scene::sweep::SweepSpec,
+    /// The editor and results side panels are shown (each can be collapsed to give the view room).
+    pub editor_open: bool,
+    pub results_open: bool,
 }
 
 impl Default for Persisted {
@@ -109,6 +112,8 @@ impl Default for Persisted {
             outline_lock: None,
             pins: Vec::new(),
             sweep: crate::scene::sweep::SweepSpec::default(),
+            editor_open: true,
+            results_open: true,
         }
     }
 }

@@ -170,7 +170,7 @@ impl SectorInertia {
         let r1 = pad.bore_radius_m(journal_radius);
         let r2 = r1 + pad.thickness_m;
         let beta = pad.arc_rad;
-        let rho = pad.density_kg_per_m3;
+        let rho = if pad.massless { 0.0 } else { pad.density_kg_per_m3 };
         let mass = 0.5 * rho * length * beta * (r2 * r2 - r1 * r1);
         let polar_o = 0.25 * rho * length * beta * (r2.powi(4) - r1.powi(4));
         let r_cm = (2.0 / 3.0) * (r2.powi(3) - r1.powi(3)) / (r2 * r2 - r1 * r1) * (0.5 * beta).sin() / (0.5 * beta);
@@ -445,6 +445,7 @@ mod tests {
             pivot_stiffness_n_per_m: Some(1e8),
             pivot_transverse_stiffness_n_per_m: Some(5e8),
             density_kg_per_m3: 7800.0,
+            massless: false,
             youngs_modulus_pa: 200e9,
             poisson_ratio: 0.3,
             orifices: vec![],

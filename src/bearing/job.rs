@@ -63,6 +63,14 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
     if state.growth.is_some() {
         super::tehd::clear(model);
     }
+    // The headline report is the whole loop's (every equilibrium of it, and its wall time), not the last
+    // equilibrium's; residuals and method stay those of the converged state.
+    let t = &state.report;
+    sol.report.iterations = t.equilibrium_iterations;
+    sol.report.inner_iterations = t.inner_iterations;
+    sol.report.film_solves = t.film_solves;
+    sol.report.factorizations = t.equilibrium_factorizations + t.thermal_factorizations;
+    sol.report.seconds = t.seconds;
     let max = |v: &[f64]| v.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
     let (mut t_area, mut area) = (0.0, 0.0);
     for (p, st) in sol.pads.iter_mut().zip(&state.pads) {

@@ -6,7 +6,8 @@ use serde::Serialize;
 /// What an equilibrium solve did.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct SolveReport {
-    /// Outer (journal) Newton iterations, summed over methods and continuation steps.
+    /// Outer (journal) Newton iterations, summed over methods and continuation steps (and for a THD
+    /// solve over every equilibrium of the thermal loop: counts and `seconds` are the whole solve's).
     pub iterations: usize,
     /// Pad (inner) iterations.
     pub inner_iterations: usize,
@@ -16,7 +17,7 @@ pub struct SolveReport {
     pub residual: f64,
     /// Largest final pad residual relative to the pad's scale (floating pads excluded).
     pub pad_residual: f64,
-    /// Residual after each outer iteration.
+    /// Residual after each outer iteration (THD: of the converged state's equilibrium).
     pub residual_history: Vec<f64>,
     pub method: String,
     pub seconds: f64,
@@ -31,6 +32,16 @@ impl SolveReport {
         if !self.warnings.contains(&w) {
             self.warnings.push(w);
         }
+    }
+
+    /// Adds the counts and time of other work that belongs to the same result (the isothermal start of a
+    /// THD solve); residuals, method and warnings stay this report's.
+    pub fn add_work(&mut self, other: &SolveReport) {
+        self.iterations += other.iterations;
+        self.inner_iterations += other.inner_iterations;
+        self.film_solves += other.film_solves;
+        self.factorizations += other.factorizations;
+        self.seconds += other.seconds;
     }
 
     /// Adds the work of an earlier part of the same solve (a suspended part): counts and time add up, its

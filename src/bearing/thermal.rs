@@ -95,7 +95,11 @@ pub struct ThermalReport {
     /// Worst closure over the pads.
     pub energy_balance_worst_pad: f64,
     pub equilibrium_iterations: usize,
+    /// Pad (inner) iterations of those equilibria.
+    pub inner_iterations: usize,
     pub film_solves: usize,
+    /// Reynolds factorisations of those equilibria.
+    pub equilibrium_factorizations: usize,
     pub thermal_factorizations: usize,
     pub seconds: f64,
     pub equilibrium_seconds: f64,
@@ -566,7 +570,9 @@ impl ThdRun {
             }
         }
         self.report.equilibrium_iterations += eq.report.iterations;
+        self.report.inner_iterations += eq.report.inner_iterations;
         self.report.film_solves += eq.report.film_solves;
+        self.report.equilibrium_factorizations += eq.report.factorizations;
         self.u = Some(eq.u.clone());
         self.t_ok = self.t_try.take();
         let tt = Instant::now();
@@ -592,7 +598,9 @@ impl ThdRun {
             let eq = warm_equilibrium(model, &self.op, EquilibriumParams::default(), Some(&eq.u), cancel)?;
             report.equilibrium_seconds += te.elapsed().as_secs_f64();
             report.equilibrium_iterations += eq.report.iterations;
+            report.inner_iterations += eq.report.inner_iterations;
             report.film_solves += eq.report.film_solves;
+            report.equilibrium_factorizations += eq.report.factorizations;
             let (sols, t_in, t_j, t_polished) = film_temperatures(model, thermal, case, &self.op, &params)?;
             report.viscosity_change.push(viscosity_change(&law, &t_polished, current));
             return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_growth(s)));

@@ -16,7 +16,7 @@ use web_time::Instant;
 
 use crate::bearing::{solve_case, Solution};
 use crate::model::{load_case, Case, Fidelity};
-use crate::scene::fidelity::{FidelityTable, LevelCost as LevelRow};
+use crate::scene::fidelity::{flow_error, FidelityTable, LevelCost as LevelRow};
 
 use super::write_atomic;
 
@@ -112,6 +112,7 @@ fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Ve
             err_c: frob_rel(s.reduced.c_ns_per_m, truth.reduced.c_ns_per_m),
             err_p_max: rel(s.p_max_pa, truth.p_max_pa),
             err_t_max: t_rise(&s).zip(t_rise(&truth)).map(|(a, b)| rel(a, b)),
+            err_flows: flow_error(&s.flows_m3_per_s, &truth.flows_m3_per_s),
         });
     }
     rows.push(LevelRow {
@@ -124,6 +125,7 @@ fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Ve
         err_c: 0.0,
         err_p_max: 0.0,
         err_t_max: t_rise(&truth).map(|_| 0.0),
+        err_flows: Some(0.0),
     });
     Ok(rows)
 }
@@ -177,7 +179,7 @@ fn thermal_cost(texts: &[(&str, String)], repeats: usize) -> Result<Vec<(String,
 fn svg_plot(rows: &[LevelRow]) -> String {
     let (w, h, pad) = (640.0, 400.0, 60.0);
     let pts: Vec<&LevelRow> = rows.iter().filter(|r| r.err_k > 0.0).collect();
-    let err = |r: &LevelRow| r.err_eccentricity.max(r.err_k).max(r.err_c).max(r.err_p_max).max(r.err_t_max.unwrap_or(0.0)).max(1e-6);
+    let err = |r: &LevelRow| r.err_eccentricity.max(r.err_k).max(r.err_c).max(r.err_p_max).max(r.err_t_max.unwrap_or(0.0)).max(r.err_flows.unwrap_or(0.0)).max(1e-6);
     let (tmin, tmax) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), r| (a.min(r.median_ms), b.max(r.median_ms)));
     let (emin, emax) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), r| (a.min(err(r)), b.max(err(r))));
     let (lt0, lt1) = ((tmin * 0.5).log10().floor(), (tmax * 2.0).log10().ceil());
@@ -198,7 +200,7 @@ fn svg_plot(rows: &[LevelRow]) -> String {
         let _ = writeln!(s, "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">1e{d}</text>", pad - 6.0, y(e) + 4.0);
     }
     let _ = writeln!(s, "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wall time per solve (release)</text>", w / 2.0, h - 12.0);
-    let _ = writeln!(s, "<text x=\"14\" y=\"{}\" transform=\"rotate(-90 14 {})\" text-anchor=\"middle\">largest relative error (ε, K, C, p_max, T_max)</text>", h / 2.0, h / 2.0);
+    let _ = writeln!(s, "<text x=\"14\" y=\"{}\" transform=\"rotate(-90 14 {})\" text-anchor=\"middle\">largest relative error (ε, K, C, p_max, T_max, flows)</text>", h / 2.0, h / 2.0);
     let colours = ["#440154", "#21918c", "#d07000", "#3b528b"];
     let mut cases: Vec<&str> = pts.iter().map(|r| r.case.as_str()).collect();
     cases.dedup();
@@ -252,13 +254,14 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
         "Each time is the median of {repeats} complete solves in one process (mesh build, equilibrium — with the thermal loop for \
          THD rows —, full and synchronously reduced coefficients). Errors are relative to a reference-fine solution with twice \
          the reference level's element counts (K, C: Frobenius norm of the reduced 2×2 difference over the norm; T_max: the \
-         hottest film temperature's rise above supply).\n"
+         hottest film temperature's rise above supply; flows: the worst of leading-edge, trailing-edge, side, orifice and \
+         cavitation flows, each relative to itself, over those above 1 % of the throughput).\n"
     );
-    let _ = writeln!(md, "| case | level | film nodes | time | ε error | K error | C error | p_max error | T_max error |\n|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(md, "| case | level | film nodes | time | ε error | K error | C error | p_max error | T_max error | flow error |\n|---|---|---|---|---|---|---|---|---|---|");
     for r in &rows {
         let _ = writeln!(
             md,
-            "| {} | {} | {} | {:.1} ms | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {:.1} ms | {} | {} | {} | {} | {} | {} |",
             r.case,
             r.level,
             r.film_nodes,
@@ -267,7 +270,8 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
             pct(r.err_k),
             pct(r.err_c),
             pct(r.err_p_max),
-            r.err_t_max.map_or_else(|| "—".to_string(), pct)
+            r.err_t_max.map_or_else(|| "—".to_string(), pct),
+            r.err_flows.map_or_else(|| "—".to_string(), pct)
         );
     }
     let _ = writeln!(md, "\n![error vs time](performance-error-vs-time.svg)\n");

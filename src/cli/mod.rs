@@ -53,7 +53,12 @@ pub use summary::{solution_json, summary_text};
 
 #[cfg(not(target_arch = "wasm32"))]
 #[derive(Debug, Parser)]
-#[command(name = "tiltpad", version, about = "Tilting-pad journal bearing workbench (solver CLI)")]
+#[command(
+    name = "tiltpad",
+    version,
+    about = "Tilting-pad journal bearing workbench: `tiltpad` without arguments opens the interactive workbench; the commands below run batch solves",
+    after_help = "Without a command, tiltpad opens the workbench window (editor, views, results) on the case edited last, or on the compressor bearing."
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -79,6 +84,7 @@ pub enum Command {
     },
     /// Solve a case over a grid of any case keys; one row per point, written as it completes.
     Sweep {
+        /// Case file (TOML) the sweep starts from.
         case: PathBuf,
         /// A swept key: `KEY=FROM:TO:STEPS`, `KEY=v1,v2,…` or `KEY=[a,b];[c,d]` (repeat for a grid; the
         /// first varies slowest).
@@ -87,12 +93,16 @@ pub enum Command {
         /// One swept key (with --from, --to, --steps), same as `--vary KEY=FROM:TO:STEPS`.
         #[arg(long, value_name = "KEY")]
         param: Option<String>,
+        /// First value of the --param key (in the key's unit, e.g. rpm for `operating.speed_rpm`).
         #[arg(long, requires = "param")]
         from: Option<f64>,
+        /// Last value of the --param key.
         #[arg(long, requires = "param")]
         to: Option<f64>,
+        /// Number of evenly spaced values of the --param key, both ends included.
         #[arg(long, default_value_t = 11)]
         steps: usize,
+        /// Override a case value for every point, e.g. `--set thermal.model=thd` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// CSV of the rows (`-`: standard output, the default when no output is given).

@@ -17,6 +17,8 @@
 
 use std::fmt::Write as _;
 
+use crate::number::csv;
+
 /// What the frequency column of a [`CoefficientTable`] is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum FrequencyMeaning {
@@ -98,7 +100,9 @@ impl CoefficientTable {
         }
         s.push('\n');
         for r in 0..self.frequency_rad_s.len() {
-            let _ = write!(s, "{:?},{:?},{:?}", self.frequency_rad_s[r], self.speed_rpm[r], self.excitation_rad_s[r]);
+            // The speed in rpm comes from arithmetic on the swept range and is written without its round-off;
+            // the rest keeps every digit (the same numbers as the ROSS file).
+            let _ = write!(s, "{:?},{},{:?}", self.frequency_rad_s[r], csv(self.speed_rpm[r]), self.excitation_rad_s[r]);
             for (_, i, j) in TERMS {
                 let _ = write!(s, ",{:?}", self.k_n_per_m[r][i][j]);
             }

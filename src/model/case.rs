@@ -33,6 +33,14 @@ pub struct Bearing {
     pub pads: Vec<Pad>,
 }
 
+impl Bearing {
+    /// The longest pad arc [rad] (sets the circumferential element count of a fidelity level).
+    #[must_use]
+    pub fn longest_arc_rad(&self) -> f64 {
+        self.pads.iter().map(|p| p.arc_rad).fold(0.0, f64::max)
+    }
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum PadKind {
@@ -63,6 +71,8 @@ pub struct Pad {
     /// Transverse pivot stiffness (across the pivot line) [N/m]; `None` = rigid.
     pub pivot_transverse_stiffness_n_per_m: Option<f64>,
     pub density_kg_per_m3: f64,
+    /// No inertia: the pad's mass and moment of inertia are zero (the density is then not used for them).
+    pub massless: bool,
     pub youngs_modulus_pa: f64,
     pub poisson_ratio: f64,
     pub orifices: Vec<Orifice>,
@@ -216,8 +226,13 @@ pub struct Thermal {
     pub reference_temperature_c: Option<f64>,
 }
 
+/// The pad arc the levels' circumferential counts are set for (the 60–80° pads of the shipped
+/// tilting-pad bearings) [rad].
+pub const LEVEL_ARC_RAD: f64 = 80.0 * std::f64::consts::PI / 180.0;
+
 impl Fidelity {
-    /// Default element counts (circumferential per pad, axial over the full length, across an orifice).
+    /// Default element counts (circumferential per pad of up to [`LEVEL_ARC_RAD`], axial over the full
+    /// length, across an orifice).
     #[must_use]
     pub fn elements(self) -> (usize, usize, usize) {
         match self {
@@ -225,6 +240,17 @@ impl Fidelity {
             Self::Standard => (36, 16, 12),
             Self::Reference => (96, 48, 24),
         }
+    }
+
+    /// Circumferential elements per pad for pads of up to `arc_rad`: the level's count, scaled up with the
+    /// arc beyond [`LEVEL_ARC_RAD`] so the element length (and the accuracy a level stands for) stays the
+    /// same on a 160° sector or a 360° bore; shorter pads keep the level's count.
+    #[must_use]
+    #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    pub fn circumferential_elements(self, arc_rad: f64) -> usize {
+        let n = self.elements().0;
+        let scaled = (n as f64 * arc_rad / LEVEL_ARC_RAD - 1e-9).ceil();
+        if scaled.is_finite() && scaled > n as f64 { scaled.min(1e6) as usize } else { n }
     }
 
     /// Default element layers through the pad thickness (pad conduction). Graded layers converge at about

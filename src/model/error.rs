@@ -115,6 +115,6 @@ fn fmt_bound(x: f64) -> String {
     if x.is_infinite() {
         if x > 0.0 { "inf".into() } else { "-inf".into() }
     } else {
-        format!("{x}")
+        crate::number::csv(x)
     }
 }

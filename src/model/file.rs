@@ -123,6 +123,10 @@ pub struct PadFile {
     /// Pad material density (default 7800, steel).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density_kg_per_m3: Option<f64>,
+    /// Pads without inertia (zero mass and moment of inertia), as databook coefficients assume; no
+    /// density may be given with it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub massless: Option<bool>,
     /// Pad material Young's modulus (used by pad flexibility; default 200 GPa).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub youngs_modulus_gpa: Option<f64>,

@@ -203,7 +203,9 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
     };
     let pivot_stiffness = pivot_spring("pivot_stiffness_n_per_m", |p| p.pivot_stiffness_n_per_m)?;
     let pivot_transverse_stiffness = pivot_spring("pivot_transverse_stiffness_n_per_m", |p| p.pivot_transverse_stiffness_n_per_m)?;
+    let massless = src.get("massless", |p| p.massless).is_some_and(|(m, _)| m);
     let density = match src.get("density_kg_per_m3", |p| p.density_kg_per_m3) {
+        Some((_, key)) if massless => return Err(inconsistent(&key, "massless pads have no density: remove it, or set massless = false")),
         Some((v, key)) => Range::positive(3e4).check(&key, v)?,
         None => 7800.0,
     };
@@ -280,6 +282,7 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         pivot_stiffness_n_per_m: pivot_stiffness,
         pivot_transverse_stiffness_n_per_m: pivot_transverse_stiffness,
         density_kg_per_m3: density,
+        massless,
         youngs_modulus_pa: youngs,
         poisson_ratio: poisson,
         orifices,
@@ -515,6 +518,7 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
         }
         Ok(v)
     };
+    let nx0 = fidelity.circumferential_elements(bearing.longest_arc_rad()).max(nx0);
     let nx = count("mesh.circumferential_elements", m.circumferential_elements, nx0, 4, 2000)?;
     let nz = count("mesh.axial_elements", m.axial_elements, nz0, 2, 1000)?;
     let no = count("mesh.orifice_elements", m.orifice_elements, no0, 2, 64)?;

@@ -147,6 +147,13 @@ pub const KEYS: &[KeySpec] = &[
         "Stiffness of the pivot across the pivot line (a rocker's tangential contact). Absent: the pivot does not move sideways. A finite value adds the sideways pivot motion as a pad coordinate.",
     ),
     num("bearing.pads.density_kg_per_m3", "kg/m³", Range::positive(3e4), (1000.0, 9000.0), "7800", "Pad material density: sets the pad inertia that enters the frequency-dependent reduced coefficients."),
+    other(
+        "bearing.pads.massless",
+        "",
+        Allowed::Bool,
+        "false",
+        "Pads without inertia (zero mass and moment of inertia), as databook coefficients assume; the reduced coefficients then do not depend on the pad material. Give no density with it.",
+    ),
     num("bearing.pads.youngs_modulus_gpa", "GPa", Range::positive(2000.0), (70.0, 220.0), "200", "Pad material stiffness, for the pad flexibility model (steel 200 GPa, brass about 100 GPa). Not used by rigid pads."),
     num("bearing.pads.poisson_ratio", "–", Range::open(-1.0, 0.5), (0.25, 0.35), "0.3", "Pad material Poisson ratio, for the pad flexibility model."),
     // [[bearing.pads.orifice]]
@@ -265,7 +272,7 @@ pub const KEYS: &[KeySpec] = &[
         "",
         Allowed::Choice(&["preview", "standard", "reference"]),
         "standard",
-        "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks). Each orifice is refined further.",
+        "Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks); pads longer than 80° get proportionally more along the arc (a 360° bore: 4.5×). Each orifice is refined further.",
     ),
     count("mesh.circumferential_elements", 4, 2000, "from the fidelity", "Explicit element count along each pad's arc (before orifice refinement), overriding the fidelity level."),
     count("mesh.axial_elements", 2, 1000, "from the fidelity", "Explicit element count across the full axial length (even with the half model), overriding the fidelity level."),

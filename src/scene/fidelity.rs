@@ -4,6 +4,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::bearing::solution::BearingFlows;
+
 /// One measured level of one run (isothermal or THD): written by the bench, read by the editor.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LevelCost {
@@ -18,6 +20,20 @@ pub struct LevelCost {
     /// Relative error of the maximum film temperature rise above supply (THD rows only).
     #[serde(default)]
     pub err_t_max: Option<f64>,
+    /// Worst relative error of the bearing's flows ([`flow_error`]; absent in tables measured before it).
+    #[serde(default)]
+    pub err_flows: Option<f64>,
+}
+
+/// Worst relative error over the bearing's flows (leading edges in, trailing edges out, sides out,
+/// orifices in, into cavitation), each against its own truth value, over the flows that carry at least
+/// 1 % of the throughput (smaller ones are round-off of a balance); `None` when no flow does.
+#[must_use]
+pub fn flow_error(flows: &BearingFlows, truth: &BearingFlows) -> Option<f64> {
+    let parts = |f: &BearingFlows| [f.leading_edges_in, f.trailing_edges_out, f.sides_out, f.orifices_in, f.to_cavitation];
+    let (a, t) = (parts(flows), parts(truth));
+    let throughput: f64 = t.iter().map(|v| v.abs()).sum();
+    a.iter().zip(&t).filter(|(_, t)| t.abs() >= 0.01 * throughput && throughput > 0.0).map(|(a, t)| ((a - t) / t).abs()).reduce(f64::max)
 }
 
 /// The measured table.
@@ -47,8 +63,9 @@ impl FidelityTable {
             .map(|r| {
                 let run = if r.case.contains("THD") { "THD" } else { "isothermal" };
                 let t = r.err_t_max.map_or_else(String::new, |e| format!(", T rise ±{:.1} %", 100.0 * e));
+                let q = r.err_flows.map_or_else(String::new, |e| format!(", flows ±{:.1} %", 100.0 * e));
                 format!(
-                    "{run}: {:.0} ms, ε ±{:.1} %, K ±{:.1} %, C ±{:.1} %{t}",
+                    "{run}: {:.0} ms, ε ±{:.1} %, K ±{:.1} %, C ±{:.1} %{t}{q}",
                     r.median_ms,
                     100.0 * r.err_eccentricity,
                     100.0 * r.err_k,
@@ -71,5 +88,20 @@ mod tests {
         assert!(p.0 > s.0 && s.0 > r.0, "errors fall with fidelity: {p:?} {s:?} {r:?}");
         assert!(p.1 < s.1 && s.1 < r.1, "time rises with fidelity");
         assert_eq!(t.describe("standard").len(), t.rows.iter().filter(|r| r.level == "standard").count());
+    }
+
+    #[test]
+    fn flow_error_is_the_worst_flow_that_matters() {
+        let truth = BearingFlows { leading_edges_in: 10.0, trailing_edges_out: 6.0, sides_out: 3.0, orifices_in: 1.0, to_cavitation: 0.1, mass_balance_error: 0.0 };
+        // The orifice flow 30 % off dominates; the flow into cavitation (0.5 % of the throughput) is left out.
+        let coarse = BearingFlows { leading_edges_in: 10.1, orifices_in: 1.3, to_cavitation: 0.2, ..truth };
+        let e = flow_error(&coarse, &truth).unwrap();
+        assert!((e - 0.3).abs() < 1e-12, "{e}");
+        assert_eq!(flow_error(&truth, &truth), Some(0.0));
+        assert_eq!(flow_error(&truth, &BearingFlows::default()), None);
+        let mut row = shipped().unwrap().rows[0].clone();
+        row.err_flows = Some(0.3);
+        let table = FidelityTable { generated: String::new(), machine: String::new(), case: String::new(), rows: vec![row.clone()] };
+        assert!(table.describe(&row.level)[0].ends_with(", flows ±30.0 %"), "{:?}", table.describe(&row.level));
     }
 }

@@ -269,6 +269,44 @@ fn trace(field: &VelocityField, start: [f64; 2], direction: f64, orifices: &[Ori
     (points, End::MaxLength)
 }
 
+/// Arrowheads along a drawn flowline: `(tip, unit direction)` every `spacing` of its length (in the
+/// points' units), the first at `phase · spacing` (phase in [0, 1)).
+///
+/// Give each line its own phase ([`arrow_phase`]): lines seeded on one ring around a weakly injecting
+/// orifice bend into the main flow within a few radii, and with a common phase their first arrowheads sit
+/// at one distance from the hole, drawing a ring that reads as another orifice.
+#[must_use]
+pub fn arrowheads(points: &[[f64; 2]], spacing: f64, phase: f64) -> Vec<([f64; 2], [f64; 2])> {
+    let mut out = Vec::new();
+    if spacing.is_nan() || spacing <= 0.0 {
+        return out;
+    }
+    let mut next = phase.rem_euclid(1.0) * spacing;
+    let mut run = 0.0;
+    for w in points.windows(2) {
+        let d = [w[1][0] - w[0][0], w[1][1] - w[0][1]];
+        let len = d[0].hypot(d[1]);
+        if len <= 0.0 {
+            continue;
+        }
+        let dir = [d[0] / len, d[1] / len];
+        while run + len >= next {
+            let t = next - run;
+            out.push(([w[0][0] + dir[0] * t, w[0][1] + dir[1] * t], dir));
+            next += spacing;
+        }
+        run += len;
+    }
+    out
+}
+
+/// The arrowhead phase of the `index`-th line: the golden-ratio sequence, evenly spread for any count.
+#[must_use]
+#[allow(clippy::cast_precision_loss)]
+pub fn arrow_phase(index: usize) -> f64 {
+    (0.5 + index as f64 * 0.618_033_988_749_895).fract()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -368,5 +406,29 @@ mod tests {
             let s_end = l.points.last().unwrap()[0];
             assert!((0.038..0.0405).contains(&s_end), "{s_end}");
         }
+    }
+
+    #[test]
+    fn arrowheads_of_lines_from_one_ring_do_not_draw_a_ring() {
+        // 16 radial lines from a ring of radius 1 (the seeds around a source), 10 long, arrowheads every 7.
+        let lines: Vec<Vec<[f64; 2]>> = (0..16)
+            .map(|k| {
+                let a = std::f64::consts::TAU * f64::from(k) / 16.0;
+                (0..=100).map(|i| 1.0 + 0.1 * f64::from(i)).map(|r| [r * a.cos(), r * a.sin()]).collect()
+            })
+            .collect();
+        let first_radius = |l: &[[f64; 2]], phase: f64| {
+            let heads = arrowheads(l, 7.0, phase);
+            heads[0].0[0].hypot(heads[0].0[1])
+        };
+        let common: Vec<f64> = lines.iter().map(|l| first_radius(l, 0.5)).collect();
+        assert!(common.iter().all(|r| (r - 4.5).abs() < 1e-9), "one phase: one ring {common:?}");
+        let spread: Vec<f64> = lines.iter().enumerate().map(|(k, l)| first_radius(l, arrow_phase(k))).collect();
+        let (lo, hi) = spread.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), &r| (a.min(r), b.max(r)));
+        assert!(hi - lo > 0.8 * 7.0, "staggered phases spread the first arrowheads: {spread:?}");
+        // Along one line the arrowheads are one spacing apart and point downstream.
+        let heads = arrowheads(&lines[0], 7.0, 0.1);
+        assert_eq!(heads.len(), 2);
+        assert!((heads[1].0[0] - heads[0].0[0] - 7.0).abs() < 1e-9 && (heads[0].1[0] - 1.0).abs() < 1e-12);
     }
 }

@@ -116,7 +116,7 @@ impl FrfCurves {
         }
         s.push('\n');
         for (i, f) in self.frequency_hz.iter().enumerate() {
-            s.push_str(&format!("{f:?}"));
+            s.push_str(&crate::number::csv(*f));
             for c in &self.curves {
                 s.push_str(&format!(",{:e},{:.6}", c.magnitude[i], c.phase_deg[i]));
             }

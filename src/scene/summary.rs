@@ -57,22 +57,10 @@ pub fn small(x: f64) -> String {
     if x.abs() < 1e-12 { "< 1e-12".into() } else { format!("{x:.1e}") }
 }
 
-/// Four significant figures, without scientific notation for ordinary magnitudes.
+/// Four significant figures ([`crate::number::sig`]).
 #[must_use]
 pub fn sig4(x: f64) -> String {
-    if !x.is_finite() {
-        return format!("{x}");
-    }
-    if x == 0.0 {
-        return "0".into();
-    }
-    let mag = x.abs().log10().floor();
-    if !(-4.0..6.0).contains(&mag) {
-        return format!("{x:.3e}");
-    }
-    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let decimals = (3.0 - mag).max(0.0) as usize;
-    format!("{x:.decimals$}")
+    crate::number::sig(x, 4)
 }
 
 /// Builds the summary of a solution.
@@ -151,10 +139,10 @@ pub fn summary(s: &Solution) -> Summary {
         title: "Solver report",
         rows: vec![
             row("Method", r.method.clone(), "", "How equilibrium was found: coupled Newton on journal and pad coordinates; pad assembly (nested Newton), a scan along the load and load continuation as fallbacks."),
-            row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations."),
-            row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations."),
+            row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations, over the whole solve (THD: every equilibrium of the thermal loop and its isothermal start)."),
+            row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations (THD: with the film-energy and pad-conduction factorisations)."),
             row("Residual", format!("{} (pads {})", small(r.residual), small(r.pad_residual)), "–", "Final force residual relative to the force scale, and the largest pad residual."),
-            row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the equilibrium and coefficient solve."),
+            row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the whole solve (THD: the isothermal start and the thermal loop)."),
             row("Film nodes", s.derived.film_nodes.to_string(), "", "Finite-element nodes over all pads (mesh fidelity)."),
         ],
     };
@@ -219,7 +207,7 @@ mod tests {
         assert_eq!(sig4(9000.0), "9000");
         assert_eq!(sig4(0.012345), "0.01235");
         assert_eq!(sig4(123.456), "123.5");
-        assert_eq!(sig4(2.5e7), "2.500e7");
+        assert_eq!(sig4(2.5e7), "2.5e7");
         assert_eq!(sig4(0.0), "0");
     }
 }

@@ -50,7 +50,7 @@ impl Axis {
         #[allow(clippy::cast_precision_loss)]
         let values = (0..steps)
             .map(|i| if steps == 1 { from } else { from + (to - from) * i as f64 / (steps - 1) as f64 })
-            .map(|v| format!("{v:?}"))
+            .map(crate::number::csv)
             .collect();
         Self { key: key.to_string(), values }
     }
@@ -101,7 +101,9 @@ mod tests {
     fn axes_parse_ranges_lists_and_per_pad_lists() {
         let a = Axis::parse("operating.speed_rpm=6000:10000:3").unwrap();
         assert_eq!(a.key, "operating.speed_rpm");
-        assert_eq!(a.values, ["6000.0", "8000.0", "10000.0"]);
+        assert_eq!(a.values, ["6000", "8000", "10000"]);
+        // Values from arithmetic are written without round-off digits (0.2 + 0.4 = 0.6000000000000001).
+        assert_eq!(Axis::parse("bearing.pads.preload=0.2:1.0:5").unwrap().values, ["0.2", "0.4", "0.6", "0.8", "1"]);
         let b = Axis::parse("thermal.model=isothermal, thd").unwrap();
         assert_eq!(b.values, ["isothermal", "thd"]);
         let c = Axis::parse("operating.injection_pressure_bar=[0,0,0,20,0];[0,0,0,40,0]").unwrap();

@@ -207,7 +207,23 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         set_clearance_mode,
     ));
     out.merge(fields_ui(ui, doc, &[CLEARANCE[mode as usize], THICKNESS]));
-    out.merge(opt_fields_ui(ui, doc, &PAD_MATERIAL));
+    let massless = doc.file().bearing.pads.massless.unwrap_or(false);
+    out.merge(choice_ui(
+        ui,
+        doc,
+        Pick { key: "bearing.pads.massless", label: "Pad inertia", tip: None },
+        massless,
+        &[(false, "from the density"), (true, "massless pads")],
+        |f, m| {
+            f.bearing.pads.massless = m.then_some(true);
+            if m {
+                f.bearing.pads.density_kg_per_m3 = None;
+            }
+        },
+    ));
+    // Massless pads have no density row (the validation refuses one).
+    let material: Vec<OptField> = PAD_MATERIAL.into_iter().filter(|f| !(massless && f.num.key == "bearing.pads.density_kg_per_m3")).collect();
+    out.merge(opt_fields_ui(ui, doc, &material));
     if !doc.file().bearing.pad.is_empty() {
         ui.label("");
         ui.label(egui::RichText::new(format!("{} per-pad override table(s) from the file apply ([[bearing.pad]]); edit them in the TOML.", doc.file().bearing.pad.len())).weak().small());

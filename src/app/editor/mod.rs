@@ -15,7 +15,7 @@ pub use widgets::EditOutput;
 
 /// The groups, in order: title, function that draws the rows, open by default.
 type GroupUi = fn(&mut Ui, &mut Document) -> EditOutput;
-const GROUPS: [(&str, GroupUi, bool); 9] = [
+const GROUPS: [(&str, GroupUi, bool); 10] = [
     ("Geometry", bearing::geometry_ui, true),
     ("Pads", bearing::pads_ui, true),
     ("Orifices", bearing::orifices_ui, false),

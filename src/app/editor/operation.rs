@@ -304,10 +304,13 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
             ui.end_row();
         }
     }
+    // The level's circumferential count grows with the longest pad arc (Fidelity::circumferential_elements).
+    let longest_arc = doc.validation().as_ref().map_or(0.0, |c| c.bearing.longest_arc_rad());
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     for (key, label, level, get, set) in COUNTS {
         let num = Num { key, label, decimals: 0 };
-        out.merge(optional_ui(ui, doc, &num, level(fid) as f64, |f| get(f).map(|v| v as f64), |f, v| set(f, v.map(|x| x.round().max(0.0) as usize))));
+        let default = if key == "mesh.circumferential_elements" { fid.circumferential_elements(longest_arc) } else { level(fid) };
+        out.merge(optional_ui(ui, doc, &num, default as f64, |f| get(f).map(|v| v as f64), |f, v| set(f, v.map(|x| x.round().max(0.0) as usize))));
     }
     let budget = Num { key: "mesh.max_nodes", label: "Node budget", decimals: 0 };
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]

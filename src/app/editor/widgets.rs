@@ -15,6 +15,7 @@ use egui::{Color32, DragValue, RichText, Ui};
 use crate::app::document::Document;
 use crate::model::schema::{spec, KeySpec};
 use crate::model::CaseFile;
+use crate::number::sig;
 
 /// A numeric case value as the editor shows it; unit, meaning and typical range are the schema's.
 #[derive(Debug, Clone, Copy)]
@@ -36,7 +37,7 @@ pub fn key_tooltip(key: &str) -> String {
     match schema_row(key) {
         Some(s) => {
             let unit = if s.unit.is_empty() { String::new() } else { format!(" {}", s.unit) };
-            let typical = s.typical.map_or_else(String::new, |(lo, hi)| format!("Typical: {lo} – {hi}{unit}\n"));
+            let typical = s.typical.map_or_else(String::new, |(lo, hi)| format!("Typical: {} – {}{unit}\n", sig(lo, 6), sig(hi, 6)));
             format!("{}\n\n{typical}Allowed: {}\nCase key: {key}", s.meaning, s.allowed.describe())
         }
         None => format!("Case key: {key}"),
@@ -192,7 +193,7 @@ pub fn optional_ui(
     let mut out = EditOutput::default();
     let label = ui
         .horizontal(|ui| {
-            if ui.checkbox(&mut on, "").on_hover_text(format!("Give {} explicitly (unchecked: {default} {})", n.label, n.unit())).changed() {
+            if ui.checkbox(&mut on, "").on_hover_text(format!("Give {} explicitly (unchecked: {} {})", n.label, sig(default, 6), n.unit())).changed() {
                 let value = on.then(|| current.unwrap_or(default));
                 doc.edit(n.key, false, |f| set(f, value));
                 out.changed = true;
@@ -203,7 +204,7 @@ pub fn optional_ui(
     match get(doc.file()) {
         Some(v) => out.merge(drag_ui(ui, doc, n, label, v, |f, x| set(f, Some(x)))),
         None => {
-            let text = absent_meaning(n.key).map_or_else(|| format!("{default} (default)"), |m| format!("{m} (default)"));
+            let text = absent_meaning(n.key).map_or_else(|| format!("{} (default)", sig(default, 6)), |m| format!("{m} (default)"));
             ui.label(RichText::new(text).weak()).labelled_by(label.id);
         }
     }

@@ -2,8 +2,9 @@
 //! marked, and the full coefficient matrices as a table.
 
 use egui::{Color32, Grid, RichText, ScrollArea, Ui};
-use egui_plot::{GridInput, GridMark, Legend, Line, MarkerShape, Plot, Points, VLine};
+use egui_plot::{GridInput, GridMark, Legend, Line, LineStyle, MarkerShape, Plot, Points, VLine};
 
+use crate::number::tick;
 use crate::scene::field::nice_ticks;
 
 use crate::scene::plots::{CoefficientPlot, MatrixTable};
@@ -13,6 +14,14 @@ const COLORS: [Color32; 4] = [
     Color32::from_rgb(230, 159, 0),
     Color32::from_rgb(0, 158, 115),
     Color32::from_rgb(204, 121, 167),
+];
+
+/// Line style and marker per series, distinct so that coinciding curves are told apart.
+const SERIES_STYLES: [(LineStyle, MarkerShape); 4] = [
+    (LineStyle::Solid, MarkerShape::Circle),
+    (LineStyle::Dashed { length: 8.0 }, MarkerShape::Square),
+    (LineStyle::Dotted { spacing: 5.0 }, MarkerShape::Up),
+    (LineStyle::Dashed { length: 3.0 }, MarkerShape::Cross),
 ];
 
 /// What a plot shows: its id, title, unit and abscissa.
@@ -34,12 +43,14 @@ fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Seri
         .allow_scroll(false)
         .x_grid_spacer(round_grid)
         .y_grid_spacer(round_grid)
-        .x_axis_formatter(|mark, _| tick_label(mark.value, mark.step_size))
-        .y_axis_formatter(|mark, _| tick_label(mark.value, mark.step_size))
+        .x_axis_formatter(|mark, _| tick(mark.value, mark.step_size))
+        .y_axis_formatter(|mark, _| tick(mark.value, mark.step_size))
         .show(ui, |p| {
-            for (s, color) in series.iter().zip(COLORS) {
-                p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8));
-                p.points(Points::new(s.name.clone(), s.points.clone()).color(color).radius(2.0));
+            // Each series has its own dash and marker as well as its colour: coinciding curves (Kxx = Kyy
+            // on a symmetric bearing) stay visible, the later one dashed over the earlier.
+            for ((s, color), (style, marker)) in series.iter().zip(COLORS).zip(SERIES_STYLES) {
+                p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8).style(style));
+                p.points(Points::new(s.name.clone(), s.points.clone()).color(color).shape(marker).radius(3.0));
             }
             if let Some((x, values)) = current {
                 p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
@@ -48,13 +59,6 @@ fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Seri
                 }
             }
         });
-}
-
-/// A tick label with as many decimals as its grid step needs (0.5 steps show "0.5", not "0" twice).
-#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-fn tick_label(value: f64, step: f64) -> String {
-    let decimals = if step >= 1.0 || step <= 0.0 { 0 } else { (-step.log10()).ceil().clamp(0.0, 12.0) as usize };
-    format!("{value:.decimals$}")
 }
 
 /// Grid lines at round values (1, 2 or 5 × 10ⁿ apart, about five labelled), with fainter lines at a

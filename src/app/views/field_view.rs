@@ -13,7 +13,7 @@ use crate::app::state::PadChoice;
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
 use crate::scene::field::{common_range, nice_ticks, FieldKind, PadMap};
-use crate::scene::flowlines::{orifice_sites, pad_flowlines, Flowline, FlowlineParams};
+use crate::scene::flowlines::{arrow_phase, arrowheads, orifice_sites, pad_flowlines, Flowline, FlowlineParams};
 use crate::scene::summary::sig4;
 
 /// Texture width and height of a rasterised pad.
@@ -132,8 +132,8 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
             painter.circle_stroke(frame.map([o.s_m, o.z_m]), r, Stroke::new(1.5, color));
         }
         if flowlines {
-            for line in cache.flowlines(solution, map.pad) {
-                draw_flowline(&painter, &frame, line);
+            for (k, line) in cache.flowlines(solution, map.pad).iter().enumerate() {
+                draw_flowline(&painter, &frame, line, arrow_phase(k));
             }
         }
         painter.text(rect.center_top() - Vec2::new(0.0, 2.0), Align2::CENTER_BOTTOM, format!("Pad {}", map.pad), FontId::proportional(13.0), text);
@@ -199,22 +199,17 @@ fn pack<'m>(area: Rect, maps: &[&'m PadMap], gap: f32) -> Vec<(Rect, &'m PadMap)
         .collect()
 }
 
-fn draw_flowline(painter: &egui::Painter, frame: &ScreenFromPad, line: &Flowline) {
+/// A flowline with arrowheads every 70 points of length, starting at `phase` of that ([`arrowheads`]).
+#[allow(clippy::cast_possible_truncation)]
+fn draw_flowline(painter: &egui::Painter, frame: &ScreenFromPad, line: &Flowline, phase: f64) {
     let pts: Vec<Pos2> = line.points.iter().map(|&p| frame.map(p)).collect();
     let stroke = Stroke::new(1.2, Color32::from_rgba_unmultiplied(255, 255, 255, 200));
-    painter.add(Shape::line(pts.clone(), stroke));
-    // Arrowheads every 70 points of length.
-    let mut run = 35.0;
-    for w in pts.windows(2) {
-        let seg = w[1] - w[0];
-        run += seg.length();
-        if run >= 70.0 && seg.length() > 0.0 {
-            run = 0.0;
-            let d = seg.normalized();
-            let n = Vec2::new(-d.y, d.x);
-            let tip = w[1];
-            painter.add(Shape::convex_polygon(vec![tip, tip - d * 6.0 + n * 3.0, tip - d * 6.0 - n * 3.0], stroke.color, Stroke::NONE));
-        }
+    let screen: Vec<[f64; 2]> = pts.iter().map(|p| [f64::from(p.x), f64::from(p.y)]).collect();
+    painter.add(Shape::line(pts, stroke));
+    for (tip, d) in arrowheads(&screen, 70.0, phase) {
+        let (tip, d) = (Pos2::new(tip[0] as f32, tip[1] as f32), Vec2::new(d[0] as f32, d[1] as f32));
+        let n = Vec2::new(-d.y, d.x);
+        painter.add(Shape::convex_polygon(vec![tip, tip - d * 6.0 + n * 3.0, tip - d * 6.0 - n * 3.0], stroke.color, Stroke::NONE));
     }
 }
 
@@ -239,11 +234,12 @@ pub(crate) fn colour_bar(painter: &egui::Painter, rect: Rect, map: ColorMap, tit
     painter.rect_stroke(rect, 0.0, Stroke::new(1.0, Color32::from_gray(160)), egui::StrokeKind::Outside);
     let color = text_color;
     let (lo_d, hi_d) = (lo * scale, hi * scale);
-    for v in nice_ticks(lo_d, hi_d, 5) {
+    let values = nice_ticks(lo_d, hi_d, 5);
+    for (&v, label) in values.iter().zip(crate::number::ticks(&values)) {
         let t = if hi_d > lo_d { ((v - lo_d) / (hi_d - lo_d)) as f32 } else { 0.5 };
         let y = rect.bottom() - t * rect.height();
         painter.line_segment([Pos2::new(rect.right(), y), Pos2::new(rect.right() + 4.0, y)], Stroke::new(1.0, color));
-        painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, sig4(v), FontId::proportional(11.0), color);
+        painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, label, FontId::proportional(11.0), color);
     }
     painter.text(rect.center_top() - Vec2::new(0.0, 6.0), Align2::CENTER_BOTTOM, title, FontId::proportional(11.0), color);
 }

@@ -100,6 +100,7 @@ impl PadFilmInputs {
             pivot_stiffness_n_per_m: _,
             pivot_transverse_stiffness_n_per_m: _, // kind and which stiffnesses are given: dofs
             density_kg_per_m3: _,                  // structure (coefficients)
+            massless: _,                           // structure (coefficients)
             youngs_modulus_pa: _,
             poisson_ratio: _, // FlexInputs, when the pads bend
             orifices,
@@ -150,7 +151,7 @@ impl FilmsInputs {
 pub struct StructureInputs {
     /// Radial and transverse pivot stiffness per pad [N/m].
     pub stiffness_n_per_m: Vec<[Option<f64>; 2]>,
-    /// Pad density per pad [kg/m³] (inertia only).
+    /// Pad density per pad [kg/m³] (inertia only; 0 for massless pads).
     pub density_kg_per_m3: Vec<f64>,
 }
 
@@ -171,11 +172,14 @@ impl StructureInputs {
                 pivot_stiffness_n_per_m,
                 pivot_transverse_stiffness_n_per_m,
                 density_kg_per_m3,
+                massless,
                 youngs_modulus_pa: _,
                 poisson_ratio: _,
                 orifices: _,
             } = pad;
-            ([*pivot_stiffness_n_per_m, *pivot_transverse_stiffness_n_per_m], *density_kg_per_m3)
+            // The density of the inertia: none for massless pads.
+            let density = if *massless { 0.0 } else { *density_kg_per_m3 };
+            ([*pivot_stiffness_n_per_m, *pivot_transverse_stiffness_n_per_m], density)
         });
         let (stiffness_n_per_m, density_kg_per_m3) = fields.unzip();
         Self { stiffness_n_per_m, density_kg_per_m3 }

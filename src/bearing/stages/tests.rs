@@ -315,6 +315,13 @@ fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
     let w = whole.thermal.as_ref().unwrap();
     assert!((w.t_max_film_c - t.t_max_film_c).abs() < 1e-3, "{} vs {}", w.t_max_film_c, t.t_max_film_c);
     assert!(sol.pads.iter().all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
+    // The headline report is the whole solve's: every equilibrium of the loop and its time, plus (through
+    // the stages) the isothermal start; not the last equilibrium's.
+    let (r, wr) = (&sol.report, &whole.report);
+    assert_eq!((wr.iterations, wr.film_solves, wr.seconds), (w.report.equilibrium_iterations, w.report.film_solves, w.report.seconds));
+    assert!(wr.inner_iterations == w.report.inner_iterations && wr.factorizations > w.report.equilibrium_factorizations);
+    assert!(r.seconds > t.report.seconds, "{} s vs the loop's {} s", r.seconds, t.report.seconds);
+    assert!(r.iterations > t.report.equilibrium_iterations && r.film_solves > t.report.film_solves, "{r:?} vs {:?}", t.report);
     // A thermal setting reruns only the thermal stage (and those after it).
     req.case = thd(&["thermal.convection_w_per_m2_k=150"]);
     s.run(&req, &NoCancel).unwrap();

@@ -117,7 +117,7 @@ impl Stage for ThermalStage {
 
     fn poll(&mut self, inputs: &ThermalInputs, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
         let case = ctx.case().clone();
-        let start = ctx.output::<EquilibriumStage>()?.coordinates.clone();
+        let (start, start_report) = ctx.output::<EquilibriumStage>().map(|s| (s.coordinates.clone(), s.report.clone()))?;
         let model = ctx.output_mut::<FilmsStage>()?;
         install_structure(model, &case)?;
         if self.solids.get(&inputs.solids).is_none() {
@@ -134,6 +134,9 @@ impl Stage for ThermalStage {
             self.run.put(inputs.clone(), run);
             return Ok(Progress::Suspended(fraction));
         };
-        Ok(Progress::Done(Arc::new(assemble_thd_solution(model, &case, &state))))
+        let mut solution = assemble_thd_solution(model, &case, &state);
+        // The isothermal start is part of this result's work.
+        solution.report.add_work(&start_report);
+        Ok(Progress::Done(Arc::new(solution)))
     }
 }
