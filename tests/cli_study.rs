@@ -404,8 +404,8 @@ fn sweeps_and_solves_mark_the_exceeded_design_limits() {
     let o = run(&["solve", &case("compressor-overload.toml"), "--set", PREVIEW, "--set", "limits.max_peak_pressure_mpa=1", "--json", "-"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let summary = stderr(&o);
-    assert!(summary.contains("DESIGN LIMITS EXCEEDED") && summary.contains("W/(L·D) 3.986 MPa > limit 3.500 MPa"), "{summary}");
-    assert!(summary.contains("> limit 1.000 MPa"), "{summary}");
+    assert!(summary.contains("DESIGN LIMITS EXCEEDED") && summary.contains("W/(L·D) 3.986 MPa > limit 3.5 MPa"), "{summary}");
+    assert!(summary.contains("> limit 1 MPa"), "{summary}");
     let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let checks = j["design_limits"]["checks"].as_array().unwrap();
     let p = checks.iter().find(|c| c["kind"] == "max_peak_pressure").unwrap();

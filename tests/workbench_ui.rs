@@ -473,8 +473,8 @@ fn design_limits_are_marked_in_the_results_panel_and_the_bearing_view() {
     // The compressor bearing at 18 kN: W/(L·D) = 18000 / (44.45 mm · 101.6 mm) = 3.986 MPa > 3.5 MPa.
     edit_and_solve(&mut h, "operating.load_n", |f| f.operating.load_n = Some(18000.0));
     h.get_by_label("Design limits exceeded:");
-    h.get_by_label("W/(L·D) 3.986 MPa > limit 3.500 MPa");
-    h.get_by_label("Exceeds design limit: W/(L·D) 3.986 MPa > limit 3.500 MPa");
+    h.get_by_label("W/(L·D) 3.986 MPa > limit 3.5 MPa");
+    h.get_by_label("Exceeds design limit: W/(L·D) 3.986 MPa > limit 3.5 MPa");
     snapshot(&mut h, "bearing_view_limits_exceeded");
     // A limit raised in the case clears its marks (limits enter no solver stage: nothing is re-solved).
     edit_and_solve(&mut h, "limits.max_specific_load_mpa", |f| f.limits.max_specific_load_mpa = Some(5.0));
@@ -553,6 +553,7 @@ fn locked_scales_survive_two_edits() {
     h.get_by_label_contains("Lock scales").click();
     h.run_steps(2);
     h.get_by_label_contains("journal displacement × 100");
+}
 
 /// Without a desktop portal, an export asks for a name in the workbench's own dialog: nothing is written
 /// before a name is typed, and an existing file is replaced only after the user confirms.

@@ -17,7 +17,7 @@ pub fn value_text(c: &Check) -> String {
     c.value.map_or_else(|| "—".into(), |v| display(c.kind, v))
 }
 
-/// `h_min 6.600 µm < limit 10.00 µm` for an exceeded check, `h_min 12.00 µm (≥ 10.00 µm)` otherwise.
+/// `h_min 6.6 µm < limit 10 µm` for an exceeded check, `h_min 12 µm (≥ 10 µm)` otherwise.
 #[must_use]
 pub fn text(c: &Check) -> String {
     let (bad, ok) = if c.kind.is_minimum() { ("<", "≥") } else { (">", "≤") };

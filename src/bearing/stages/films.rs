@@ -77,6 +77,7 @@ impl FlexInputs {
                     youngs_modulus_pa,
                     poisson_ratio,
                     orifices: _,
+                    massless: _, // the rigid inertia's (structure); the modes take the material's density
                 } = pad;
                 [*youngs_modulus_pa, *poisson_ratio, *density_kg_per_m3]
             })
