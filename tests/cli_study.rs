@@ -370,6 +370,18 @@ fn vtu_files_read_back_with_their_nodes_and_values() {
     assert_eq!(pads.num_points(), nodes * layers);
     let tp = point_array(&pads, "pad_temperature_c");
     assert_eq!(tp.iter().copied().fold(f64::NEG_INFINITY, f64::max), j["t_max_pad_c"].as_f64().unwrap());
+    // Rigid pads: no deformation field.
+    assert!(film.data.point.iter().all(|a| !matches!(a, vtkio::model::Attribute::DataArray(d) if d.name == "elastic_radial_displacement_m")));
+    // Flexible pads: the film face's elastic radial displacement, its extremes those of the solution's pads.
+    let flex = dir.join("flex.vtu");
+    let o = run(&["solve", &case("compressor-bearing-flexible.toml"), "--set", PREVIEW, "--vtu", flex.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let s = common::solve("compressor-bearing-flexible.toml", &["mesh.fidelity=\"preview\""]);
+    let u = point_array(&read_vtu(&flex), "elastic_radial_displacement_m");
+    let peak = |v: &mut dyn Iterator<Item = f64>| v.fold(0.0_f64, |m, x| m.max(x.abs()));
+    let solved = peak(&mut s.pads.iter().flat_map(|p| p.elastic_displacement_m.iter().copied()));
+    assert!(solved > 0.0);
+    assert_eq!(peak(&mut u.iter().copied()), solved);
     std::fs::remove_dir_all(&dir).ok();
 }
 

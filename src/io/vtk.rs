@@ -161,6 +161,8 @@ pub fn film_grid(solution: &Solution) -> Grid {
     let centre = solution.journal_position_m;
     let u = solution.derived.speed_rad_s * r;
     let mut grid = Grid::default();
+    // Flexible pads: the film face's elastic radial displacement (zero on rigid pads, so that every point has one).
+    let flexible = solution.pads.iter().any(|p| !p.elastic_displacement_m.is_empty());
     for pad in &solution.pads {
         let pg = PadGrid::new(pad, r);
         let (nx, nz) = (pg.field.s_m.len(), pg.nz());
@@ -188,6 +190,10 @@ pub fn film_grid(solution: &Solution) -> Grid {
         }
         if let Some(t) = &f.pad_surface_temperature_c {
             scalar(&mut grid, "pad_surface_temperature_c", t);
+        }
+        if flexible {
+            let u = if pad.elastic_displacement_m.is_empty() { vec![0.0; f.pressure_pa.len()] } else { pad.elastic_displacement_m.clone() };
+            scalar(&mut grid, "elastic_radial_displacement_m", &u);
         }
         push_pad_index(&mut grid, pad.index, pg.nodes());
         // Mean velocity: circumferential component along the surface tangent (−sin θ, cos θ, 0).
