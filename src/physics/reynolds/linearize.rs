@@ -1,0 +1,113 @@
+//! Film forces and their linearisation about the last solve (Lund's perturbation method):
+//! `Q_k = ∫ p φ_k dA`, `K_kl = −∂Q_k/∂q_l`, `C_kl = −∂Q_k/∂q̇_l`, the perturbation pressures coming from
+//! back-substitutions with the factorisation of the converged solve (exact for a fixed cavitation boundary).
+
+use super::{FilmInputs, FilmLinearization, PadFilm};
+use nalgebra::DMatrix;
+use crate::model::Cavitation;
+
+impl PadFilm {
+    /// Generalised film forces `Q_k = ∫ p φ_k dA` (whole pad).
+    #[must_use]
+    pub fn generalized_forces(&self) -> Vec<f64> {
+        let g = &self.geom;
+        g.loads.iter().map(|f| g.sym * f.iter().zip(&self.p).map(|(a, b)| a * b).sum::<f64>()).collect()
+    }
+
+    /// Film stiffness and damping in the pad's generalised coordinates (analytic perturbation about the
+    /// last solve; requires a preceding [`Self::solve`] with the same inputs).
+    #[must_use]
+    pub fn linearize(&mut self, inp: &FilmInputs<'_>) -> FilmLinearization {
+        self.linearize_impl(inp, true)
+    }
+
+    /// As [`Self::linearize`] but the stiffness only (the damping is returned as zeros): half the
+    /// back-substitutions, for Newton iterations.
+    #[must_use]
+    pub fn linearize_stiffness(&mut self, inp: &FilmInputs<'_>) -> FilmLinearization {
+        self.linearize_impl(inp, false)
+    }
+
+    fn linearize_impl(&mut self, inp: &FilmInputs<'_>, with_damping: bool) -> FilmLinearization {
+        let fields = self.perturbation_fields(inp, with_damping);
+        let g = &self.geom;
+        let n = g.n_nodes();
+        let m = g.n_dofs();
+        let mut stiffness = DMatrix::zeros(m, m);
+        let mut damping = DMatrix::zeros(m, m);
+        for j in 0..m {
+            for k in 0..m {
+                let dk = &fields[k * n..(k + 1) * n];
+                stiffness[(j, k)] = -g.sym * g.loads[j].iter().zip(dk).map(|(a, b)| a * b).sum::<f64>();
+                if with_damping {
+                    let dc = &fields[(m + k) * n..(m + k + 1) * n];
+                    damping[(j, k)] = -g.sym * g.loads[j].iter().zip(dc).map(|(a, b)| a * b).sum::<f64>();
+                }
+            }
+        }
+        FilmLinearization { stiffness, damping }
+    }
+
+    /// The pressure perturbation fields `∂p/∂q_k` (columns `0..m`) and, with `with_damping`, `∂p/∂q̇_k`
+    /// (columns `m..2m`), each of length n, by back-substitution with the factorisation of the last solve.
+    pub(super) fn perturbation_fields(&mut self, inp: &FilmInputs<'_>, with_damping: bool) -> Vec<f64> {
+        let g = &self.geom;
+        let n = g.n_nodes();
+        let m = g.n_dofs();
+        let u = inp.surface_speed;
+        let gumbel = self.solved_with == Some(Cavitation::Gumbel);
+        let pg = if gumbel { &self.p_full } else { &self.p };
+        let cols = if with_damping { 2 * m } else { m };
+        let mut rhs = vec![0.0; n * cols];
+        for (e, nodes) in g.elements.iter().enumerate() {
+            for (k, q) in g.qp[e].iter().enumerate() {
+                let h = self.h.qp[e][k];
+                let mu = self.mu_qp[e][k];
+                let (mut dps, mut dpz) = (0.0, 0.0);
+                for a in 0..4 {
+                    dps += q.dn_ds[a] * pg[nodes[a]];
+                    dpz += q.dn_dz[a] * pg[nodes[a]];
+                }
+                for a in 0..4 {
+                    // ∂b/∂q_k − (∂A/∂q_k) p, per unit φ_k:
+                    //   6 U ∂N_a/∂s − 3 h²/µ ∇p·∇N_a
+                    let c = q.w * (6.0 * u * q.dn_ds[a] - 3.0 * h * h / mu * (dps * q.dn_ds[a] + dpz * q.dn_dz[a]));
+                    // Squeeze: −12 N_a per unit φ_k q̇_k.
+                    let d = -12.0 * q.w * q.n[a];
+                    for (s, shape) in g.shapes.iter().enumerate() {
+                        let phi = shape.qp[e][k];
+                        rhs[s * n + nodes[a]] += phi * c;
+                        if with_damping {
+                            rhs[(m + s) * n + nodes[a]] += phi * d;
+                        }
+                    }
+                }
+            }
+        }
+        self.back_substitute(&mut rhs);
+        rhs
+    }
+
+    /// Solves `A x = r` for every column of `rhs` (length n each) with the factorisation of the last solve:
+    /// fixed rows zeroed first; under Gümbel cavitation the clipped nodes are zeroed after.
+    pub(super) fn back_substitute(&mut self, rhs: &mut [f64]) {
+        let n = self.geom.n_nodes();
+        for col in rhs.chunks_mut(n) {
+            for i in 0..n {
+                if self.fixed[i] {
+                    col[i] = 0.0;
+                }
+            }
+        }
+        self.solver.solve_many_in_place(rhs, n);
+        if self.solved_with == Some(Cavitation::Gumbel) {
+            for col in rhs.chunks_mut(n) {
+                for i in 0..n {
+                    if self.cavitated[i] {
+                        col[i] = 0.0;
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,390 @@
+//! The modified Reynolds equation on one pad, with injection and cavitation.
+//!
+//! ## Equation
+//! With `s = R (θ − θ_le)` along the journal surface, `z` axial, `U = Ω R`:
+//!
+//! ```text
+//! ∂/∂s (h³/µ ∂p/∂s) + ∂/∂z (h³/µ ∂p/∂z) = 6 U ∂h/∂s + 12 ∂h/∂t + Σ_orifices 3 g (p − p_inj) / (µ_inj l0)
+//! ```
+//!
+//! with `p = 0` (ambient) on the leading and trailing edges and the axial ends, `∂p/∂z = 0` on the symmetry
+//! plane of a half model, and periodicity in `s` for a 360° sector.
+//!
+//! ## Weak form (bilinear rectangles, 2×2 Gauss), term by term
+//! For every test function `N_i` vanishing on the Dirichlet boundary:
+//!
+//! ```text
+//!   ∫ h³/µ ∇p·∇N_i dA                 (diffusion: Poiseuille flow)
+//! + ∫ 3 g p N_i / (µ_inj l0) dA       (orifice: flow out of the film through the capillary)
+//! = ∫ 6 U h ∂N_i/∂s dA                (Couette wedge, integrated by parts: −∫6U ∂h/∂s N_i)
+//! − ∫ 12 ∂h/∂t N_i dA                 (squeeze)
+//! + ∫ 3 g p_inj N_i / (µ_inj l0) dA   (orifice supply)
+//! ```
+//!
+//! The left-hand side is symmetric positive definite, so a sparse Cholesky factorisation is used; its
+//! symbolic part is built once per mesh. The orifice weight `g` is integrated with sub-cell quadrature on the
+//! elements the hole touches (it has a kink at the hole's edge).
+//!
+//! ## Cavitation
+//! - Gümbel: solve, then clip negative pressures to zero.
+//! - Reynolds (Swift–Stieber): the linear complementarity problem `p ≥ 0`, `λ = A p − b ≥ 0`, `p·λ = 0`,
+//!   solved exactly by a primal–dual active-set method (each step fixes the cavitated nodes at p = 0 and
+//!   refactors numerically; warm-started from the previous active set).
+//!
+//! ## Outputs and conventions
+//! - Film thickness is linear in the generalised coordinates q: `h = h0(θ, z) + Σ_k q_k φ_k(θ, z)`
+//!   ([`FilmShape`]). The generalised film force is `Q_k = ∫ p φ_k dA` (virtual work of the pressure); with
+//!   `φ_ex = −cos θ`, `Q_ex` is the film force on the journal in x.
+//! - Perturbations (Lund's method, exact for a fixed cavitation boundary): `∂p/∂q_k` and `∂p/∂q̇_k` come from
+//!   back-substitutions with the factorisation of the converged solve. Film stiffness `K = −∂Q/∂q`, damping
+//!   `C = −∂Q/∂q̇` (symmetric).
+//! - Flows come from the consistent nodal residual `r = A p − b`: the flow leaving through node i is
+//!   `−r_i/12`; they satisfy the discrete mass balance exactly. Inside the film a non-zero residual only
+//!   occurs at cavitated nodes: it is the flow that leaves the full film into the cavitated region.
+//!
+//! ## Files
+//! This file holds the inputs, the solver state and the film thickness; `geometry.rs` what is built once
+//! per mesh (quadrature, pattern, sampled shapes, orifice operators); `solve.rs` assembly and both
+//! cavitation solves; `linearize.rs` forces and their perturbations; `outputs.rs` flows, friction and
+//! extrema; `injection.rs` the response to the injection pressure.
+
+use crate::fem::{SolverError, SpdSolver};
+use crate::model::Cavitation;
+use nalgebra::DMatrix;
+use thiserror::Error;
+
+mod geometry;
+mod injection;
+mod linearize;
+mod outputs;
+mod solve;
+pub use geometry::{FilmGeometry, OrificeOperator};
+pub use injection::InjectionResponse;
+
+/// Largest number of active-set iterations for the Reynolds cavitation condition.
+pub const MAX_ACTIVE_SET_ITERATIONS: usize = 60;
+
+/// How the film thickness depends on position and on the generalised coordinates.
+pub trait FilmShape {
+    /// h0(θ, z): thickness with every generalised coordinate at zero [m].
+    fn base(&self, theta: f64, z: f64) -> f64;
+    /// Number of generalised coordinates.
+    fn n_dofs(&self) -> usize;
+    /// φ_k(θ, z) = ∂h/∂q_k.
+    fn dof(&self, k: usize, theta: f64, z: f64) -> f64;
+}
+
+/// Values of a field at the quadrature points (4 per element) and at the nodes.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SampledField {
+    pub qp: Vec<[f64; 4]>,
+    pub node: Vec<f64>,
+}
+
+/// Operating-point inputs of one film solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmInputs<'a> {
+    /// Journal surface speed U = Ω R [m/s].
+    pub surface_speed: f64,
+    pub viscosity: Viscosity<'a>,
+    /// Pressure at the orifice entries of this pad [Pa].
+    pub injection_pressure: f64,
+    /// Viscosity of the injected oil [Pa·s].
+    pub injection_viscosity: f64,
+    pub cavitation: Cavitation,
+}
+
+/// The film viscosity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Viscosity<'a> {
+    Uniform(f64),
+    /// Nodal values, interpolated bilinearly to the quadrature points.
+    Nodal(&'a [f64]),
+}
+
+/// Failure of a film solve.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FilmError {
+    /// The film thickness is zero or negative somewhere: the journal touches the pad.
+    #[error("film thickness {h_min_m:.3e} m ≤ 0 at θ = {theta_deg:.1}°, z = {z_m:.4} m (contact)")]
+    Contact { h_min_m: f64, theta_deg: f64, z_m: f64 },
+    #[error("non-physical input: {0}")]
+    Input(String),
+    #[error(transparent)]
+    Linear(#[from] SolverError),
+}
+
+/// What one solve did.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FilmSolveInfo {
+    pub factorizations: usize,
+    pub active_set_iterations: usize,
+    pub cavitated_nodes: usize,
+    /// Largest complementarity violation relative to the peak pressure (0 when converged).
+    pub complementarity: f64,
+    pub warnings: Vec<String>,
+}
+
+/// Flows of one pad [m³/s], for the whole pad (symmetry already applied).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct PadFlows {
+    /// Into the film through the leading edge.
+    pub leading_edge_in: f64,
+    /// Out of the film through the trailing edge.
+    pub trailing_edge_out: f64,
+    /// Out through both axial ends.
+    pub sides_out: f64,
+    /// Into the film through the orifices (negative: the hole drains the film).
+    pub orifice_in: f64,
+    /// Out of the full film into cavitated regions (carried to the trailing edge as a ruptured film).
+    pub to_cavitation: f64,
+}
+
+impl PadFlows {
+    /// Inflow minus outflow; zero up to round-off for the consistent flows.
+    #[must_use]
+    pub fn imbalance(&self) -> f64 {
+        self.leading_edge_in + self.orifice_in - self.trailing_edge_out - self.sides_out - self.to_cavitation
+    }
+    /// The through-flow scale used to judge an imbalance.
+    #[must_use]
+    pub fn throughput(&self) -> f64 {
+        self.leading_edge_in.abs() + self.orifice_in.abs() + self.trailing_edge_out.abs() + self.sides_out.abs()
+    }
+}
+
+/// Linearised film: stiffness and damping in the pad's generalised coordinates.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FilmLinearization {
+    /// K = −∂Q/∂q
+    pub stiffness: DMatrix<f64>,
+    /// C = −∂Q/∂q̇
+    pub damping: DMatrix<f64>,
+}
+
+/// The film of one pad: geometry (mesh lifetime) plus the solver state (reused between solves).
+#[derive(Debug, Clone)]
+pub struct PadFilm {
+    pub geom: FilmGeometry,
+    solver: SpdSolver,
+    a_raw: Vec<f64>,
+    a_work: Vec<f64>,
+    b: Vec<f64>,
+    /// Film thickness at quadrature points and nodes [m].
+    pub h: SampledField,
+    mu_qp: Vec<[f64; 4]>,
+    /// Pressure [Pa] (non-negative after cavitation).
+    pub p: Vec<f64>,
+    /// Unclipped pressure of the Gümbel solve.
+    p_full: Vec<f64>,
+    /// Cavitated nodes (active set or clipped).
+    pub cavitated: Vec<bool>,
+    fixed: Vec<bool>,
+    r: Vec<f64>,
+    solved_with: Option<Cavitation>,
+    extra_h: Option<SampledField>,
+    squeeze: Option<SampledField>,
+    /// Coordinates of the current thickness.
+    q: Vec<f64>,
+}
+
+impl PadFilm {
+    /// Allocates the solver state for a geometry (symbolic factorisation included).
+    ///
+    /// # Errors
+    /// If the symbolic factorisation fails.
+    pub fn new(geom: FilmGeometry) -> Result<Self, FilmError> {
+        let n = geom.n_nodes();
+        let nnz = geom.pattern.nnz();
+        let ne = geom.elements.len();
+        let solver = SpdSolver::new(&geom.pattern)?;
+        Ok(Self {
+            solver,
+            a_raw: vec![0.0; nnz],
+            a_work: vec![0.0; nnz],
+            b: vec![0.0; n],
+            h: SampledField { qp: vec![[0.0; 4]; ne], node: vec![0.0; n] },
+            mu_qp: vec![[0.0; 4]; ne],
+            p: vec![0.0; n],
+            p_full: vec![0.0; n],
+            cavitated: vec![false; n],
+            fixed: vec![false; n],
+            r: vec![0.0; n],
+            solved_with: None,
+            extra_h: None,
+            squeeze: None,
+            q: Vec::new(),
+            geom,
+        })
+    }
+
+    /// Adds a thickness field independent of q (thermal growth, elastic deformation); `None` removes it.
+    pub fn set_extra_thickness(&mut self, extra: Option<SampledField>) {
+        self.extra_h = extra;
+    }
+
+    /// Generalised coordinates of the current film thickness (last [`Self::set_coordinates`]).
+    #[must_use]
+    pub fn coordinates(&self) -> &[f64] {
+        &self.q
+    }
+
+    /// Sets a squeeze velocity field ∂h/∂t [m/s] (quadrature-point values are used); `None` removes it.
+    pub fn set_squeeze(&mut self, dhdt: Option<SampledField>) {
+        self.squeeze = dhdt;
+    }
+
+    /// Film thickness for generalised coordinates `q`.
+    ///
+    /// # Errors
+    /// [`FilmError::Contact`] if h ≤ 0 anywhere.
+    pub fn set_coordinates(&mut self, q: &[f64]) -> Result<(), FilmError> {
+        let g = &self.geom;
+        debug_assert_eq!(q.len(), g.n_dofs());
+        if q.iter().any(|v| !v.is_finite()) {
+            return Err(FilmError::Input(format!("non-finite coordinates {q:?}")));
+        }
+        self.q.clear();
+        self.q.extend_from_slice(q);
+        for (e, hq) in self.h.qp.iter_mut().enumerate() {
+            for a in 0..4 {
+                let mut h = g.base.qp[e][a];
+                for (k, qk) in q.iter().enumerate() {
+                    h += qk * g.shapes[k].qp[e][a];
+                }
+                if let Some(x) = &self.extra_h {
+                    h += x.qp[e][a];
+                }
+                hq[a] = h;
+            }
+        }
+        let mut worst = (f64::INFINITY, 0);
+        for (i, hn) in self.h.node.iter_mut().enumerate() {
+            let mut h = g.base.node[i];
+            for (k, qk) in q.iter().enumerate() {
+                h += qk * g.shapes[k].node[i];
+            }
+            if let Some(x) = &self.extra_h {
+                h += x.node[i];
+            }
+            *hn = h;
+            if h < worst.0 {
+                worst = (h, i);
+            }
+        }
+        let qp_min = self.h.qp.iter().flatten().fold(f64::INFINITY, |m, &v| m.min(v));
+        if worst.0 <= 0.0 || qp_min <= 0.0 {
+            return Err(FilmError::Contact {
+                h_min_m: worst.0.min(qp_min),
+                theta_deg: g.node_theta[worst.1].to_degrees(),
+                z_m: g.node_z[worst.1],
+            });
+        }
+        Ok(())
+    }
+
+    /// Nodal film thickness for coordinates `q` (without storing it).
+    #[must_use]
+    pub fn nodal_thickness(&self, q: &[f64]) -> Vec<f64> {
+        let g = &self.geom;
+        (0..g.n_nodes())
+            .map(|i| {
+                let mut h = g.base.node[i] + q.iter().enumerate().map(|(k, qk)| qk * g.shapes[k].node[i]).sum::<f64>();
+                if let Some(x) = &self.extra_h {
+                    h += x.node[i];
+                }
+                h
+            })
+            .collect()
+    }
+
+    /// The interval of coordinate `slot` (the others as in `q`) over which the film carries no pressure at
+    /// all under the Reynolds condition: `p ≡ 0` solves the complementarity problem exactly when the
+    /// right-hand side `b` is non-positive at every free node, and `b` is affine in the coordinate
+    /// (`b = c + q_slot d`, only the Couette term depends on the thickness). `None` for Gümbel cavitation
+    /// (whose pressure-free set needs a solve) or when no such coordinate value exists.
+    #[must_use]
+    pub fn pressure_free_interval(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
+        if inp.cavitation != Cavitation::Reynolds {
+            return None;
+        }
+        let g = &self.geom;
+        let u = inp.surface_speed;
+        let n = g.n_nodes();
+        let (mut c, mut d) = (vec![0.0; n], vec![0.0; n]);
+        for (e, nodes) in g.elements.iter().enumerate() {
+            for (k, qp) in g.qp[e].iter().enumerate() {
+                let mut h = g.base.qp[e][k];
+                for (j, qj) in q.iter().enumerate() {
+                    if j != slot {
+                        h += qj * g.shapes[j].qp[e][k];
+                    }
+                }
+                if let Some(x) = &self.extra_h {
+                    h += x.qp[e][k];
+                }
+                let phi = g.shapes[slot].qp[e][k];
+                for a in 0..4 {
+                    c[nodes[a]] += qp.w * 6.0 * u * h * qp.dn_ds[a];
+                    d[nodes[a]] += qp.w * 6.0 * u * phi * qp.dn_ds[a];
+                    if let Some(sq) = &self.squeeze {
+                        c[nodes[a]] -= 12.0 * qp.w * sq.qp[e][k] * qp.n[a];
+                    }
+                }
+            }
+        }
+        if inp.injection_pressure != 0.0 {
+            for o in &g.orifices {
+                for &(i, v) in &o.vector {
+                    c[i] += inp.injection_pressure * v / inp.injection_viscosity;
+                }
+            }
+        }
+        let scale = c.iter().chain(&d).fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        for i in (0..n).filter(|&i| !g.dirichlet[i]) {
+            if d[i].abs() <= 1e-14 * scale {
+                if c[i] > 1e-14 * scale {
+                    return None;
+                }
+            } else if d[i] > 0.0 {
+                hi = hi.min(-c[i] / d[i]);
+            } else {
+                lo = lo.max(-c[i] / d[i]);
+            }
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+
+    /// Nodal change of film thickness for a change `dq` of the coordinates.
+    #[must_use]
+    pub fn nodal_thickness_delta(&self, dq: &[f64]) -> Vec<f64> {
+        let g = &self.geom;
+        (0..g.n_nodes()).map(|i| dq.iter().enumerate().map(|(k, d)| d * g.shapes[k].node[i]).sum()).collect()
+    }
+
+    fn set_viscosity(&mut self, v: Viscosity<'_>) -> Result<(), FilmError> {
+        match v {
+            Viscosity::Uniform(mu) => {
+                if !(mu > 0.0 && mu.is_finite()) {
+                    return Err(FilmError::Input(format!("viscosity {mu} Pa·s")));
+                }
+                for m in &mut self.mu_qp {
+                    *m = [mu; 4];
+                }
+            }
+            Viscosity::Nodal(values) => {
+                if values.len() != self.geom.n_nodes() || values.iter().any(|m| !(*m > 0.0 && m.is_finite())) {
+                    return Err(FilmError::Input("nodal viscosity field has the wrong length or a non-positive value".into()));
+                }
+                for (e, nodes) in self.geom.elements.iter().enumerate() {
+                    for (g, q) in self.geom.qp[e].iter().enumerate() {
+                        self.mu_qp[e][g] = (0..4).map(|a| q.n[a] * values[nodes[a]]).sum();
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+}

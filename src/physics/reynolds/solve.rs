@@ -1,0 +1,172 @@
+//! Assembly and solution of the film equation (see the module header of `reynolds`): the matrix and
+//! right-hand side for the current thickness, then either the Gümbel clip or the Reynolds (Swift–Stieber)
+//! complementarity problem `p ≥ 0, A p − b ≥ 0, p·(A p − b) = 0` by a warm-started primal–dual active set.
+
+use super::{FilmError, FilmInputs, FilmSolveInfo, PadFilm, MAX_ACTIVE_SET_ITERATIONS};
+use crate::model::Cavitation;
+
+impl PadFilm {
+    /// Assembles the matrix (lower triangle) and the right-hand side for the current thickness.
+    fn assemble(&mut self, inp: &FilmInputs<'_>) {
+        let g = &self.geom;
+        let u = inp.surface_speed;
+        self.a_raw.fill(0.0);
+        self.b.fill(0.0);
+        for (e, nodes) in g.elements.iter().enumerate() {
+            let map = &g.pattern.scatter[e];
+            for (k, q) in g.qp[e].iter().enumerate() {
+                let h = self.h.qp[e][k];
+                // Diffusion coefficient h³/µ times the quadrature weight.
+                let kd = q.w * h * h * h / self.mu_qp[e][k];
+                for a in 0..4 {
+                    // Couette wedge, integrated by parts: ∫ 6 U h ∂N_a/∂s.
+                    self.b[nodes[a]] += q.w * 6.0 * u * h * q.dn_ds[a];
+                    for bb in 0..4 {
+                        let pos = map[4 * a + bb];
+                        if pos != usize::MAX {
+                            self.a_raw[pos] += kd * (q.dn_ds[a] * q.dn_ds[bb] + q.dn_dz[a] * q.dn_dz[bb]);
+                        }
+                    }
+                }
+            }
+        }
+        // Squeeze: −∫ 12 ∂h/∂t N_a.
+        if let Some(sq) = &self.squeeze {
+            for (e, nodes) in g.elements.iter().enumerate() {
+                for (k, q) in g.qp[e].iter().enumerate() {
+                    for a in 0..4 {
+                        self.b[nodes[a]] -= 12.0 * q.w * sq.qp[e][k] * q.n[a];
+                    }
+                }
+            }
+        }
+        // Orifices: 3 g (p − p_inj) / (µ_inj l0).
+        let mu_inj = inp.injection_viscosity;
+        for o in &g.orifices {
+            for &(pos, v) in &o.matrix {
+                self.a_raw[pos] += v / mu_inj;
+            }
+            if inp.injection_pressure != 0.0 {
+                for &(i, v) in &o.vector {
+                    self.b[i] += inp.injection_pressure * v / mu_inj;
+                }
+            }
+        }
+    }
+
+    /// Solves the film for the thickness set by [`Self::set_coordinates`].
+    ///
+    /// `warm`: start the active-set iteration from the previous cavitated set.
+    ///
+    /// # Errors
+    /// Invalid inputs or a failed factorisation (never returns NaN pressures).
+    pub fn solve(&mut self, inp: &FilmInputs<'_>, warm: bool) -> Result<FilmSolveInfo, FilmError> {
+        if !(inp.surface_speed.is_finite() && inp.injection_pressure.is_finite()) {
+            return Err(FilmError::Input("non-finite speed or injection pressure".into()));
+        }
+        if !(inp.injection_viscosity > 0.0 && inp.injection_viscosity.is_finite()) {
+            return Err(FilmError::Input(format!("injection viscosity {}", inp.injection_viscosity)));
+        }
+        self.set_viscosity(inp.viscosity)?;
+        self.assemble(inp);
+        let info = match inp.cavitation {
+            Cavitation::Gumbel => self.solve_gumbel()?,
+            Cavitation::Reynolds => self.solve_reynolds(warm && self.solved_with == Some(Cavitation::Reynolds))?,
+        };
+        self.solved_with = Some(inp.cavitation);
+        if self.p.iter().any(|v| !v.is_finite()) {
+            return Err(FilmError::Input("pressure is not finite (ill-conditioned film)".into()));
+        }
+        Ok(info)
+    }
+
+    fn factor_and_solve(&mut self) -> Result<(), FilmError> {
+        let g = &self.geom;
+        g.pattern.fix_rows(&self.a_raw, &self.fixed, &mut self.a_work);
+        self.solver.factor(&g.pattern, &self.a_work)?;
+        for i in 0..self.p.len() {
+            self.p[i] = if self.fixed[i] { 0.0 } else { self.b[i] };
+        }
+        self.solver.solve_in_place(&mut self.p);
+        // Residual of the unmodified equations: reactions at fixed nodes, ~0 elsewhere.
+        g.pattern.sym_matvec(&self.a_raw, &self.p, &mut self.r);
+        for (r, b) in self.r.iter_mut().zip(&self.b) {
+            *r -= b;
+        }
+        Ok(())
+    }
+
+    fn solve_gumbel(&mut self) -> Result<FilmSolveInfo, FilmError> {
+        self.fixed.copy_from_slice(&self.geom.dirichlet);
+        self.factor_and_solve()?;
+        self.p_full.copy_from_slice(&self.p);
+        let mut n_cav = 0;
+        for i in 0..self.p.len() {
+            self.cavitated[i] = self.p[i] < 0.0;
+            if self.cavitated[i] {
+                self.p[i] = 0.0;
+                n_cav += 1;
+            }
+        }
+        // Residual of the clipped field (flows).
+        let g = &self.geom;
+        g.pattern.sym_matvec(&self.a_raw, &self.p, &mut self.r);
+        for (r, b) in self.r.iter_mut().zip(&self.b) {
+            *r -= b;
+        }
+        Ok(FilmSolveInfo { factorizations: 1, active_set_iterations: 1, cavitated_nodes: n_cav, ..Default::default() })
+    }
+
+    /// Primal–dual active set for p ≥ 0, λ = A p − b ≥ 0, p λ = 0.
+    fn solve_reynolds(&mut self, warm: bool) -> Result<FilmSolveInfo, FilmError> {
+        let n = self.p.len();
+        if !warm {
+            self.cavitated.fill(false);
+        }
+        let mut info = FilmSolveInfo::default();
+        let mut next = self.cavitated.clone();
+        loop {
+            info.active_set_iterations += 1;
+            for i in 0..n {
+                self.fixed[i] = self.geom.dirichlet[i] || self.cavitated[i];
+            }
+            self.factor_and_solve()?;
+            info.factorizations += 1;
+            let p_scale = self.p.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+            let r_scale = self.b.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+            let mut changed = 0;
+            for i in 0..n {
+                if self.geom.dirichlet[i] {
+                    next[i] = false;
+                    continue;
+                }
+                // Stay cavitated while the multiplier is non-negative; enter when the pressure goes negative.
+                next[i] = if self.cavitated[i] { self.r[i] > -1e-11 * r_scale } else { self.p[i] < -1e-11 * p_scale };
+                if next[i] != self.cavitated[i] {
+                    changed += 1;
+                }
+            }
+            if changed == 0 {
+                break;
+            }
+            if info.active_set_iterations >= MAX_ACTIVE_SET_ITERATIONS {
+                // Keep the set that matches the last factorisation; report how far from complementarity.
+                let viol_p = self.p.iter().fold(0.0_f64, |m, &v| m.max(-v)) / p_scale;
+                let viol_r = (0..n).filter(|&i| self.cavitated[i]).fold(0.0_f64, |m, i| m.max(-self.r[i])) / r_scale;
+                info.complementarity = viol_p.max(viol_r);
+                info.warnings.push(format!(
+                    "cavitation active set still changing after {} iterations ({changed} nodes); \
+                     largest complementarity violation {:.2e} (relative)",
+                    info.active_set_iterations, info.complementarity
+                ));
+                for v in &mut self.p {
+                    *v = v.max(0.0);
+                }
+                break;
+            }
+            std::mem::swap(&mut self.cavitated, &mut next);
+        }
+        info.cavitated_nodes = self.cavitated.iter().filter(|&&c| c).count();
+        Ok(info)
+    }
+}
