@@ -163,3 +163,26 @@ fn a_pad_near_a_fold_is_reported() {
     assert!(s.report.floating_pads.contains(&0), "{:?}", s.report.floating_pads);
     assert!(s.report.warnings.iter().any(|w| w.starts_with("pad 0 also has a lightly loaded state")), "{:#?}", s.report.warnings);
 }
+
+/// Films that close where no method can open them are touchdown, the physical answer, not a film error:
+/// Fillon's bearing A with thermal growth (TEHD) at S = 0.1 grows its loaded pads into the journal (the
+/// map's 24 TEHD points at S ≤ 0.1 reported "film thickness … ≤ 0 (contact)" before), and the flexible
+/// compressor bearing at S = 0.01 presses its pad onto the journal (the map's 12 points reported "pad
+/// coordinate Mode(0) not found").
+#[test]
+fn closing_films_are_touchdown() {
+    for (file, s, angle) in [("fillon-a-tehd.toml", 0.1, 270.0), ("compressor-bearing-flexible.toml", 0.01, 270.0)] {
+        let text = std::fs::read_to_string(common::case_path(file)).unwrap();
+        let (_, case) = load_case(&text, &["mesh.fidelity=\"preview\"".to_string()]).unwrap();
+        let load = tiltpad::study::convergence::load_for_sommerfeld(&case, s);
+        let set = ["mesh.fidelity=\"preview\"".to_string(), format!("operating.load_n={load}"), format!("operating.load_angle_deg={angle}")];
+        let set: Vec<&str> = set.iter().map(String::as_str).collect();
+        match run(file, &set) {
+            Err(SolveError::Touchdown { h_min_um, eccentricity_ratio, .. }) => {
+                let cb_um = case.bearing.assembled_clearance_m * 1e6;
+                assert!(h_min_um < 0.05 * cb_um && eccentricity_ratio.is_finite(), "{file}: h_min {h_min_um} µm, ε {eccentricity_ratio}");
+            }
+            other => panic!("{file} at S = {s}: expected touchdown, got {:?}", other.map(|s| s.eccentricity_ratio)),
+        }
+    }
+}

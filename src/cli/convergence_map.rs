@@ -111,6 +111,9 @@ fn table(shipped: &[MapBearing], family: &[MapBearing], points: &[MapPoint], spe
     }
     for pads in [2, 3, 4, 5, 6, 8] {
         let names: Vec<&str> = family.iter().filter(|b| b.name.starts_with(&format!("{pads} pads,"))).map(|b| b.name.as_str()).collect();
+        if names.is_empty() {
+            continue;
+        }
         let p: Vec<MapPoint> = points.iter().filter(|p| names.contains(&p.bearing.as_str())).cloned().collect();
         row(&mut out, &format!("generated, {pads} pads"), names.len(), &p, spec);
     }
@@ -144,14 +147,32 @@ fn csv(points: &[MapPoint]) -> String {
     s
 }
 
-/// Runs the map every `step_deg`; `quick`: directions every 30° and the family at 4 pads only (a smoke run).
+/// Which points a run covers.
+pub struct Selection {
+    /// Directions every 30° and the family at 4 pads only (a smoke run).
+    pub quick: bool,
+    /// Step of the load direction [deg] (ignored when `quick`).
+    pub step_deg: f64,
+    /// Only the bearings whose name contains this text.
+    pub only: Option<String>,
+}
+
+/// Runs the map over the selected bearings and directions.
 ///
 /// # Errors
-/// I/O, invalid cases, a missing marker in docs/VALIDATION.md.
-pub fn run(root: &Path, quick: bool, step_deg: f64, csv_out: Option<&Path>, update_doc: bool) -> Result<()> {
-    let spec = MapSpec { direction_step_deg: if quick { 30.0 } else { step_deg }, ..MapSpec::full() };
-    let shipped = shipped(root)?;
-    let family: Vec<MapBearing> = generated_family().into_iter().filter(|b| !quick || b.name.starts_with("4 pads,")).collect();
+/// I/O, invalid cases, a missing marker in docs/VALIDATION.md, `--update-doc` with a partial selection.
+pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: bool) -> Result<()> {
+    if update_doc && sel.only.is_some() {
+        bail!("--update-doc writes the whole map's table: run it without --only");
+    }
+    let spec = MapSpec { direction_step_deg: if sel.quick { 30.0 } else { sel.step_deg }, ..MapSpec::full() };
+    let keep = |b: &MapBearing| sel.only.as_deref().is_none_or(|t| b.name.contains(t));
+    let shipped: Vec<MapBearing> = shipped(root)?.into_iter().filter(keep).collect();
+    let family: Vec<MapBearing> =
+        generated_family().into_iter().filter(|b| !sel.quick || b.name.starts_with("4 pads,")).filter(keep).collect();
+    if shipped.is_empty() && family.is_empty() {
+        bail!("--only {:?}: no shipped case or family member has that in its name", sel.only.as_deref().unwrap_or(""));
+    }
     let all: Vec<MapBearing> = shipped.iter().chain(&family).cloned().collect();
     let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(2);
     let points = run_all(&all, &spec, threads)?;

@@ -239,8 +239,8 @@ pub enum Command {
     },
     /// Convergence map of the equilibrium: every shipped case and a generated family of 144 bearings, load
     /// direction every `--step-deg` × Sommerfeld number 10 … 0.01; counts converged / physical error /
-    /// failure (run in --release; the 30° grid, 7296 points, takes about 40 min on two busy cores, the 5°
-    /// grid six times that).
+    /// failure (run in --release; the 30° grid, 7392 points, took 4.4 min on this two-core machine, the 5°
+    /// grid takes about six times that).
     ConvergenceMap {
         /// Directions every 30° and the 4-pad family only (a quick check).
         #[arg(long)]
@@ -254,6 +254,10 @@ pub enum Command {
         /// Write the table into docs/VALIDATION.md (between its markers).
         #[arg(long)]
         update_doc: bool,
+        /// Only the bearings whose name contains this text (a case file name such as `fillon-a`, or a family
+        /// group such as `3 pads,`); not with --update-doc.
+        #[arg(long, value_name = "TEXT")]
+        only: Option<String>,
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
@@ -378,7 +382,9 @@ pub fn run(command: Command) -> Result<()> {
             json,
             csv,
         }),
-        Command::ConvergenceMap { quick, step_deg, csv, update_doc, root } => convergence_map::run(&root, quick, step_deg, csv.as_deref(), update_doc),
+        Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => {
+            convergence_map::run(&root, &convergence_map::Selection { quick, step_deg, only }, csv.as_deref(), update_doc)
+        }
         Command::Bench { repeats, root, only } => match only.as_deref() {
             None => bench::run(&root, repeats.max(1)),
             Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),

@@ -12,9 +12,9 @@
 //! stiffness and inertia remain), identically on every mesh. The report lists the floating pads.
 
 use crate::model::LoadSpec;
-use crate::physics::reynolds::FilmLinearization;
+use crate::physics::reynolds::{FilmError, FilmLinearization};
 
-use super::super::error::SolveError;
+use super::super::error::{Iteration, SolveError};
 use super::super::model::BearingModel;
 use super::eval::{external_load, min_film, Ctx};
 use super::fallback::TOUCHDOWN_FRACTION;
@@ -78,18 +78,26 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
     Ok(Equilibrium { u, pads, film_force: force, report: ctx.report })
 }
 
-/// Every method failed with the films last seen close to contact: the load cannot be carried.
+/// Every method failed with the films last seen close to contact, or a film closed where no method could
+/// open it (a flexible pad pressed onto the journal, pads grown into it by heat): the load cannot be
+/// carried, which is touchdown. `h_min_um` is then the thinnest film last seen (≤ 0 where it closed).
 pub(super) fn classify_failure(model: &BearingModel, e: SolveError) -> SolveError {
+    let cb = model.assembled_clearance;
+    let journal_ecc = || {
+        let e = model.pads.first().map_or(&[0.0, 0.0][..], |p| p.film.coordinates());
+        e[0].hypot(e[1]) / cb
+    };
     match e {
-        SolveError::NotConverged { .. } => {
+        SolveError::NotConverged { .. } | SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. } => {
             let (pad, hmin) = min_film(model);
-            let cb = model.assembled_clearance;
             if hmin < TOUCHDOWN_FRACTION * cb {
-                let e = model.pads.first().map_or(&[0.0, 0.0][..], |p| p.film.coordinates());
-                SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: e[0].hypot(e[1]) / cb }
+                SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: journal_ecc() }
             } else {
                 e
             }
+        }
+        SolveError::Film { pad, error: FilmError::Contact { h_min_m, .. } } => {
+            SolveError::Touchdown { pad, h_min_um: h_min_m * 1e6, eccentricity_ratio: journal_ecc() }
         }
         e => e,
     }

@@ -326,15 +326,28 @@ fn solve_one(pm: &mut PadModel, k: usize, mut local: Vec<f64>, d: usize, ctx: &m
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
     let mut x = local[slot];
     let mut last = None;
+    let mut closed = None;
     for _ in 0..ctx.params.max_inner_iterations {
         ctx.report.inner_iterations += 1;
         local[slot] = x;
         let st = match solve_tilt(pm, k, &local, ctx) {
             Ok(s) => s,
-            Err(FilmError::Contact { .. }) => {
-                // The pad cannot sit this close: move it out (the film opens with −φ·Δx … along its shape).
-                lo = x;
-                x = if hi.is_finite() { 0.5 * (lo + hi) } else { x + probe };
+            Err(contact @ FilmError::Contact { .. }) => {
+                // The pad cannot sit here: move it the way its shape opens the film where it closed
+                // (h = h0 + Σ q φ: raising x opens a node where φ > 0). A shape that does not move that
+                // node cannot open it: the film closes whatever this coordinate does.
+                match opening_side(pm, slot, &contact) {
+                    Some(true) => {
+                        lo = x;
+                        x = if hi.is_finite() { 0.5 * (lo + hi) } else { x + probe };
+                    }
+                    Some(false) => {
+                        hi = x;
+                        x = if lo.is_finite() { 0.5 * (lo + hi) } else { x - probe };
+                    }
+                    None => return Err(contact),
+                }
+                closed = Some(contact);
                 continue;
             }
             Err(e) => return Err(e),
@@ -365,7 +378,28 @@ fn solve_one(pm: &mut PadModel, k: usize, mut local: Vec<f64>, d: usize, ctx: &m
             break;
         }
     }
-    last.ok_or_else(|| FilmError::Input(format!("pad coordinate {:?} not found", pm.dofs()[d])))
+    // Every trial closed the film: the pad is pressed onto the journal (touchdown, once classified).
+    match (last, closed) {
+        (Some(state), _) => Ok(state),
+        (None, Some(contact)) => Err(contact),
+        (None, None) => Err(FilmError::Input(format!("pad coordinate {:?} not found", pm.dofs()[d]))),
+    }
+}
+
+/// Whether raising coordinate `slot` opens the film at the node where `contact` found it closed
+/// (`Some(true)`), closes it further (`Some(false)`), or hardly moves it (`None`: |φ| there below 1 % of
+/// the shape's largest value).
+fn opening_side(pm: &PadModel, slot: usize, contact: &FilmError) -> Option<bool> {
+    let FilmError::Contact { theta_deg, z_m, .. } = *contact else { return None };
+    let g = &pm.film.geom;
+    let node = (0..g.n_nodes()).min_by(|&a, &b| {
+        let d = |i: usize| (g.node_theta[i].to_degrees() - theta_deg).abs() + (g.node_z[i] - z_m).abs();
+        d(a).total_cmp(&d(b))
+    })?;
+    let shape = &g.shapes[slot].node;
+    let largest = shape.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let phi = shape[node];
+    (phi.abs() > 0.01 * largest).then_some(phi > 0.0)
 }
 
 /// Several non-tilt coordinates: the coupled Newton step when it lowers the residual, else one bracketed
