@@ -130,11 +130,11 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
          | bearings | shaft modes | DOFs | bearing solves | eigen-solutions | bearings | eigen | total | onset | frequency error | log dec error | onset error | peak response error |\n\
          |---|---|---|---|---|---|---|---|---|---|---|---|---|"
     );
-    let truth = rows[0].result.clone();
+    let truth = &rows[0].result;
     for row in rows.iter().chain(std::iter::once(&standard)) {
         let r = &row.result;
         let errs = if row.level == "preview" && row.shaft_modes != 0 {
-            let e = errors(r, &truth);
+            let e = errors(r, truth);
             let onset = e.onset.map_or("—".to_string(), |o| format!("{o:.1e}"));
             format!("{:.1e} | {:.1e} | {onset} | {:.1e}", e.frequency, e.log_dec, e.peak)
         } else {
