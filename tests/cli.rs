@@ -204,3 +204,36 @@ fn help_names_the_workbench_and_describes_the_sweep_options() {
         assert!(line.trim().len() > option.len() + 4, "{option} has no description: {line:?}");
     }
 }
+
+#[test]
+fn rotor_critical_map_writes_the_map_the_bearing_curves_and_their_crossings() {
+    let rotor = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/rotors/compressor-rotor.toml");
+    let dir = std::env::temp_dir().join(format!("tiltpad-rotor-map-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("map.csv");
+    let o = tiltpad()
+        .args(["rotor", rotor.to_str().unwrap(), "--speeds", "2000:14000:7", "--critical-map", "--json", "-", "--csv", csv.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let ks = v["map"]["stiffness_n_per_m"].as_array().unwrap();
+    assert_eq!(ks.len(), 81);
+    // two bearing cases with direct stiffness, one cross-coupling given by numbers (zero direct terms)
+    let curves = v["bearing_curves"].as_array().unwrap();
+    assert_eq!(curves.len(), 3);
+    assert_eq!(curves[0].as_array().unwrap().len(), 7);
+    let crossings = v["crossings"].as_array().unwrap();
+    assert!(!crossings.is_empty(), "the bearings' stiffness crosses the first mode line");
+    let rpm = std::f64::consts::PI / 30.0;
+    for c in crossings {
+        let w = c["speed_rad_s"].as_f64().unwrap();
+        assert!((2000.0 * rpm..=14000.0 * rpm).contains(&w), "{c}");
+        assert!(c["bearing"].as_u64().unwrap() < 2, "{c}");
+    }
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.starts_with("series,stiffness_n_per_m,speed_rpm\n"));
+    assert_eq!(text.lines().filter(|l| l.starts_with("crossing,")).count(), crossings.len());
+    assert_eq!(text.lines().filter(|l| l.starts_with("mode1,")).count(), 81);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -453,10 +453,31 @@ fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_o
     h.get_by_label("Unbalance response").click();
     h.run_steps(3);
     snapshot(&mut h, "rotor_unbalance");
+    h.get_by_label("Critical-speed map").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_critical_map");
     h.get_by_label("reduced 2×2").click();
     wait_for_rotor(&mut h);
     let reduced = h.state().rotor.result().unwrap().onset.as_ref().map_or(f64::INFINITY, |o| o.speed_rad_s * 30.0 / std::f64::consts::PI);
     assert!(reduced > onset_full, "reduced coefficients overestimate the stable range: full {onset_full:.0}, reduced {reduced:.0} rpm");
+}
+
+#[test]
+fn a_rotor_file_opens_in_the_rotor_view_and_a_bad_one_names_key_value_and_range() {
+    let mut h = solved_app(None, |p| p.view = View::Rotor);
+    let bearing = "k_n_per_m = [[1e7, 0.0, 0.0, 1e7]]\nc_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]\n";
+    let text = format!(
+        "title = \"opened two-bearing shaft\"\n[rotor]\n[[rotor.section]]\nlength_mm = 1000.0\nouter_diameter_mm = 50.0\nelements = 10\n\
+         [[rotor.disk]]\nnode = 5\nmass_kg = 20.0\n[[rotor.bearing]]\nnode = 0\n{bearing}[[rotor.bearing]]\nnode = 10\n{bearing}"
+    );
+    h.state_mut().rotor.open_file("shaft.toml", None, &text);
+    wait_for_rotor(&mut h);
+    h.get_by_label_contains("opened two-bearing shaft");
+    assert!(h.state().rotor.result().is_some_and(|r| !r.critical_speeds.is_empty()));
+    h.state_mut().rotor.open_file("bad.toml", None, &text.replace("node = 5", "node = 11"));
+    h.run_steps(3);
+    let shown = text_of(&h.get_by_label_contains("Cannot read the rotor"));
+    assert!(shown.contains("rotor.disk[0].node") && shown.contains("11") && shown.contains("[0, 10]"), "{shown}");
 }
 
 /// Edits the case as the editor would, then waits for the result.

@@ -106,6 +106,11 @@ impl WorkbenchApp {
     fn file_event(&mut self, e: FileEvent) {
         match e {
             FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
+            FileEvent::OpenedRotor { name, path, text } => {
+                self.rotor.open_file(&name, Some(&path), &text);
+                self.persisted.view = super::state::View::Rotor;
+                self.notice = Some(format!("Opened rotor {}", path.display()));
+            }
             FileEvent::SavedCase { name, path, saved, text } => {
                 self.notice = Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
                 if *saved == *self.doc.file() {

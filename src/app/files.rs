@@ -15,6 +15,8 @@ use std::sync::mpsc::{channel, Receiver, Sender};
 pub enum FileEvent {
     /// A case file was read: display name, path (native), text.
     Opened { name: String, path: Option<std::path::PathBuf>, text: String },
+    /// A rotor file was read (native): display name, path (its bearing cases are beside it), text.
+    OpenedRotor { name: String, path: std::path::PathBuf, text: String },
     /// The case was saved under this name (and path, on native) as `text`.
     SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile>, text: String },
     /// An export was written (to `path`, when known).
@@ -86,6 +88,29 @@ impl Files {
                 let event = match String::from_utf8(bytes) {
                     Ok(text) => FileEvent::Opened { name: handle.file_name(), path: handle_path(&handle), text },
                     Err(_) => FileEvent::Error(format!("{} is not UTF-8 text", handle.file_name())),
+                };
+                let _ = tx.send(event);
+                repaint.request_repaint();
+            }
+        });
+    }
+
+    /// Asks for a rotor file to open (native only: its bearing cases are read from beside it; the web keeps
+    /// the shipped rotors).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn open_rotor(&self) {
+        if !dialogs_available() {
+            let _ = self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus).".into()));
+            return;
+        }
+        let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
+        spawn(async move {
+            let picked = rfd::AsyncFileDialog::new().add_filter("Rotor (TOML)", &["toml"]).set_title("Open a rotor").pick_file().await;
+            if let Some(handle) = picked {
+                let path = handle.path().to_path_buf();
+                let event = match std::fs::read_to_string(&path) {
+                    Ok(text) => FileEvent::OpenedRotor { name: handle.file_name(), path, text },
+                    Err(e) => FileEvent::Error(format!("cannot read {}: {e}", path.display())),
                 };
                 let _ = tx.send(event);
                 repaint.request_repaint();

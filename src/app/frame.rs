@@ -66,6 +66,10 @@ impl WorkbenchApp {
                 if ui.button("Open case…").clicked() {
                     self.request(Pending::Open);
                 }
+                #[cfg(not(target_arch = "wasm32"))]
+                if ui.button("Open rotor…").on_hover_text("A rotor file (TOML) with its bearing cases beside it; shown in the Rotor view.").clicked() {
+                    self.files.open_rotor();
+                }
                 ui.menu_button("Open preset", |ui| {
                     for (k, (name, _)) in PRESETS.iter().enumerate() {
                         if ui.button(*name).clicked() {

@@ -29,6 +29,8 @@ pub mod modes;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod rotor;
 #[cfg(not(target_arch = "wasm32"))]
+mod rotor_map;
+#[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
 #[cfg(not(target_arch = "wasm32"))]
@@ -188,6 +190,13 @@ pub enum Command {
         /// Override the rotor's bearing coefficients: `full` or `reduced`.
         #[arg(long, value_parser = ["full", "reduced"])]
         coefficients: Option<String>,
+        /// Override the rotor's shaft reduction: fixed-interface modes per bending plane (0: full shaft).
+        #[arg(long, value_name = "N")]
+        shaft_modes: Option<usize>,
+        /// Instead of the analysis: the undamped critical-speed map (critical speeds against a support
+        /// stiffness at the bearings), the bearings' stiffness over `--speeds` and their crossings.
+        #[arg(long)]
+        critical_map: bool,
         /// Whole result as JSON (`-`: standard output).
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
@@ -221,6 +230,9 @@ pub enum Command {
     },
     /// Print every case key with its unit, allowed values, default and meaning.
     Schema {
+        /// The rotor-file keys instead of the case keys.
+        #[arg(long)]
+        rotor: bool,
         /// Write the table as JSON instead (`-`: standard output).
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
@@ -363,25 +375,34 @@ pub fn run(command: Command) -> Result<()> {
         Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
             frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
         }
-        Command::Schema { json } => {
+        Command::Schema { rotor, json } => {
+            let keys = if rotor { crate::model::rotor_schema::ROTOR_KEYS } else { crate::model::schema::KEYS };
             match json {
                 Some(out) => {
-                    let mut text = serde_json::to_string_pretty(&crate::model::schema::json_table())?;
+                    let mut text = serde_json::to_string_pretty(&crate::model::schema::json_table_of(keys))?;
                     text.push('\n');
                     write_atomic(&out, text.as_bytes())?;
                     rows::announce(&out);
                 }
-                None => print!("{}", crate::model::schema::text_table()),
+                None => print!("{}", crate::model::schema::text_table_of(keys)),
             }
             Ok(())
         }
-        Command::Rotor { rotor, speeds, coefficients, json, csv } => rotor::run(&rotor::RotorArgs {
-            rotor: &rotor,
-            speeds: &speeds,
-            coefficients: coefficients.map(|c| if c == "full" { crate::model::rotor::CoefficientModel::Full } else { crate::model::rotor::CoefficientModel::Reduced }),
-            json,
-            csv,
-        }),
+        Command::Rotor { rotor, speeds, coefficients, shaft_modes, critical_map, json, csv } => {
+            let args = rotor::RotorArgs {
+                rotor: &rotor,
+                speeds: &speeds,
+                coefficients: coefficients.map(|c| if c == "full" { crate::model::rotor::CoefficientModel::Full } else { crate::model::rotor::CoefficientModel::Reduced }),
+                shaft_modes,
+                json,
+                csv,
+            };
+            if critical_map {
+                rotor_map::run(&args)
+            } else {
+                rotor::run(&args)
+            }
+        }
         Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => {
             convergence_map::run(&root, &convergence_map::Selection { quick, step_deg, only }, csv.as_deref(), update_doc)
         }

@@ -53,6 +53,8 @@ pub struct RotorArgs<'a> {
     pub rotor: &'a Path,
     pub speeds: &'a str,
     pub coefficients: Option<CoefficientModel>,
+    /// Shaft modes per plane (0: full shaft), overriding the file's `shaft_modes`.
+    pub shaft_modes: Option<usize>,
     pub json: Option<PathBuf>,
     pub csv: Option<PathBuf>,
 }
@@ -66,22 +68,33 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     if let Some(c) = args.coefficients {
         rotor.coefficients = c;
     }
+    if let Some(m) = args.shaft_modes {
+        rotor.shaft_modes = m;
+    }
     let speeds = parse_speeds(args.speeds)?;
     let result = run_analysis(&rotor, AnalysisParams::new(speeds)).with_context(|| format!("analysing {}", args.rotor.display()))?;
-    let text = summary(&rotor, &result);
+    emit(args, &summary(&rotor, &result), &result, || csv_text(&result))
+}
+
+/// Prints the summary (to standard error when an output goes to standard output) and writes the JSON and
+/// CSV outputs the arguments name.
+///
+/// # Errors
+/// Serialisation and I/O errors.
+pub(super) fn emit<T: serde::Serialize>(args: &RotorArgs<'_>, text: &str, json: &T, csv: impl FnOnce() -> Result<String>) -> Result<()> {
     if is_stdout(args.json.as_ref()) || is_stdout(args.csv.as_ref()) {
         eprint!("{text}");
     } else {
         print!("{text}");
     }
     if let Some(out) = &args.json {
-        let mut s = serde_json::to_string_pretty(&result)?;
+        let mut s = serde_json::to_string_pretty(json)?;
         s.push('\n');
         write_atomic(out, s.as_bytes())?;
         announce(out);
     }
     if let Some(out) = &args.csv {
-        write_atomic(out, csv_text(&result)?.as_bytes())?;
+        write_atomic(out, csv()?.as_bytes())?;
         announce(out);
     }
     Ok(())
@@ -101,11 +114,12 @@ pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
     let _ = writeln!(s, "{}{}", r.title, if r.representative { "  [REPRESENTATIVE rotor: not all data published]" } else { "" });
     let _ = writeln!(
         s,
-        "{} elements, {:.1} kg, {} bearing(s), coefficients {:?}; system {} coordinates",
+        "{} elements, {:.1} kg, {} bearing(s), coefficients {:?}; shaft {}; system {} coordinates",
         rotor.elements.len(),
         rotor.mass(),
         rotor.bearings.len(),
         rotor.coefficients,
+        if r.report.shaft_modes == 0 { "full".to_string() } else { format!("reduced to {} modes per plane", r.report.shaft_modes) },
         r.report.system_dofs
     );
     let _ = writeln!(s, "{} bearing solves, {} eigen-solutions, {:.2} s", r.report.bearing_solves, r.report.eigen_solutions, r.report.seconds);

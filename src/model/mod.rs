@@ -15,6 +15,7 @@ pub mod limits;
 pub mod load;
 pub mod resolve;
 pub mod rotor;
+pub mod rotor_schema;
 pub mod schema;
 
 pub use case::{

@@ -448,8 +448,14 @@ fn normalise(key: &str) -> String {
 /// The table as plain text: one block per key.
 #[must_use]
 pub fn text_table() -> String {
+    text_table_of(KEYS)
+}
+
+/// A table of keys (the case's, or the rotor file's: [`super::rotor_schema::ROTOR_KEYS`]) as plain text.
+#[must_use]
+pub fn text_table_of(keys: &[KeySpec]) -> String {
     let mut s = String::new();
-    for k in KEYS {
+    for k in keys {
         let unit = if k.unit.is_empty() { "–" } else { k.unit };
         let default = if k.default.is_empty() { "required" } else { k.default };
         let _ = writeln!(s, "{}  [{unit}]\n  allowed: {}\n  default: {default}", k.key, k.allowed.describe());
@@ -464,8 +470,14 @@ pub fn text_table() -> String {
 /// The table as JSON (one object per key).
 #[must_use]
 pub fn json_table() -> serde_json::Value {
+    json_table_of(KEYS)
+}
+
+/// A table of keys as JSON (one object per key).
+#[must_use]
+pub fn json_table_of(keys: &[KeySpec]) -> serde_json::Value {
     serde_json::Value::Array(
-        KEYS.iter()
+        keys.iter()
             .map(|k| {
                 serde_json::json!({
                     "key": k.key,

@@ -10,9 +10,11 @@ use web_time::Instant;
 use super::assembly::ShaftModel;
 use super::bearings::BearingSet;
 use super::campbell::{critical_speeds, CriticalSpeed};
-use super::coupling::assemble;
+use super::coupling::{assemble, BearingCoefficients};
+use super::critical_map::StiffnessCurve;
 use super::eigen::damped_modes;
 use super::error::RotorError;
+use super::reduction::reduce;
 use super::stability::{onset, Onset, SpeedPoint};
 use super::unbalance::{api617_limit_um, response, Orbit};
 use crate::model::rotor::Rotor;
@@ -51,6 +53,8 @@ pub struct AnalysisReport {
     pub bearing_solves: usize,
     pub eigen_solutions: usize,
     pub system_dofs: usize,
+    /// Fixed-interface shaft modes kept per bending plane (0: the full finite-element shaft).
+    pub shaft_modes: usize,
     /// Wall time of the whole analysis, and the parts spent in bearing solves and in eigen-solutions
     /// (sweep and onset bisection) [s].
     pub seconds: f64,
@@ -70,6 +74,9 @@ pub struct AnalysisResult {
     /// Free–free flexible frequencies of the shaft (one plane) [rad/s].
     pub free_free_rad_s: Vec<f64>,
     pub response_nodes: Vec<usize>,
+    /// Per bearing position, its synchronously reduced direct stiffnesses at the sweep's speeds
+    /// (`(Ω [rad/s], k_xx, k_yy)`: the curves of the critical-speed map).
+    pub bearing_stiffness: Vec<StiffnessCurve>,
     pub report: AnalysisReport,
 }
 
@@ -81,6 +88,7 @@ pub struct Analysis {
     params: AnalysisParams,
     nodes: Vec<usize>,
     done: Vec<SpeedResult>,
+    stiffness: Vec<StiffnessCurve>,
     report: AnalysisReport,
     started: Instant,
 }
@@ -102,12 +110,13 @@ impl Analysis {
         if s.is_empty() || s.iter().any(|w| !w.is_finite() || *w < 0.0) || s.windows(2).any(|w| w[1] <= w[0]) {
             return Err(RotorError::Speeds("speeds must be finite, ≥ 0 and strictly ascending".into()));
         }
-        let shaft = ShaftModel::new(rotor)?;
+        let mut report = AnalysisReport::default();
         let bearings = BearingSet::new(rotor);
+        let shaft = shaft_model(rotor, &bearings.nodes, &mut report)?;
         let mut nodes: Vec<usize> = bearings.nodes.iter().copied().chain(rotor.unbalances.iter().map(|u| u.node)).collect();
         nodes.sort_unstable();
         nodes.dedup();
-        Ok(Self { rotor: rotor.clone(), shaft, bearings, params, nodes, done: Vec::new(), report: AnalysisReport::default(), started: Instant::now() })
+        Ok(Self { rotor: rotor.clone(), shaft, bearings, params, nodes, done: Vec::new(), stiffness: vec![Vec::new(); rotor.bearings.len()], report, started: Instant::now() })
     }
 
     /// Does the next speed.
@@ -123,13 +132,18 @@ impl Analysis {
         let coeffs = self.bearings.at(omega)?;
         let t1 = Instant::now();
         self.report.bearing_seconds += t1.duration_since(t0).as_secs_f64();
+        for (curve, c) in self.stiffness.iter_mut().zip(&coeffs) {
+            if let BearingCoefficients::Reduced { k, .. } = c.reduced(omega) {
+                curve.push((omega, k[0][0], k[1][1]));
+            }
+        }
         let sys = assemble(&self.shaft, &self.bearings.nodes, &coeffs, omega);
         self.report.system_dofs = self.report.system_dofs.max(sys.n_dofs());
-        let modes = damped_modes(&sys, self.shaft.n_nodes)?;
+        let modes = damped_modes(&sys, &self.shaft)?;
         self.report.eigen_seconds += t1.elapsed().as_secs_f64();
         self.report.eigen_solutions += 1;
         // the response uses the synchronously reduced bearings (identical to the full system at Ω)
-        let orbits = if self.rotor.unbalances.is_empty() || omega == 0.0 { Vec::new() } else { response(&sys, &self.rotor.unbalances, omega, &self.nodes)? };
+        let orbits = if self.rotor.unbalances.is_empty() || omega == 0.0 { Vec::new() } else { response(&sys, &self.shaft, &self.rotor.unbalances, omega, &self.nodes)? };
         let rpm = omega * 30.0 / std::f64::consts::PI;
         self.done.push(SpeedResult { point: SpeedPoint { speed_rad_s: omega, modes }, orbits, api617_limit_um: if rpm > 0.0 { api617_limit_um(rpm) } else { f64::INFINITY } });
         Ok(if self.done.len() == of { Step::Finished } else { Step::More { done: self.done.len(), of } })
@@ -170,8 +184,30 @@ impl Analysis {
             critical_speeds: critical,
             free_free_rad_s: self.shaft.free_free_rad_s.clone(),
             response_nodes: self.nodes,
+            bearing_stiffness: self.stiffness,
             report: self.report,
         })
+    }
+}
+
+/// The shaft model of an analysis: reduced to the attached nodes and `rotor.shaft_modes` modes per plane, or
+/// the full one (asked for, or — with a warning — when the attached nodes do not hold the shaft).
+fn shaft_model(rotor: &Rotor, bearing_nodes: &[usize], report: &mut AnalysisReport) -> Result<ShaftModel, RotorError> {
+    let full = ShaftModel::new(rotor)?;
+    if rotor.shaft_modes == 0 {
+        return Ok(full);
+    }
+    let attached: Vec<usize> = bearing_nodes.iter().copied().chain(rotor.supports.iter().map(|s| s.node)).chain(rotor.unbalances.iter().map(|u| u.node)).collect();
+    match reduce(&full, &attached, rotor.shaft_modes) {
+        Ok(r) => {
+            report.shaft_modes = rotor.shaft_modes;
+            Ok(r)
+        }
+        Err(e @ RotorError::Reduction { .. }) => {
+            report.warnings.push(format!("{e}: the full shaft model is used"));
+            Ok(full)
+        }
+        Err(e) => Err(e),
     }
 }
 

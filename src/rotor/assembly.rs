@@ -13,6 +13,7 @@ use nalgebra::{DMatrix, SymmetricEigen};
 
 use super::element::{element_matrices, NODE_DOFS};
 use super::error::RotorError;
+use super::reduction::Basis;
 use crate::model::rotor::Rotor;
 
 /// Slot of a shaft coordinate.
@@ -45,13 +46,33 @@ pub struct ShaftModel {
     pub damping: DMatrix<f64>,
     /// Free–free flexible natural frequencies of one plane [rad/s] (ascending, rigid modes removed).
     pub free_free_rad_s: Vec<f64>,
+    /// `None`: the matrices are over the nodal coordinates; `Some`: over the working coordinates of a
+    /// reduced shaft ([`super::reduction`]), which the basis maps back to the nodal ones.
+    pub basis: Option<Basis>,
 }
 
+/// A nodal coordinate as a combination of working coordinates: `(working index, weight)` pairs.
+pub type Weights = Vec<(usize, f64)>;
+
 impl ShaftModel {
-    /// Number of shaft coordinates.
+    /// Number of shaft coordinates (working coordinates of a reduced shaft).
     #[must_use]
     pub fn n_dofs(&self) -> usize {
-        self.n_nodes * NODE_DOFS
+        self.mass.nrows()
+    }
+
+    /// Node `node`'s coordinate `dof` over the working coordinates (itself on an unreduced shaft or a
+    /// reduced shaft's boundary; a row of the basis otherwise).
+    #[must_use]
+    pub fn weights(&self, node: usize, dof: NodeDof) -> Weights {
+        let i = shaft_index(node, dof);
+        match &self.basis {
+            None => vec![(i, 1.0)],
+            Some(b) => match b.boundary.iter().position(|&j| j == i) {
+                Some(k) => vec![(k, 1.0)],
+                None => (0..b.t.ncols()).filter(|&j| b.t[(i, j)] != 0.0).map(|j| (j, b.t[(i, j)])).collect(),
+            },
+        }
     }
 
     /// Assembles the shaft, disks, supports and proportional damping.
@@ -101,7 +122,7 @@ impl ShaftModel {
                 damping[(i, i)] += s.damping;
             }
         }
-        Ok(Self { n_nodes, z_m: rotor.node_positions(), mass, stiffness, gyroscopic, damping, free_free_rad_s })
+        Ok(Self { n_nodes, z_m: rotor.node_positions(), mass, stiffness, gyroscopic, damping, free_free_rad_s, basis: None })
     }
 }
 

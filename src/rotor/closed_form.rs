@@ -32,6 +32,7 @@ pub(super) fn uniform(l: f64, d: f64, n: usize, density: f64, youngs: f64, theor
         representative: false,
         theory,
         coefficients: CoefficientModel::Reduced,
+        shaft_modes: 0,
         elements: vec![s; n],
         disks: Vec::new(),
         unbalances: Vec::new(),
@@ -160,6 +161,7 @@ fn clamp_first_node(shaft: &ShaftModel) -> ShaftModel {
         gyroscopic: cut(&shaft.gyroscopic),
         damping: cut(&shaft.damping),
         free_free_rad_s: Vec::new(),
+        basis: None,
     }
 }
 

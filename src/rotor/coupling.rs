@@ -13,7 +13,7 @@
 
 use nalgebra::DMatrix;
 
-use super::assembly::{shaft_index, NodeDof, ShaftModel};
+use super::assembly::{NodeDof, ShaftModel, Weights};
 use crate::bearing::coefficients::{active_pad_dofs, reduce, FullCoefficients};
 use crate::bearing::coordinates::{Coord, JOURNAL_DOFS};
 
@@ -68,6 +68,23 @@ fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
     DMatrix::from_fn(rows.len(), rows.len(), |i, j| rows[i][j])
 }
 
+/// Adds `local[a][b]` entries of a bearing matrix over its coordinates `local` (placed at `rows`) to `target`.
+fn scatter(target: &mut DMatrix<f64>, rows: &[Weights], local: &[usize], values: &[Vec<f64>]) {
+    for (a, ra) in local.iter().zip(rows) {
+        for (b, rb) in local.iter().zip(rows) {
+            let v = values[*a][*b];
+            if v == 0.0 {
+                continue;
+            }
+            for &(i, wi) in ra {
+                for &(j, wj) in rb {
+                    target[(i, j)] += wi * wj * v;
+                }
+            }
+        }
+    }
+}
+
 /// Assembles the system at spin speed `omega` [rad/s] with bearing `i` at node `nodes[i]` carrying `bearings[i]`.
 #[must_use]
 pub fn assemble(shaft: &ShaftModel, nodes: &[usize], bearings: &[BearingCoefficients], omega: f64) -> System {
@@ -97,27 +114,24 @@ pub fn assemble(shaft: &ShaftModel, nodes: &[usize], bearings: &[BearingCoeffici
     let mut damping = grow(&(&shaft.damping + &shaft.gyroscopic * omega));
     let mut next = ns;
     for ((&node, coeffs), act) in nodes.iter().zip(bearings).zip(&active) {
-        let journal = [shaft_index(node, NodeDof::X), shaft_index(node, NodeDof::Y)];
+        // each local coordinate as working coordinates: the journal through the shaft's weights (one to one on
+        // an unreduced shaft or a reduced one's boundary), the pad coordinates appended
+        let journal = [shaft.weights(node, NodeDof::X), shaft.weights(node, NodeDof::Y)];
         match coeffs {
             BearingCoefficients::Reduced { k, c } => {
-                for p in 0..2 {
-                    for q in 0..2 {
-                        stiffness[(journal[p], journal[q])] += k[p][q];
-                        damping[(journal[p], journal[q])] += c[p][q];
-                    }
-                }
+                let kv: Vec<Vec<f64>> = k.iter().map(|r| r.to_vec()).collect();
+                let cv: Vec<Vec<f64>> = c.iter().map(|r| r.to_vec()).collect();
+                let local = [0, 1];
+                scatter(&mut stiffness, &journal, &local, &kv);
+                scatter(&mut damping, &journal, &local, &cv);
             }
             BearingCoefficients::Full(f) => {
-                // local index in f → global index in the system
+                // local index in f → working coordinates of the system
                 let local: Vec<usize> = (0..JOURNAL_DOFS).chain(act.iter().copied()).collect();
-                let global: Vec<usize> = journal.iter().copied().chain(next..next + act.len()).collect();
-                for (a, &ga) in local.iter().zip(&global) {
-                    for (b, &gb) in local.iter().zip(&global) {
-                        stiffness[(ga, gb)] += f.k[*a][*b];
-                        damping[(ga, gb)] += f.c[*a][*b];
-                        mass[(ga, gb)] += f.m[*a][*b];
-                    }
-                }
+                let rows: Vec<Weights> = journal.iter().cloned().chain((next..next + act.len()).map(|g| vec![(g, 1.0)])).collect();
+                scatter(&mut stiffness, &rows, &local, &f.k);
+                scatter(&mut damping, &rows, &local, &f.c);
+                scatter(&mut mass, &rows, &local, &f.m);
                 next += act.len();
             }
         }

@@ -17,6 +17,7 @@ use super::assembly::{shaft_index, undamped_frequencies, NodeDof, ShaftModel};
 use super::bearings::BearingSet;
 use super::coupling::BearingCoefficients;
 use super::error::RotorError;
+use crate::model::rotor::Rotor;
 
 /// The map: one row of frequencies per support stiffness.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -54,6 +55,58 @@ pub fn critical_map(shaft: &ShaftModel, bearing_nodes: &[usize], k_min: f64, k_m
     Ok(out)
 }
 
+/// Where a bearing's direct stiffness curve crosses a mode's line of the map: an undamped critical speed on
+/// that bearing.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Crossing {
+    /// Mode of the map (0 = lowest).
+    pub mode: usize,
+    /// Bearing position (index in the rotor's bearings).
+    pub bearing: usize,
+    /// Which direct stiffness: 0 = k_xx, 1 = k_yy.
+    pub direction: usize,
+    pub speed_rad_s: f64,
+    pub stiffness_n_per_m: f64,
+}
+
+/// Mode `mode`'s frequency at support stiffness `k`, interpolated linearly in log k (`None` outside the map).
+#[must_use]
+pub fn frequency_at(map: &CriticalMap, mode: usize, k: f64) -> Option<f64> {
+    let ks = &map.stiffness_n_per_m;
+    if !(k >= ks[0] && k <= ks[ks.len() - 1]) {
+        return None;
+    }
+    let i = ks.partition_point(|&x| x <= k).clamp(1, ks.len() - 1);
+    let t = (k.ln() - ks[i - 1].ln()) / (ks[i].ln() - ks[i - 1].ln());
+    let (a, b) = (map.frequencies_rad_s[i - 1].get(mode)?, map.frequencies_rad_s[i].get(mode)?);
+    Some(a + t * (b - a))
+}
+
+/// The crossings of every bearing curve (k_xx and k_yy) with every mode line: where `ω_m(k(Ω)) = Ω` between
+/// two speeds of the curve (linear interpolation of the difference).
+#[must_use]
+pub fn crossings(map: &CriticalMap, curves: &[StiffnessCurve]) -> Vec<Crossing> {
+    let modes = map.frequencies_rad_s.first().map_or(0, Vec::len);
+    let mut out = Vec::new();
+    for (bearing, curve) in curves.iter().enumerate() {
+        for direction in 0..2 {
+            let k = |p: &(f64, f64, f64)| if direction == 0 { p.1 } else { p.2 };
+            for mode in 0..modes {
+                for w in curve.windows(2) {
+                    let (Some(f0), Some(f1)) = (frequency_at(map, mode, k(&w[0])), frequency_at(map, mode, k(&w[1]))) else { continue };
+                    let (g0, g1) = (f0 - w[0].0, f1 - w[1].0);
+                    if g0 * g1 <= 0.0 && g0 != g1 {
+                        let t = g0 / (g0 - g1);
+                        out.push(Crossing { mode, bearing, direction, speed_rad_s: w[0].0 + t * (w[1].0 - w[0].0), stiffness_n_per_m: k(&w[0]) + t * (k(&w[1]) - k(&w[0])) });
+                    }
+                }
+            }
+        }
+    }
+    out.sort_by(|a, b| a.speed_rad_s.total_cmp(&b.speed_rad_s));
+    out
+}
+
 /// A bearing position's synchronously reduced direct stiffnesses against speed: `(Ω [rad/s], k_xx, k_yy)`.
 pub type StiffnessCurve = Vec<(f64, f64, f64)>;
 
@@ -74,10 +127,59 @@ pub fn bearing_stiffness_curves(bearings: &mut BearingSet, speeds: &[f64]) -> Re
     Ok(curves)
 }
 
+/// The map with the bearings' curves over it and their crossings: what `tiltpad rotor --critical-map` writes
+/// and the rotor view draws.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CriticalSpeedMap {
+    pub map: CriticalMap,
+    /// Per bearing position that is a case or numbers: `(Ω [rad/s], k_xx, k_yy)` over the speeds.
+    pub bearing_curves: Vec<StiffnessCurve>,
+    pub crossings: Vec<Crossing>,
+}
+
+/// Stiffness range of the map: two decades either side of the bearings' direct stiffnesses (1e5–1e10 N/m
+/// without bearings).
+fn map_range(curves: &[StiffnessCurve]) -> (f64, f64) {
+    let ks = curves.iter().flatten().flat_map(|p| [p.1, p.2]).filter(|k| *k > 0.0 && k.is_finite());
+    let (lo, hi) = ks.fold((f64::INFINITY, 0.0_f64), |(lo, hi), k| (lo.min(k), hi.max(k)));
+    if hi > 0.0 {
+        (lo * 1e-2, hi * 1e2)
+    } else {
+        (1e5, 1e10)
+    }
+}
+
+/// The undamped critical-speed map of `rotor` (`points` stiffnesses, the first `modes` modes; the swept
+/// support at the bearings with direct stiffness), the bearings' stiffness curves at `speeds` [rad/s] and
+/// their crossings.
+///
+/// # Errors
+/// Assembly, bearing solves, the map's eigen-solutions.
+pub fn critical_speed_map(rotor: &Rotor, speeds: &[f64], points: usize, modes: usize) -> Result<CriticalSpeedMap, RotorError> {
+    let mut bearings = BearingSet::new(rotor);
+    let bearing_curves = bearing_stiffness_curves(&mut bearings, speeds)?;
+    map_over_curves(rotor, bearing_curves, points, modes)
+}
+
+/// The map for bearing curves already known (one per bearing position of `rotor`, e.g. an analysis'
+/// [`super::analysis::AnalysisResult::bearing_stiffness`]).
+///
+/// # Errors
+/// Assembly and the map's eigen-solutions.
+pub fn map_over_curves(rotor: &Rotor, bearing_curves: Vec<StiffnessCurve>, points: usize, modes: usize) -> Result<CriticalSpeedMap, RotorError> {
+    let shaft = ShaftModel::new(rotor)?;
+    let (k_min, k_max) = map_range(&bearing_curves);
+    // the swept support sits where a bearing carries direct stiffness (not at pure cross-coupling, e.g. seals
+    // or aerodynamic excitation given by numbers with zero direct terms)
+    let nodes: Vec<usize> = rotor.bearings.iter().zip(&bearing_curves).filter(|(_, c)| c.iter().any(|p| p.1 > 0.0 || p.2 > 0.0)).map(|(b, _)| b.node).collect();
+    let map = critical_map(&shaft, &nodes, k_min, k_max, points, modes)?;
+    let crossings = crossings(&map, &bearing_curves);
+    Ok(CriticalSpeedMap { map, bearing_curves, crossings })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::rotor::Rotor;
     use crate::rotor::element::BeamTheory;
     use std::f64::consts::PI;
 
@@ -111,6 +213,27 @@ mod tests {
                 assert!(map.frequencies_rad_s[i][mode] >= map.frequencies_rad_s[i - 1][mode] * (1.0 - 1e-12));
             }
         }
+    }
+
+    #[test]
+    fn a_constant_bearing_crosses_each_mode_where_the_map_gives_its_frequency() {
+        let rotor = beam(10);
+        let shaft = ShaftModel::new(&rotor).unwrap();
+        let map = critical_map(&shaft, &[0, 10], 1e5, 1e10, 41, 3).unwrap();
+        let kb = 3e7;
+        let speeds: Vec<f64> = (0..400).map(|i| 10.0 * f64::from(i)).collect();
+        let curve: StiffnessCurve = speeds.iter().map(|&w| (w, kb, 2.0 * kb)).collect();
+        let found = crossings(&map, &[curve]);
+        // the exact critical speeds on that stiffness: the map's own eigen-solution at k = kb
+        let exact = critical_map(&shaft, &[0, 10], kb, 2.0 * kb, 2, 3).unwrap().frequencies_rad_s;
+        for c in &found {
+            let truth = exact[c.direction][c.mode];
+            eprintln!("mode {} dir {}: {} vs {truth}", c.mode, c.direction, c.speed_rad_s);
+            // the map interpolates linearly in log k between points 0.125 decades apart: measured ≤ 6.8e-4
+            assert!((c.speed_rad_s / truth - 1.0).abs() < 1e-3, "{} vs {truth}", c.speed_rad_s);
+        }
+        let below: usize = exact.iter().map(|w| w.iter().filter(|&&w| w < 3990.0).count()).sum();
+        assert_eq!(found.len(), below);
     }
 
     #[test]

@@ -14,7 +14,7 @@
 use nalgebra::{Complex, DMatrix};
 use serde::Serialize;
 
-use super::assembly::{shaft_index, NodeDof};
+use super::assembly::{NodeDof, ShaftModel, Weights};
 use super::coupling::System;
 use super::error::RotorError;
 
@@ -84,14 +84,16 @@ fn state_matrix(sys: &System) -> Result<(DMatrix<f64>, DMatrix<f64>), RotorError
     Ok((a, linv.transpose()))
 }
 
-/// Damped modes of a system over `n_nodes` shaft nodes.
+/// Damped modes of a system built on `shaft` (mode shapes over its nodes).
 ///
 /// # Errors
 /// [`RotorError::SingularMass`], [`RotorError::Eigen`].
-pub fn damped_modes(sys: &System, n_nodes: usize) -> Result<Modes, RotorError> {
+pub fn damped_modes(sys: &System, shaft: &ShaftModel) -> Result<Modes, RotorError> {
     let (a, back) = state_matrix(sys)?;
     let n2 = a.nrows();
     let n = sys.n_dofs();
+    let ns = sys.n_shaft;
+    let nodal: Vec<[Weights; 2]> = (0..shaft.n_nodes).map(|node| [shaft.weights(node, NodeDof::X), shaft.weights(node, NodeDof::Y)]).collect();
     let fa = faer::Mat::<f64>::from_fn(n2, n2, |i, j| a[(i, j)]);
     let evd = fa.eigen().map_err(|_| RotorError::Eigen { size: n2 })?;
     let (s, u) = (evd.S(), evd.U());
@@ -112,15 +114,10 @@ pub fn damped_modes(sys: &System, n_nodes: usize) -> Result<Modes, RotorError> {
             continue;
         }
         let p: Vec<Complex<f64>> = (0..n).map(|i| Complex::new(u[(i, k)].re, u[(i, k)].im)).collect();
-        let mut shape: Vec<[Complex<f64>; 2]> = (0..n_nodes)
-            .map(|node| {
-                let at = |d| {
-                    let row = shaft_index(node, d);
-                    (row..n).fold(Complex::new(0.0, 0.0), |acc, j| acc + p[j] * back[(row, j)])
-                };
-                [at(NodeDof::X), at(NodeDof::Y)]
-            })
-            .collect();
+        // shaft coordinates u = L⁻ᵀ p (upper triangular), then the nodal x, y through the shaft's weights
+        let q: Vec<Complex<f64>> = (0..ns).map(|row| (row..n).fold(Complex::new(0.0, 0.0), |acc, j| acc + p[j] * back[(row, j)])).collect();
+        let at = |w: &Weights| w.iter().fold(Complex::new(0.0, 0.0), |acc, &(j, c)| acc + q[j] * c);
+        let mut shape: Vec<[Complex<f64>; 2]> = nodal.iter().map(|[x, y]| [at(x), at(y)]).collect();
         let (mut fwd, mut bwd) = (0.0, 0.0);
         for [x, y] in &shape {
             let iy = Complex::new(-y.im, y.re);

@@ -25,6 +25,9 @@ pub enum RotorError {
     /// Proportional damping asks for a free–free mode the shaft model does not have.
     #[error("`rotor.damping.modes`: flexible mode {mode} requested, the shaft model has {available}")]
     DampingMode { mode: usize, available: usize },
+    /// The shaft cannot be reduced (component mode synthesis).
+    #[error("shaft reduction: {message}")]
+    Reduction { message: String },
     /// A speed list that cannot be swept.
     #[error("speeds: {0}")]
     Speeds(String),

@@ -31,6 +31,7 @@ fn difference(kp: f64) -> f64 {
         representative: false,
         theory: BeamTheory::Timoshenko,
         coefficients: CoefficientModel::Full,
+        shaft_modes: 0,
         elements: vec![s; n],
         disks: vec![Disk { node: 2, mass: 50.0, polar: 0.5, transverse: 0.3 }],
         unbalances: Vec::new(),

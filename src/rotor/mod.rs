@@ -5,6 +5,7 @@
 //! ```
 //! - [`element`]: the Timoshenko (or Euler–Bernoulli) beam element with gyroscopic coupling;
 //! - [`assembly`]: the shaft, disks, supports and proportional damping ([`assembly::ShaftModel`], once per rotor);
+//! - [`reduction`]: the shaft reduced to its attached nodes and a few fixed-interface modes (Craig–Bampton);
 //! - [`coupling`]: bearings at their nodes, full (pad coordinates appended) or synchronously reduced;
 //! - [`eigen`]: damped modes (frequencies, logarithmic decrements, whirl, mode shapes);
 //! - [`critical_map`]: undamped critical speeds against a swept support stiffness, bearings' stiffness over it.
@@ -21,6 +22,7 @@ pub mod critical_map;
 pub mod eigen;
 pub mod element;
 pub mod error;
+pub mod reduction;
 pub mod stability;
 pub mod unbalance;
 #[cfg(test)]

@@ -41,7 +41,7 @@ impl SpeedPoint {
 pub fn modes_at(shaft: &ShaftModel, nodes: &[usize], provider: &mut Provider<'_>, omega: f64) -> Result<SpeedPoint, RotorError> {
     let coeffs = provider(omega)?;
     let sys = assemble(shaft, nodes, &coeffs, omega);
-    Ok(SpeedPoint { speed_rad_s: omega, modes: damped_modes(&sys, shaft.n_nodes)? })
+    Ok(SpeedPoint { speed_rad_s: omega, modes: damped_modes(&sys, shaft)? })
 }
 
 /// Onset search result.

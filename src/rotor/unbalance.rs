@@ -11,7 +11,7 @@
 use nalgebra::{Complex, DMatrix, DVector};
 use serde::Serialize;
 
-use super::assembly::{shaft_index, NodeDof};
+use super::assembly::{NodeDof, ShaftModel};
 use super::coupling::System;
 use super::error::RotorError;
 use crate::model::rotor::Unbalance;
@@ -58,19 +58,25 @@ impl Orbit {
 ///
 /// # Errors
 /// [`RotorError::SingularResponse`] when the dynamic stiffness is singular.
-pub fn response(sys: &System, unbalances: &[Unbalance], omega: f64, nodes: &[usize]) -> Result<Vec<Orbit>, RotorError> {
+pub fn response(sys: &System, shaft: &ShaftModel, unbalances: &[Unbalance], omega: f64, nodes: &[usize]) -> Result<Vec<Orbit>, RotorError> {
     let n = sys.n_dofs();
     let w2 = omega * omega;
     let z = DMatrix::from_fn(n, n, |i, j| Complex::new(sys.stiffness[(i, j)] - w2 * sys.mass[(i, j)], omega * sys.damping[(i, j)]));
     let mut f = DVector::from_element(n, Complex::new(0.0, 0.0));
     for u in unbalances {
         let a = Complex::from_polar(u.amount * w2, u.phase);
-        f[shaft_index(u.node, NodeDof::X)] += a;
-        f[shaft_index(u.node, NodeDof::Y)] += Complex::new(a.im, -a.re);
+        // the nodal force through the shaft's weights (a reduced shaft: Tᵀ f)
+        for (j, w) in shaft.weights(u.node, NodeDof::X) {
+            f[j] += a * w;
+        }
+        for (j, w) in shaft.weights(u.node, NodeDof::Y) {
+            f[j] += Complex::new(a.im, -a.re) * w;
+        }
     }
     let x = z.lu().solve(&f).ok_or(RotorError::SingularResponse { speed_rpm: omega * 30.0 / std::f64::consts::PI })?;
     if x.iter().any(|v| !v.re.is_finite() || !v.im.is_finite()) {
         return Err(RotorError::SingularResponse { speed_rpm: omega * 30.0 / std::f64::consts::PI });
     }
-    Ok(nodes.iter().map(|&node| Orbit::from_amplitudes(node, x[shaft_index(node, NodeDof::X)], x[shaft_index(node, NodeDof::Y)])).collect())
+    let at = |node, dof| shaft.weights(node, dof).iter().fold(Complex::new(0.0, 0.0), |acc, &(j, w)| acc + x[j] * w);
+    Ok(nodes.iter().map(|&node| Orbit::from_amplitudes(node, at(node, NodeDof::X), at(node, NodeDof::Y))).collect())
 }

@@ -1,21 +1,26 @@
 //! Plain drawables of a rotor analysis ([`crate::rotor::analysis::AnalysisResult`]) for the rotor view:
 //!
 //! - Campbell diagram: damped natural frequency `f_d = Im λ / 2π` [Hz] of the first forward and backward
-//!   modes against spin speed [rpm] (followed by rank within their whirl direction, as
-//!   [`crate::rotor::campbell`] does), the 1× line `f = N / 60` and the 1× critical speeds;
+//!   modes against spin speed [rpm] (followed by eigenvector continuity, [`crate::rotor::campbell::track_modes`],
+//!   so lines cross instead of swapping), the 1× line `f = N / 60` and the 1× critical speeds;
 //! - stability map: logarithmic decrement `δ = −2π Re λ / Im λ` of the same modes against speed, the onset
 //!   (δ = 0 crossing of the least damped mode) marked;
 //! - mode shape: the real part of a mode's (x, y) amplitudes along the shaft at t = 0 and a quarter period
 //!   later (scaled so the largest amplitude is 1), with its whirl;
 //! - unbalance Bode: the orbit's major axis, peak to peak [µm], and x phase [deg] at the response nodes
 //!   against speed, the API 617 limit `A = 25.4 √(12000/N)` µm;
+//! - undamped critical-speed map: critical speeds [rpm] against the support stiffness at the bearings on a
+//!   log axis (`log10 k` [N/m]), the bearings' direct stiffnesses k_xx, k_yy over speed on the same axes and
+//!   their crossings with the mode lines;
 //! - rotor sketch: shaft sections (axial position and diameters [mm]), disks, bearings.
 //!
 //! No egui here: the view ([`crate::app::views::rotor_view`]) only draws these.
 
 use crate::model::rotor::{BearingSupport, Rotor};
 use crate::rotor::analysis::AnalysisResult;
-use crate::rotor::campbell::nth_mode;
+use crate::rotor::campbell::track_modes;
+use crate::rotor::critical_map::CriticalSpeedMap;
+use crate::rotor::stability::SpeedPoint;
 use crate::rotor::eigen::Whirl;
 
 const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
@@ -48,23 +53,25 @@ pub struct ModeCurves {
 /// The first `ranks` forward and backward modes of `result` as curves.
 #[must_use]
 pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> ModeCurves {
+    let sweep: Vec<&SpeedPoint> = result.speeds.iter().map(|s| &s.point).collect();
+    let mut tracks = track_modes(&sweep, 2 * ranks);
+    tracks.retain(|t| t.rank < ranks);
+    tracks.sort_by_key(|t| (t.whirl == Whirl::Backward, t.rank));
     let mut frequency_hz = Vec::new();
     let mut log_dec = Vec::new();
-    for whirl in [Whirl::Forward, Whirl::Backward] {
-        for rank in 0..ranks {
-            let (mut f, mut d) = (Vec::new(), Vec::new());
-            for s in &result.speeds {
-                if let Some((w, dec)) = nth_mode(&s.point, whirl, rank) {
-                    let rpm = s.point.speed_rad_s * RPM_PER_RAD_S;
-                    f.push([rpm, w / std::f64::consts::TAU]);
-                    d.push([rpm, dec]);
-                }
+    for t in &tracks {
+        let (mut f, mut d) = (Vec::new(), Vec::new());
+        for (i, p) in sweep.iter().enumerate() {
+            if let Some(m) = t.mode(&sweep, i) {
+                let rpm = p.speed_rad_s * RPM_PER_RAD_S;
+                f.push([rpm, m.imag_rad_s / std::f64::consts::TAU]);
+                d.push([rpm, m.log_dec]);
             }
-            let tag = if whirl == Whirl::Forward { "F" } else { "B" };
-            let name = format!("{tag}{}", rank + 1);
-            frequency_hz.push(Curve { name: name.clone(), whirl, points: f });
-            log_dec.push(Curve { name, whirl, points: d });
         }
+        let tag = if t.whirl == Whirl::Forward { "F" } else { "B" };
+        let name = format!("{tag}{}", t.rank + 1);
+        frequency_hz.push(Curve { name: name.clone(), whirl: t.whirl, points: f });
+        log_dec.push(Curve { name, whirl: t.whirl, points: d });
     }
     let first = result.speeds.first().map_or(0.0, |s| s.point.speed_rad_s * RPM_PER_RAD_S);
     let last = result.speeds.last().map_or(0.0, |s| s.point.speed_rad_s * RPM_PER_RAD_S);
@@ -148,6 +155,36 @@ pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
     UnbalanceBode { nodes, api617_um }
 }
 
+/// The critical-speed map as drawn: every point `[log10(k [N/m]), speed [rpm]]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapDrawing {
+    /// One line per mode of the map.
+    pub modes: Vec<Vec<[f64; 2]>>,
+    /// `(name, points)` per bearing position and direction that has positive direct stiffness.
+    pub bearings: Vec<(String, Vec<[f64; 2]>)>,
+    pub crossings: Vec<[f64; 2]>,
+}
+
+/// The drawable map of `m` for `rotor` (bearing names carry their node).
+#[must_use]
+pub fn map_drawing(m: &CriticalSpeedMap, rotor: &Rotor) -> MapDrawing {
+    let modes = (0..m.map.frequencies_rad_s.first().map_or(0, Vec::len))
+        .map(|mode| m.map.stiffness_n_per_m.iter().zip(&m.map.frequencies_rad_s).filter_map(|(k, f)| f.get(mode).map(|w| [k.log10(), w * RPM_PER_RAD_S])).collect())
+        .collect();
+    let mut bearings = Vec::new();
+    for (b, curve) in m.bearing_curves.iter().enumerate() {
+        for (d, tag) in ["k_xx", "k_yy"].iter().enumerate() {
+            let points: Vec<[f64; 2]> = curve.iter().map(|p| (p.0, if d == 0 { p.1 } else { p.2 })).filter(|(_, k)| *k > 0.0).map(|(w, k)| [k.log10(), w * RPM_PER_RAD_S]).collect();
+            if !points.is_empty() {
+                let node = rotor.bearings.get(b).map_or(0, |p| p.node);
+                bearings.push((format!("bearing at node {node}: {tag}"), points));
+            }
+        }
+    }
+    let crossings = m.crossings.iter().map(|c| [c.stiffness_n_per_m.log10(), c.speed_rad_s * RPM_PER_RAD_S]).collect();
+    MapDrawing { modes, bearings, crossings }
+}
+
 /// What sits at a node of the sketch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SketchItem {
@@ -192,6 +229,7 @@ mod tests {
     use super::*;
     use crate::model::rotor::parse_rotor_file;
     use crate::rotor::analysis::{run, AnalysisParams};
+    use crate::rotor::campbell::nth_mode;
 
     const JEFFCOTT: &str = r#"
 title = "two-bearing shaft"
@@ -256,6 +294,19 @@ c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
         let critical = mode_curves(&r, &rotor, 1).critical[0][0];
         assert!((peak - critical).abs() <= 300.0, "peak at {peak} rpm, critical {critical} rpm");
         assert_eq!(b.api617_um.len(), r.speeds.len() - 1);
+    }
+
+    #[test]
+    fn map_drawing_puts_crossings_on_the_bearing_curves() {
+        let (rotor, r) = analysed();
+        let m = crate::rotor::critical_map::map_over_curves(&rotor, r.bearing_stiffness.clone(), 41, 3).unwrap();
+        let d = map_drawing(&m, &rotor);
+        assert_eq!(d.modes.len(), 3);
+        // constant 1e7 N/m bearings: both curves are the vertical line log10 k = 7, and every crossing lies on it
+        assert_eq!(d.bearings.len(), 4);
+        assert!(d.bearings.iter().all(|(_, p)| p.iter().all(|q| (q[0] - 7.0).abs() < 1e-12)));
+        assert!(!d.crossings.is_empty());
+        assert!(d.crossings.iter().all(|c| (c[0] - 7.0).abs() < 1e-12), "{:?}", d.crossings);
     }
 
     #[test]

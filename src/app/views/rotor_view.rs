@@ -1,11 +1,13 @@
 //! The rotor view (`View::Rotor`): a shipped rotor (its bearing cases at preview fidelity) analysed over a
 //! speed range in the background ([`crate::app::rotor_worker`]), shown as a sketch of the rotor and, by tab,
 //! the Campbell diagram (1× line, critical speeds), the stability map (log dec, onset marked), the mode
-//! shapes (deflected shaft, forward blue / backward orange, exaggerated) and the unbalance Bode plot with
-//! the API 617 line. Full or synchronously reduced bearing coefficients are selectable.
+//! shapes (deflected shaft, forward blue / backward orange, exaggerated), the unbalance Bode plot with
+//! the API 617 line and the undamped critical-speed map (log stiffness axis, the bearings' k_xx, k_yy over
+//! speed on it, crossings marked; computed once per result from the analysis' bearing stiffnesses). Full or
+//! synchronously reduced bearing coefficients are selectable.
 //!
 //! Drawables come from [`crate::scene::rotor`]; nothing here computes physics. The sketch does not edit
-//! the rotor (the rotor file does).
+//! the rotor (the rotor file does); a rotor file opened from the File menu (native) joins the shipped ones.
 
 use std::sync::Arc;
 
@@ -17,7 +19,8 @@ use crate::app::rotor_worker::{RotorEvent, RotorRunner};
 use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
 use crate::rotor::eigen::Whirl;
-use crate::scene::rotor::{mode_curves, mode_shape, sketch, unbalance_bode, RotorSketch, SketchItem};
+use crate::rotor::critical_map::map_over_curves;
+use crate::scene::rotor::{map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem};
 
 /// Shipped rotors: file name and text (bearing cases are the shipped presets named by file name).
 pub const ROTOR_PRESETS: [(&str, &str); 1] = [("compressor-rotor.toml", include_str!("../../../cases/rotors/compressor-rotor.toml"))];
@@ -28,6 +31,9 @@ const MAX_FACTOR: f64 = 1.3;
 const SPEEDS: usize = 41;
 /// Modes per whirl direction on the Campbell diagram and the stability map.
 const RANKS: usize = 4;
+/// Stiffnesses and modes of the critical-speed map.
+const MAP_POINTS: usize = 61;
+const MAP_MODES: usize = 4;
 
 const FORWARD: Color32 = Color32::from_rgb(0, 114, 178);
 const BACKWARD: Color32 = Color32::from_rgb(230, 159, 0);
@@ -41,39 +47,48 @@ pub enum RotorTab {
     Stability,
     ModeShape,
     Unbalance,
+    CriticalMap,
 }
 
 impl RotorTab {
-    const ALL: [Self; 4] = [Self::Campbell, Self::Stability, Self::ModeShape, Self::Unbalance];
+    const ALL: [Self; 5] = [Self::Campbell, Self::Stability, Self::ModeShape, Self::Unbalance, Self::CriticalMap];
     fn label(self) -> &'static str {
         match self {
             Self::Campbell => "Campbell diagram",
             Self::Stability => "Stability map",
             Self::ModeShape => "Mode shapes",
             Self::Unbalance => "Unbalance response",
+            Self::CriticalMap => "Critical-speed map",
         }
     }
 }
 
 /// The view's runtime state (not persisted).
 pub struct RotorView {
+    /// The shipped rotor shown; `ROTOR_PRESETS.len()` is the rotor file opened ([`RotorView::open_file`]).
     pub preset: usize,
+    /// The opened rotor file: its name and the rotor (or why it could not be read).
+    opened: Option<(String, Result<Rotor, String>)>,
+    /// Counts opened files, so opening one again restarts the analysis.
+    generation: usize,
     pub coefficients: CoefficientModel,
     pub tab: RotorTab,
     /// Speed point and mode (ascending frequency) of the mode-shape tab.
     pub speed_index: usize,
     pub mode_index: usize,
     runner: Option<RotorRunner>,
-    /// What was submitted: (preset, coefficients), the rotor, and the result (or why it failed).
-    submitted: Option<(usize, CoefficientModel)>,
+    /// What was submitted: (preset, coefficients, generation), the rotor, and the result (or why it failed).
+    submitted: Option<(usize, CoefficientModel, usize)>,
     rotor: Option<Result<Rotor, String>>,
     result: Option<Result<Arc<AnalysisResult>, String>>,
     progress: Option<(usize, usize)>,
+    /// The critical-speed map of the current result (computed when first shown).
+    map: Option<Result<MapDrawing, String>>,
 }
 
 impl Default for RotorView {
     fn default() -> Self {
-        Self { preset: 0, coefficients: CoefficientModel::Full, tab: RotorTab::Campbell, speed_index: 0, mode_index: 0, runner: None, submitted: None, rotor: None, result: None, progress: None }
+        Self { preset: 0, opened: None, generation: 0, coefficients: CoefficientModel::Full, tab: RotorTab::Campbell, speed_index: 0, mode_index: 0, runner: None, submitted: None, rotor: None, result: None, progress: None, map: None }
     }
 }
 
@@ -83,13 +98,25 @@ impl Default for RotorView {
 /// The rotor file's validation error (a shipped file: a bug).
 pub fn preset_rotor(preset: usize) -> Result<Rotor, String> {
     let (_, text) = ROTOR_PRESETS.get(preset).ok_or("no such rotor preset")?;
+    read_rotor_text(text, None)
+}
+
+/// Reads a rotor file's `text`, its bearing cases from beside `path` (native) or among the shipped cases,
+/// each at preview fidelity.
+fn read_rotor_text(text: &str, path: Option<&std::path::Path>) -> Result<Rotor, String> {
     let mut file = parse_rotor_file(text).map_err(|e| e.to_string())?;
     for b in &mut file.rotor.bearing {
         if b.case.is_some() {
             b.set.push("mesh.fidelity=\"preview\"".into());
         }
     }
+    let dir = path.and_then(std::path::Path::parent).map(std::path::Path::to_path_buf);
     let read = |name: &str| {
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(d) = &dir {
+            return std::fs::read_to_string(d.join(name)).map_err(|e| format!("{}: {e}", d.join(name).display()));
+        }
+        let _ = &dir;
         let base = name.rsplit('/').next().unwrap_or(name);
         PRESETS.iter().find(|(n, _)| *n == base).map(|(_, t)| (*t).to_string()).ok_or_else(|| format!("{name}: not a shipped case"))
     };
@@ -116,12 +143,28 @@ impl RotorView {
         self.result.as_ref().and_then(|r| r.as_ref().ok()).map(AsRef::as_ref)
     }
 
-    /// Starts the analysis when the preset or the coefficient model changed; takes in the runner's events.
+    /// Shows the rotor file `name` read from `text` (bearing cases beside `path`); a file that cannot be read
+    /// shows its error (the key, the value and the allowed range) in the view.
+    pub fn open_file(&mut self, name: &str, path: Option<&std::path::Path>, text: &str) {
+        self.opened = Some((name.to_string(), read_rotor_text(text, path)));
+        self.preset = ROTOR_PRESETS.len();
+        self.generation += 1;
+    }
+
+    /// The rotor of the current choice.
+    fn chosen(&self) -> Result<Rotor, String> {
+        match &self.opened {
+            Some((_, rotor)) if self.preset >= ROTOR_PRESETS.len() => rotor.clone(),
+            _ => preset_rotor(self.preset.min(ROTOR_PRESETS.len() - 1)),
+        }
+    }
+
+    /// Starts the analysis when the rotor or the coefficient model changed; takes in the runner's events.
     fn drive(&mut self, ctx: &egui::Context) {
-        let wanted = (self.preset, self.coefficients);
+        let wanted = (self.preset, self.coefficients, self.generation);
         if self.submitted != Some(wanted) {
             self.submitted = Some(wanted);
-            let rotor = preset_rotor(self.preset).map(|mut r| {
+            let rotor = self.chosen().map(|mut r| {
                 r.coefficients = self.coefficients;
                 r
             });
@@ -130,13 +173,13 @@ impl RotorView {
                 runner.start(r, AnalysisParams::new(speeds(r)));
             }
             self.rotor = Some(rotor);
-            (self.result, self.progress) = (None, None);
+            (self.result, self.progress, self.map) = (None, None, None);
         }
         let Some(runner) = self.runner.as_mut() else { return };
         for e in runner.poll() {
             match e {
                 RotorEvent::Progress { done, of } => self.progress = Some((done, of)),
-                RotorEvent::Done(r) => (self.result, self.progress) = (Some(r), None),
+                RotorEvent::Done(r) => (self.result, self.progress, self.map) = (Some(r), None, None),
             }
         }
     }
@@ -147,11 +190,16 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
     view.drive(ui.ctx());
     ui.horizontal(|ui| {
         let label = ui.label("Rotor");
+        let opened = view.opened.as_ref().map(|(n, _)| n.clone());
+        let shown = ROTOR_PRESETS.get(view.preset).map_or_else(|| opened.clone().unwrap_or_default(), |p| p.0.to_string());
         egui::ComboBox::from_id_salt("rotor-preset")
-            .selected_text(ROTOR_PRESETS[view.preset].0)
+            .selected_text(shown)
             .show_ui(ui, |ui| {
                 for (i, (name, _)) in ROTOR_PRESETS.iter().enumerate() {
                     ui.selectable_value(&mut view.preset, i, *name);
+                }
+                if let Some(name) = opened {
+                    ui.selectable_value(&mut view.preset, ROTOR_PRESETS.len(), name);
                 }
             })
             .response
@@ -197,6 +245,15 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
         RotorTab::Campbell | RotorTab::Stability => curves_ui(ui, &result, &rotor, view.tab),
         RotorTab::ModeShape => mode_shape_ui(ui, view, &result, &rotor),
         RotorTab::Unbalance => unbalance_ui(ui, &result),
+        RotorTab::CriticalMap => {
+            let map = view.map.get_or_insert_with(|| map_over_curves(&rotor, result.bearing_stiffness.clone(), MAP_POINTS, MAP_MODES).map(|m| map_drawing(&m, &rotor)).map_err(|e| e.to_string()));
+            match map {
+                Ok(m) => critical_map_ui(ui, m),
+                Err(e) => {
+                    ui.label(RichText::new(format!("Critical-speed map failed: {e}")).color(LIMIT));
+                }
+            }
+        }
     }
 }
 
@@ -308,6 +365,24 @@ fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult) {
             p.line(Line::new(format!("node {}", n.node), n.phase_deg.clone()).color(*color).width(1.6));
         }
     });
+}
+
+fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
+    let colors = [FORWARD, Color32::from_rgb(0, 158, 115), Color32::from_rgb(204, 121, 167), Color32::from_rgb(86, 180, 233)];
+    plot("rotor_critical_map", ui, (ui.available_height() - 10.0).max(160.0))
+        .x_axis_label("support stiffness at the bearings [N/m]")
+        .y_axis_label("undamped critical speed [rpm]")
+        .x_axis_formatter(|mark, _| format!("1e{:.1}", mark.value))
+        .show(ui, |p| {
+            for (i, (line, color)) in m.modes.iter().zip(colors.iter().cycle()).enumerate() {
+                p.line(Line::new(format!("mode {}", i + 1), line.clone()).color(*color).width(1.8));
+            }
+            for (name, points) in &m.bearings {
+                let style = if name.ends_with("k_xx") { LineStyle::dashed_dense() } else { LineStyle::dotted_dense() };
+                p.line(Line::new(name.clone(), points.clone()).color(BACKWARD).style(style).width(1.6));
+            }
+            p.points(Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(LIMIT));
+        });
 }
 
 /// A slider value (an index held as `f64`) as an index.
