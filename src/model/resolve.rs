@@ -301,7 +301,8 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
 /// The pivot's Hertz contact (`pivot_contact` and its geometry keys); the convex body has the pad's
 /// material `pad_material` (E [Pa], ν).
 fn resolve_contact(src: &PadSource<'_>, kind: PadKind, stiffness_given: bool, pad_material: (f64, f64), length: f64) -> Result<Option<PivotContact>, CaseError> {
-    let geometry_keys: [(&str, fn(&PadFile) -> Option<f64>); 5] = [
+    type Getter = fn(&PadFile) -> Option<f64>;
+    let geometry_keys: [(&str, Getter); 5] = [
         ("pivot_radius_mm", |p| p.pivot_radius_mm),
         ("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm),
         ("pivot_length_mm", |p| p.pivot_length_mm),

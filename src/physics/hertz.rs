@@ -112,7 +112,7 @@ impl PivotContact {
     /// # Errors
     /// [`HertzError`] for a load that is not compressive or a contact too wide for the formula.
     pub fn state(&self, load_n: f64) -> Result<ContactState, HertzError> {
-        if !(load_n > 0.0) || !load_n.is_finite() {
+        if load_n.is_nan() || load_n <= 0.0 || load_n.is_infinite() {
             return Err(HertzError::NotCompressive { load_n });
         }
         let e = self.contact_modulus_pa();
