@@ -382,6 +382,25 @@ fn vtu_files_read_back_with_their_nodes_and_values() {
     let solved = peak(&mut s.pads.iter().flat_map(|p| p.elastic_displacement_m.iter().copied()));
     assert!(solved > 0.0);
     assert_eq!(peak(&mut u.iter().copied()), solved);
+    // Flexible isothermal pads: the solid grid with the mechanical displacement vector; on the film face
+    // (each pad's first layer) its radial component is the film grid's elastic displacement.
+    let solid = read_vtu(&dir.join("flex-pads.vtu"));
+    let layers = s.pads[0].flex.as_ref().unwrap().radii_m.len();
+    let per_layer = u.len() / s.pads.len();
+    assert_eq!(solid.num_points(), u.len() * layers);
+    let d = point_array(&solid, "pad_displacement_m");
+    assert_eq!(d.len(), 3 * solid.num_points());
+    let pts = solid.points.clone().cast_into::<f64>().unwrap();
+    let (ex, ey) = (s.journal_position_m[0], s.journal_position_m[1]);
+    for pad in 0..s.pads.len() {
+        for n in 0..per_layer {
+            let p = pad * per_layer * layers + n;
+            let th = (pts[3 * p + 1] - ey).atan2(pts[3 * p] - ex);
+            let radial = d[3 * p] * th.cos() + d[3 * p + 1] * th.sin();
+            let film = u[pad * per_layer + n];
+            assert!((radial - film).abs() <= 1e-9 * solved, "pad {pad} node {n}: {radial} vs {film}");
+        }
+    }
     std::fs::remove_dir_all(&dir).ok();
 }
 

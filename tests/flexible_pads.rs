@@ -80,3 +80,19 @@ fn modes_are_coordinates_and_stiff_pads_tend_to_rigid() {
     assert!((ratio_e - 10.0).abs() < 0.5, "ε: {ratio_e}");
     assert!((ratio_k - 10.0).abs() < 0.5, "K: {ratio_k}");
 }
+
+/// Massless pads (`bearing.pads.massless`) carry no inertia on any coordinate, their bending modes
+/// included: the full inertia matrix vanishes, while the modal stiffness (ω²m, independent of the density)
+/// and the film matrices are those of the pads with mass.
+#[test]
+fn massless_flexible_pads_have_no_modal_mass() {
+    let heavy = solve("compressor-bearing-flexible.toml", &[PREVIEW]);
+    let light = solve("compressor-bearing-flexible.toml", &[PREVIEW, "bearing.pads.density_kg_per_m3=", "bearing.pads.massless=true"]);
+    let mode = heavy.full.index(Coord::Pad { pad: 3, dof: PadDof::Mode(0) }).expect("mode coordinate");
+    assert!(heavy.full.m[mode][mode] > 0.0, "the steel pad's mode has a modal mass");
+    assert!(light.full.m.iter().flatten().all(|v| *v == 0.0), "massless: no inertia anywhere");
+    assert_eq!(heavy.full.coords, light.full.coords);
+    for (a, b) in heavy.full.k.iter().flatten().zip(light.full.k.iter().flatten()) {
+        assert!((a - b).abs() <= 1e-9 * a.abs().max(1.0), "{a} vs {b}");
+    }
+}

@@ -1,7 +1,7 @@
 //! The shipped cases (`cases/*.toml`), built into the binary so the web build has them too.
 
 /// File name and text of every shipped case; the first is the default (the compressor bearing).
-pub const PRESETS: [(&str, &str); 10] = [
+pub const PRESETS: [(&str, &str); 11] = [
     ("compressor-bearing.toml", include_str!("../../cases/compressor-bearing.toml")),
     ("test-rig.toml", include_str!("../../cases/test-rig.toml")),
     ("test-rig-pub5.toml", include_str!("../../cases/test-rig-pub5.toml")),
@@ -12,6 +12,7 @@ pub const PRESETS: [(&str, &str); 10] = [
     ("compressor-bearing-flexible.toml", include_str!("../../cases/compressor-bearing-flexible.toml")),
     ("fillon-a-tehd.toml", include_str!("../../cases/fillon-a-tehd.toml")),
     ("compressor-overload.toml", include_str!("../../cases/compressor-overload.toml")),
+    ("compressor-bearing-rocker-pivot.toml", include_str!("../../cases/compressor-bearing-rocker-pivot.toml")),
 ];
 
 /// The default case's name and text.

@@ -91,7 +91,8 @@ impl PadDof {
         }
     }
 
-    /// Structural stiffness on this coordinate [N/m, N·m/rad] (frictionless pivot: none on the tilt).
+    /// Structural stiffness on this coordinate [N/m, N·m/rad] (frictionless pivot: none on the tilt; a Hertz
+    /// pivot's load-dependent stiffness is set by [`super::pivot_contact`], 0 here).
     #[must_use]
     pub fn stiffness(self, pad: &Pad) -> f64 {
         match self {
@@ -135,7 +136,7 @@ pub fn pad_dofs(pad: &Pad) -> Vec<PadDof> {
     let mut d = Vec::new();
     if pad.kind == PadKind::Tilting {
         d.push(PadDof::Tilt);
-        if pad.pivot_stiffness_n_per_m.is_some() {
+        if pad.pivot_stiffness_n_per_m.is_some() || pad.pivot_contact.is_some() {
             d.push(PadDof::PivotRadial);
         }
         if pad.pivot_transverse_stiffness_n_per_m.is_some() {
@@ -446,6 +447,7 @@ mod tests {
             pivot_transverse_stiffness_n_per_m: Some(5e8),
             density_kg_per_m3: 7800.0,
             massless: false,
+            pivot_contact: None,
             youngs_modulus_pa: 200e9,
             poisson_ratio: 0.3,
             orifices: vec![],

@@ -35,10 +35,10 @@ pub struct FlexPad {
 }
 
 impl FlexPad {
-    /// Modal mass, stiffness and couplings of each retained mode.
+    /// Modal mass, stiffness and couplings of each retained mode (no mass for a massless pad).
     #[must_use]
-    pub fn properties(&self) -> Vec<ModalProperties> {
-        modal_properties(&self.modes)
+    pub fn properties(&self, massless: bool) -> Vec<ModalProperties> {
+        modal_properties(&self.modes, massless)
     }
 
     /// The modes' film shapes on the pad's film grid.
@@ -49,9 +49,19 @@ impl FlexPad {
 }
 
 /// Modal mass, stiffness and pivot-translation couplings of each of a pad's retained modes.
+///
+/// A **massless** pad (`bearing.pads.massless`, the databook convention) has no inertia in any of its
+/// coordinates: its modes keep their stiffness `k = ω²m` — independent of the density, since the shapes do
+/// not depend on a uniform density and `ω² ∝ 1/ρ`, `m ∝ ρ` — but carry no modal mass and no mass coupling
+/// with the pivot translations, as its rigid tilt and translations carry none.
 #[must_use]
-pub fn modal_properties(modes: &PadModes) -> Vec<ModalProperties> {
-    modes.modes.iter().map(|m| ModalProperties { mass: m.mass, stiffness: m.stiffness, momentum_pt: m.momentum_pt }).collect()
+pub fn modal_properties(modes: &PadModes, massless: bool) -> Vec<ModalProperties> {
+    let inertia = if massless { 0.0 } else { 1.0 };
+    modes
+        .modes
+        .iter()
+        .map(|m| ModalProperties { mass: inertia * m.mass, stiffness: m.stiffness, momentum_pt: [inertia * m.momentum_pt[0], inertia * m.momentum_pt[1]] })
+        .collect()
 }
 
 /// The material of pad k.

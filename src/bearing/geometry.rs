@@ -109,6 +109,7 @@ mod tests {
             pivot_transverse_stiffness_n_per_m: None,
             density_kg_per_m3: 7800.0,
             massless: false,
+            pivot_contact: None,
             youngs_modulus_pa: 200e9,
             poisson_ratio: 0.3,
             orifices: vec![],

@@ -136,6 +136,9 @@ pub fn solve_operating_point_with(
     params: EquilibriumParams,
     cancel: &dyn Cancel,
 ) -> Result<Solution, SolveError> {
+    if super::pivot_contact::has_contacts(case) {
+        return super::pivot_contact::solve(model, case, op, start, params, cancel);
+    }
     let eq = solve_equilibrium(model, op, params, start, cancel)?;
     Ok(assemble_solution(model, case, op, &eq))
 }
@@ -153,6 +156,10 @@ pub fn step_operating_point(
     params: EquilibriumParams,
     cancel: &dyn Cancel,
 ) -> Result<Progress<Solution, Resume>, SolveError> {
+    if super::pivot_contact::has_contacts(case) {
+        // The contact's load iteration runs to the end (a few warm-started equilibria).
+        return super::pivot_contact::solve(model, case, op, start, params, &super::progress::NoSuspend(cancel)).map(Progress::Done);
+    }
     Ok(match step_equilibrium(model, op, params, start, cancel)? {
         Progress::Done(eq) => Progress::Done(assemble_solution(model, case, op, &eq)),
         Progress::Suspended(r) => Progress::Suspended(r),
@@ -264,6 +271,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             flex: pm.modes.as_ref().zip(pm.solid.as_ref()).map(|(modes, solid)| PadFlex { modes: modes.clone(), radii_m: solid.radii.clone() }),
             field,
             thermal: None,
+            pivot_contact: None,
         });
     }
     let inflow = flows.leading_edges_in + flows.orifices_in;

@@ -18,6 +18,7 @@ pub mod job;
 pub mod limits;
 pub mod mixing;
 pub mod model;
+pub mod pivot_contact;
 pub mod progress;
 pub mod regime;
 pub mod report;

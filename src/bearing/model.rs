@@ -66,7 +66,7 @@ impl BearingModel {
             let mut structure = PadStructure::rigid(pad, r, b.length_m);
             let mut fields = Vec::new();
             if let Some(f) = &flexible {
-                structure = structure.with_modes(&f.properties());
+                structure = structure.with_modes(&f.properties(pad.massless));
                 fields = f.film_fields(&grid, r, pad.leading_edge_rad);
             }
             let shape = PadShape::new(pad, r, b.assembled_clearance_m, &structure.dofs).with_modes(fields);

@@ -104,6 +104,9 @@ pub struct PadResult {
     /// Thermal results (thermal model only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub thermal: Option<PadThermalResult>,
+    /// The Hertz pivot at its load: load, approach, tangent stiffness (pivot contact only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pivot_contact: Option<crate::physics::hertz::ContactState>,
 }
 
 /// A flexible pad's retained modes (shared with the model) and the radii of its solid's node layers.

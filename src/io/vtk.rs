@@ -15,7 +15,9 @@
 //! `pressure_pa`, `film_thickness_m`, `viscosity_pa_s`, `cavitated` (0/1), `pad`, the mean film velocity
 //! `mean_velocity_m_s` (a 3-vector tangent to the surface: `v̄ = q/h`, model.md §3a) and, from the thermal
 //! model, `film_temperature_c` and `pad_surface_temperature_c`. Pad grid (`VTK_HEXAHEDRON` cells between
-//! the solid's layers): `pad_temperature_c` and `pad` (pad deformation will join it when pads flex).
+//! the solid's layers): `pad_temperature_c` (thermal model), `pad`, and for flexible pads (also isothermal)
+//! the mechanical displacement vector `pad_displacement_m` (Σ q_i ψ_i of the retained modes, bearing frame; the
+//! pads' thermal growth is not in it yet).
 //!
 //! The files are ASCII XML with every number in Rust's shortest round-trip form, so a value read back is
 //! bit-identical to the solver's.
@@ -210,29 +212,67 @@ pub fn film_grid(solution: &Solution) -> Grid {
     grid
 }
 
-/// The pads' solid temperature fields, when the thermal model solved pad conduction.
+/// The layer radii of a pad's solid (film face first) and its temperature field, when it has one: the
+/// thermal model's solid, else a flexible pad's.
+fn solid_layers(pad: &PadResult) -> Option<(&[f64], Option<&[f64]>)> {
+    match (pad.thermal.as_ref().and_then(|t| t.solid.as_ref()), pad.flex.as_ref()) {
+        (Some(s), _) => Some((&s.radii_m, Some(&s.temperature_c))),
+        (None, Some(f)) => Some((&f.radii_m, None)),
+        (None, None) => None,
+    }
+}
+
+/// Mechanical displacement of a flexible pad's solid node `(layer, film node)` in the bearing frame:
+/// `Σ q_i ψ_i` from the modes' polar components (u_r, u_θ, u_z) at the node's angle `theta`; `mirror`
+/// flips u_z on the mirrored half of a half model.
+fn modal_displacement(pad: &PadResult, node: usize, theta: f64, mirror: bool) -> [f64; 3] {
+    let Some(flex) = &pad.flex else { return [0.0; 3] };
+    let (mut ur, mut ut, mut uz) = (0.0, 0.0, 0.0);
+    for (m, q) in flex.modes.modes.iter().zip(&pad.mode_amplitudes_m) {
+        if let Some(v) = m.nodal.get(3 * node..3 * node + 3) {
+            ur += q * v[0];
+            ut += q * v[1];
+            uz += q * v[2];
+        }
+    }
+    let (c, s) = (theta.cos(), theta.sin());
+    [ur * c - ut * s, ur * s + ut * c, if mirror { -uz } else { uz }]
+}
+
+/// The pad solids: the thermal model's (with `pad_temperature_c`) and flexible pads' (also isothermal),
+/// with the mechanical displacement vector `pad_displacement_m` (Σ q_i ψ_i of the retained modes, bearing
+/// frame; zero on rigid pads of the same grid) when any pad flexes.
 #[must_use]
 pub fn pad_solid_grid(solution: &Solution) -> Option<Grid> {
     let r = solution.inputs.bearing.journal_radius_m;
     let centre = solution.journal_position_m;
+    let pads: Vec<&PadResult> = solution.pads.iter().filter(|p| solid_layers(p).is_some_and(|(radii, _)| radii.len() >= 2)).collect();
+    let with_temperature = !pads.is_empty() && pads.iter().all(|p| solid_layers(p).is_some_and(|(_, t)| t.is_some()));
+    let flexible = pads.iter().any(|p| p.flex.is_some());
     let mut grid = Grid::default();
-    for pad in &solution.pads {
-        let Some(solid) = pad.thermal.as_ref().and_then(|t| t.solid.as_ref()) else { continue };
+    for pad in pads {
+        let Some((radii, temperature)) = solid_layers(pad) else { continue };
         let pg = PadGrid::new(pad, r);
-        let (nx, nz, layers) = (pg.field.s_m.len(), pg.nz(), solid.radii_m.len());
-        if layers < 2 {
-            continue;
-        }
-        let n_film = solid.temperature_c.len() / layers;
+        let (nx, nz, layers) = (pg.field.s_m.len(), pg.nz(), radii.len());
+        let n_film = pg.field.pressure_pa.len();
         let base = grid.points.len();
         let per_layer = pg.nodes();
         let mut temps = Vec::with_capacity(per_layer * layers);
-        for (l, &rl) in solid.radii_m.iter().enumerate() {
-            let extra = rl - solid.radii_m[0];
+        let mut disp = Vec::with_capacity(3 * per_layer * layers);
+        for (l, &rl) in radii.iter().enumerate() {
+            let extra = rl - radii[0];
             for i in 0..nx {
                 for j in 0..nz {
                     grid.points.push(pg.point(centre, i, j, extra));
-                    temps.push(solid.temperature_c[l * n_film + pg.field.index(i, pg.rows[j].1)]);
+                    let (z, row) = pg.rows[j];
+                    let node = l * n_film + pg.field.index(i, row);
+                    if let Some(t) = temperature {
+                        temps.push(t.get(node).copied().unwrap_or(f64::NAN));
+                    }
+                    if flexible {
+                        let mirror = pg.field.half && z < 0.0;
+                        disp.extend(modal_displacement(pad, node, pg.field.theta_rad[i], mirror));
+                    }
                 }
             }
         }
@@ -246,7 +286,12 @@ pub fn pad_solid_grid(solution: &Solution) -> Option<Grid> {
                 }
             }
         }
-        grid.array_mut("pad_temperature_c", 1).extend(temps);
+        if with_temperature {
+            grid.array_mut("pad_temperature_c", 1).extend(temps);
+        }
+        if flexible {
+            grid.array_mut("pad_displacement_m", 3).extend(disp);
+        }
         push_pad_index(&mut grid, pad.index, per_layer * layers);
     }
     (!grid.points.is_empty()).then_some(grid)

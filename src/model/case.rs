@@ -75,6 +75,9 @@ pub struct Pad {
     pub massless: bool,
     pub youngs_modulus_pa: f64,
     pub poisson_ratio: f64,
+    /// Hertz contact of the pivot (its radial stiffness follows the pad's load); then
+    /// `pivot_stiffness_n_per_m` is `None`.
+    pub pivot_contact: Option<crate::physics::hertz::PivotContact>,
     pub orifices: Vec<Orifice>,
 }
 

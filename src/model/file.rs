@@ -73,6 +73,14 @@ pub enum PadKindFile {
     Fixed,
 }
 
+/// Pivot contact geometry (`pivot_contact`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ContactKindFile {
+    Rocker,
+    Ball,
+}
+
 /// One number or one number per pad.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
@@ -133,6 +141,24 @@ pub struct PadFile {
     /// Pad material Poisson ratio (default 0.3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub poisson_ratio: Option<f64>,
+    /// Pivot from a Hertz contact instead of a given stiffness: `rocker` (cylinder in a cylindrical seat) or
+    /// `ball` (sphere in a spherical socket); the stiffness then follows the pad's load.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_contact: Option<ContactKindFile>,
+    /// Radius of the pivot's convex surface (rocker back or ball), of the pad's material.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_radius_mm: Option<f64>,
+    /// Radius of the housing's concave seat (larger than the pivot radius).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_seat_radius_mm: Option<f64>,
+    /// Rocker contact length (default: the bearing length).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_length_mm: Option<f64>,
+    /// Seat (housing) material Young's modulus (default 200 GPa) and Poisson ratio (default 0.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_seat_youngs_modulus_gpa: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pivot_seat_poisson_ratio: Option<f64>,
     /// Injection orifices (replace, not add to, the common list when given per pad).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub orifice: Option<Vec<OrificeFile>>,

@@ -8,10 +8,11 @@ use std::f64::consts::{PI, TAU};
 
 use super::budget::{DEFAULT_MAX_NODES, MAX_NODES_RANGE};
 use super::case::{
-    Bearing, Case, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ViscosityLaw,
+    Bearing, Case, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, ViscosityLaw,
 };
+use crate::physics::hertz::{ContactKind, PivotContact};
 use super::error::{CaseError, Range};
-use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
+use super::file::{CaseFile, ContactKindFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
 
 const MM: f64 = 1e-3;
 const UM: f64 = 1e-6;
@@ -46,6 +47,11 @@ impl CaseFile {
         };
         let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
         let thermal = resolve_thermal(self, &operating)?;
+        if thermal.model == ThermalModelKind::Thd && bearing.pads.iter().any(|p| p.pivot_contact.is_some()) {
+            // The THD loop solves its equilibria on fixed pivot springs; the contact's load iteration wraps
+            // the isothermal solve only (docs/FLEXIBILITY.md).
+            return Err(inconsistent("bearing.pads.pivot_contact", "a Hertz pivot contact works with the isothermal model only (thermal.model = \"isothermal\"); give pivot_stiffness_n_per_m for THD"));
+        }
         let hydraulics = self.hydraulics.as_ref().map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len())).transpose()?;
         let limits = super::limits::resolve_limits(&self.limits)?;
         let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal, hydraulics, limits };
@@ -218,6 +224,8 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         None => 0.3,
     };
 
+    let pivot_contact = resolve_contact(src, kind, pivot_stiffness.is_some(), (youngs, poisson), length)?;
+
     let pivot = pivot_deg.to_radians();
     let leading_edge = if full_circle { pivot - PI } else { pivot - offset * arc };
 
@@ -285,8 +293,69 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         massless,
         youngs_modulus_pa: youngs,
         poisson_ratio: poisson,
+        pivot_contact,
         orifices,
     })
+}
+
+/// The pivot's Hertz contact (`pivot_contact` and its geometry keys); the convex body has the pad's
+/// material `pad_material` (E [Pa], ν).
+fn resolve_contact(src: &PadSource<'_>, kind: PadKind, stiffness_given: bool, pad_material: (f64, f64), length: f64) -> Result<Option<PivotContact>, CaseError> {
+    type Getter = fn(&PadFile) -> Option<f64>;
+    let geometry_keys: [(&str, Getter); 5] = [
+        ("pivot_radius_mm", |p| p.pivot_radius_mm),
+        ("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm),
+        ("pivot_length_mm", |p| p.pivot_length_mm),
+        ("pivot_seat_youngs_modulus_gpa", |p| p.pivot_seat_youngs_modulus_gpa),
+        ("pivot_seat_poisson_ratio", |p| p.pivot_seat_poisson_ratio),
+    ];
+    let Some((contact, ckey)) = src.get("pivot_contact", |p| p.pivot_contact) else {
+        if let Some((_, key)) = geometry_keys.iter().find_map(|(name, f)| src.get(name, f)) {
+            return Err(inconsistent(&key, "describes a pivot contact: give bearing.pads.pivot_contact (\"rocker\" or \"ball\") too, or remove it"));
+        }
+        return Ok(None);
+    };
+    if kind == PadKind::Fixed {
+        return Err(inconsistent(&ckey, "a fixed sector has no pivot"));
+    }
+    if stiffness_given {
+        return Err(inconsistent(&ckey, "give either a pivot contact or pivot_stiffness_n_per_m, not both"));
+    }
+    let mm = |name: &str, f: fn(&PadFile) -> Option<f64>| -> Result<f64, CaseError> {
+        let (v, key) = src.get(name, f).ok_or_else(|| missing(&PadSource::common_key(name), "pivot contact radius, mm"))?;
+        Ok(Range::positive(1e4).check(&key, v)? * MM)
+    };
+    let r1 = mm("pivot_radius_mm", |p| p.pivot_radius_mm)?;
+    let r2 = mm("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm)?;
+    if r2 <= r1 {
+        let key = src.get("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm).map(|(_, k)| k).unwrap_or_default();
+        return Err(inconsistent(&key, format!("the seat ({:.4} mm) must be larger than the pivot radius ({:.4} mm)", r2 / MM, r1 / MM)));
+    }
+    let contact_length = match src.get("pivot_length_mm", |p| p.pivot_length_mm) {
+        Some((v, key)) => Range::positive(1e4).check(&key, v)? * MM,
+        None => length,
+    };
+    let seat_e = match src.get("pivot_seat_youngs_modulus_gpa", |p| p.pivot_seat_youngs_modulus_gpa) {
+        Some((v, key)) => Range::positive(2000.0).check(&key, v)? * 1e9,
+        None => 200e9,
+    };
+    let seat_nu = match src.get("pivot_seat_poisson_ratio", |p| p.pivot_seat_poisson_ratio) {
+        Some((v, key)) => Range::open(-1.0, 0.5).check(&key, v)?,
+        None => 0.3,
+    };
+    Ok(Some(PivotContact {
+        kind: match contact {
+            ContactKindFile::Rocker => ContactKind::Rocker,
+            ContactKindFile::Ball => ContactKind::Ball,
+        },
+        pivot_radius_m: r1,
+        seat_radius_m: r2,
+        length_m: contact_length,
+        pivot_youngs_modulus_pa: pad_material.0,
+        pivot_poisson_ratio: pad_material.1,
+        seat_youngs_modulus_pa: seat_e,
+        seat_poisson_ratio: seat_nu,
+    }))
 }
 
 fn pad_clearance(src: &PadSource<'_>, radius: f64, cb: f64) -> Result<f64, CaseError> {

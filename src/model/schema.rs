@@ -156,6 +156,18 @@ pub const KEYS: &[KeySpec] = &[
     ),
     num("bearing.pads.youngs_modulus_gpa", "GPa", Range::positive(2000.0), (70.0, 220.0), "200", "Pad material stiffness, for the pad flexibility model (steel 200 GPa, brass about 100 GPa). Not used by rigid pads."),
     num("bearing.pads.poisson_ratio", "–", Range::open(-1.0, 0.5), (0.25, 0.35), "0.3", "Pad material Poisson ratio, for the pad flexibility model."),
+    other(
+        "bearing.pads.pivot_contact",
+        "",
+        Allowed::Choice(&["rocker", "ball"]),
+        "none (pivot_stiffness_n_per_m, else rigid)",
+        "Pivot stiffness from a Hertz contact, nonlinear in the pad's load: a rocker (cylinder in a cylindrical seat, line contact) or a ball in a socket. The radial stiffness follows each pad's load in the equilibrium (isothermal model). Instead of pivot_stiffness_n_per_m.",
+    ),
+    num("bearing.pads.pivot_radius_mm", "mm", Range::positive(1e4), (5.0, 200.0), "required with pivot_contact", "Radius of the pivot's convex surface (rocker back or ball), of the pad's material. Smaller radii make softer, more load-dependent pivots."),
+    num("bearing.pads.pivot_seat_radius_mm", "mm", Range::positive(1e4), (5.0, 250.0), "required with pivot_contact", "Radius of the housing's concave seat, larger than the pivot radius; the closer the two, the more conformal and stiffer the contact."),
+    num("bearing.pads.pivot_length_mm", "mm", Range::positive(1e4), (10.0, 300.0), "the bearing length", "Length of a rocker's line contact (not used by a ball)."),
+    num("bearing.pads.pivot_seat_youngs_modulus_gpa", "GPa", Range::positive(2000.0), (70.0, 220.0), "200", "Young's modulus of the pivot seat (housing) material."),
+    num("bearing.pads.pivot_seat_poisson_ratio", "–", Range::open(-1.0, 0.5), (0.25, 0.35), "0.3", "Poisson ratio of the pivot seat (housing) material."),
     // [[bearing.pads.orifice]]
     rule(
         "bearing.pads.orifice[].position_frac",
@@ -539,6 +551,13 @@ mod tests {
             }
             "bearing.pads.preload" | "bearing.pads.clearance_um" => vec!["bearing.pads.bore_radius_mm=".into()],
             "lubricant.viscosity_coefficient_per_k" => vec!["lubricant.viscosity2_pa_s=".into(), "lubricant.viscosity2_temperature_c=".into()],
+            "bearing.pads.pivot_radius_mm" => vec!["bearing.pads.pivot_contact=\"ball\"".into()],
+            "bearing.pads.pivot_seat_radius_mm" => vec!["bearing.pads.pivot_contact=\"ball\"".into(), "bearing.pads.pivot_radius_mm=10".into()],
+            "bearing.pads.pivot_length_mm" | "bearing.pads.pivot_seat_youngs_modulus_gpa" | "bearing.pads.pivot_seat_poisson_ratio" => vec![
+                "bearing.pads.pivot_contact=\"rocker\"".into(),
+                "bearing.pads.pivot_radius_mm=20".into(),
+                "bearing.pads.pivot_seat_radius_mm=21".into(),
+            ],
             _ => vec![],
         }
     }

@@ -10,9 +10,11 @@
 //! - [`pad_modes`]: the pad's bending modes on its pivot as pseudo-modal coordinates (film shapes, modal
 //!   mass and stiffness).
 //! - [`pad_thermal`]: steady 3-D heat conduction in a pad, free convection on its free faces.
+//! - [`hertz`]: Hertz contact of a pivot (rocker, ball in socket): approach and stiffness, nonlinear in load.
 //! - [`hydraulics`]: servovalve, injection lines and nozzles of the controllable bearing, linearised.
 
 pub mod energy;
+pub mod hertz;
 pub mod hydraulics;
 pub mod orifice;
 pub mod pad_elastic;

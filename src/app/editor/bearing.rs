@@ -4,7 +4,7 @@ use egui::Ui;
 
 use super::widgets::{choice_ui, Pick, count_ui, error_row_ui, fields_ui, number_ui, opt_fields_ui, per_pad_ui, EditOutput, Field, Num, OptField};
 use crate::app::document::Document;
-use crate::model::file::{OneOrMany, OrificeFile, PadKindFile};
+use crate::model::file::{ContactKindFile, OneOrMany, OrificeFile, PadKindFile};
 use crate::model::CaseFile;
 
 const GEOMETRY: [Field; 3] = [
@@ -221,13 +221,82 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
             }
         },
     ));
-    // Massless pads have no density row (the validation refuses one).
-    let material: Vec<OptField> = PAD_MATERIAL.into_iter().filter(|f| !(massless && f.num.key == "bearing.pads.density_kg_per_m3")).collect();
+    // Massless pads have no density row (the validation refuses one); a contact pivot no stiffness row.
+    let contact = doc.file().bearing.pads.pivot_contact;
+    let material: Vec<OptField> = PAD_MATERIAL
+        .into_iter()
+        .filter(|f| !(massless && f.num.key == "bearing.pads.density_kg_per_m3"))
+        .filter(|f| !(contact.is_some() && f.num.key == "bearing.pads.pivot_stiffness_n_per_m"))
+        .collect();
     out.merge(opt_fields_ui(ui, doc, &material));
+    out.merge(pivot_contact_ui(ui, doc, contact));
     if !doc.file().bearing.pad.is_empty() {
         ui.label("");
         ui.label(egui::RichText::new(format!("{} per-pad override table(s) from the file apply ([[bearing.pad]]); edit them in the TOML.", doc.file().bearing.pad.len())).weak().small());
         ui.end_row();
+    }
+    out
+}
+
+/// The pivot's Hertz contact rows (`bearing.pads.pivot_*`), shown when a contact is chosen.
+const PIVOT_CONTACT: [OptField; 5] = [
+    OptField {
+        num: Num { key: "bearing.pads.pivot_radius_mm", label: "Pivot radius", decimals: 3 },
+        default: 20.0,
+        get: |f| f.bearing.pads.pivot_radius_mm,
+        set: |f, v| f.bearing.pads.pivot_radius_mm = v,
+    },
+    OptField {
+        num: Num { key: "bearing.pads.pivot_seat_radius_mm", label: "Pivot seat radius", decimals: 3 },
+        default: 21.0,
+        get: |f| f.bearing.pads.pivot_seat_radius_mm,
+        set: |f, v| f.bearing.pads.pivot_seat_radius_mm = v,
+    },
+    OptField {
+        num: Num { key: "bearing.pads.pivot_length_mm", label: "Rocker contact length", decimals: 3 },
+        default: 40.0,
+        get: |f| f.bearing.pads.pivot_length_mm,
+        set: |f, v| f.bearing.pads.pivot_length_mm = v,
+    },
+    OptField {
+        num: Num { key: "bearing.pads.pivot_seat_youngs_modulus_gpa", label: "Seat Young's modulus", decimals: 1 },
+        default: 200.0,
+        get: |f| f.bearing.pads.pivot_seat_youngs_modulus_gpa,
+        set: |f, v| f.bearing.pads.pivot_seat_youngs_modulus_gpa = v,
+    },
+    OptField {
+        num: Num { key: "bearing.pads.pivot_seat_poisson_ratio", label: "Seat Poisson ratio", decimals: 3 },
+        default: 0.3,
+        get: |f| f.bearing.pads.pivot_seat_poisson_ratio,
+        set: |f, v| f.bearing.pads.pivot_seat_poisson_ratio = v,
+    },
+];
+
+/// The pivot: a given stiffness (or rigid), or a Hertz contact with its geometry rows. Choosing a contact
+/// drops the stiffness key and fills the two radii the validation requires.
+fn pivot_contact_ui(ui: &mut Ui, doc: &mut Document, contact: Option<ContactKindFile>) -> EditOutput {
+    let mut out = choice_ui(
+        ui,
+        doc,
+        Pick { key: "bearing.pads.pivot_contact", label: "Pivot contact", tip: None },
+        contact,
+        &[(None, "stiffness given (or rigid)"), (Some(ContactKindFile::Rocker), "Hertz rocker"), (Some(ContactKindFile::Ball), "Hertz ball in socket")],
+        |f, c| {
+            let p = &mut f.bearing.pads;
+            p.pivot_contact = c;
+            if c.is_some() {
+                p.pivot_stiffness_n_per_m = None;
+                p.pivot_radius_mm = p.pivot_radius_mm.or(Some(20.0));
+                p.pivot_seat_radius_mm = p.pivot_seat_radius_mm.or(Some(21.0));
+            } else {
+                (p.pivot_radius_mm, p.pivot_seat_radius_mm, p.pivot_length_mm) = (None, None, None);
+                (p.pivot_seat_youngs_modulus_gpa, p.pivot_seat_poisson_ratio) = (None, None);
+            }
+        },
+    );
+    if contact.is_some() {
+        let rows: Vec<OptField> = PIVOT_CONTACT.into_iter().filter(|f| contact == Some(ContactKindFile::Rocker) || f.num.key != "bearing.pads.pivot_length_mm").collect();
+        out.merge(opt_fields_ui(ui, doc, &rows));
     }
     out
 }

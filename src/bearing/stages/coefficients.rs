@@ -48,7 +48,7 @@ pub(super) fn pad_inertia(case: &Case, solution: &Solution) -> Vec<Vec<f64>> {
     for (k, pad) in b.pads.iter().enumerate() {
         let mut s = PadStructure::rigid(pad, b.journal_radius_m, b.length_m);
         if let Some(flex) = solution.pads.get(k).and_then(|p| p.flex.as_ref()) {
-            s = s.with_modes(&modal_properties(&flex.modes));
+            s = s.with_modes(&modal_properties(&flex.modes, pad.massless));
         }
         let at = |dof| coords.iter().position(|c| *c == Coord::Pad { pad: k, dof });
         for (i, &di) in s.dofs.iter().enumerate() {

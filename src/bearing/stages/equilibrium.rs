@@ -29,6 +29,8 @@ pub struct EquilibriumInputs {
     pub films: FilmsInputs,
     /// Radial and transverse pivot stiffness per pad (the structure's springs; the density is not read).
     pub stiffness_n_per_m: Vec<[Option<f64>; 2]>,
+    /// Hertz pivot contacts per pad (their stiffness follows the pad's load).
+    pub contacts: Vec<Option<crate::physics::hertz::PivotContact>>,
     /// Reported with the solution.
     pub preloads: Vec<f64>,
     pub viscosity: ViscosityLaw,
@@ -68,6 +70,7 @@ impl EquilibriumInputs {
         Self {
             films: FilmsInputs::of(case),
             stiffness_n_per_m: structure.stiffness_n_per_m,
+            contacts: structure.contacts,
             preloads: case.bearing.pads.iter().map(|p| p.preload).collect(),
             viscosity: *viscosity,
             oil_density_kg_per_m3: *density_kg_per_m3,

@@ -12,6 +12,7 @@ use crate::bearing::error::SolveError;
 use crate::bearing::flex::modal_properties;
 use crate::bearing::model::BearingModel;
 use crate::model::{Bearing, Case, MeshSpec, Orifice, Pad, Physics};
+use crate::physics::hertz::PivotContact;
 
 use super::{Ctx, Poll, Progress, Request, Stage, StageId};
 use crate::bearing::progress::Cancel;
@@ -77,7 +78,8 @@ impl FlexInputs {
                     youngs_modulus_pa,
                     poisson_ratio,
                     orifices: _,
-                    massless: _, // the rigid inertia's (structure); the modes take the material's density
+                    massless: _, // the inertia's (structure: no rigid or modal mass); the mode shapes take the material's density
+                    pivot_contact: _, // the modes are computed on a rigid pivot
                 } = pad;
                 [*youngs_modulus_pa, *poisson_ratio, *density_kg_per_m3]
             })
@@ -104,6 +106,7 @@ impl PadFilmInputs {
             massless: _,                           // structure (coefficients)
             youngs_modulus_pa: _,
             poisson_ratio: _, // FlexInputs, when the pads bend
+            pivot_contact: _,  // whether one is given: dofs (its values: StructureInputs)
             orifices,
         } = pad;
         Self {
@@ -154,6 +157,8 @@ pub struct StructureInputs {
     pub stiffness_n_per_m: Vec<[Option<f64>; 2]>,
     /// Pad density per pad [kg/m³] (inertia only; 0 for massless pads).
     pub density_kg_per_m3: Vec<f64>,
+    /// Hertz pivot contact per pad (geometry and both materials; its stiffness follows the pad's load).
+    pub contacts: Vec<Option<PivotContact>>,
 }
 
 impl StructureInputs {
@@ -175,15 +180,17 @@ impl StructureInputs {
                 density_kg_per_m3,
                 massless,
                 youngs_modulus_pa: _,
-                poisson_ratio: _,
+                poisson_ratio: _, // a contact's pivot material: copied into pivot_contact
                 orifices: _,
+                pivot_contact,
             } = pad;
             // The density of the inertia: none for massless pads.
             let density = if *massless { 0.0 } else { *density_kg_per_m3 };
-            ([*pivot_stiffness_n_per_m, *pivot_transverse_stiffness_n_per_m], density)
+            (([*pivot_stiffness_n_per_m, *pivot_transverse_stiffness_n_per_m], density), *pivot_contact)
         });
-        let (stiffness_n_per_m, density_kg_per_m3) = fields.unzip();
-        Self { stiffness_n_per_m, density_kg_per_m3 }
+        let (springs, contacts): (Vec<_>, Vec<_>) = fields.unzip();
+        let (stiffness_n_per_m, density_kg_per_m3) = springs.into_iter().unzip();
+        Self { stiffness_n_per_m, density_kg_per_m3, contacts }
     }
 }
 
@@ -201,7 +208,7 @@ pub fn install_structure(model: &mut BearingModel, case: &Case) -> Result<(), So
         .map(|(p, pm)| {
             let rigid = PadStructure::rigid(p, b.journal_radius_m, b.length_m);
             match &pm.modes {
-                Some(modes) => rigid.with_modes(&modal_properties(modes)),
+                Some(modes) => rigid.with_modes(&modal_properties(modes, p.massless)),
                 None => rigid,
             }
         })

@@ -9,7 +9,7 @@
 //! | stage            | reads from the case (and the request)                                    | reads the outputs of |
 //! |------------------|--------------------------------------------------------------------------|----------------------|
 //! | `Films`          | R, L, C_b; per pad θ_le, β, θ_p, C_p, t, orifices and its coordinates (kind, which pivot stiffnesses are given); element counts, half model; with `physics.pad_modes > 0` the modes' E, ν, density, pad layers | — |
-//! | `Equilibrium`    | Films + pivot stiffness values, preloads (reported); µ(T), oil ρ (regime warnings); Ω, load, T_film, p_inj, T_inj; cavitation, touchdown film | Films |
+//! | `Equilibrium`    | Films + pivot stiffness values and Hertz pivot contacts, preloads (reported); µ(T), oil ρ (regime warnings); Ω, load, T_film, p_inj, T_inj; cavitation, touchdown film | Films |
 //! | `Thermal`        | Equilibrium + pad radial elements; oil c_p, k; T_supply; every `[thermal]` value (with pad growth: the pads' E, ν) — THD cases only | Films, Equilibrium |
 //! | `Coefficients`   | Equilibrium (+ Thermal for THD) + pad density (the inertia `M`)          | Equilibrium, Thermal |
 //! | `Reduction`      | Coefficients + ω/Ω: the solution the views show                          | Coefficients         |

@@ -1,0 +1,178 @@
+//! Hertz pivots in the equilibrium: each pad's pivot stiffness evaluated at the load the pad carries.
+//!
+//! A pad with a pivot contact ([`crate::physics::hertz`]) has the radial pivot coordinate ξ like a pad with a
+//! given pivot stiffness, but its spring is nonlinear: the pivot carries `F` with the Hertz approach
+//! `ξ = δ(F)`. The equilibrium ([`super::equilibrium`]) solves with linear pivot springs, so the load is
+//! iterated around it (fixed point on the secant stiffness, with a secant step per pad: [`accelerated`]):
+//!
+//! ```text
+//! k⁰ = F₀/δ(F₀)  (F₀ = |W|, the static load);   solve with kⁿ;   Fₖ = kⁿ ξₖ;   kⁿ⁺¹ = Fₖ / δ(Fₖ)
+//! ```
+//! until every secant stiffness changes by less than [`RTOL`]. At the fixed point each pivot carries its load
+//! with exactly the Hertz approach (the secant spring through the same point of the F–δ curve). The
+//! coefficients then use the **tangent** stiffness `dF/dδ` at that load (the linearisation of the
+//! nonlinear spring: 3/2 of the secant for a ball, a little more than the secant for a rocker).
+//!
+//! A pivot contact carries compression only: a pad whose film pulls it off its seat (`Fₖ ≤ 0`, which a
+//! film does not do at equilibrium) or carries less than [`FLOOR`] of the load is given the stiffness at
+//! that floor, with a warning. The iteration count and any non-convergence are in the solve report.
+
+use crate::model::{Case, LoadSpec};
+use crate::physics::hertz::{ContactState, PivotContact};
+
+use super::coordinates::{Coord, PadDof};
+use super::equilibrium::{solve_equilibrium, Cancel, EquilibriumParams};
+use super::error::SolveError;
+use super::job::assemble_solution;
+use super::model::{BearingModel, OperatingPoint};
+use super::solution::Solution;
+
+/// Relative change of every secant stiffness at which the load iteration stops.
+pub const RTOL: f64 = 1e-6;
+/// Most load iterations (each is one equilibrium solve, warm-started from the previous one).
+pub const MAX_ITERATIONS: usize = 30;
+/// Smallest pivot load, as a fraction of the static load, at which a contact's stiffness is evaluated.
+pub const FLOOR: f64 = 1e-3;
+
+/// A pad whose pivot is a Hertz contact: where its spring lives.
+struct ContactPad {
+    pad: usize,
+    contact: PivotContact,
+    /// Index of ξ in the global vector and in the pad's structure.
+    global: usize,
+    local: usize,
+}
+
+/// The case's pads with a pivot contact.
+fn contact_pads(model: &BearingModel, case: &Case) -> Result<Vec<ContactPad>, SolveError> {
+    let mut out = Vec::new();
+    for (pad, p) in case.bearing.pads.iter().enumerate() {
+        let Some(contact) = p.pivot_contact else { continue };
+        let global = model.dofs.index(Coord::Pad { pad, dof: PadDof::PivotRadial });
+        let local = model.pads.get(pad).and_then(|pm| pm.structure.dofs.iter().position(|d| *d == PadDof::PivotRadial));
+        match (global, local) {
+            (Some(global), Some(local)) => out.push(ContactPad { pad, contact, global, local }),
+            _ => return Err(SolveError::Invalid(format!("pad {pad}: a pivot contact without the radial pivot coordinate in the model"))),
+        }
+    }
+    Ok(out)
+}
+
+/// The case has a pad with a Hertz pivot.
+#[must_use]
+pub fn has_contacts(case: &Case) -> bool {
+    case.bearing.pads.iter().any(|p| p.pivot_contact.is_some())
+}
+
+/// The next secant stiffness from the fixed-point map `T(k)` (the secant at the load that `k` gives):
+/// a secant step on `g(k) = T(k) − k` through the previous iterate, kept within a factor 3 of the plain
+/// fixed-point value `T(k)` (and `T(k)` itself on the first step or a flat `g`). A lightly loaded pad, whose
+/// load depends strongly on its pivot's give, contracts slowly under the plain map (≈ 1/3 per step on the
+/// compressor's top pad); the secant step takes a few.
+fn accelerated(k: f64, mapped: f64, previous: Option<(f64, f64)>) -> f64 {
+    let Some((k0, mapped0)) = previous else { return mapped };
+    let (g, g0) = (mapped - k, mapped0 - k0);
+    if (g - g0).abs() <= 1e-12 * mapped.abs() || (k - k0).abs() <= 1e-12 * k.abs() {
+        return mapped;
+    }
+    let next = k - g * (k - k0) / (g - g0);
+    if next.is_finite() && next > mapped / 3.0 && next < 3.0 * mapped {
+        next
+    } else {
+        mapped
+    }
+}
+
+fn set_stiffness(model: &mut BearingModel, c: &ContactPad, k: f64) {
+    model.pads[c.pad].structure.stiffness[(c.local, c.local)] = k;
+}
+
+fn state(c: &ContactPad, load_n: f64) -> Result<ContactState, SolveError> {
+    c.contact.state(load_n).map_err(|e| SolveError::Invalid(format!("pad {} pivot contact: {e}", c.pad)))
+}
+
+/// Solves the operating point with each Hertz pivot's stiffness at its pad's load (module docs), and
+/// assembles the solution with the tangent stiffnesses; each contact pad's state is in
+/// `PadResult::pivot_contact`.
+///
+/// # Errors
+/// The equilibrium's errors; [`SolveError::Invalid`] for a contact outside Hertz theory at its load.
+pub fn solve(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    start: Option<&[f64]>,
+    params: EquilibriumParams,
+    cancel: &dyn Cancel,
+) -> Result<Solution, SolveError> {
+    let pads = contact_pads(model, case)?;
+    let scale = match case.operating.load {
+        LoadSpec::Force { magnitude_n, .. } => magnitude_n.abs(),
+        LoadSpec::Position { .. } => 0.0,
+    }
+    .max(1.0);
+    let floor = FLOOR * scale;
+    let mut secant: Vec<f64> = Vec::with_capacity(pads.len());
+    for c in &pads {
+        let k = state(c, scale)?.secant_n_per_m();
+        set_stiffness(model, c, k);
+        secant.push(k);
+    }
+    // The previous iterate's (stiffness, mapped stiffness) per pad, for the secant acceleration.
+    let mut previous: Vec<Option<(f64, f64)>> = vec![None; pads.len()];
+    let mut earlier: Option<super::report::SolveReport> = None;
+    let mut u: Option<Vec<f64>> = start.map(<[f64]>::to_vec);
+    let mut iterations = 0;
+    let (eq, states, warnings, converged) = loop {
+        iterations += 1;
+        let mut eq = solve_equilibrium(model, op, params, u.as_deref(), cancel)?;
+        let mut states = Vec::with_capacity(pads.len());
+        let mut warnings = Vec::new();
+        let mut change = 0.0_f64;
+        for ((c, k), prev) in pads.iter().zip(secant.iter_mut()).zip(previous.iter_mut()) {
+            let load = *k * eq.u[c.global];
+            if load < floor {
+                warnings.push(format!("pad {}: pivot load {load:.4e} N below {FLOOR} of the static load; its contact stiffness is taken at {floor:.4e} N", c.pad));
+            }
+            let s = state(c, load.max(floor))?;
+            let mapped = s.secant_n_per_m();
+            change = change.max((mapped - *k).abs() / mapped);
+            let next = accelerated(*k, mapped, *prev);
+            *prev = Some((*k, mapped));
+            *k = next;
+            states.push(s);
+        }
+        if let Some(r) = earlier.take() {
+            eq.report.add_earlier(r);
+        }
+        if change < RTOL || iterations >= MAX_ITERATIONS {
+            break (eq, states, warnings, change < RTOL);
+        }
+        for (c, k) in pads.iter().zip(&secant) {
+            set_stiffness(model, c, *k);
+        }
+        u = Some(eq.u.clone());
+        earlier = Some(eq.report);
+    };
+    // `eq` was solved with the previous secant stiffnesses; the states hold the loads it produced.
+    for (c, s) in pads.iter().zip(&states) {
+        set_stiffness(model, c, s.tangent_n_per_m);
+    }
+    // The model keeps the tangent stiffnesses (a later linearisation on it sees the same coefficients; the
+    // next solve starts its own iteration).
+    let mut sol = assemble_solution(model, case, op, &eq);
+    for (c, s) in pads.iter().zip(states) {
+        if let Some(p) = sol.pads.get_mut(c.pad) {
+            p.pivot_contact = Some(s);
+        }
+    }
+    let r = &mut sol.report;
+    r.method = format!("{}; Hertz pivots: {iterations} load iteration(s)", r.method);
+    if !converged {
+        r.warn(format!("Hertz pivot loads not converged in {MAX_ITERATIONS} iterations (relative stiffness change above {RTOL})"));
+    }
+    for w in warnings {
+        r.warn(w);
+    }
+    Ok(sol)
+}
