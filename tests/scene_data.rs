@@ -60,7 +60,7 @@ fn compressor_bearing_scene() {
     let csv = export::fields_csv(&s);
     let nodes: usize = s.pads.iter().map(|p| p.field.pressure_pa.len()).sum();
     assert_eq!(csv.lines().count(), 1 + nodes);
-    let json: serde_json::Value = serde_json::from_str(&export::results_json(&s)).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&export::results_json(&s, &[])).unwrap();
     assert!((json["eccentricity_ratio"].as_f64().unwrap() - s.eccentricity_ratio).abs() < 1e-15);
     let t = plots::matrix_table(&s.full);
     assert_eq!(t.headers[2], "pad 0 tilt [rad]");

@@ -15,7 +15,8 @@ use egui_kittest::kittest::{NodeT, Queryable};
 use egui_kittest::{Harness, SnapshotOptions};
 use tiltpad::app::state::{CoefficientAxis, PadChoice, Persisted, View};
 use tiltpad::app::WorkbenchApp;
-use tiltpad::scene::field::FieldKind;
+use tiltpad::scene::field::{FieldKind, PadMap};
+use tiltpad::scene::field_compare::difference_maps;
 use tiltpad::scene::summary::sig4;
 use tiltpad::scene::sweep::SweepSpec;
 
@@ -536,6 +537,23 @@ fn a_load_sweep_plots_three_outputs_with_their_units() {
     snapshot(&mut h, "sweep_load_three_outputs");
 }
 
+/// The colour-scale label of the field view: "… from LO to HI (…)" as two numbers.
+fn colour_scale(h: &Harness<'_, WorkbenchApp>) -> (String, String) {
+    let t = text_of(&h.get_by_label_contains("Colour scale: "));
+    let range = t.split(" from ").nth(1).unwrap().split(" (").next().unwrap().to_string();
+    let (lo, hi) = range.split_once(" to ").unwrap();
+    (lo.to_string(), hi.to_string())
+}
+
+/// The largest pressure of a result, as the field view's colour range reaches it [MPa].
+fn p_max_mpa(s: &tiltpad::bearing::Solution) -> f64 {
+    PadMap::all(s, FieldKind::Pressure).iter().map(|m| m.max).fold(0.0, f64::max) * 1e-6
+}
+
+/// Pin the 9000 rpm result, solve 6000 rpm: the results panel lists both with their difference; the
+/// bearing view draws the pinned outline over the live one; the pad field view shows both side by side on
+/// one colour scale (from 0 to the larger of the two peak pressures), then their difference on a symmetric
+/// scale (±the largest nodal |Δp|); the coefficient view re-solves the pin for its curves and overlays them.
 #[test]
 fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     let mut h = solved_app_at([1280.0, 720.0], None, |_| {});
@@ -544,6 +562,7 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     h.run_steps(2);
     assert_eq!(h.state().persisted.pins.len(), 1);
     assert_eq!(h.state().persisted.pins[0].name, "pin 1");
+    assert_eq!(h.state().persisted.compare_with.as_deref(), Some("pin 1"), "the views compare with the new pin");
     spin_button(&h, "Speed").set_value_accesskit(6000.0);
     h.run_steps(2);
     wait_for_solve(&mut h);
@@ -553,10 +572,57 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     for v in [slow.eccentricity_ratio, fast.eccentricity_ratio, slow.eccentricity_ratio - fast.eccentricity_ratio] {
         assert!(h.query_all_by_label(&sig4(v)).next().is_some(), "{} not shown", sig4(v));
     }
+    h.get_by_label_contains("Pinned \"pin 1\" (dashed");
     snapshot(&mut h, "compare_pinned_1280x720");
+
+    h.state_mut().persisted.view = View::Fields;
+    h.state_mut().persisted.flowlines = false;
+    h.run_steps(3);
+    let shared = p_max_mpa(&slow).max(p_max_mpa(&fast));
+    assert_eq!(colour_scale(&h), (sig4(0.0), sig4(shared)));
+    snapshot(&mut h, "compare_fields_side_by_side_1280x720");
+    h.get_by_label("difference map").click();
+    h.run_steps(3);
+    let live = PadMap::all(&slow, FieldKind::Pressure);
+    let pinned = PadMap::all(&fast, FieldKind::Pressure);
+    let (_, (lo, hi)) = difference_maps(&live, &pinned).unwrap();
+    assert!(hi > 0.0 && lo == -hi);
+    assert_eq!(colour_scale(&h), (sig4(lo * 1e-6), sig4(hi * 1e-6)));
+    h.get_by_label_contains("Colour scale: Δ Pressure [MPa]");
+    snapshot(&mut h, "compare_fields_difference_1280x720");
+
+    h.state_mut().persisted.view = View::Coefficients;
+    h.run_steps(2);
+    wait_for_solve(&mut h);
+    h.get_by_label("Wide faint dashed curves: pinned \"pin 1\".");
+
     h.get_by_label("Remove \"pin 1\"").click();
     h.run_steps(2);
     assert!(h.state().persisted.pins.is_empty());
+    assert!(h.query_by_label_contains("Wide faint dashed").is_none());
+}
+
+/// Locked, the pad field colour scale stays through two edits that change the peak pressure; unlocked, it
+/// follows the result again.
+#[test]
+fn a_locked_colour_scale_survives_two_edits() {
+    let mut h = solved_app(None, |p| {
+        p.view = View::Fields;
+        p.flowlines = false;
+    });
+    let first = colour_scale(&h);
+    assert_eq!(first.1, sig4(p_max_mpa(&h.state().shown.clone().unwrap().solution)));
+    h.get_by_label("Lock colour scale").click();
+    h.run_steps(2);
+    edit_and_solve(&mut h, "operating.speed_rpm", |f| f.operating.speed_rpm = 6000.0);
+    edit_and_solve(&mut h, "operating.load_n", |f| f.operating.load_n = f.operating.load_n.map(|w| 1.5 * w));
+    let now = sig4(p_max_mpa(&h.state().shown.clone().unwrap().solution));
+    assert_ne!(now, first.1, "the edits change the peak pressure");
+    assert_eq!(colour_scale(&h), first);
+    h.get_by_label_contains("Lock colour scale (").click();
+    h.run_steps(2);
+    assert_eq!(colour_scale(&h).1, now);
+    assert!(h.state().persisted.field_locks.is_empty());
 }
 
 #[test]

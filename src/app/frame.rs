@@ -95,7 +95,12 @@ impl WorkbenchApp {
                 }
                 if ui.add_enabled(solution.is_some(), egui::Button::new("Export results as JSON…")).clicked() {
                     if let Some(s) = &solution {
-                        self.files.export(&self.export_name("results", "json"), "JSON", "json", export::results_json(s).into_bytes());
+                        self.files.export(&self.export_name("results", "json"), "JSON", "json", export::results_json(s, &self.persisted.pins).into_bytes());
+                    }
+                }
+                if ui.add_enabled(solution.is_some(), egui::Button::new("Export results as CSV…")).on_hover_text("One row per result: the live one, then each pinned one, every output column.").clicked() {
+                    if let Some(s) = &solution {
+                        self.files.export(&self.export_name("results", "csv"), "CSV", "csv", export::results_csv(s, &self.persisted.pins).into_bytes());
                     }
                 }
                 if ui.add_enabled(solution.is_some(), egui::Button::new("Export film fields for ParaView (VTU)…")).on_hover_text("Pressure, film thickness, temperatures and the mean film velocity on the 3-D pad surfaces, as a VTK unstructured grid.").clicked() {
@@ -197,8 +202,10 @@ impl WorkbenchApp {
                 action
             })
             .inner;
-        if let Some(compare_panel::CompareAction::ExportCsv(csv)) = action {
-            self.files.export(&self.export_name("pins", "csv"), "CSV", "csv", csv.into_bytes());
+        match action {
+            Some(compare_panel::CompareAction::ExportCsv(csv)) => self.files.export(&self.export_name("pins", "csv"), "CSV", "csv", csv.into_bytes()),
+            Some(compare_panel::CompareAction::Pinned) => self.pinned_now(),
+            None => {}
         }
     }
 
@@ -215,12 +222,15 @@ impl WorkbenchApp {
             View::Bearing => {
                 let case = self.shown.as_ref().map(|s| s.solution.inputs.clone()).or_else(|| self.doc.validation().as_ref().ok().cloned());
                 if let Some(case) = case {
+                    let pinned = self.compare_with_ui(ui, crate::scene::request::SOLUTION);
                     let solution = self.shown.as_ref().map(|s| s.solution.as_ref());
                     let o = outline::bearing_outline_with(&case, solution, self.persisted.outline_lock);
                     bearing_view::lock_ui(ui, &mut self.persisted.outline_lock, o.scales());
                     let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
                     let checks = solution.map(|s| crate::bearing::limits::check(&s.inputs.limits, s)).unwrap_or_default();
-                    bearing_view::bearing_view_ui(ui, &o, &pads, &checks, stale);
+                    // The pinned outline at the live picture's scales, so the two overlay.
+                    let overlay = pinned.map(|(name, p)| (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales()))));
+                    bearing_view::bearing_view_ui(ui, &o, &pads, &checks, stale, overlay.as_ref().map(|(n, o)| (n.as_str(), o)));
                 }
             }
             View::Fields => self.fields_ui(ui),
@@ -234,6 +244,16 @@ impl WorkbenchApp {
             },
             View::Rotor => super::views::rotor_view::rotor_ui(ui, &mut self.rotor),
             View::Sweep => self.sweep_ui(ui),
+        }
+    }
+
+    /// The live result was just pinned: keep it for the views, and compare with it if no pin was chosen.
+    fn pinned_now(&mut self) {
+        if let (Some(pin), Some(shown)) = (self.persisted.pins.last(), &self.shown) {
+            self.pinned.remember(pin, shown);
+            if self.persisted.compare_with.is_none() {
+                self.persisted.compare_with = Some(pin.name.clone());
+            }
         }
     }
 
@@ -286,7 +306,16 @@ impl WorkbenchApp {
             }
         }
         let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { drawn };
-        field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, kind, self.persisted.pads, self.persisted.flowlines);
+        let pinned = self.compare_with_ui(ui, crate::scene::request::SOLUTION);
+        let p = &mut self.persisted;
+        let opts = field_view::FieldOptions {
+            kind,
+            pads: p.pads,
+            flowlines: p.flowlines,
+            locks: &mut p.field_locks,
+            pinned: pinned.as_ref().map(|(name, s)| (name.as_str(), &s.solution, p.field_compare)),
+        };
+        field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, opts);
     }
 
     fn frf_ui(&mut self, ui: &mut Ui) {
@@ -317,13 +346,18 @@ impl WorkbenchApp {
             ui.label("Waiting for the first result…");
             return;
         };
-        let sol = &shown.solution;
-        let plot = match self.persisted.axis {
-            CoefficientAxis::FrequencyRatio => shown.frequency_sweep.as_ref().map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
-            CoefficientAxis::Speed => shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced)))),
+        let axis = self.persisted.axis;
+        let plot_of = |shown: &super::Shown| {
+            let sol = &shown.solution;
+            match axis {
+                CoefficientAxis::FrequencyRatio => shown.frequency_sweep.as_ref().map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
+                CoefficientAxis::Speed => shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced)))),
+            }
         };
-        match plot {
-            Some(p) => coefficients_view::coefficient_plots_ui(ui, &p),
+        let pinned = self.compare_with_ui(ui, View::Coefficients.needs(axis)).and_then(|(name, p)| plot_of(&p).map(|plot| (name, plot)));
+        let sol = &shown.solution;
+        match plot_of(&shown) {
+            Some(p) => coefficients_view::coefficient_plots_ui(ui, &p, pinned.as_ref().map(|(n, p)| (n.as_str(), p))),
             None => {
                 ui.horizontal(|ui| {
                     ui.spinner();

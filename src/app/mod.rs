@@ -14,10 +14,12 @@
 //! stays on screen while the case is invalid, solving or failed.
 
 mod actions;
+mod compare_views;
 pub mod document;
 pub mod editor;
 pub mod files;
 mod frame;
+pub mod pinned;
 pub mod presets;
 pub mod rotor_worker;
 pub mod save_dialog;
@@ -87,6 +89,8 @@ pub struct WorkbenchApp {
     pub deformation: views::deformation_view::DeformationView,
     pub rotor: views::rotor_view::RotorView,
     pub sweep: views::sweep_view::SweepView,
+    /// Results of the pins the views compare with (kept or re-solved, never persisted).
+    pinned: pinned::PinnedResults,
     pending: Option<Pending>,
     save_dialog: Option<save_dialog::SaveDialog>,
     allow_close: bool,
@@ -140,6 +144,7 @@ impl WorkbenchApp {
             deformation: views::deformation_view::DeformationView::default(),
             rotor: views::rotor_view::RotorView::default(),
             sweep: views::sweep_view::SweepView::default(),
+            pinned: pinned::PinnedResults::new(ctx.clone()),
             pending: None,
             save_dialog: None,
             allow_close: false,
@@ -174,10 +179,10 @@ impl WorkbenchApp {
         self.view_rect
     }
 
-    /// Nothing is being solved and no result is pending.
+    /// Nothing is being solved (the edited case or a pin the views compare with) and no result is pending.
     #[must_use]
     pub fn is_idle(&self) -> bool {
-        !self.worker.busy()
+        !self.worker.busy() && !self.pinned.busy()
     }
 
     /// The request the open view needs now ([`crate::scene::request`]), if the case is valid.
@@ -192,7 +197,7 @@ impl WorkbenchApp {
         if let Some(req) = self.wanted_request() {
             // While a value is dragged, let the running (preview) solve finish and then take the latest
             // value, so results keep coming during the drag; otherwise a newer request cancels at once.
-            let hold = self.dragging && !self.is_idle();
+            let hold = self.dragging && self.worker.busy();
             if self.submitted.as_ref() != Some(&req) && !hold {
                 self.worker.submit(req.clone());
                 self.submitted = Some(req);
@@ -211,6 +216,11 @@ impl WorkbenchApp {
                 Event::Failed { error, .. } => self.status = Status::Failed(error),
             }
         }
+        // A pin's re-solve runs when the edited case is solved (on the web: in the frames it leaves free).
+        if !self.worker.busy() {
+            self.pinned.poll(WEB_SOLVE_BUDGET_S);
+        }
+        self.pinned.retain(&self.persisted.pins);
     }
 
     fn accept(&mut self, outcome: Outcome) {

@@ -88,6 +88,12 @@ pub struct Persisted {
     pub outline_lock: Option<crate::scene::outline::OutlineScales>,
     /// Pinned reference results (Compare in the results panel).
     pub pins: Vec<crate::scene::compare::Pin>,
+    /// The pin the views overlay or show beside the live result (by name; `None`: live only).
+    pub compare_with: Option<String>,
+    /// How the pad field view compares with that pin.
+    pub field_compare: super::views::field_view::FieldCompare,
+    /// Locked colour ranges of the pad field view (one per field kind).
+    pub field_locks: Vec<crate::scene::field_compare::FieldScaleLock>,
     /// The sweep view's input, range and outputs.
     pub sweep: crate::scene::sweep::SweepSpec,
     /// The editor and results side panels are shown (each can be collapsed to give the view room).
@@ -111,6 +117,9 @@ impl Default for Persisted {
             editor_width: 360.0,
             outline_lock: None,
             pins: Vec::new(),
+            compare_with: None,
+            field_compare: super::views::field_view::FieldCompare::SideBySide,
+            field_locks: Vec::new(),
             sweep: crate::scene::sweep::SweepSpec::default(),
             editor_open: true,
             results_open: true,

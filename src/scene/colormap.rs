@@ -7,12 +7,17 @@
 //! printing and the common colour-vision deficiencies.
 //!
 //! Viridis is used for pressure and film thickness, inferno (black → yellow, "hot") for temperatures.
+//! Differences (live − pinned) use a diverging map, blue through light grey to red, with grey at zero:
+//! five samples of Moreland's cool–warm map ("Diverging Color Maps for Scientific Visualization", 2009),
+//! whose two halves have matching lightness so equal positive and negative differences look equally strong.
 
 /// A colour map.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ColorMap {
     Viridis,
     Inferno,
+    /// Cool–warm diverging map for signed differences (grey at the middle of the range).
+    Diverging,
 }
 
 const VIRIDIS: [[u8; 3]; 11] = [
@@ -42,11 +47,14 @@ const INFERNO: [[u8; 3]; 10] = [
     [252, 255, 164],
 ];
 
+const COOL_WARM: [[u8; 3]; 5] = [[59, 76, 192], [141, 176, 254], [221, 221, 221], [244, 154, 123], [180, 4, 38]];
+
 impl ColorMap {
     fn table(self) -> &'static [[u8; 3]] {
         match self {
             Self::Viridis => &VIRIDIS,
             Self::Inferno => &INFERNO,
+            Self::Diverging => &COOL_WARM,
         }
     }
 
@@ -107,6 +115,18 @@ mod tests {
                 assert!(l >= last - 1e-3, "{map:?} at {k}: {l} after {last}");
                 last = l;
             }
+        }
+    }
+
+    /// The diverging map is grey at zero difference and its two halves are equally light at equal
+    /// distances from the middle (within 0.03 in relative luminance on the five samples and between them).
+    #[test]
+    fn the_diverging_map_is_symmetric_in_lightness() {
+        assert_eq!(ColorMap::Diverging.rgb_in(0.0, -2.0, 2.0), [221, 221, 221]);
+        for k in 0..=50 {
+            let t = f64::from(k) / 100.0;
+            let (cool, warm) = (luminance(ColorMap::Diverging.rgb(t)), luminance(ColorMap::Diverging.rgb(1.0 - t)));
+            assert!((cool - warm).abs() < 0.03, "t = {t}: {cool} vs {warm}");
         }
     }
 }

@@ -214,7 +214,13 @@ impl PadMap {
     #[must_use]
     #[allow(clippy::cast_precision_loss)]
     pub fn raster(&self, width: usize, height: usize, lo: f64, hi: f64) -> Raster {
-        let map = self.kind.colormap();
+        self.raster_with(self.kind.colormap(), width, height, lo, hi)
+    }
+
+    /// [`Self::raster`] in the colour map `map` (a difference map is drawn with the diverging one).
+    #[must_use]
+    #[allow(clippy::cast_precision_loss)]
+    pub fn raster_with(&self, map: ColorMap, width: usize, height: usize, lo: f64, hi: f64) -> Raster {
         let (s_end, z0, len) = (self.arc_length_m(), self.z_m[0], self.length_m());
         let mut rgba = Vec::with_capacity(width * height * 4);
         for row in 0..height {

@@ -6,6 +6,7 @@
 //! - [`colormap`]: perceptually uniform colour maps (viridis, inferno) as small tables.
 //! - [`deformation`]: a flexible pad's deformed cross-section, displacement and film maps, mode gallery.
 //! - [`field`]: a pad's scalar fields unwrapped onto (s, z), mirrored for half models, sampled and rasterised.
+//! - [`field_compare`]: live against pinned pad fields (shared colour range, difference maps) and locked colour scales.
 //! - [`flowlines`]: streamlines of the film's mean velocity (Couette + Poiseuille, orifices as sources or sinks).
 //! - [`frf`]: Bode curves of the controllable bearing (G1, G2, G3, G, the rig's shaker chain), CSV.
 //! - [`limits`]: design-limit checks as text.
@@ -28,6 +29,7 @@ pub mod deformation;
 pub mod export;
 pub mod fidelity;
 pub mod field;
+pub mod field_compare;
 pub mod flowlines;
 pub mod frf;
 pub mod limits;

@@ -13,6 +13,8 @@ const PRESSURE_FILL: Color32 = Color32::from_rgba_premultiplied(200, 110, 20, 17
 const INJECTION: Color32 = Color32::from_rgb(70, 160, 255);
 const H_MIN: Color32 = Color32::from_rgb(235, 60, 60);
 const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
+/// The pinned result drawn over the live one.
+const PINNED: Color32 = Color32::from_rgb(90, 220, 240);
 
 /// Maps the bearing frame (metres, y up) to the screen (points, y down).
 #[derive(Debug, Clone, Copy)]
@@ -75,9 +77,10 @@ pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineSc
 }
 
 /// Draws the cross-section into the available space.
-#[allow(clippy::too_many_lines)]
 /// `checks`: the solution's design-limit checks (exceeded ones are listed, h_min below its limit marked).
-pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], checks: &[Check], stale: bool) {
+/// `pinned`: a pinned result's name and outline (at the same scales), drawn dashed over the live one.
+#[allow(clippy::too_many_lines)]
+pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], checks: &[Check], stale: bool, pinned: Option<(&str, &BearingOutline)>) {
     // Scale and colour notes, as text a screen reader finds.
     ui.label(format!("To scale, except film thickness and journal displacement × {}", outline.exaggeration));
     ui.horizontal_wrapped(|ui| {
@@ -91,6 +94,9 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
         }
         if stale {
             ui.colored_label(Color32::from_rgb(230, 150, 60), "Showing the last valid result");
+        }
+        if let Some((name, _)) = pinned {
+            ui.colored_label(PINNED, format!("Pinned \"{name}\" (dashed: journal, pad film surfaces, pressure)"));
         }
     });
     for c in checks.iter().filter(|c| c.exceeded) {
@@ -163,6 +169,9 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
             painter.text(b + away * 30.0, Align2::CENTER_CENTER, format!("{:.1} µm{below}", h * 1e6), FontId::proportional(11.0), H_MIN);
         }
     }
+    if let Some((_, p)) = pinned {
+        overlay(&painter, &to_screen, p);
+    }
     // Hovering a pad shows its results.
     if let Some(pos) = response.hover_pos() {
         let near = outline.pads.iter().map(|p| (p.index, to_screen.map(p.label_at).distance(pos))).min_by(|a, b| a.1.total_cmp(&b.1));
@@ -187,4 +196,27 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
         painter.text(b + (b - a).normalized() * 14.0, Align2::CENTER_CENTER, format!("W = {w:.0} N"), font.clone(), LOAD);
     }
 
+}
+
+/// A pinned outline over the live one: the journal, each pad's film surface and the pressure, dashed.
+fn overlay(painter: &egui::Painter, to_screen: &ScreenFromBearing, pinned: &BearingOutline) {
+    let map = |pts: &[Point]| -> Vec<Pos2> { pts.iter().map(|&p| to_screen.map(p)).collect() };
+    let stroke = Stroke::new(1.6, PINNED);
+    let dashed = |pts: &[Pos2]| painter.extend(Shape::dashed_line(pts, stroke, 6.0, 4.0));
+    let mut journal = map(&pinned.journal);
+    if let Some(&first) = journal.first() {
+        journal.push(first);
+    }
+    dashed(&journal);
+    painter.circle_stroke(to_screen.map(pinned.journal_centre), 4.0, stroke);
+    for pad in &pinned.pads {
+        dashed(&map(&pad.film_surface));
+        if !pad.pressure.is_empty() {
+            let n = pad.pressure.len() / 2;
+            dashed(&map(&pad.pressure[n..]));
+        }
+        if let Some((j, q, _)) = pad.h_min {
+            painter.line_segment([to_screen.map(j), to_screen.map(q)], Stroke::new(1.0, PINNED));
+        }
+    }
 }

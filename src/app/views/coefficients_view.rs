@@ -32,7 +32,8 @@ struct PlotSpec<'a> {
     x_label: &'a str,
 }
 
-fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Series], current: Option<(f64, [f64; 4])>, height: f32) {
+/// `pinned`: a pinned result's name and series, drawn thin and faint in the same colours.
+fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Series], current: Option<(f64, [f64; 4])>, pinned: Option<(&str, &[crate::scene::plots::Series])>, height: f32) {
     let PlotSpec { id, title, unit, x_label } = *spec;
     ui.label(RichText::new(format!("{title} [{unit}]")).strong());
     Plot::new(id)
@@ -51,6 +52,12 @@ fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Seri
             for ((s, color), (style, marker)) in series.iter().zip(COLORS).zip(SERIES_STYLES) {
                 p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8).style(style));
                 p.points(Points::new(s.name.clone(), s.points.clone()).color(color).shape(marker).radius(3.0));
+            }
+            if let Some((name, pinned)) = pinned {
+                for (s, color) in pinned.iter().zip(COLORS) {
+                    let faint = color.gamma_multiply(0.55);
+                    p.line(Line::new(format!("{} (pinned \"{name}\")", s.name), s.points.clone()).color(faint).width(3.0).style(LineStyle::Dashed { length: 12.0 }));
+                }
             }
             if let Some((x, values)) = current {
                 p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
@@ -78,11 +85,17 @@ fn round_grid(input: GridInput) -> Vec<GridMark> {
 }
 
 /// The two plots.
-pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot) {
+/// `pinned`: a pinned result's name and plot, overlaid.
+pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot, pinned: Option<(&str, &CoefficientPlot)>) {
     let h = ((ui.available_height() - 300.0) / 2.0).max(150.0);
     let spec = |id, title, unit| PlotSpec { id, title, unit, x_label: plot.x_label };
-    plot_ui(ui, &spec("stiffness", "Reduced stiffness K", "MN/m"), &plot.stiffness, plot.current.map(|c| (c.0, c.1)), h);
-    plot_ui(ui, &spec("damping", "Reduced damping C", "kN·s/m"), &plot.damping, plot.current.map(|c| (c.0, c.2)), h);
+    let stiffness = pinned.map(|(n, p)| (n, p.stiffness.as_slice()));
+    let damping = pinned.map(|(n, p)| (n, p.damping.as_slice()));
+    plot_ui(ui, &spec("stiffness", "Reduced stiffness K", "MN/m"), &plot.stiffness, plot.current.map(|c| (c.0, c.1)), stiffness, h);
+    plot_ui(ui, &spec("damping", "Reduced damping C", "kN·s/m"), &plot.damping, plot.current.map(|c| (c.0, c.2)), damping, h);
+    if let Some((name, _)) = pinned {
+        ui.label(RichText::new(format!("Wide faint dashed curves: pinned \"{name}\".")).small());
+    }
     for (x, why) in &plot.failures {
         ui.label(RichText::new(format!("No solution at {x:.0}: {why}")).color(Color32::from_rgb(230, 120, 60)));
     }

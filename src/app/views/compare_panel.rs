@@ -12,6 +12,8 @@ use crate::scene::summary::sig4;
 pub enum CompareAction {
     /// Export the pins and the live result as CSV.
     ExportCsv(String),
+    /// The live result was pinned (the last pin).
+    Pinned,
 }
 
 fn value(v: Option<f64>) -> String {
@@ -28,8 +30,11 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
             let label = ui.label("Pin name");
             ui.add(egui::TextEdit::singleline(&mut name).desired_width(120.0).hint_text(format!("pin {}", pins.len() + 1))).labelled_by(label.id);
             if ui.button("Pin current result").on_hover_text("Keep this result as a named reference; the panel then shows live and pinned values with their differences.").clicked() {
-                let name = if name.trim().is_empty() { format!("pin {}", pins.len() + 1) } else { name.trim().to_string() };
+                let base = if name.trim().is_empty() { format!("pin {}", pins.len() + 1) } else { name.trim().to_string() };
+                // Names pick pins in the views: keep them unique.
+                let name = (1..).map(|k| if k == 1 { base.clone() } else { format!("{base} ({k})") }).find(|n| !pins.iter().any(|p| p.name == *n)).unwrap_or(base);
                 pins.push(Pin::new(&name, case_toml.unwrap_or_default(), live));
+                action = Some(CompareAction::Pinned);
             }
         });
         ui.data_mut(|d| d.insert_temp(id, name));
