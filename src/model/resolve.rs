@@ -8,11 +8,13 @@ use std::f64::consts::{PI, TAU};
 
 use super::budget::{DEFAULT_MAX_NODES, MAX_NODES_RANGE};
 use super::case::{
-    Bearing, Case, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, ViscosityLaw,
+    Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind,
 };
-use crate::physics::hertz::{ContactKind, PivotContact};
 use super::error::{CaseError, Range};
-use super::file::{CaseFile, ContactKindFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
+use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
+
+mod contact;
+mod lubricant;
 
 const MM: f64 = 1e-3;
 const UM: f64 = 1e-6;
@@ -29,7 +31,7 @@ impl CaseFile {
     /// The first problem found, naming its key, value and allowed range.
     pub fn resolve(&self) -> Result<Case, CaseError> {
         let bearing = resolve_bearing(self)?;
-        let lubricant = resolve_lubricant(self)?;
+        let lubricant = lubricant::resolve_lubricant(self)?;
         let operating = resolve_operating(self, bearing.pads.len())?;
         let mesh = resolve_mesh(self, &bearing)?;
         let cb = bearing.assembled_clearance_m;
@@ -215,16 +217,8 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         Some((v, key)) => Range::positive(3e4).check(&key, v)?,
         None => 7800.0,
     };
-    let youngs = match src.get("youngs_modulus_gpa", |p| p.youngs_modulus_gpa) {
-        Some((v, key)) => Range::positive(2000.0).check(&key, v)? * 1e9,
-        None => 200e9,
-    };
-    let poisson = match src.get("poisson_ratio", |p| p.poisson_ratio) {
-        Some((v, key)) => Range::open(-1.0, 0.5).check(&key, v)?,
-        None => 0.3,
-    };
-
-    let pivot_contact = resolve_contact(src, kind, pivot_stiffness.is_some(), (youngs, poisson), length)?;
+    let (youngs, poisson) = material(src, ("youngs_modulus_gpa", |p| p.youngs_modulus_gpa), ("poisson_ratio", |p| p.poisson_ratio))?;
+    let pivot_contact = contact::resolve_contact(src, kind, pivot_stiffness.is_some(), (youngs, poisson), length)?;
 
     let pivot = pivot_deg.to_radians();
     let leading_edge = if full_circle { pivot - PI } else { pivot - offset * arc };
@@ -298,64 +292,21 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
     })
 }
 
-/// The pivot's Hertz contact (`pivot_contact` and its geometry keys); the convex body has the pad's
-/// material `pad_material` (E [Pa], ν).
-fn resolve_contact(src: &PadSource<'_>, kind: PadKind, stiffness_given: bool, pad_material: (f64, f64), length: f64) -> Result<Option<PivotContact>, CaseError> {
-    type Getter = fn(&PadFile) -> Option<f64>;
-    let geometry_keys: [(&str, Getter); 5] = [
-        ("pivot_radius_mm", |p| p.pivot_radius_mm),
-        ("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm),
-        ("pivot_length_mm", |p| p.pivot_length_mm),
-        ("pivot_seat_youngs_modulus_gpa", |p| p.pivot_seat_youngs_modulus_gpa),
-        ("pivot_seat_poisson_ratio", |p| p.pivot_seat_poisson_ratio),
-    ];
-    let Some((contact, ckey)) = src.get("pivot_contact", |p| p.pivot_contact) else {
-        if let Some((_, key)) = geometry_keys.iter().find_map(|(name, f)| src.get(name, f)) {
-            return Err(inconsistent(&key, "describes a pivot contact: give bearing.pads.pivot_contact (\"rocker\" or \"ball\") too, or remove it"));
-        }
-        return Ok(None);
-    };
-    if kind == PadKind::Fixed {
-        return Err(inconsistent(&ckey, "a fixed sector has no pivot"));
-    }
-    if stiffness_given {
-        return Err(inconsistent(&ckey, "give either a pivot contact or pivot_stiffness_n_per_m, not both"));
-    }
-    let mm = |name: &str, f: fn(&PadFile) -> Option<f64>| -> Result<f64, CaseError> {
-        let (v, key) = src.get(name, f).ok_or_else(|| missing(&PadSource::common_key(name), "pivot contact radius, mm"))?;
-        Ok(Range::positive(1e4).check(&key, v)? * MM)
-    };
-    let r1 = mm("pivot_radius_mm", |p| p.pivot_radius_mm)?;
-    let r2 = mm("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm)?;
-    if r2 <= r1 {
-        let key = src.get("pivot_seat_radius_mm", |p| p.pivot_seat_radius_mm).map(|(_, k)| k).unwrap_or_default();
-        return Err(inconsistent(&key, format!("the seat ({:.4} mm) must be larger than the pivot radius ({:.4} mm)", r2 / MM, r1 / MM)));
-    }
-    let contact_length = match src.get("pivot_length_mm", |p| p.pivot_length_mm) {
-        Some((v, key)) => Range::positive(1e4).check(&key, v)? * MM,
-        None => length,
-    };
-    let seat_e = match src.get("pivot_seat_youngs_modulus_gpa", |p| p.pivot_seat_youngs_modulus_gpa) {
+/// A key of the pad tables and how to read it.
+type PadKey = (&'static str, fn(&PadFile) -> Option<f64>);
+
+/// An elastic material from a Young's modulus key [GPa] and a Poisson ratio key (steel when absent):
+/// (E [Pa], ν).
+fn material(src: &PadSource<'_>, youngs: PadKey, poisson: PadKey) -> Result<(f64, f64), CaseError> {
+    let e = match src.get(youngs.0, youngs.1) {
         Some((v, key)) => Range::positive(2000.0).check(&key, v)? * 1e9,
         None => 200e9,
     };
-    let seat_nu = match src.get("pivot_seat_poisson_ratio", |p| p.pivot_seat_poisson_ratio) {
+    let nu = match src.get(poisson.0, poisson.1) {
         Some((v, key)) => Range::open(-1.0, 0.5).check(&key, v)?,
         None => 0.3,
     };
-    Ok(Some(PivotContact {
-        kind: match contact {
-            ContactKindFile::Rocker => ContactKind::Rocker,
-            ContactKindFile::Ball => ContactKind::Ball,
-        },
-        pivot_radius_m: r1,
-        seat_radius_m: r2,
-        length_m: contact_length,
-        pivot_youngs_modulus_pa: pad_material.0,
-        pivot_poisson_ratio: pad_material.1,
-        seat_youngs_modulus_pa: seat_e,
-        seat_poisson_ratio: seat_nu,
-    }))
+    Ok((e, nu))
 }
 
 fn pad_clearance(src: &PadSource<'_>, radius: f64, cb: f64) -> Result<f64, CaseError> {
@@ -457,52 +408,6 @@ fn check_overlap(pads: &[Pad]) -> Result<(), CaseError> {
         }
     }
     Ok(())
-}
-
-fn resolve_lubricant(file: &CaseFile) -> Result<Lubricant, CaseError> {
-    let l = &file.lubricant;
-    let t_range = Range::closed(-60.0, 400.0);
-    let mu1 = Range::positive(100.0).check("lubricant.viscosity_pa_s", l.viscosity_pa_s)?;
-    let t1 = t_range.check("lubricant.viscosity_temperature_c", l.viscosity_temperature_c)?;
-    let eta = match (l.viscosity2_pa_s, l.viscosity2_temperature_c, l.viscosity_coefficient_per_k) {
-        (Some(_), Some(_), Some(_)) => {
-            return Err(inconsistent(
-                "lubricant.viscosity_coefficient_per_k",
-                "give either a second viscosity point or the coefficient, not both",
-            ))
-        }
-        (Some(mu2), Some(t2), None) => {
-            let mu2 = Range::positive(100.0).check("lubricant.viscosity2_pa_s", mu2)?;
-            let t2 = t_range.check("lubricant.viscosity2_temperature_c", t2)?;
-            if (t2 - t1).abs() < 1.0 {
-                return Err(inconsistent("lubricant.viscosity2_temperature_c", "the two viscosity points need different temperatures"));
-            }
-            let eta = (mu1 / mu2).ln() / (t2 - t1);
-            if !(0.0..=1.0).contains(&eta) {
-                return Err(inconsistent(
-                    "lubricant.viscosity2_pa_s",
-                    format!("the two points give η = {eta:.4} /K; viscosity must fall with temperature (η in [0, 1] /K)"),
-                ));
-            }
-            eta
-        }
-        (None, None, Some(eta)) => Range::closed(0.0, 1.0).check("lubricant.viscosity_coefficient_per_k", eta)?,
-        (Some(_), None, _) => return Err(missing("lubricant.viscosity2_temperature_c", "temperature of the second viscosity point")),
-        (None, Some(_), _) => return Err(missing("lubricant.viscosity2_pa_s", "viscosity of the second point")),
-        (None, None, None) => {
-            return Err(missing(
-                "lubricant.viscosity2_pa_s",
-                "second viscosity point (viscosity2_pa_s, viscosity2_temperature_c) or viscosity_coefficient_per_k",
-            ))
-        }
-    };
-    Ok(Lubricant {
-        name: l.name.clone().unwrap_or_default(),
-        viscosity: ViscosityLaw { mu_ref_pa_s: mu1, t_ref_c: t1, eta_per_k: eta },
-        density_kg_per_m3: Range::positive(2e4).check("lubricant.density_kg_per_m3", l.density_kg_per_m3)?,
-        specific_heat_j_per_kg_k: Range::positive(1e5).check("lubricant.specific_heat_j_per_kg_k", l.specific_heat_j_per_kg_k)?,
-        conductivity_w_per_m_k: Range::positive(1e3).check("lubricant.conductivity_w_per_m_k", l.conductivity_w_per_m_k)?,
-    })
 }
 
 fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseError> {

@@ -1,0 +1,94 @@
+//! The schema table against validation: every key's range is the one `resolve` enforces.
+
+use super::*;
+use crate::model::{load_case, CaseError};
+
+#[test]
+fn every_key_of_a_file_has_a_row_and_lookups_normalise_indices() {
+    assert_eq!(spec("bearing.pads.orifice[2].diameter_mm").unwrap().key, "bearing.pads.orifice[].diameter_mm");
+    assert_eq!(spec("bearing.pads.orifice.0.length_mm").unwrap().key, "bearing.pads.orifice[].length_mm");
+    assert_eq!(spec("bearing.pad.3.offset").unwrap().key, "bearing.pads.offset");
+    assert_eq!(spec("bearing.pads.pivot_deg[1]").unwrap().key, "bearing.pads.pivot_deg");
+    assert_eq!(spec("operating.injection_pressure_bar[4]").unwrap().unit, "bar");
+    assert!(spec("operating.speed").is_none());
+    // Every key a shipped case writes is in the table.
+    for (name, text) in crate::model::shipped_cases() {
+        let table: toml::Table = text.parse().unwrap();
+        for key in leaf_keys(&toml::Value::Table(table), "") {
+            assert!(spec(&key).is_some(), "{name}: `{key}` has no schema row");
+        }
+    }
+    // No key listed twice.
+    for (i, a) in KEYS.iter().enumerate() {
+        assert!(KEYS[i + 1..].iter().all(|b| b.key != a.key), "{} twice", a.key);
+    }
+}
+
+fn leaf_keys(v: &toml::Value, prefix: &str) -> Vec<String> {
+    let join = |k: &str| if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
+    match v {
+        toml::Value::Table(t) => t.iter().flat_map(|(k, v)| leaf_keys(v, &join(k))).collect(),
+        toml::Value::Array(a) if a.iter().all(toml::Value::is_table) && !a.is_empty() => {
+            a.iter().enumerate().flat_map(|(i, v)| leaf_keys(v, &format!("{prefix}[{i}]"))).collect()
+        }
+        _ => vec![prefix.to_string()],
+    }
+}
+
+/// Overrides that make a key apply (BC2 needs its coefficient, the position mode its ratio, …).
+fn context(key: &str) -> Vec<String> {
+    match key {
+        "thermal.h_oil_pad_w_per_m2_k" => vec!["thermal.pad_film_bc=\"bc2\"".into()],
+        "operating.eccentricity_ratio" | "operating.eccentricity_angle_deg" => {
+            vec!["operating.load_n=".into(), "operating.load_angle_deg=".into(), "operating.eccentricity_ratio=0.3".into()]
+        }
+        "bearing.pads.preload" | "bearing.pads.clearance_um" => vec!["bearing.pads.bore_radius_mm=".into()],
+        "lubricant.viscosity_coefficient_per_k" => vec!["lubricant.viscosity2_pa_s=".into(), "lubricant.viscosity2_temperature_c=".into()],
+        "bearing.pads.pivot_radius_mm" => vec!["bearing.pads.pivot_contact=\"ball\"".into()],
+        "bearing.pads.pivot_seat_radius_mm" => vec!["bearing.pads.pivot_contact=\"ball\"".into(), "bearing.pads.pivot_radius_mm=10".into()],
+        "bearing.pads.pivot_length_mm" | "bearing.pads.pivot_seat_youngs_modulus_gpa" | "bearing.pads.pivot_seat_poisson_ratio" => vec![
+            "bearing.pads.pivot_contact=\"rocker\"".into(),
+            "bearing.pads.pivot_radius_mm=20".into(),
+            "bearing.pads.pivot_seat_radius_mm=21".into(),
+        ],
+        _ => vec![],
+    }
+}
+
+#[test]
+fn validation_enforces_the_documented_ranges() {
+    let compressor = include_str!("../../../cases/compressor-bearing.toml");
+    let rig = include_str!("../../../cases/test-rig-pub5.toml");
+    let mut checked = 0;
+    for k in KEYS {
+        let range = match k.allowed {
+            Allowed::Number(r) | Allowed::NumberPerPad(r) => r,
+            _ => continue,
+        };
+        let key = k.key.replace("[]", ".0");
+        let outside: Vec<f64> = [
+            if range.lo.is_finite() { Some(if range.open_lo { range.lo } else { range.lo - range.lo.abs().max(1.0) * 1e-3 }) } else { None },
+            if range.hi.is_finite() { Some(if range.open_hi { range.hi } else { range.hi + range.hi.abs().max(1.0) * 1e-3 }) } else { None },
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        for v in outside {
+            let mut set = context(k.key);
+            set.push(format!("{key}={v:?}"));
+            let text = if k.key.starts_with("hydraulics.") { rig } else { compressor };
+            match load_case(text, &set) {
+                Err(CaseError::OutOfRange { key: got, allowed, .. }) => {
+                    assert!(spec(&got).is_some_and(|s| s.key == k.key), "{}: error names `{got}`", k.key);
+                    assert!(allowed.contains(&range.describe()), "{}: validation allows {allowed}, the schema says {}", k.key, range.describe());
+                    checked += 1;
+                }
+                other => panic!("{} = {v}: expected an out-of-range error, got {other:?}", k.key),
+            }
+        }
+        // And a typical value inside the range passes this check.
+        let (lo, hi) = k.typical.unwrap_or((range.lo, range.hi));
+        assert!(range.check(k.key, 0.5 * (lo + hi)).is_ok(), "{}: typical range outside the allowed one", k.key);
+    }
+    assert!(checked > 60, "only {checked} bounds checked");
+}
