@@ -24,6 +24,11 @@ fn key(pin: &Pin) -> Key {
     (pin.name.clone(), pin.case_toml.clone())
 }
 
+/// Whether `k` is the key of `pin` (without building one: [`PinnedResults::want`] runs every frame).
+fn is_key_of(k: &Key, pin: &Pin) -> bool {
+    k.0 == pin.name && k.1 == pin.case_toml
+}
+
 /// What a view gets for a pin.
 pub enum Pinned<'a> {
     Ready(&'a Shown),
@@ -64,23 +69,22 @@ impl PinnedResults {
 
     /// The result of `pin` with the stages in `needs`; starts its solve when it is not at hand.
     pub fn want(&mut self, pin: &Pin, needs: &[StageId]) -> Pinned<'_> {
-        let k = key(pin);
-        if let Some(i) = self.cache.iter().position(|(c, s)| *c == k && covers(s, needs)) {
+        if let Some(i) = self.cache.iter().position(|(c, s)| is_key_of(c, pin) && covers(s, needs)) {
             return Pinned::Ready(&self.cache[i].1);
         }
-        if let Some(i) = self.failed.iter().position(|(c, _)| *c == k) {
+        if let Some(i) = self.failed.iter().position(|(c, _)| is_key_of(c, pin)) {
             return Pinned::Failed(&self.failed[i].1);
         }
-        if self.solving.as_ref().is_none_or(|(c, r)| *c != k || !needs.iter().all(|s| r.wanted.contains(s))) {
+        if self.solving.as_ref().is_none_or(|(c, r)| !is_key_of(c, pin) || !needs.iter().all(|s| r.wanted.contains(s))) {
             match crate::model::load_case(&pin.case_toml, &[]) {
                 Ok((_, case)) => {
                     let request = crate::scene::request::request(case, [needs]);
                     self.worker.submit(request.clone());
-                    self.solving = Some((k, request));
+                    self.solving = Some((key(pin), request));
                 }
                 Err(e) => {
-                    self.failed.push((k, format!("the pinned case does not load: {e}")));
-                    return Pinned::Solving;
+                    self.failed.push((key(pin), format!("the pinned case does not load: {e}")));
+                    return Pinned::Failed(&self.failed[self.failed.len() - 1].1);
                 }
             }
         }
