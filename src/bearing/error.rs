@@ -74,6 +74,16 @@ pub enum SolveError {
          bearing cannot carry it (tilting-pad forces pass through the pivots); turn the load or the pads"
     )]
     NoStiffness { axis_deg: f64, load_component_n: f64 },
+    /// Along the load the bearing's static force law jumps across the load: a pad switches from floating to
+    /// a loaded state beyond a fold of its tilt equilibrium, where it already carries more than the load
+    /// (negative preload, pivot past mid-pad, light load). No static position balances the load on that line.
+    #[error(
+        "no static equilibrium along the load: the bearing force along it jumps from {below_n:.3e} N to \
+         {above_n:.3e} N where pad {pad} engages (it has no loaded state carrying less: a fold of its tilt \
+         equilibrium), so the load of {load_n:.3e} N falls in the gap and the pads float around it; raise the load \
+         or the preload, or move the pivot towards mid-pad"
+    )]
+    ForceGap { pad: usize, below_n: f64, above_n: f64, load_n: f64 },
     /// Newton (and its fallbacks) stopped without meeting the tolerance.
     #[error("equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})")]
     NotConverged { iterations: usize, residual: f64, reason: String },

@@ -79,11 +79,12 @@ fn row(out: &mut String, group: &str, bearings: usize, points: &[MapPoint], spec
     let slowest = points.iter().map(|p| p.seconds).fold(0.0, f64::max);
     let _ = writeln!(
         out,
-        "| {group} | {bearings} | {} | {} | {} | {} | {} | {unexplained} | {median} | {:.2} s |",
+        "| {group} | {bearings} | {} | {} | {} | {} | {} | {} | {unexplained} | {median} | {:.2} s |",
         c.total(),
         c.converged,
         c.touchdown,
         c.no_stiffness,
+        c.force_gap,
         c.failure,
         slowest
     );
@@ -97,14 +98,14 @@ fn table(shipped: &[MapBearing], family: &[MapBearing], points: &[MapPoint], spe
     let _ = writeln!(
         out,
         "Load direction every {}° ({dirs} directions) × Sommerfeld number {} (three decades), each point solved cold at \
-         preview fidelity. *Physical*: touchdown, or no stiffness along the load. *Failure*: anything else, including a \
+         preview fidelity. *Physical*: touchdown, no stiffness along the load, or a force gap (along the load the bearing force jumps across the load where a pad engages beyond a fold of its tilt equilibrium). *Failure*: anything else, including a \
          converged state whose balances do not check; *beside converged*: failures with a converged neighbour direction \
          at the same load.\n",
         spec.direction_step_deg,
         s.join(", ")
     );
-    out.push_str("| bearings | count | points | converged | touchdown | no stiffness | failure | beside converged | median film solves | slowest point |\n");
-    out.push_str("|---|---|---|---|---|---|---|---|---|---|\n");
+    out.push_str("| bearings | count | points | converged | touchdown | no stiffness | force gap | failure | beside converged | median film solves | slowest point |\n");
+    out.push_str("|---|---|---|---|---|---|---|---|---|---|---|\n");
     for b in shipped {
         let p: Vec<MapPoint> = points.iter().filter(|p| p.bearing == b.name).cloned().collect();
         row(&mut out, &format!("`cases/{}.toml`", b.name), 1, &p, spec);

@@ -62,6 +62,8 @@ pub enum Class {
     Converged,
     Touchdown,
     NoStiffness,
+    /// The force law jumps across the load (a pad with no loaded state carrying less).
+    ForceGap,
     Failure,
 }
 
@@ -69,7 +71,7 @@ impl Class {
     /// Touchdown and missing stiffness are what the physics says, not failures of the solver.
     #[must_use]
     pub fn is_physical(self) -> bool {
-        matches!(self, Self::Touchdown | Self::NoStiffness)
+        matches!(self, Self::Touchdown | Self::NoStiffness | Self::ForceGap)
     }
 }
 
@@ -109,6 +111,7 @@ pub fn classify(result: &Result<Solution, SolveError>) -> (Class, String) {
         }
         Err(SolveError::Touchdown { .. }) => (Class::Touchdown, result.as_ref().err().map(ToString::to_string).unwrap_or_default()),
         Err(e @ SolveError::NoStiffness { .. }) => (Class::NoStiffness, e.to_string()),
+        Err(e @ SolveError::ForceGap { .. }) => (Class::ForceGap, e.to_string()),
         Err(e) => (Class::Failure, e.to_string()),
     }
 }
@@ -221,6 +224,7 @@ pub struct Counts {
     pub converged: usize,
     pub touchdown: usize,
     pub no_stiffness: usize,
+    pub force_gap: usize,
     pub failure: usize,
 }
 
@@ -233,6 +237,7 @@ impl Counts {
                 Class::Converged => c.converged += 1,
                 Class::Touchdown => c.touchdown += 1,
                 Class::NoStiffness => c.no_stiffness += 1,
+                Class::ForceGap => c.force_gap += 1,
                 Class::Failure => c.failure += 1,
             }
         }
@@ -241,7 +246,7 @@ impl Counts {
 
     #[must_use]
     pub fn total(&self) -> usize {
-        self.converged + self.touchdown + self.no_stiffness + self.failure
+        self.converged + self.touchdown + self.no_stiffness + self.force_gap + self.failure
     }
 }
 

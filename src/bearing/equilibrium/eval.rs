@@ -60,6 +60,9 @@ pub(crate) struct Ctx<'a> {
     pub thorough_onset: bool,
     /// Pads the thorough search found a loaded state of where they floated (a pad near a fold has two).
     pub loaded_state_found: Vec<usize>,
+    /// Along the load the bearing force jumps across the load: (pad that switches, force along the load
+    /// before and after the jump [N]).
+    pub force_gap: Option<(usize, f64, f64)>,
     /// Film solves allowed in total.
     budget: usize,
     started: Instant,
@@ -68,7 +71,7 @@ pub(crate) struct Ctx<'a> {
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
-        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, loaded_state_found: Vec::new(), budget, started }
+        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, loaded_state_found: Vec::new(), force_gap: None, budget, started }
     }
 
     /// Seconds since the solve started.

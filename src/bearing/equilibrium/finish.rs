@@ -14,10 +14,12 @@
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization};
 
+use super::super::coordinates::PadDof;
 use super::super::error::{Iteration, SolveError};
 use super::super::model::BearingModel;
 use super::eval::{external_load, min_film, Ctx};
 use super::fallback::TOUCHDOWN_FRACTION;
+use super::journal::{nearest_normal, pads_surround};
 use super::{Equilibrium, Found, FLOATING_SHARE};
 
 /// Pad residual (relative) above which a converged state is reported with a warning.
@@ -81,7 +83,35 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
 /// Every method failed with the films last seen close to contact, or a film closed where no method could
 /// open it (a flexible pad pressed onto the journal, pads grown into it by heat): the load cannot be
 /// carried, which is touchdown. `h_min_um` is then the thinnest film last seen (≤ 0 where it closed).
-pub(super) fn classify_failure(model: &BearingModel, e: SolveError) -> SolveError {
+///
+/// A tilting-pad bearing whose pads do not surround the load cannot carry it whatever a search met on its
+/// way (an unloaded pad pressed onto the journal by its own film while the journal wandered along the
+/// unsupported direction): a touchdown there is reported as the missing stiffness it follows from.
+pub(super) fn classify_failure(model: &BearingModel, ctx: &Ctx<'_>, e: SolveError) -> SolveError {
+    match classify_contact(model, e) {
+        e @ SolveError::Touchdown { .. } => unsupported_load(model, ctx).unwrap_or(e),
+        e => e,
+    }
+}
+
+/// The missing stiffness of a bearing of tilting pads whose pads do not surround the load: the direction
+/// met during the search, else the one across the pad normal nearest the load.
+fn unsupported_load(model: &BearingModel, ctx: &Ctx<'_>) -> Option<SolveError> {
+    let w = external_load(ctx.op, 1.0);
+    let tilting = model.pads.iter().all(|pm| pm.dofs().contains(&PadDof::Tilt));
+    if !tilting || w[0].hypot(w[1]) == 0.0 || pads_surround(&model.pads, w) {
+        return None;
+    }
+    if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
+        return Some(SolveError::NoStiffness { axis_deg, load_component_n });
+    }
+    let n = nearest_normal(&model.pads, w)?;
+    let across = [-n[1], n[0]];
+    let component = w[0] * across[0] + w[1] * across[1];
+    Some(SolveError::NoStiffness { axis_deg: across[1].atan2(across[0]).to_degrees().rem_euclid(180.0), load_component_n: component.abs() })
+}
+
+fn classify_contact(model: &BearingModel, e: SolveError) -> SolveError {
     let cb = model.assembled_clearance;
     let journal_ecc = || {
         let e = model.pads.first().map_or(&[0.0, 0.0][..], |p| p.film.coordinates());

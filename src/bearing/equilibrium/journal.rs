@@ -172,6 +172,11 @@ fn pad_normals(pads: &[PadModel]) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// The pad normal nearest the direction of `w` (`None` without pads).
+pub(super) fn nearest_normal(pads: &[PadModel], w: [f64; 2]) -> Option<[f64; 2]> {
+    pad_normals(pads).into_iter().max_by(|a, b| (a[0] * w[0] + a[1] * w[1]).total_cmp(&(b[0] * w[0] + b[1] * w[1])))
+}
+
 /// Whether moving the journal along `d` approaches some pad (a walk along `d` can load one).
 pub(super) fn pads_ahead(pads: &[PadModel], d: Vector2<f64>) -> bool {
     pad_normals(pads).iter().any(|n| n[0] * d[0] + n[1] * d[1] > 1e-6)

@@ -205,7 +205,7 @@ pub fn step_equilibrium(
             r.report.seconds = t0.elapsed().as_secs_f64();
             Ok(Progress::Suspended(r))
         }
-        Err(e) => Err(finish::classify_failure(model, e)),
+        Err(e) => Err(finish::classify_failure(model, &ctx, e)),
     }
 }
 

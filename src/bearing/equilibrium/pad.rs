@@ -203,13 +203,27 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
         } else {
             0.5 * (blo + bhi)
         };
-        last = Some(state);
         if (bhi - blo) <= 1e-13 * range {
+            if loaded && !state.unloaded && rel > ctx.params.pad_tol && (blo == lo + margin || bhi == hi - margin) {
+                // The film's own moment presses an edge of the pad onto the journal over the whole admissible
+                // range (an unloaded negative-preload pad leaning on its edge): the film closes there.
+                return Err(closed_edge(pm, &local));
+            }
+            last = Some(state);
             break;
         }
+        last = Some(state);
         d = next;
     }
     last.map(|s| if s.unloaded { PadState { residual: 0.0, ..s } } else { s }).ok_or_else(|| FilmError::Input("no tilt iteration".into()))
+}
+
+/// The film at its thinnest node, as a contact.
+fn closed_edge(pm: &PadModel, local: &[f64]) -> FilmError {
+    let film = &pm.film;
+    let h = film.nodal_thickness(local);
+    let (i, hmin) = h.iter().enumerate().fold((0, f64::INFINITY), |m, (i, &v)| if v < m.1 { (i, v) } else { m });
+    FilmError::Contact { h_min_m: hmin, theta_deg: film.geom.node_theta[i].to_degrees(), z_m: film.geom.node_z[i] }
 }
 
 /// Tilt samples across the loaded side when looking for a loaded root beyond the onset of pressure.

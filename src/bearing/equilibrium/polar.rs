@@ -33,6 +33,9 @@ const MAX_RADIAL_STEP: f64 = 0.2;
 const MAX_RADIUS: f64 = 10.0;
 /// Bracket iterations at most per root.
 const MAX_BRACKET_ITERATIONS: usize = 80;
+/// A ray whose bracket collapses onto a step of its force law larger than this fraction of the load ends at
+/// a jump, not a root.
+const JUMP: f64 = 1e-3;
 
 /// The converged point on one ray.
 struct RayRoot {
@@ -73,6 +76,9 @@ struct Search<'m, 'c, 'o> {
     w: [f64; 2],
     warm: Vec<f64>,
     tol: f64,
+    /// The last ray ended at a jump of its force law rather than at a root: (pad that switched, g on the
+    /// carrying-less side, g on the other) [N].
+    jump: Option<(usize, f64, f64)>,
 }
 
 impl Search<'_, '_, '_> {
@@ -134,6 +140,17 @@ impl Search<'_, '_, '_> {
             let gb = pb.as_ref().map_or(f64::NEG_INFINITY, |p| p.g);
             let converged_b = gb.abs() <= 0.1 * self.tol;
             if converged_b || pa.g.abs() <= 0.1 * self.tol || (b - a).abs() <= 1e-13 * cb {
+                if let Some(p) = pb.as_ref().filter(|p| !converged_b && pa.g.abs() > 0.1 * self.tol && pa.g - p.g > JUMP * self.w[0].hypot(self.w[1])) {
+                    // No root but a jump: a pad switched between floating and a loaded state across it.
+                    let pad = (0..p.states.len())
+                        .max_by(|&i, &j| {
+                            let d = |k: usize| (self.ctx.share(&p.states[k]) - self.ctx.share(&pa.states[k])).abs();
+                            d(i).total_cmp(&d(j))
+                        })
+                        .unwrap_or(0);
+                    self.jump = Some((pad, pa.g, p.g));
+                    return Ok(None);
+                }
                 let (s, p) = if converged_b || pa.g.abs() > gb.abs() { (b, pb) } else { (a, Some(pa)) };
                 let Some(p) = p else {
                     // The film closes before the force balances along this ray: remember the thinnest film
@@ -169,7 +186,18 @@ impl Search<'_, '_, '_> {
 }
 
 /// Runs the polar bracketing search (force-prescribed loads only).
+///
+/// Where a pad has two states (floating, and loaded beyond a fold), the loaded one is taken: the force law is
+/// then one function of the journal position, and a jump in it is a property of the bearing. A load ray that
+/// ends at such a jump (the force along it steps across the load) is recorded in `ctx.force_gap`.
 pub(super) fn polar_search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+    let thorough = std::mem::replace(&mut ctx.thorough_onset, true);
+    let found = search(model, centred, ctx, cancel);
+    ctx.thorough_onset = thorough;
+    found
+}
+
+fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
     let w = external_load(ctx.op, 1.0);
     let stall = |reason: &str| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: reason.to_string() }));
     if w[0].hypot(w[1]) <= 0.0 {
@@ -179,9 +207,16 @@ pub(super) fn polar_search(model: &mut BearingModel, centred: &[f64], ctx: &mut 
     let tol = ctx.params.force_tol * ctx.force_scale;
     let cb = model.assembled_clearance;
     let warm = centred.to_vec();
-    let mut search = Search { model, ctx, w, warm, tol };
+    let mut search = Search { model, ctx, w, warm, tol, jump: None };
     let mut guess = 0.3 * cb;
-    let Some(mid) = search.ray(psi_w, guess, cancel)? else { return stall("no restoring root along the load") };
+    let Some(mid) = search.ray(psi_w, guess, cancel)? else {
+        if let Some((pad, g_before, g_after)) = search.jump {
+            let load = w[0].hypot(w[1]);
+            search.ctx.force_gap = Some((pad, load - g_before, load - g_after));
+            return stall("the force along the load jumps across the load");
+        }
+        return stall("no restoring root along the load");
+    };
     guess = mid.s;
     search.ctx.report.iterations += 1;
     // Bracket ψ: h > 0 below the equilibrium angle, < 0 above.
