@@ -606,8 +606,10 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
 /// why, and pins nothing; another name is pinned.
 #[test]
 fn the_pin_dialog_refuses_ambiguous_names() {
-    let mut h = solved_app(None, |_| {});
+    let mut h = solved_app_at([1280.0, 720.0], None, |_| {});
     let pin_as = |h: &mut Harness<'_, WorkbenchApp>, typed: &str| {
+        h.get_by_role_and_label(Role::TextInput, "Pin name").click();
+        h.run_steps(1);
         h.get_by_role_and_label(Role::TextInput, "Pin name").type_text(typed);
         h.run_steps(1);
         h.get_by_label("Pin current result").click();
