@@ -189,7 +189,7 @@ fn frf_writes_curves_as_csv_and_json() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// `--help` tells that no arguments opens the workbench, and every sweep option says what it does.
+/// `--help` tells that no arguments opens the workbench, and every option of every command says what it does.
 #[test]
 fn help_names_the_workbench_and_describes_the_sweep_options() {
     let o = tiltpad().arg("--help").output().unwrap();
@@ -202,6 +202,18 @@ fn help_names_the_workbench_and_describes_the_sweep_options() {
     for option in ["<CASE>", "--vary <KEY=VALUES>", "--param <KEY>", "--from <FROM>", "--to <TO>", "--steps <STEPS>", "--set <KEY=VALUE>", "--csv <OUT>", "--jsonl <OUT>", "--vtu <OUT.pvd>"] {
         let line = text.lines().find(|l| l.trim_start().starts_with(option)).unwrap_or_else(|| panic!("{option} missing: {text}"));
         assert!(line.trim().len() > option.len() + 4, "{option} has no description: {line:?}");
+    }
+    // Every argument and option of every command has a description: clap separates it from the option by
+    // two or more spaces, so a line with none is only the option (and its value name).
+    for command in ["solve", "sweep", "batch", "coefficients", "modes", "frf", "rotor", "schema", "bench", "convergence-map"] {
+        let o = tiltpad().args([command, "--help"]).output().unwrap();
+        assert!(o.status.success(), "{command}");
+        let text = String::from_utf8_lossy(&o.stdout);
+        let options: Vec<&str> = text.lines().map(str::trim).filter(|l| l.starts_with('-') || l.starts_with('<')).collect();
+        assert!(!options.is_empty(), "{command}: {text}");
+        for line in options {
+            assert!(line.contains("  "), "`tiltpad {command}`: {line:?} has no description");
+        }
     }
 }
 

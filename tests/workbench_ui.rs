@@ -602,6 +602,31 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     assert!(h.query_by_label_contains("Wide faint dashed").is_none());
 }
 
+/// The pin dialog refuses "live" (the export's name for the live row) and a name already pinned, saying
+/// why, and pins nothing; another name is pinned.
+#[test]
+fn the_pin_dialog_refuses_ambiguous_names() {
+    let mut h = solved_app_at([1280.0, 720.0], None, |_| {});
+    let pin_as = |h: &mut Harness<'_, WorkbenchApp>, typed: &str| {
+        h.get_by_role_and_label(Role::TextInput, "Pin name").click();
+        h.run_steps(1);
+        h.get_by_role_and_label(Role::TextInput, "Pin name").type_text(typed);
+        h.run_steps(1);
+        h.get_by_label("Pin current result").click();
+        h.run_steps(2);
+    };
+    pin_as(&mut h, "live");
+    h.get_by_label_contains("the pin name \"live\" is refused: the exported CSV names the live result's row");
+    assert!(h.state().persisted.pins.is_empty());
+    // Typing again clears the message; " 2" makes the name "live 2", which is allowed.
+    pin_as(&mut h, " 2");
+    assert!(h.query_by_label_contains("is refused").is_none());
+    assert_eq!(h.state().persisted.pins.iter().map(|p| p.name.as_str()).collect::<Vec<_>>(), ["live 2"]);
+    pin_as(&mut h, "live 2");
+    h.get_by_label_contains("a pin named \"live 2\" exists already");
+    assert_eq!(h.state().persisted.pins.len(), 1);
+}
+
 /// Locked, the pad field colour scale stays through two edits that change the peak pressure; unlocked, it
 /// follows the result again.
 #[test]

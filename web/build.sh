@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds the web workbench into web/pkg/ (serve web/ with any static file server, e.g.
 # `python3 -m http.server -d web 8080`, and open http://127.0.0.1:8080).
+# `?case=fillon-a` opens a shipped case; `?probe` logs frame times to the browser console per job
+# (`?probe&sweep` also runs the sweep view's sweep); docs/PERFORMANCE.md has the measured numbers.
 #
 # Needs the wasm target and the wasm-bindgen CLI matching the wasm-bindgen crate (=0.2.130); installs
 # them when missing.

@@ -267,7 +267,8 @@ impl WorkbenchApp {
         // The chosen field when this result has it (a THD field after switching to isothermal: pressure);
         // the selector names what is drawn.
         let drawn = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
-        ui.horizontal(|ui| {
+        // Wrapped: at 1280×720 with both side panels open the row is wider than the view.
+        ui.horizontal_wrapped(|ui| {
             let label = ui.label("Field");
             egui::ComboBox::from_id_salt("field-kind")
                 .selected_text(drawn.label())

@@ -19,12 +19,14 @@ pub mod document;
 pub mod editor;
 pub mod files;
 mod frame;
+pub mod frame_probe;
 pub mod pinned;
 pub mod presets;
 pub mod rotor_worker;
 pub mod save_dialog;
 pub mod state;
 pub mod sweep_job;
+pub mod sweep_steps;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
@@ -105,6 +107,8 @@ pub struct WorkbenchApp {
     /// Screen rectangle of the central view (for the PNG export).
     view_rect: Option<egui::Rect>,
     screenshot: Option<std::sync::mpsc::Receiver<Arc<egui::ColorImage>>>,
+    /// Frame-time probe (web build with `?probe`): repaints continuously and logs frame times.
+    probe: Option<frame_probe::FrameProbe>,
 }
 
 impl WorkbenchApp {
@@ -154,6 +158,7 @@ impl WorkbenchApp {
             hide_timings: false,
             view_rect: None,
             screenshot: None,
+            probe: None,
         }
     }
 
@@ -183,6 +188,21 @@ impl WorkbenchApp {
     #[must_use]
     pub fn is_idle(&self) -> bool {
         !self.worker.busy() && !self.pinned.busy()
+    }
+
+    /// What the frame probe files this frame under.
+    fn probe_job(&self) -> frame_probe::Job {
+        use frame_probe::Job;
+        if self.sweep.job.as_ref().is_some_and(|j| !j.done()) {
+            Job::Sweep
+        } else if self.worker.busy() {
+            let thd = self.submitted.as_ref().is_some_and(|r| r.case.thermal.model == crate::model::ThermalModelKind::Thd);
+            Job::Solve { thd, stage: match self.status { Status::Solving { stage, .. } => stage, _ => None } }
+        } else if self.pinned.busy() {
+            Job::Pin
+        } else {
+            Job::Idle
+        }
     }
 
     /// The request the open view needs now ([`crate::scene::request`]), if the case is valid.
@@ -272,6 +292,13 @@ impl eframe::App for WorkbenchApp {
             self.recent_frames_s.pop_front();
         }
         self.recent_frames_s.push_back(dt);
+        let job = self.probe_job();
+        if let Some(probe) = self.probe.as_mut() {
+            if let Some(summary) = probe.frame(start, dt, job) {
+                log::info!("{summary}");
+            }
+            ui.ctx().request_repaint();
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

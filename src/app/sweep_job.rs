@@ -4,11 +4,13 @@
 //!
 //! Where it runs: on native a named thread solves the points and sends each row over a channel (the UI
 //! thread takes them in [`SweepJob::poll`] and asks for a repaint); on the web there are no threads, so
-//! `poll` solves one point per frame (a point takes about as long as one solve of the case: at preview
-//! fidelity tens of milliseconds). Dropping the job (a new sweep, closing the app) stops it after the point
-//! under way.
+//! `poll` steps the points within the frame's solve budget ([`super::sweep_steps`]: a point spreads over
+//! frames like the edited case's solve). Dropping the job (a new sweep, closing the app) stops it after the
+//! point under way (native) or at once (web).
 
-use crate::scene::sweep::{point_override, SweepSpec, SweepSpecError, SweepTable};
+#[cfg(not(target_arch = "wasm32"))]
+use crate::scene::sweep::point_override;
+use crate::scene::sweep::{SweepSpec, SweepSpecError, SweepTable};
 use crate::study::Runner;
 
 /// A sweep under way or finished.
@@ -21,9 +23,7 @@ pub struct SweepJob {
     #[cfg(not(target_arch = "wasm32"))]
     stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
     #[cfg(target_arch = "wasm32")]
-    runner: Runner,
-    #[cfg(target_arch = "wasm32")]
-    left: std::collections::VecDeque<f64>,
+    points: super::sweep_steps::SteppedPoints,
 }
 
 fn base_overrides(spec: &SweepSpec) -> Vec<String> {
@@ -67,20 +67,17 @@ impl SweepJob {
         #[cfg(target_arch = "wasm32")]
         {
             let _ = repaint;
-            Ok(Self { spec: spec.clone(), table, total, runner, left: values.into() })
+            let points = super::sweep_steps::SteppedPoints::new(runner, &spec.key, values);
+            Ok(Self { spec: spec.clone(), table, total, points })
         }
     }
 
-    /// Takes the rows solved since the last call (web: solves the next point).
+    /// Takes the rows solved since the last call (web: works on the points for the frame's budget).
     pub fn poll(&mut self) {
         #[cfg(not(target_arch = "wasm32"))]
         self.table.points.extend(self.rows.try_iter());
         #[cfg(target_arch = "wasm32")]
-        if let Some(x) = self.left.pop_front() {
-            let i = self.table.points.len();
-            let (row, _) = self.runner.row(i, &point_override(&self.spec.key, x));
-            self.table.points.push((x, row));
-        }
+        self.table.points.extend(self.points.poll(super::WEB_SOLVE_BUDGET_S));
     }
 
     /// Points solved and points in all.

@@ -15,7 +15,10 @@ pub fn start() {
             return;
         };
         // `?case=<shipped case>` opens that case (asking first if the restored one has unsaved changes).
-        let preset = web_sys::window().and_then(|w| w.location().search().ok()).and_then(|q| super::presets::preset_from_query(&q));
+        // `?probe` logs frame times to the console ([`super::frame_probe`]).
+        let query = web_sys::window().and_then(|w| w.location().search().ok()).unwrap_or_default();
+        let preset = super::presets::preset_from_query(&query);
+        let probe = super::frame_probe::FrameProbe::from_query(&query);
         let runner = eframe::WebRunner::new();
         let started = runner
             .start(
@@ -23,6 +26,12 @@ pub fn start() {
                 eframe::WebOptions::default(),
                 Box::new(move |cc| {
                     let mut app = super::WorkbenchApp::new(cc);
+                    // `?probe&sweep`: the sweep view opens and runs its sweep at once (measures frames while sweeping).
+                    if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "sweep") {
+                        app.persisted.view = super::state::View::Sweep;
+                        app.sweep.job = app.doc.text().ok().and_then(|t| super::sweep_job::SweepJob::start(t, &app.persisted.sweep, &cc.egui_ctx).ok());
+                    }
+                    app.probe = probe;
                     if let Some(k) = preset {
                         app.request(super::Pending::Preset(k));
                     }

@@ -8,8 +8,9 @@
 //! - Web (no threads): the app calls [`Worker::poll`] every frame and the stages step until a time
 //!   budget is spent; one step is one stage, or the part of an equilibrium solve that fits the budget (the
 //!   coupled Newton suspends between pad placements and iterations, [`crate::bearing::Cancel::suspend`],
-//!   and the next frame resumes from its iterate), or one THD outer iteration. Isothermal sweep points are
-//!   split the same way; a THD sweep point is one step.
+//!   and the next frame resumes from its iterate), or one THD outer iteration or the part of its
+//!   equilibrium that fits ([`crate::bearing::thermal::resumable`]). Isothermal speed-sweep points are
+//!   split the same way; a THD speed-sweep point is one step.
 //!
 //! A job runs in two phases: first the solution and the frequency sweep (what most views need, so they
 //! update as soon as possible), then the speed sweep if the coefficient view asked for it.

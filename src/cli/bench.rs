@@ -327,6 +327,8 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
            2-core machine that saves 2 % at standard and 7 % at reference fidelity (the rest of a solve is serial).\n\
          - THD: about 80 % of a BC1 solve is its equilibria; BC3 couples film and pad in one LU system (see docs/THERMAL.md)."
     );
+    // Measured by hand in a browser (not by this command): carried over as it is.
+    md.push_str(&kept_section(root, WEB_SECTION));
     write_atomic(&root.join("docs").join("PERFORMANCE.md"), md.as_bytes())?;
     write_atomic(&root.join("docs").join("performance-error-vs-time.svg"), svg_plot(&rows).as_bytes())?;
     let table = FidelityTable {
@@ -339,6 +341,18 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     write_atomic(&root.join("assets").join("fidelity.json"), serde_json::to_string_pretty(&table)?.as_bytes())?;
     println!("wrote docs/PERFORMANCE.md, docs/performance-error-vs-time.svg, assets/fidelity.json");
     Ok(())
+}
+
+/// Heading of the web build's frame times in docs/PERFORMANCE.md (measured in Chromium with `?probe`).
+const WEB_SECTION: &str = "## Web build: frame times";
+
+/// The section of the current docs/PERFORMANCE.md that starts with `heading` (up to the next `## `), with a
+/// leading blank line; empty when absent.
+fn kept_section(root: &Path, heading: &str) -> String {
+    let doc = std::fs::read_to_string(root.join("docs").join("PERFORMANCE.md")).unwrap_or_default();
+    let Some(start) = doc.find(heading) else { return String::new() };
+    let end = doc[start + heading.len()..].find("\n## ").map_or(doc.len(), |e| start + heading.len() + e + 1);
+    format!("\n{}\n", doc[start..end].trim_end())
 }
 
 /// Replaces the section of docs/PERFORMANCE.md that starts with `heading` (up to the next `## `) by

@@ -124,6 +124,7 @@ pub enum Command {
         /// Base case file (TOML) the designs change.
         #[arg(long)]
         case: PathBuf,
+        /// Override a case value for every design, e.g. `--set mesh.fidelity="preview"` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// Run only block I of N (1 ≤ I ≤ N) of the designs, e.g. `--shard $SLURM_ARRAY_TASK_ID/8`.
@@ -138,7 +139,9 @@ pub enum Command {
     },
     /// Reduced stiffness and damping over running speed or excitation frequency, for ROSS and as CSV.
     Coefficients {
+        /// Case file (TOML).
         case: PathBuf,
+        /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// Running speeds, rpm: `FROM:TO:STEPS` or a list (each condensed at the case's excitation ratio).
@@ -164,7 +167,9 @@ pub enum Command {
     /// Pad bending modes on the pivot (frequency, modal mass and stiffness), optionally the mesh-convergence
     /// table of the first pad's modes (thesis Table 3.1 style).
     Modes {
+        /// Case file (TOML).
         case: PathBuf,
+        /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// Bending modes per pad (1–6).
@@ -207,7 +212,9 @@ pub enum Command {
     /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
     /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
     Frf {
+        /// Case file (TOML).
         case: PathBuf,
+        /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// Lowest frequency [Hz] (0 allowed: the band is then linear, else logarithmic).

@@ -5,7 +5,8 @@
 //! load, S, h_min, p_max, temperatures, power loss, flows, K and C terms). [`compare`] lines the live
 //! cells up with a pin's, column by column, with the difference `live − pinned` and, where the pinned
 //! value is not zero, the relative difference `(live − pinned) / |pinned|`. [`pins_csv`] writes the pins
-//! and the live result as one table (one row each, every column).
+//! and the live result as one table (one row each, every column); [`pin_name`] keeps the rows' names
+//! unambiguous (no pin named [`LIVE_ROW`], no two pins of one name).
 
 use serde::{Deserialize, Serialize};
 
@@ -78,6 +79,39 @@ pub fn compare(live: &Solution, pin: &Pin) -> Vec<CompareRow> {
         .collect()
 }
 
+/// The name of the live result's row in [`pins_csv`].
+pub const LIVE_ROW: &str = "live";
+
+/// A pin name that would make the export or the views ambiguous.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PinNameError {
+    #[error("the pin name \"{0}\" is refused: the exported CSV names the live result's row \"live\"; choose another name")]
+    Reserved(String),
+    #[error("a pin named \"{0}\" exists already: choose another name, or remove that pin first")]
+    Taken(String),
+}
+
+/// The name a new pin gets from what the user typed (trimmed): `pin N` (the first free N from the pin
+/// count + 1) when nothing was typed.
+///
+/// # Errors
+/// A name equal to [`LIVE_ROW`] (in any case) or to an existing pin's name.
+pub fn pin_name(typed: &str, pins: &[Pin]) -> Result<String, PinNameError> {
+    let taken = |n: &str| pins.iter().any(|p| p.name == n);
+    let name = typed.trim();
+    if name.is_empty() {
+        let free = (pins.len() + 1..).map(|k| format!("pin {k}")).find(|n| !taken(n));
+        return Ok(free.unwrap_or_default());
+    }
+    if name.eq_ignore_ascii_case(LIVE_ROW) {
+        return Err(PinNameError::Reserved(name.to_string()));
+    }
+    if taken(name) {
+        return Err(PinNameError::Taken(name.to_string()));
+    }
+    Ok(name.to_string())
+}
+
 /// The pins and the live result as CSV: `name` then every output column.
 #[must_use]
 pub fn pins_csv(pins: &[Pin], live: Option<&Solution>) -> String {
@@ -88,7 +122,7 @@ pub fn pins_csv(pins: &[Pin], live: Option<&Solution>) -> String {
         ok &= w.write_record(std::iter::once(p.name.clone()).chain(COLUMNS.iter().map(|c| cell(p.value(c.name))))).is_ok();
     }
     if let Some(s) = live {
-        ok &= w.write_record(std::iter::once("live".to_string()).chain(crate::study::columns::outputs(s).into_iter().map(cell))).is_ok();
+        ok &= w.write_record(std::iter::once(LIVE_ROW.to_string()).chain(crate::study::columns::outputs(s).into_iter().map(cell))).is_ok();
     }
     let bytes = w.into_inner().unwrap_or_default();
     if ok { String::from_utf8_lossy(&bytes).into_owned() } else { String::new() }
@@ -126,5 +160,24 @@ mod tests {
         let csv = pins_csv(&[pin], Some(&slow));
         assert_eq!(csv.lines().count(), 3);
         assert!(csv.lines().nth(1).unwrap().starts_with("9000 rpm,") && csv.lines().nth(2).unwrap().starts_with("live,"));
+    }
+
+    /// "live" names the live row of the export: refused, as is a second pin of one name; nothing typed
+    /// gives the first free "pin N".
+    #[test]
+    fn pin_names_keep_the_export_unambiguous() {
+        let pin = |n: &str| Pin { name: n.into(), case_toml: String::new(), columns: Vec::new(), cells: Vec::new() };
+        let pins = [pin("pin 2"), pin("baseline")];
+        assert_eq!(pin_name("  ", &[]), Ok("pin 1".into()));
+        assert_eq!(pin_name("", &pins), Ok("pin 3".into()));
+        assert_eq!(pin_name("", &[pin("a"), pin("pin 3")]), Ok("pin 4".into()));
+        assert_eq!(pin_name(" preload 0.5 ", &pins), Ok("preload 0.5".into()));
+        for typed in ["live", " Live", "LIVE "] {
+            assert_eq!(pin_name(typed, &pins), Err(PinNameError::Reserved(typed.trim().into())));
+        }
+        assert_eq!(pin_name("baseline", &pins), Err(PinNameError::Taken("baseline".into())));
+        assert_eq!(pin_name("live 2", &pins), Ok("live 2".into()));
+        let message = pin_name("live", &pins).unwrap_err().to_string();
+        assert!(message.contains("\"live\"") && message.contains("choose another name"), "{message}");
     }
 }

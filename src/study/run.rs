@@ -174,14 +174,21 @@ impl Runner {
         let t0 = Instant::now();
         let result = self.solve(overrides);
         let seconds = t0.elapsed().as_secs_f64();
-        let (result, solution) = match result {
-            Ok(s) => (Ok(outputs(&s)), Some(s)),
-            Err(e) => (Err(e), None),
-        };
-        let limits_exceeded = solution.as_ref().map_or_else(Vec::new, |s| {
+        match result {
+            Ok(s) => (Row::of(index, overrides, Ok(&s), seconds), Some(s)),
+            Err(e) => (Row::of(index, overrides, Err(e), seconds), None),
+        }
+    }
+}
+
+impl Row {
+    /// The row of point `index` (`overrides`), solved or failed in `seconds`.
+    #[must_use]
+    pub fn of(index: usize, overrides: &[(String, String)], result: Result<&Solution, PointError>, seconds: f64) -> Self {
+        let limits_exceeded = result.as_ref().map_or_else(|_| Vec::new(), |s| {
             crate::bearing::limits::exceeded(&s.inputs.limits, s).iter().map(|c| c.kind.name()).collect()
         });
-        (Row { index, inputs: overrides.to_vec(), result, limits_exceeded, seconds }, solution)
+        Self { index, inputs: overrides.to_vec(), result: result.map(outputs), limits_exceeded, seconds }
     }
 }
 

@@ -193,9 +193,22 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
     if let Some((from, to, w)) = outline.load {
         let (a, b) = (to_screen.map(from), to_screen.map(to));
         arrow(&painter, a, b, Stroke::new(3.0, LOAD));
-        painter.text(b + (b - a).normalized() * 14.0, Align2::CENTER_CENTER, format!("W = {w:.0} N"), font.clone(), LOAD);
+        load_label(&painter, (a, b), &format!("W = {w:.0} N"), font.clone());
     }
 
+}
+
+/// The load's label beside the middle of its arrow `a → b` (at the tip it lay on the pressure fill), on a
+/// backing so that it reads over the journal and the pressure.
+fn load_label(painter: &egui::Painter, (a, b): (Pos2, Pos2), text: &str, font: egui::FontId) {
+    let galley = painter.layout_no_wrap(text.to_string(), font, LOAD);
+    let d = (b - a).normalized();
+    // The side of the arrow to the right of the screen (or above it for a horizontal arrow).
+    let side = if d.y.abs() > 1e-3 { Vec2::new(-d.y, d.x) * (-d.y).signum() } else { Vec2::new(0.0, -1.0) };
+    let anchor = if side.x.abs() >= side.y.abs() { Align2::LEFT_CENTER } else { Align2::CENTER_BOTTOM };
+    let rect = anchor.anchor_size(a + 0.5 * (b - a) + side * 8.0, galley.size());
+    painter.rect_filled(rect.expand(2.0), 3.0, Color32::from_black_alpha(170));
+    painter.galley(rect.min, galley, LOAD);
 }
 
 /// A pinned outline over the live one: the journal, each pad's film surface and the pressure, dashed.

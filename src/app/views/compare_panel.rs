@@ -5,7 +5,7 @@
 use egui::{Color32, Grid, RichText, Ui};
 
 use crate::bearing::Solution;
-use crate::scene::compare::{compare, Pin};
+use crate::scene::compare::{compare, pin_name, Pin};
 use crate::scene::summary::sig4;
 
 /// What the panel asks the app to do.
@@ -25,19 +25,39 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
     let mut action = None;
     egui::CollapsingHeader::new(RichText::new("Compare with pinned results").strong()).default_open(true).show(ui, |ui| {
         let id = ui.make_persistent_id("pin-name");
+        let error_id = ui.make_persistent_id("pin-name-error");
         let mut name = ui.data_mut(|d| d.get_temp::<String>(id)).unwrap_or_default();
+        let mut error = ui.data_mut(|d| d.get_temp::<String>(error_id));
         ui.horizontal(|ui| {
             let label = ui.label("Pin name");
-            ui.add(egui::TextEdit::singleline(&mut name).desired_width(120.0).hint_text(format!("pin {}", pins.len() + 1))).labelled_by(label.id);
+            let hint = pin_name("", pins).unwrap_or_default();
+            if ui.add(egui::TextEdit::singleline(&mut name).desired_width(120.0).hint_text(hint)).labelled_by(label.id).changed() {
+                error = None;
+            }
             if ui.button("Pin current result").on_hover_text("Keep this result as a named reference; the panel then shows live and pinned values with their differences.").clicked() {
-                let base = if name.trim().is_empty() { format!("pin {}", pins.len() + 1) } else { name.trim().to_string() };
-                // Names pick pins in the views: keep them unique.
-                let name = (1..).map(|k| if k == 1 { base.clone() } else { format!("{base} ({k})") }).find(|n| !pins.iter().any(|p| p.name == *n)).unwrap_or(base);
-                pins.push(Pin::new(&name, case_toml.unwrap_or_default(), live));
-                action = Some(CompareAction::Pinned);
+                // Names pick pins in the views and name the rows of the export: refuse an ambiguous one.
+                match pin_name(&name, pins) {
+                    Ok(n) => {
+                        pins.push(Pin::new(&n, case_toml.unwrap_or_default(), live));
+                        action = Some(CompareAction::Pinned);
+                        (name, error) = (String::new(), None);
+                    }
+                    Err(e) => error = Some(e.to_string()),
+                }
             }
         });
-        ui.data_mut(|d| d.insert_temp(id, name));
+        if let Some(e) = &error {
+            ui.colored_label(ui.visuals().error_fg_color, e);
+        }
+        ui.data_mut(|d| {
+            d.insert_temp(id, name);
+            match error {
+                Some(e) => {
+                    d.insert_temp(error_id, e);
+                }
+                None => d.remove::<String>(error_id),
+            }
+        });
         if pins.is_empty() {
             return;
         }

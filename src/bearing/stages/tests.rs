@@ -332,6 +332,32 @@ fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
     assert_eq!(runs(&s), [1, 1, 2, 2, 3, 0, 0]);
 }
 
+/// The web stepper with a spent budget: each THD outer iteration's equilibrium is split into parts (one
+/// step each), and the loop reaches the state of the loop run without pauses.
+#[test]
+fn a_suspended_thermal_loop_splits_its_equilibria_and_reaches_the_same_state() {
+    let req = Request::solution(case(&["thermal.model=\"thd\""]));
+    let whole = Stages::new().run(&req, &NoCancel).unwrap().solution().unwrap();
+    let mut s = Stages::new();
+    let mut thermal_steps = 0;
+    let parts = loop {
+        match s.step(&req, &AlwaysSuspend).unwrap() {
+            Step::Done(o) => break o.solution().unwrap(),
+            Step::Pending { stage: StageId::Thermal, .. } => thermal_steps += 1,
+            Step::Pending { .. } => {}
+        }
+        assert!(thermal_steps < 10_000, "the loop ends");
+    };
+    let (t, w) = (parts.thermal.as_ref().unwrap(), whole.thermal.as_ref().unwrap());
+    assert!(t.report.converged);
+    let outer = t.report.outer_iterations;
+    assert!(thermal_steps > outer, "{thermal_steps} steps for {outer} outer iterations");
+    assert!(thermal_steps <= outer * (crate::bearing::thermal::resumable::MAX_EQUILIBRIUM_PARTS + 1));
+    assert_eq!(outer, w.report.outer_iterations);
+    assert!((t.t_max_film_c - w.t_max_film_c).abs() < 1e-6, "{} vs {}", t.t_max_film_c, w.t_max_film_c);
+    assert!(((parts.eccentricity_ratio - whole.eccentricity_ratio) / whole.eccentricity_ratio).abs() < 1e-6);
+}
+
 #[test]
 fn every_stage_reads_only_stages_registered_before_it() {
     for (i, s) in StageId::ALL.iter().enumerate() {

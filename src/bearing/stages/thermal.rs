@@ -1,12 +1,13 @@
 //! The thermal stage (THD cases): the thermal loop around the equilibrium ([`ThdRun`]), warm-started from
-//! the isothermal equilibrium, one outer iteration per poll. The pad solids and thermal systems
+//! the isothermal equilibrium, one outer iteration per poll — or, when the caller asks to pause
+//! ([`Cancel::suspend`], the web build's frame budget), the part of its equilibrium that fits. The pad solids and thermal systems
 //! ([`ThermalModel`]) are kept under the films and pad-mesh inputs they are built from.
 
 use std::sync::Arc;
 
 use crate::bearing::error::SolveError;
 use crate::bearing::job::assemble_thd_solution;
-use crate::bearing::progress::{Cancel, NoSuspend};
+use crate::bearing::progress::Cancel;
 use crate::bearing::solution::Solution;
 use crate::bearing::thermal::{ThdRun, ThermalModel, ThermalParams};
 use crate::model::{Case, Lubricant, MeshSpec, Operating, PadFilmBc, Thermal, ThermalModelKind};
@@ -128,7 +129,7 @@ impl Stage for ThermalStage {
             Some(run) => run,
             None => ThdRun::new(model, tm, &case, ThermalParams::default(), Some(&start)),
         };
-        let Some(state) = run.step(model, tm, &case, &NoSuspend(cancel))? else {
+        let Some(state) = run.step(model, tm, &case, cancel)? else {
             #[allow(clippy::cast_precision_loss)]
             let fraction = (run.outer_iterations() as f64 / THERMAL_ITERATIONS_EXPECTED).min(0.95);
             self.run.put(inputs.clone(), run);

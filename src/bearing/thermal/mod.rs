@@ -361,4 +361,5 @@ pub fn solve_thd(
 }
 
 mod run;
+pub mod resumable;
 pub use run::ThdRun;

@@ -4,9 +4,12 @@
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use super::resumable::{equilibrium_part, PendingEquilibrium};
+use crate::bearing::progress::Progress;
 /// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
 /// the current viscosity field, then the film and pad temperatures), so a caller without threads (the web
-/// build) can spread a THD solve over frames.
+/// build) can spread a THD solve over frames; when the caller's [`Cancel::suspend`] asks, the outer
+/// iteration's equilibrium itself pauses ([`super::resumable`]) and the next step resumes it.
 ///
 /// Robustness: the temperature update is Anderson-accelerated (depth [`ANDERSON_DEPTH`], damping ω); if the
 /// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
@@ -40,6 +43,8 @@ pub struct ThdRun {
     tehd: Option<TehdModel>,
     growth: Option<GrowthField>,
     growth_next: Option<GrowthField>,
+    /// The current outer iteration's equilibrium, suspended.
+    pending: Option<PendingEquilibrium>,
 }
 
 /// Forwards the caller's cancellation and suspension, and cancels once a time budget is spent.
@@ -95,6 +100,7 @@ impl ThdRun {
             tehd: None,
             growth: None,
             growth_next: None,
+            pending: None,
         }
     }
 
@@ -146,21 +152,31 @@ impl ThdRun {
         let law = case.lubricant.viscosity;
         let n = model.pads.len();
         let params = self.params;
-        self.report.outer_iterations += 1;
-        self.growth.clone_from(&self.growth_next);
+        let pending = match self.pending.take() {
+            Some(p) => p,
+            None => {
+                self.report.outer_iterations += 1;
+                self.growth.clone_from(&self.growth_next);
+                for k in 0..n {
+                    self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
+                }
+                PendingEquilibrium::new(equilibrium_params(self.last_change, &params), self.u.clone())
+            }
+        };
+        // Installed at every step: a step ends with the films cleared (see `step`).
         if let Some(g) = &self.growth {
             tehd::install(model, g);
         }
-        for k in 0..n {
-            self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
-        }
         let te = Instant::now();
-        let eq_params = equilibrium_params(self.last_change, &params);
-        let exact = eq_params == EquilibriumParams::default();
-        let attempt = warm_equilibrium(model, &self.op, eq_params, self.u.as_deref(), cancel);
+        let exact = pending.params == EquilibriumParams::default();
+        let attempt = equilibrium_part(model, &self.op, pending, cancel);
         self.report.equilibrium_seconds += te.elapsed().as_secs_f64();
         let eq = match attempt {
-            Ok(eq) => eq,
+            Ok(Progress::Done(eq)) => eq,
+            Ok(Progress::Suspended(p)) => {
+                self.pending = Some(p);
+                return Ok(None);
+            }
             Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
             Err(e) => {
                 let Some(tt) = &self.t_try else { return Err(e) };
