@@ -785,3 +785,45 @@ fn the_layout_fits_1280_by_720() {
     assert!(wider.width() > view.width() + 200.0, "{view:?} → {wider:?}");
     assert!(h.query_by_role_and_label(Role::Label, "Results").is_none());
 }
+
+#[test]
+fn a_disk_selected_on_the_rotor_sketch_made_heavier_lowers_the_first_natural_frequency() {
+    use tiltpad::app::views::rotor_edit::Selected;
+    use tiltpad::app::views::rotor_view::first_mode_at_top_speed;
+    let mut h = solved_app_at([1280.0, 720.0], None, |p| p.view = View::Rotor);
+    wait_for_rotor(&mut h);
+    // The lowest mode at the analysed speed nearest the top of the operating range (lightly damped there).
+    let first_hz = |h: &Harness<'_, WorkbenchApp>| {
+        let view = &h.state().rotor;
+        first_mode_at_top_speed(view.result().unwrap(), view.edit().unwrap().rotor()).unwrap()
+    };
+    let before = first_hz(&h);
+    // The sketch maps the shaft (0–1650 mm) onto its width less 12-point margins, the axis 50 points below
+    // its top; the fourth disk (a 46 kg impeller) sits at node 26, z = 210 + 150 + 14 × 30 = 780 mm.
+    let rect = h.get_by_label("rotor sketch").rect();
+    let pos = egui::pos2(rect.left() + 12.0 + (rect.width() - 24.0) * 780.0 / 1650.0, rect.top() + 50.0);
+    h.hover_at(pos);
+    h.drag_at(pos);
+    h.step();
+    h.drop_at(pos);
+    h.run_steps(2);
+    assert_eq!(h.state().rotor.edit().unwrap().selected, Some(Selected::Disk(3)));
+    // An invalid mass is kept, named with its range, and the last analysis stays.
+    spin_button(&h, "mass [kg]").set_value_accesskit(-1.0);
+    h.run_steps(3);
+    let shown = text_of(&h.get_by_label_contains("Invalid rotor"));
+    assert!(shown.contains("rotor.disk[3].mass_kg") && shown.contains("-1"), "{shown}");
+    assert!(h.state().rotor.is_idle() && first_hz(&h) == before);
+    // Twice the mass: every frequency of the rotor–bearing system falls (Rayleigh: more kinetic energy for
+    // the same strain energy), the first one too.
+    spin_button(&h, "mass [kg]").set_value_accesskit(92.0);
+    h.run_steps(2);
+    wait_for_rotor(&mut h);
+    assert_eq!(h.state().rotor.edit().unwrap().file().rotor.disk[3].mass_kg, 92.0);
+    let after = first_hz(&h);
+    assert_eq!(after.0, before.0, "the same speed");
+    assert!(after.1 < before.1, "heavier disk: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm", before.1, after.1, after.0);
+    h.get_by_label_contains(&format!("{:.3} Hz", after.1));
+    assert!(h.query_by_label_contains("Invalid rotor").is_none());
+    snapshot(&mut h, "rotor_edit_disk_selected_1280x720");
+}

@@ -242,7 +242,11 @@ impl WorkbenchApp {
                     ui.label("Waiting for the first result…");
                 }
             },
-            View::Rotor => super::views::rotor_view::rotor_ui(ui, &mut self.rotor),
+            View::Rotor => {
+                if let Some(save) = super::views::rotor_view::rotor_ui(ui, &mut self.rotor) {
+                    self.files.export(&save.name, "Rotor (TOML)", "toml", save.text.into_bytes());
+                }
+            }
             View::Sweep => self.sweep_ui(ui),
         }
     }

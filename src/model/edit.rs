@@ -26,12 +26,20 @@ impl CaseFile {
     /// # Errors
     /// `original` is not TOML, or a value cannot be written (non-finite numbers).
     pub fn to_toml_preserving(&self, original: &str) -> Result<String, CaseError> {
-        let mut doc: DocumentMut = original.parse().map_err(syntax)?;
-        let new = toml::Value::try_from(self).map_err(syntax)?;
-        let toml::Value::Table(new) = new else { return Err(syntax("a case serialises to a table")) };
-        merge_table(doc.as_table_mut(), &new)?;
-        Ok(doc.to_string())
+        write_preserving(self, original)
     }
+}
+
+/// Any file model (a case, a rotor file) written into `original` by the rules above.
+///
+/// # Errors
+/// `original` is not TOML, `value` does not serialise to a table, or a value cannot be written.
+pub fn write_preserving(value: &impl serde::Serialize, original: &str) -> Result<String, CaseError> {
+    let mut doc: DocumentMut = original.parse().map_err(syntax)?;
+    let new = toml::Value::try_from(value).map_err(syntax)?;
+    let toml::Value::Table(new) = new else { return Err(syntax("a file model serialises to a table")) };
+    merge_table(doc.as_table_mut(), &new)?;
+    Ok(doc.to_string())
 }
 
 fn merge_table(old: &mut dyn TableLike, new: &toml::Table) -> Result<(), CaseError> {

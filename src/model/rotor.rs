@@ -50,7 +50,7 @@ pub struct RotorFile {
 #[serde(deny_unknown_fields)]
 pub struct RotorTable {
     /// The rotor is a representative one (its data are not all published); shown with every result.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "is_false")]
     pub representative: bool,
     #[serde(default)]
     pub beam_theory: BeamTheory,
@@ -84,6 +84,15 @@ pub struct RotorTable {
     pub support: Vec<SupportTable>,
 }
 
+// Defaults left out when a rotor file is written (an edited file keeps the keys its author left out).
+#[allow(clippy::trivially_copy_pass_by_ref)] // serde's skip_serializing_if passes a reference
+fn is_false(b: &bool) -> bool {
+    !b
+}
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
 fn default_density() -> f64 {
     7850.0
 }
@@ -121,7 +130,7 @@ fn default_modes() -> [usize; 2] {
 pub struct SectionTable {
     pub length_mm: f64,
     pub outer_diameter_mm: f64,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub inner_diameter_mm: f64,
     #[serde(default = "one")]
     pub elements: usize,
@@ -137,9 +146,9 @@ fn one() -> usize {
 pub struct DiskTable {
     pub node: usize,
     pub mass_kg: f64,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub polar_inertia_kg_m2: f64,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub transverse_inertia_kg_m2: f64,
 }
 
@@ -179,7 +188,7 @@ pub struct BearingTable {
 pub struct SupportTable {
     pub node: usize,
     pub stiffness_n_per_m: f64,
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "is_zero")]
     pub damping_ns_per_m: f64,
 }
 

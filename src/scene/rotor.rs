@@ -12,7 +12,7 @@
 //! - undamped critical-speed map: critical speeds [rpm] against the support stiffness at the bearings on a
 //!   log axis (`log10 k` [N/m]), the bearings' direct stiffnesses k_xx, k_yy over speed on the same axes and
 //!   their crossings with the mode lines;
-//! - rotor sketch: shaft sections (axial position and diameters [mm]), disks, bearings.
+//! - rotor sketch: shaft sections (axial position and diameters [mm]), disks, bearings, supports, unbalances.
 //!
 //! No egui here: the view ([`crate::app::views::rotor_view`]) only draws these.
 
@@ -194,6 +194,8 @@ pub enum SketchItem {
     /// Coefficients given by numbers (seal, aerodynamic cross-coupling, …).
     Numbers,
     Support,
+    /// An unbalance (drawn above the shaft).
+    Unbalance,
 }
 
 /// The rotor as drawn: sections and what sits on the shaft [mm].
@@ -201,7 +203,8 @@ pub enum SketchItem {
 pub struct RotorSketch {
     /// `[z_start, z_end, outer diameter, inner diameter]` per element [mm].
     pub sections: Vec<[f64; 4]>,
-    /// `(z [mm], item, node)`.
+    /// `(z [mm], item, node)`; the items of one rotor table (disks; bearings and numbers; supports;
+    /// unbalances) in the table's order.
     pub items: Vec<(f64, SketchItem, usize)>,
     pub length_mm: f64,
     pub max_diameter_mm: f64,
@@ -221,6 +224,7 @@ pub fn sketch(rotor: &Rotor) -> RotorSketch {
         items.push((z[b.node], kind, b.node));
     }
     items.extend(rotor.supports.iter().map(|s| (z[s.node], SketchItem::Support, s.node)));
+    items.extend(rotor.unbalances.iter().map(|u| (z[u.node], SketchItem::Unbalance, u.node)));
     RotorSketch { max_diameter_mm: sections.iter().map(|s| s[2]).fold(0.0, f64::max), length_mm: z.last().copied().unwrap_or(0.0), sections, items }
 }
 
@@ -317,5 +321,6 @@ c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
         assert!((s.length_mm - 1000.0).abs() < 1e-9);
         assert!(s.items.iter().any(|&(z, item, node)| item == SketchItem::Disk && node == 5 && (z - 500.0).abs() < 1e-9));
         assert_eq!(s.items.iter().filter(|i| i.1 == SketchItem::Numbers).count(), 2);
+        assert!(s.items.iter().any(|&(z, item, node)| item == SketchItem::Unbalance && node == 5 && (z - 500.0).abs() < 1e-9));
     }
 }

@@ -134,8 +134,8 @@ pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
     }
 }
 
-/// Paints an error frame around the next widgets when `key` is invalid.
-fn flag_invalid_ui(ui: &mut Ui, invalid: bool) {
+/// Paints an error frame around the next widgets when their value is invalid (also the rotor editor's).
+pub fn flag_invalid_ui(ui: &mut Ui, invalid: bool) {
     if invalid {
         let w = &mut ui.visuals_mut().widgets;
         for s in [&mut w.inactive, &mut w.hovered, &mut w.active] {

@@ -9,5 +9,6 @@ pub mod field_view;
 pub mod frf_view;
 pub mod limits_view;
 pub mod results_panel;
+pub mod rotor_edit;
 pub mod rotor_view;
 pub mod sweep_view;

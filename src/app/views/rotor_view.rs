@@ -6,21 +6,23 @@
 //! speed on it, crossings marked; computed once per result from the analysis' bearing stiffnesses). Full or
 //! synchronously reduced bearing coefficients are selectable.
 //!
-//! Drawables come from [`crate::scene::rotor`]; nothing here computes physics. The sketch does not edit
-//! the rotor (the rotor file does); a rotor file opened from the File menu (native) joins the shipped ones.
+//! Drawables come from [`crate::scene::rotor`]; nothing here computes physics. A click on the sketch
+//! selects a section, disk, bearing or unbalance to edit ([`super::rotor_edit`]); each rotor keeps its edits
+//! while another is shown. A rotor file opened from the File menu (native) joins the shipped ones.
 
 use std::sync::Arc;
 
 use egui::{Color32, RichText, Stroke, Ui};
 use egui_plot::{HLine, Legend, Line, LineStyle, Plot, Points, VLine};
 
-use crate::app::presets::PRESETS;
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
-use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
+use crate::model::rotor::{CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
 use crate::rotor::eigen::Whirl;
 use crate::rotor::critical_map::map_over_curves;
 use crate::scene::rotor::{map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem};
+
+use super::rotor_edit::{edit_ui, RotorEdit, SaveRequest, Selected};
 
 /// Shipped rotors: file name and text (bearing cases are the shipped presets named by file name).
 pub const ROTOR_PRESETS: [(&str, &str); 1] = [("compressor-rotor.toml", include_str!("../../../cases/rotors/compressor-rotor.toml"))];
@@ -67,8 +69,9 @@ impl RotorTab {
 pub struct RotorView {
     /// The shipped rotor shown; `ROTOR_PRESETS.len()` is the rotor file opened ([`RotorView::open_file`]).
     pub preset: usize,
-    /// The opened rotor file: its name and the rotor (or why it could not be read).
-    opened: Option<(String, Result<Rotor, String>)>,
+    /// Every rotor offered (the shipped ones, then the opened file) as edited, or why it cannot be read;
+    /// built when first shown.
+    edits: Vec<Option<Result<RotorEdit, String>>>,
     /// Counts opened files, so opening one again restarts the analysis.
     generation: usize,
     pub coefficients: CoefficientModel,
@@ -77,8 +80,9 @@ pub struct RotorView {
     pub speed_index: usize,
     pub mode_index: usize,
     runner: Option<RotorRunner>,
-    /// What was submitted: (preset, coefficients, generation), the rotor, and the result (or why it failed).
-    submitted: Option<(usize, CoefficientModel, usize)>,
+    /// What was submitted: (preset, coefficients, generation, edit revision), the rotor, and the result
+    /// (or why it failed).
+    submitted: Option<(usize, CoefficientModel, usize, usize)>,
     rotor: Option<Result<Rotor, String>>,
     result: Option<Result<Arc<AnalysisResult>, String>>,
     progress: Option<(usize, usize)>,
@@ -88,39 +92,8 @@ pub struct RotorView {
 
 impl Default for RotorView {
     fn default() -> Self {
-        Self { preset: 0, opened: None, generation: 0, coefficients: CoefficientModel::Full, tab: RotorTab::Campbell, speed_index: 0, mode_index: 0, runner: None, submitted: None, rotor: None, result: None, progress: None, map: None }
+        Self { preset: 0, edits: (0..=ROTOR_PRESETS.len()).map(|_| None).collect(), generation: 0, coefficients: CoefficientModel::Full, tab: RotorTab::Campbell, speed_index: 0, mode_index: 0, runner: None, submitted: None, rotor: None, result: None, progress: None, map: None }
     }
-}
-
-/// The shipped rotor `preset` with its bearing cases at preview fidelity.
-///
-/// # Errors
-/// The rotor file's validation error (a shipped file: a bug).
-pub fn preset_rotor(preset: usize) -> Result<Rotor, String> {
-    let (_, text) = ROTOR_PRESETS.get(preset).ok_or("no such rotor preset")?;
-    read_rotor_text(text, None)
-}
-
-/// Reads a rotor file's `text`, its bearing cases from beside `path` (native) or among the shipped cases,
-/// each at preview fidelity.
-fn read_rotor_text(text: &str, path: Option<&std::path::Path>) -> Result<Rotor, String> {
-    let mut file = parse_rotor_file(text).map_err(|e| e.to_string())?;
-    for b in &mut file.rotor.bearing {
-        if b.case.is_some() {
-            b.set.push("mesh.fidelity=\"preview\"".into());
-        }
-    }
-    let dir = path.and_then(std::path::Path::parent).map(std::path::Path::to_path_buf);
-    let read = |name: &str| {
-        #[cfg(not(target_arch = "wasm32"))]
-        if let Some(d) = &dir {
-            return std::fs::read_to_string(d.join(name)).map_err(|e| format!("{}: {e}", d.join(name).display()));
-        }
-        let _ = &dir;
-        let base = name.rsplit('/').next().unwrap_or(name);
-        PRESETS.iter().find(|(n, _)| *n == base).map(|(_, t)| (*t).to_string()).ok_or_else(|| format!("{name}: not a shipped case"))
-    };
-    file.resolve(&read).map_err(|e| e.to_string())
 }
 
 /// The view's speeds [rad/s] for `rotor`.
@@ -146,28 +119,44 @@ impl RotorView {
     /// Shows the rotor file `name` read from `text` (bearing cases beside `path`); a file that cannot be read
     /// shows its error (the key, the value and the allowed range) in the view.
     pub fn open_file(&mut self, name: &str, path: Option<&std::path::Path>, text: &str) {
-        self.opened = Some((name.to_string(), read_rotor_text(text, path)));
+        self.edits[ROTOR_PRESETS.len()] = Some(RotorEdit::open(name, path, text));
         self.preset = ROTOR_PRESETS.len();
         self.generation += 1;
     }
 
-    /// The rotor of the current choice.
-    fn chosen(&self) -> Result<Rotor, String> {
-        match &self.opened {
-            Some((_, rotor)) if self.preset >= ROTOR_PRESETS.len() => rotor.clone(),
-            _ => preset_rotor(self.preset.min(ROTOR_PRESETS.len() - 1)),
+    /// The rotor of the current choice as edited (a shipped one read when first shown), or why it cannot
+    /// be read.
+    pub fn edit_mut(&mut self) -> &mut Result<RotorEdit, String> {
+        let opened = self.edits[ROTOR_PRESETS.len()].is_some();
+        if self.preset >= ROTOR_PRESETS.len() && !opened {
+            self.preset = 0;
         }
+        let i = self.preset.min(ROTOR_PRESETS.len());
+        self.edits[i].get_or_insert_with(|| {
+            let (name, text) = ROTOR_PRESETS[i];
+            RotorEdit::open(name, None, text)
+        })
     }
 
-    /// Starts the analysis when the rotor or the coefficient model changed; takes in the runner's events.
+    /// The rotor of the current choice as edited.
+    #[must_use]
+    pub fn edit(&self) -> Option<&RotorEdit> {
+        self.edits.get(self.preset)?.as_ref()?.as_ref().ok()
+    }
+
+    /// Starts the analysis when the rotor (or an edit of it) or the coefficient model changed; takes in the
+    /// runner's events.
     fn drive(&mut self, ctx: &egui::Context) {
-        let wanted = (self.preset, self.coefficients, self.generation);
+        let revision = self.edit_mut().as_ref().map_or(0, |e| e.revision);
+        let wanted = (self.preset, self.coefficients, self.generation, revision);
         if self.submitted != Some(wanted) {
             self.submitted = Some(wanted);
-            let rotor = self.chosen().map(|mut r| {
-                r.coefficients = self.coefficients;
+            let coefficients = self.coefficients;
+            let rotor = self.edit_mut().as_ref().map(|e| {
+                let mut r = e.rotor().clone();
+                r.coefficients = coefficients;
                 r
-            });
+            }).map_err(Clone::clone);
             let runner = self.runner.get_or_insert_with(|| RotorRunner::new(ctx.clone()));
             if let Ok(r) = &rotor {
                 runner.start(r, AnalysisParams::new(speeds(r)));
@@ -185,12 +174,14 @@ impl RotorView {
     }
 }
 
-/// Draws the view.
-pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
+/// Draws the view; returns a save of the rotor file the user asked for.
+pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     view.drive(ui.ctx());
-    ui.horizontal(|ui| {
+    // Wrapped rows throughout: a row wider than the central panel would widen the whole view under the side
+    // panels and clip it.
+    ui.horizontal_wrapped(|ui| {
         let label = ui.label("Rotor");
-        let opened = view.opened.as_ref().map(|(n, _)| n.clone());
+        let opened = view.edits[ROTOR_PRESETS.len()].as_ref().map(|e| e.as_ref().map_or_else(|_| "opened file".to_string(), |e| e.name.clone()));
         let shown = ROTOR_PRESETS.get(view.preset).map_or_else(|| opened.clone().unwrap_or_default(), |p| p.0.to_string());
         egui::ComboBox::from_id_salt("rotor-preset")
             .selected_text(shown)
@@ -213,18 +204,27 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
         Some(Ok(r)) => r.clone(),
         Some(Err(e)) => {
             ui.label(RichText::new(format!("Cannot read the rotor: {e}")).color(LIMIT));
-            return;
+            return None;
         }
-        None => return,
+        None => return None,
     };
-    let title = if rotor.representative { format!("{} — representative shaft, not the thesis' rotor", rotor.title) } else { rotor.title.clone() };
-    ui.label(RichText::new(format!("{title} — {:.0} kg", rotor.mass())).strong());
-    sketch_ui(ui, &sketch(&rotor));
+    let save = match view.edit_mut() {
+        Ok(edit) => {
+            let shown = edit.rotor();
+            let title = if shown.representative { format!("{} — representative shaft, not the thesis' rotor", shown.title) } else { shown.title.clone() };
+            ui.label(RichText::new(format!("{title} — {:.0} kg", shown.mass())).strong());
+            if let Some(picked) = sketch_ui(ui, &sketch(shown), &edit.section_of_elements(), edit.selected) {
+                edit.selected = Some(picked);
+            }
+            edit_ui(ui, edit)
+        }
+        Err(_) => None,
+    };
     let result = match &view.result {
         Some(Ok(r)) => r.clone(),
         Some(Err(e)) => {
             ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT));
-            return;
+            return save;
         }
         None => {
             ui.horizontal(|ui| {
@@ -232,15 +232,16 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
                 let (done, of) = view.progress.unwrap_or((0, SPEEDS));
                 ui.label(format!("Analysing: speed {done} of {of} (bearings solved at each speed, preview fidelity)…"));
             });
-            return;
+            return save;
         }
     };
-    ui.horizontal(|ui| {
+    // Wrapped: every tab stays readable in a narrow central panel.
+    ui.horizontal_wrapped(|ui| {
         for t in RotorTab::ALL {
             ui.selectable_value(&mut view.tab, t, t.label());
         }
     });
-    summary_ui(ui, &result);
+    summary_ui(ui, &result, &rotor);
     match view.tab {
         RotorTab::Campbell | RotorTab::Stability => curves_ui(ui, &result, &rotor, view.tab),
         RotorTab::ModeShape => mode_shape_ui(ui, view, &result, &rotor),
@@ -255,14 +256,26 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) {
             }
         }
     }
+    save
 }
 
-fn summary_ui(ui: &mut Ui, r: &AnalysisResult) {
+/// The lowest damped natural frequency [Hz] at the analysed speed [rpm] nearest the top of the operating
+/// range (the sweep's last speed without one): modes there are lightly damped, so a heavier rotor lowers it
+/// as `√(k/m)` says (a heavily damped mode at low speed may not).
+#[must_use]
+pub fn first_mode_at_top_speed(r: &AnalysisResult, rotor: &Rotor) -> Option<(f64, f64)> {
+    let top = rotor.operating_range.map_or(f64::INFINITY, |[_, b]| b);
+    let s = r.speeds.iter().min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?;
+    s.point.modes.modes.first().map(|m| (s.point.speed_rad_s * 30.0 / std::f64::consts::PI, m.frequency_hz()))
+}
+
+fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
     let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
     let onset = r.onset.as_ref().map_or_else(|| "none in the sweep".to_string(), |o| format!("{:.0} rpm", rpm(o.speed_rad_s)));
     let critical: Vec<String> = r.critical_speeds.iter().map(|c| format!("{:.0}", rpm(c.speed_rad_s))).collect();
+    let lowest = first_mode_at_top_speed(r, rotor).map(|(n, f)| format!(" Lowest natural frequency at {n:.0} rpm: {f:.3} Hz.")).unwrap_or_default();
     ui.label(format!(
-        "Onset of instability: {onset}. 1× critical speeds: {} rpm. {} bearing solves, {} eigen-solutions, {} DOFs.",
+        "Onset of instability: {onset}. 1× critical speeds: {} rpm.{lowest} {} bearing solves, {} eigen-solutions, {} DOFs.",
         if critical.is_empty() { "none".to_string() } else { critical.join(", ") },
         r.report.bearing_solves,
         r.report.eigen_solutions,
@@ -391,44 +404,107 @@ fn nearest_index(v: f64) -> usize {
     v.round().max(0.0) as usize
 }
 
-/// The rotor to scale along its axis, diameters exaggerated to fit the strip.
+/// Where the sketch draws an item of `kind` at axial screen position `px`, about the shaft axis `mid`.
+fn item_rect(kind: SketchItem, px: f32, mid: f32) -> egui::Rect {
+    match kind {
+        SketchItem::Disk => egui::Rect::from_center_size(egui::pos2(px, mid), egui::vec2(6.0, 60.0)),
+        SketchItem::Bearing => egui::Rect::from_min_max(egui::pos2(px - 7.0, mid + 17.0), egui::pos2(px + 7.0, mid + 29.0)),
+        SketchItem::Numbers | SketchItem::Support => egui::Rect::from_center_size(egui::pos2(px, mid + 24.0), egui::vec2(10.0, 10.0)),
+        SketchItem::Unbalance => egui::Rect::from_center_size(egui::pos2(px, mid - 38.0), egui::vec2(8.0, 8.0)),
+    }
+}
+
+/// The selection an item of the sketch stands for: its `rank`-th entry among the items of its table.
+fn item_selection(kind: SketchItem, rank: usize) -> Option<Selected> {
+    match kind {
+        SketchItem::Disk => Some(Selected::Disk(rank)),
+        SketchItem::Bearing | SketchItem::Numbers => Some(Selected::Bearing(rank)),
+        SketchItem::Unbalance => Some(Selected::Unbalance(rank)),
+        SketchItem::Support => None,
+    }
+}
+
+/// The rotor to scale along its axis, diameters exaggerated to fit the strip; the `selected` item framed.
+/// A click selects the item under the pointer (within a few points), else the shaft section there
+/// (`section_of_element`: the section of each element).
 #[allow(clippy::cast_possible_truncation)] // millimetres to screen points
-fn sketch_ui(ui: &mut Ui, s: &RotorSketch) {
+fn sketch_ui(ui: &mut Ui, s: &RotorSketch, section_of_element: &[usize], selected: Option<Selected>) -> Option<Selected> {
     let width = ui.available_width().min(ui.clip_rect().width());
-    let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 90.0), egui::Sense::hover());
+    let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 124.0), egui::Sense::click());
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "rotor sketch"));
     let painter = ui.painter_at(rect);
     let margin = 12.0;
     let sx = (rect.width() - 2.0 * margin) / s.length_mm.max(1e-9) as f32;
     let sy = 30.0 / s.max_diameter_mm.max(1e-9) as f32;
     let x = |z: f64| rect.left() + margin + z as f32 * sx;
-    let mid = rect.center().y - 6.0;
+    let mid = rect.top() + 50.0;
     let fill = Color32::from_gray(170);
-    for [z0, z1, d, di] in &s.sections {
+    let mark = Stroke::new(2.0, ui.visuals().strong_text_color());
+    // Items with their rank in their rotor table (disks; bearings and numbers; supports; unbalances).
+    let mut counts = [0_usize; 4];
+    let items: Vec<(f64, SketchItem, usize)> = s
+        .items
+        .iter()
+        .map(|&(z, kind, _)| {
+            let table = match kind {
+                SketchItem::Disk => 0,
+                SketchItem::Bearing | SketchItem::Numbers => 1,
+                SketchItem::Support => 2,
+                SketchItem::Unbalance => 3,
+            };
+            counts[table] += 1;
+            (z, kind, counts[table] - 1)
+        })
+        .collect();
+    for (e, [z0, z1, d, di]) in s.sections.iter().enumerate() {
         let (h, hi) = (*d as f32 * sy / 2.0, *di as f32 * sy / 2.0);
-        painter.rect_filled(egui::Rect::from_min_max(egui::pos2(x(*z0), mid - h), egui::pos2(x(*z1), mid + h)), 0.0, fill);
+        let r = egui::Rect::from_min_max(egui::pos2(x(*z0), mid - h), egui::pos2(x(*z1), mid + h));
+        painter.rect_filled(r, 0.0, fill);
         if hi > 0.0 {
             painter.rect_filled(egui::Rect::from_min_max(egui::pos2(x(*z0), mid - hi), egui::pos2(x(*z1), mid + hi)), 0.0, ui.visuals().extreme_bg_color);
         }
-    }
-    for (z, item, _) in &s.items {
-        let px = x(*z);
-        match item {
-            SketchItem::Disk => {
-                painter.rect_filled(egui::Rect::from_center_size(egui::pos2(px, mid), egui::vec2(6.0, 60.0)), 1.0, FORWARD);
-            }
-            SketchItem::Bearing => {
-                let top = mid + 17.0;
-                painter.add(egui::Shape::convex_polygon(vec![egui::pos2(px, top), egui::pos2(px - 7.0, top + 12.0), egui::pos2(px + 7.0, top + 12.0)], BACKWARD, Stroke::NONE));
-            }
-            SketchItem::Numbers | SketchItem::Support => {
-                let c = egui::pos2(px, mid + 24.0);
-                painter.line_segment([c - egui::vec2(5.0, 5.0), c + egui::vec2(5.0, 5.0)], Stroke::new(2.0, LIMIT));
-                painter.line_segment([c - egui::vec2(5.0, -5.0), c + egui::vec2(5.0, -5.0)], Stroke::new(2.0, LIMIT));
+        if let (Some(Selected::Section(i)), Some(&sec)) = (selected, section_of_element.get(e)) {
+            if i == sec {
+                painter.rect_stroke(r, 0.0, mark, egui::StrokeKind::Outside);
             }
         }
     }
+    for &(z, kind, rank) in &items {
+        let r = item_rect(kind, x(z), mid);
+        match kind {
+            SketchItem::Disk => {
+                painter.rect_filled(r, 1.0, FORWARD);
+            }
+            SketchItem::Bearing => {
+                painter.add(egui::Shape::convex_polygon(vec![r.center_top(), r.left_bottom(), r.right_bottom()], BACKWARD, Stroke::NONE));
+            }
+            SketchItem::Numbers | SketchItem::Support => {
+                painter.line_segment([r.left_top(), r.right_bottom()], Stroke::new(2.0, LIMIT));
+                painter.line_segment([r.left_bottom(), r.right_top()], Stroke::new(2.0, LIMIT));
+            }
+            SketchItem::Unbalance => {
+                painter.circle_filled(r.center(), 4.0, LIMIT);
+                painter.line_segment([r.center_bottom(), egui::pos2(r.center().x, mid - 30.0)], Stroke::new(1.0, LIMIT));
+            }
+        }
+        if selected.is_some() && item_selection(kind, rank) == selected {
+            painter.rect_stroke(r.expand(3.0), 2.0, mark, egui::StrokeKind::Outside);
+        }
+    }
     let text = ui.visuals().weak_text_color();
-    painter.text(egui::pos2(rect.left() + margin, rect.bottom() - 2.0), egui::Align2::LEFT_BOTTOM, format!("0 — {:.0} mm (diameters ×{:.0})", s.length_mm, sy / sx), egui::FontId::proportional(11.0), text);
-    painter.text(egui::pos2(rect.right() - margin, rect.bottom() - 2.0), egui::Align2::RIGHT_BOTTOM, "blue: disks, orange: bearings, red ×: coefficients by numbers", egui::FontId::proportional(11.0), text);
+    // Two lines under the shaft: the scale, then the legend (side by side they overlap in a narrow panel).
+    painter.text(egui::pos2(rect.left() + margin, rect.bottom() - 16.0), egui::Align2::LEFT_BOTTOM, format!("0 — {:.0} mm (diameters ×{:.0})", s.length_mm, sy / sx), egui::FontId::proportional(11.0), text);
+    painter.text(egui::pos2(rect.left() + margin, rect.bottom() - 2.0), egui::Align2::LEFT_BOTTOM, "blue: disks, orange: bearings, red ×: coefficients by numbers, red dots: unbalances", egui::FontId::proportional(11.0), text);
+    let click = response.interact_pointer_pos().filter(|_| response.clicked())?;
+    // The nearest item whose drawing (grown by a few points) holds the click, else the section at its z.
+    let hit = items
+        .iter()
+        .filter(|&&(z, kind, _)| item_rect(kind, x(z), mid).expand(4.0).contains(click))
+        .min_by(|a, b| (x(a.0) - click.x).abs().total_cmp(&(x(b.0) - click.x).abs()))
+        .and_then(|&(_, kind, rank)| item_selection(kind, rank));
+    hit.or_else(|| {
+        let z = f64::from((click.x - rect.left() - margin) / sx);
+        let e = s.sections.iter().position(|sec| z >= sec[0] && z <= sec[1])?;
+        section_of_element.get(e).map(|&i| Selected::Section(i))
+    })
 }
