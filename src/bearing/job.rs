@@ -13,7 +13,7 @@ use super::coordinates::PadDof;
 use super::equilibrium::{solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
-use super::solution::{BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalResult, Solution, ThermalResult};
+use super::solution::{BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalGrowth, PadThermalResult, Solution, ThermalResult};
 use super::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
 
 /// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
@@ -73,8 +73,13 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
     sol.report.seconds = t.seconds;
     let max = |v: &[f64]| v.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
     let (mut t_area, mut area) = (0.0, 0.0);
-    for (p, st) in sol.pads.iter_mut().zip(&state.pads) {
+    for (k, (p, st)) in sol.pads.iter_mut().zip(&state.pads).enumerate() {
         let n_film = st.film_c.len();
+        p.thermal_growth = state.growth.as_ref().filter(|g| g.pad_nodal_m.get(k).is_some_and(|u| !u.is_empty())).map(|g| PadThermalGrowth {
+            film_radial_m: g.pad_film_m[k].clone(),
+            nodal_polar_m: g.pad_nodal_m[k].clone(),
+            radii_m: st.pad_radii_m.clone(),
+        });
         let surface = st.pad_c.as_ref().map(|t| t[..n_film].to_vec());
         p.field.film_temperature_c = Some(st.film_c.clone());
         p.field.pad_surface_temperature_c.clone_from(&surface);
@@ -268,6 +273,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             unloaded: st.unloaded,
             mode_amplitudes_m: mode_amplitudes(pm, &st.q),
             elastic_displacement_m: elastic_displacement(pm, &st.q),
+            thermal_growth: None,
             flex: pm.modes.as_ref().zip(pm.solid.as_ref()).map(|(modes, solid)| PadFlex { modes: modes.clone(), radii_m: solid.radii.clone() }),
             field,
             thermal: None,

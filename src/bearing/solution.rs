@@ -96,6 +96,9 @@ pub struct PadResult {
     /// Elastic radial displacement of the film face at each film node, Σ q_i φ_i [m] (empty for rigid pads).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub elastic_displacement_m: Vec<f64>,
+    /// The pad solid's thermal growth in the converged TEHD state (`None` without pad growth).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thermal_growth: Option<PadThermalGrowth>,
     /// The flexible pad's modes and solid layers, for drawing (`None` for rigid pads).
     #[serde(skip)]
     pub flex: Option<PadFlex>,
@@ -114,6 +117,20 @@ pub struct PadResult {
 pub struct PadFlex {
     pub modes: std::sync::Arc<crate::physics::pad_modes::PadModes>,
     /// Layer radii of the pad solid, film face first [m] (pad node = layer · film nodes + film node).
+    pub radii_m: Vec<f64>,
+}
+
+/// Thermal growth of a pad solid (TEHD, [`super::tehd`]): displacement from the reference temperature, the
+/// pad supported on its pivot line (the journal's growth is not in it).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PadThermalGrowth {
+    /// Radial displacement of the film face at each film node [m] (positive away from the journal).
+    pub film_radial_m: Vec<f64>,
+    /// (u_r, u_θ, u_z) at every pad node (layer-major, film face first, as the pad temperature) [m].
+    #[serde(skip)]
+    pub nodal_polar_m: Vec<f64>,
+    /// Layer radii of the pad solid, film face first [m].
+    #[serde(skip)]
     pub radii_m: Vec<f64>,
 }
 

@@ -34,7 +34,7 @@ use crate::fem::solid8::{Elastic, Formulation};
 use crate::fem::SpdSolver;
 use crate::mesh::pad3d::PadMesh;
 use crate::model::Case;
-use crate::physics::pad_elastic::{thermal_forces, ElasticError, ElasticSystem, Solid, Supports};
+use crate::physics::pad_elastic::{ElasticError, ElasticSystem, Solid, Supports, ThermalLoad};
 use crate::physics::reynolds::SampledField;
 
 use super::error::SolveError;
@@ -79,6 +79,8 @@ struct GrowthSolver {
     solid: Solid,
     system: ElasticSystem,
     solver: SpdSolver,
+    /// Thermal-load operator (built once: each outer iteration's load is a product).
+    load: ThermalLoad,
     material: Elastic,
     /// Pivot position within the arc [rad] (sharing key with the mesh shape and material).
     pivot_from_le: f64,
@@ -97,12 +99,13 @@ impl GrowthSolver {
         let system = ElasticSystem::assemble(&solid, &material, Formulation::Incompatible, supports)?;
         let mut solver = SpdSolver::new(&system.pattern).map_err(ElasticError::Factor)?;
         solver.factor(&system.pattern, &system.stiffness).map_err(ElasticError::Factor)?;
-        Ok(Self { solid, system, solver, material, pivot_from_le, mesh, pin, anchor })
+        let load = ThermalLoad::new(&solid, &material)?;
+        Ok(Self { solid, system, solver, load, material, pivot_from_le, mesh, pin, anchor })
     }
 
-    /// Film-face radial displacement [m] for the pad temperature rise `dt` (all pad nodes) [K].
-    fn film_face(&mut self, alpha: f64, dt: &[f64]) -> Result<Vec<f64>, ElasticError> {
-        let f = thermal_forces(&self.solid, &self.material, alpha, dt)?;
+    /// The pad's displacement for the temperature rise `dt` (all pad nodes) [K].
+    fn displacement(&mut self, alpha: f64, dt: &[f64]) -> Result<PadGrowth, ElasticError> {
+        let f = self.load.forces(&self.solid, alpha, dt);
         let mut q = self.system.supports.reduce(&f);
         self.solver.solve_in_place(&mut q);
         let u = self.system.supports.expand(&q);
@@ -113,16 +116,28 @@ impl GrowthSolver {
         let (d, len) = ([xa[0] - p[0], xa[1] - p[1]], (xa[0] - p[0]).hypot(xa[1] - p[1]));
         let across = [-d[1] / len, d[0] / len];
         let delta = (u[3 * self.anchor] * across[0] + u[3 * self.anchor + 1] * across[1]) / len;
-        Ok((0..self.mesh.n_film)
-            .map(|i| {
+        // u − δ ẑ × (x − P), in polar components (u_r, u_θ, u_z) at every node.
+        let nodal_polar_m: Vec<f64> = (0..self.solid.n_nodes())
+            .flat_map(|i| {
                 let x = self.solid.nodes[i];
-                let theta = x[1].atan2(x[0]);
-                // u − δ ẑ × (x − P), radial component.
-                let rot = [-(x[1] - p[1]), x[0] - p[0]];
-                (u[3 * i] - delta * rot[0]) * theta.cos() + (u[3 * i + 1] - delta * rot[1]) * theta.sin()
+                let (s, c) = x[1].atan2(x[0]).sin_cos();
+                let ux = u[3 * i] + delta * (x[1] - p[1]);
+                let uy = u[3 * i + 1] - delta * (x[0] - p[0]);
+                [ux * c + uy * s, -ux * s + uy * c, u[3 * i + 2]]
             })
-            .collect())
+            .collect();
+        let film_m = (0..self.mesh.n_film).map(|i| nodal_polar_m[3 * i]).collect();
+        Ok(PadGrowth { film_m, nodal_polar_m })
     }
+}
+
+/// The thermal displacement of one pad solid.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PadGrowth {
+    /// Radial displacement of the film face at each film node [m] (positive away from the journal).
+    pub film_m: Vec<f64>,
+    /// (u_r, u_θ, u_z) at every pad node (pad node = layer · film nodes + film node, film face first) [m].
+    pub nodal_polar_m: Vec<f64>,
 }
 
 /// Pivot line pinned in x, y; u_z on the mid-plane (half model) or at one pivot-line node; one in-plane
@@ -161,10 +176,13 @@ pub struct TehdModel {
     solver_of: Vec<Option<usize>>,
 }
 
-/// One evaluation of the growth: each film's extra thickness at its nodes [m], and the journal growth [m].
+/// One evaluation of the growth: each pad's film-face growth at its film nodes [m] (zeros without a pad
+/// solid), each pad solid's nodal displacement (empty without one), and the journal growth [m].
 #[derive(Debug, Clone, PartialEq)]
 pub struct GrowthField {
     pub pad_film_m: Vec<Vec<f64>>,
+    /// (u_r, u_θ, u_z) at every node of pad k's solid [m] ([`PadGrowth::nodal_polar_m`]).
+    pub pad_nodal_m: Vec<Vec<f64>>,
     pub journal_m: f64,
 }
 
@@ -240,17 +258,19 @@ impl TehdModel {
     pub fn evaluate(&mut self, pad_c: &[Option<Vec<f64>>], t_j: f64, film_nodes: &[usize]) -> Result<GrowthField, SolveError> {
         let g = self.growth;
         let mut pad_film_m = Vec::with_capacity(pad_c.len());
+        let mut pad_nodal_m = Vec::with_capacity(pad_c.len());
         for (k, t) in pad_c.iter().enumerate() {
             let u = match (self.solver_of.get(k).copied().flatten(), t) {
                 (Some(i), Some(t)) => {
                     let dt: Vec<f64> = t.iter().map(|x| x - g.reference_c).collect();
-                    self.solvers[i].film_face(g.pad_per_k, &dt).map_err(|e| SolveError::Invalid(format!("pad {k} thermal growth: {e}")))?
+                    self.solvers[i].displacement(g.pad_per_k, &dt).map_err(|e| SolveError::Invalid(format!("pad {k} thermal growth: {e}")))?
                 }
-                _ => vec![0.0; film_nodes.get(k).copied().unwrap_or(0)],
+                _ => PadGrowth { film_m: vec![0.0; film_nodes.get(k).copied().unwrap_or(0)], nodal_polar_m: Vec::new() },
             };
-            pad_film_m.push(u);
+            pad_film_m.push(u.film_m);
+            pad_nodal_m.push(u.nodal_polar_m);
         }
-        Ok(GrowthField { pad_film_m, journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c) })
+        Ok(GrowthField { pad_film_m, pad_nodal_m, journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c) })
     }
 }
 
@@ -326,6 +346,19 @@ mod tests {
             m.max((g.pad_film_m[0][n] - exact).abs() / scale)
         });
         eprintln!("uniform heating: largest deviation from the similarity {worst:.2e} of α t ΔT");
+        assert!(worst < 1e-9, "{worst}");
+        // The whole solid, in polar components: u_r = α ΔT (r − (R_b + t) cos φ), u_θ = α ΔT (R_b + t) sin φ,
+        // u_z = α ΔT z (the similarity about the pivot line, which lies at z from −L/2 to L/2).
+        let solid = Solid::from_pad(meshes[0].as_ref().unwrap());
+        let u = &g.pad_nodal_m[0];
+        assert_eq!(u.len(), 3 * solid.n_nodes());
+        assert_eq!(&u[..3 * geom.n_nodes()].iter().step_by(3).copied().collect::<Vec<_>>(), &g.pad_film_m[0]);
+        let worst = solid.nodes.iter().enumerate().fold(0.0_f64, |m, (n, x)| {
+            let (r, phi) = (x[0].hypot(x[1]), x[1].atan2(x[0]) - pad.pivot_rad);
+            let exact = [r - (rb + t) * phi.cos(), (rb + t) * phi.sin(), x[2]].map(|v| 1.2e-5 * dt * v);
+            (0..3).fold(m, |m, c| m.max((u[3 * n + c] - exact[c]).abs() / scale))
+        });
+        eprintln!("uniform heating, whole solid: largest deviation {worst:.2e} of α t ΔT");
         assert!(worst < 1e-9, "{worst}");
         // Off without coefficients.
         assert!(TehdModel::new(&fillon(&[]), &model, &meshes).unwrap().is_none());

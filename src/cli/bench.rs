@@ -20,7 +20,7 @@ use crate::scene::fidelity::{flow_error, FidelityTable, LevelCost as LevelRow};
 
 use super::write_atomic;
 
-fn frob_rel(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> f64 {
+pub(super) fn frob_rel(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> f64 {
     let mut d = 0.0;
     let mut n = 0.0;
     for i in 0..2 {
@@ -32,7 +32,7 @@ fn frob_rel(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> f64 {
     (d / n).sqrt()
 }
 
-fn rel(a: f64, b: f64) -> f64 {
+pub(super) fn rel(a: f64, b: f64) -> f64 {
     ((a - b) / b).abs()
 }
 
@@ -77,7 +77,7 @@ fn today() -> String {
 }
 
 /// Temperature rise of the hottest film point above supply [K] (THD solutions).
-fn t_rise(s: &Solution) -> Option<f64> {
+pub(super) fn t_rise(s: &Solution) -> Option<f64> {
     s.thermal.as_ref().map(|t| t.t_max_film_c - s.inputs.operating.supply_temperature_c)
 }
 

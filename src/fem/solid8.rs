@@ -122,13 +122,14 @@ struct Parts {
     kci: SMatrix<f64, 24, 9>,
     kii: SMatrix<f64, 9, 9>,
     m: Matrix24,
-    /// Thermal load `∫ Bᵀ D ε_th dV` on the compatible and the internal unknowns.
-    fc: SVector<f64, 24>,
-    fi: SVector<f64, 9>,
+    /// Thermal load per unit α and unit nodal temperature rise, `∫ Bᵀ D m N_a dV` (column a, m = [1 1 1 0 0 0]ᵀ)
+    /// on the compatible and the internal unknowns: the load of `α ΔT` is `α G ΔT_nodal` (linear in both).
+    gc: SMatrix<f64, 24, 8>,
+    gi: SMatrix<f64, 9, 8>,
 }
 
-/// Integrates the element; `thermal` = (α, nodal temperature rise) adds the thermal-strain load.
-fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, thermal: Option<(f64, &[f64; 8])>) -> Option<Parts> {
+/// Integrates the element.
+fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<Parts> {
     let d_mat = mat.d_matrix();
     let j0 = jacobian(x, &dshape([0.0; 3]));
     let det0 = j0.determinant();
@@ -138,9 +139,11 @@ fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, thermal: Optio
         kci: SMatrix::zeros(),
         kii: SMatrix::zeros(),
         m: Matrix24::zeros(),
-        fc: SVector::zeros(),
-        fi: SVector::zeros(),
+        gc: SMatrix::zeros(),
+        gi: SMatrix::zeros(),
     };
+    // Stress of a unit thermal strain (1, 1, 1, 0, 0, 0).
+    let sigma_unit = d_mat * SVector::<f64, 6>::from_row_slice(&[1.0, 1.0, 1.0, 0.0, 0.0, 0.0]);
     for gp in gauss_points() {
         let d = dshape(gp);
         let j = jacobian(x, &d);
@@ -156,14 +159,9 @@ fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, thermal: Optio
         let db = d_mat * b;
         p.kcc += b.transpose() * db * det;
         let n = shape(gp);
-        // Thermal strain α ΔT (1, 1, 1, 0, 0, 0) at the Gauss point; its stress D ε_th.
-        let sigma_th = thermal.map(|(alpha, dt)| {
-            let t: f64 = n.iter().zip(dt).map(|(na, ta)| na * ta).sum();
-            d_mat * SVector::<f64, 6>::from_row_slice(&[alpha * t, alpha * t, alpha * t, 0.0, 0.0, 0.0])
-        });
-        if let Some(s) = &sigma_th {
-            p.fc += b.transpose() * s * det;
-        }
+        // Thermal strain ΔT(gp) (1, 1, 1, 0, 0, 0) with ΔT(gp) = Σ_a N_a ΔT_a: column a gets Bᵀ D m N_a.
+        let n_row = SMatrix::<f64, 1, 8>::from_row_slice(&n);
+        p.gc += (b.transpose() * sigma_unit * det) * n_row;
         if form == Formulation::Incompatible {
             // Internal fields (1 − ξ_i²): reference gradient −2 ξ_i e_i, mapped with the centre Jacobian.
             let mut bi = SMatrix::<f64, 6, 9>::zeros();
@@ -175,9 +173,7 @@ fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, thermal: Optio
             }
             p.kci += db.transpose() * bi * det;
             p.kii += bi.transpose() * d_mat * bi * det;
-            if let Some(s) = &sigma_th {
-                p.fi += bi.transpose() * s * det;
-            }
+            p.gi += (bi.transpose() * sigma_unit * det) * n_row;
         }
         for a in 0..8 {
             for bb in 0..8 {
@@ -195,7 +191,7 @@ fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, thermal: Optio
 /// (`det J ≤ 0` at a Gauss point).
 #[must_use]
 pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24)> {
-    let p = integrate(x, mat, form, None)?;
+    let p = integrate(x, mat, form)?;
     let k = if form == Formulation::Incompatible {
         let chol = p.kii.cholesky()?;
         p.kcc - p.kci * chol.solve(&p.kci.transpose())
@@ -209,12 +205,20 @@ pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> 
 /// `f = ∫ Bᵀ D ε_th dV`, condensed consistently with the stiffness: `f_c − K_ci K_ii⁻¹ f_i`.
 #[must_use]
 pub fn element_thermal_load(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, alpha: f64, dt: &[f64; 8]) -> Option<SVector<f64, 24>> {
-    let p = integrate(x, mat, form, Some((alpha, dt)))?;
+    Some(element_thermal_operator(x, mat, form)? * SVector::<f64, 8>::from_row_slice(dt) * alpha)
+}
+
+/// The condensed thermal load per unit α and unit nodal temperature rise, `G = G_c − K_ci K_ii⁻¹ G_i`
+/// (column a: the load of ΔT = N_a): [`element_thermal_load`] is `α G ΔT_nodal`. Built once per element, it
+/// turns every later thermal load into a 24 × 8 product.
+#[must_use]
+pub fn element_thermal_operator(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<SMatrix<f64, 24, 8>> {
+    let p = integrate(x, mat, form)?;
     if form == Formulation::Incompatible {
         let chol = p.kii.cholesky()?;
-        Some(p.fc - p.kci * chol.solve(&p.fi))
+        Some(p.gc - p.kci * chol.solve(&p.gi))
     } else {
-        Some(p.fc)
+        Some(p.gc)
     }
 }
 

@@ -1,6 +1,7 @@
-//! The pad-deformation view: one flexible pad's mid-plane cross-section, undeformed (grey) and deformed with
-//! a chosen exaggeration, coloured by the radial displacement; the unwrapped film-face displacement; the
-//! flexible and the rigid film thickness side by side or their difference map; and a gallery of the retained
+//! The pad-deformation view: one deforming pad's mid-plane cross-section, undeformed (grey) and deformed with
+//! a chosen exaggeration, coloured by the radial displacement — mechanical (bending modes), thermal (the pad's
+//! thermal growth, TEHD solves only) or total, selectable; the unwrapped film-face displacement; the film
+//! with and without that displacement side by side or their difference map; and a gallery of the retained
 //! mode shapes with their frequencies. Hover reads the value in µm.
 //!
 //! The drawables come from [`crate::scene::deformation`]; this file only lays them out and paints them.
@@ -12,7 +13,7 @@ use egui::{Align2, Color32, ColorImage, FontId, Pos2, Rect, RichText, Sense, Sha
 
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
-use crate::scene::deformation::{PadDeformation, Section};
+use crate::scene::deformation::{deforms, Displacement, PadDeformation, Section};
 use crate::scene::field::PadMap;
 use crate::scene::summary::sig4;
 
@@ -42,6 +43,8 @@ pub struct DeformationView {
     /// A fixed exaggeration (`None`: automatic).
     exaggeration: Option<f64>,
     films: FilmMaps,
+    /// The displacement drawn (thermal and total need a TEHD solve).
+    shown: Displacement,
     scene: Option<(usize, Option<f64>, PadDeformation)>,
     /// Keyed by pad and map name.
     textures: HashMap<(usize, &'static str), TextureHandle>,
@@ -57,16 +60,21 @@ impl DeformationView {
     }
 
     fn scene(&mut self, solution: &Solution, pad: usize) -> Option<&PadDeformation> {
-        if !self.scene.as_ref().is_some_and(|(p, e, _)| *p == pad && *e == self.exaggeration) {
-            self.scene = PadDeformation::new(solution, pad, self.exaggeration).map(|d| (pad, self.exaggeration, d));
+        let shown = self.shown;
+        let thermal = solution.pads.get(pad).is_some_and(|p| p.thermal_growth.is_some());
+        let same = |d: &PadDeformation| d.shown == shown || (!thermal && d.shown == Displacement::Mechanical);
+        if !self.scene.as_ref().is_some_and(|(p, e, d)| *p == pad && *e == self.exaggeration && same(d)) {
+            self.scene = PadDeformation::new(solution, pad, self.exaggeration, shown).map(|d| (pad, self.exaggeration, d));
+            // The maps' textures hold the previous displacement.
+            self.textures.clear();
         }
         self.scene.as_ref().map(|(_, _, d)| d)
     }
 }
 
-/// The flexible pads of a solution, and the most loaded of them.
+/// The deforming pads of a solution (bending modes or thermal growth), and the most loaded of them.
 fn flexible_pads(solution: &Solution) -> (Vec<usize>, Option<usize>) {
-    let pads: Vec<usize> = solution.pads.iter().filter(|p| p.flex.is_some()).map(|p| p.index).collect();
+    let pads: Vec<usize> = solution.pads.iter().filter(|p| deforms(p)).map(|p| p.index).collect();
     let load = |k: usize| solution.pads[k].force_n[0].hypot(solution.pads[k].force_n[1]);
     let loaded = pads.iter().copied().max_by(|&a, &b| load(a).total_cmp(&load(b)));
     (pads, loaded)
@@ -87,21 +95,24 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
         ui.label(RichText::new("The pads of this case are rigid").heading());
         ui.label(
             "Set physics.pad_modes to 1–3 (Physics in the editor) to give each tilting pad its lowest bending modes \
-             on the pivot (a 3-D finite-element pad reduced to pseudo-modes, model.md §5); this view then shows the \
-             deformed pads, the film they make and the mode shapes. The shipped case compressor-bearing-flexible \
-             shows it.",
+             on the pivot (a 3-D finite-element pad reduced to pseudo-modes, model.md §5), or a pad expansion \
+             coefficient with the THD model for its thermal growth; this view then shows the deformed pads, the \
+             film they make and the mode shapes. The shipped cases compressor-bearing-flexible and fillon-a-tehd \
+             show it.",
         );
         return;
     };
     let pad = view.pad.filter(|p| pads.contains(p)).unwrap_or(default_pad);
-    controls_ui(ui, view, &pads, pad);
+    let thermal = solution.pads[pad].thermal_growth.is_some();
+    controls_ui(ui, view, &pads, pad, thermal);
     let Some(scene) = view.scene(solution, pad).cloned() else {
         ui.label(format!("Pad {pad}: its deformation cannot be drawn (the mode shapes do not match the pad's grid)."));
         return;
     };
     let modes: Vec<String> =
         scene.modes.iter().map(|m| format!("mode {} at {} Hz ({} µm)", m.mode + 1, sig4(m.frequency_hz), sig4(m.amplitude_m * MICRONS))).collect();
-    ui.label(format!("Pad {pad}: mid-plane section drawn ×{}; retained {}", sig4(scene.exaggeration), modes.join(", ")));
+    let retained = if modes.is_empty() { "no bending modes (rigid pads)".to_string() } else { format!("retained {}", modes.join(", ")) };
+    ui.label(format!("Pad {pad}: mid-plane section drawn ×{}; {retained}", sig4(scene.exaggeration)));
     let full = ui.available_rect_before_wrap();
     let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, 44.0));
     let response = ui.allocate_rect(avail, Sense::hover());
@@ -114,7 +125,8 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
 
     let u = &scene.displacement;
     let range = symmetric(u.min, u.max);
-    let title = format!("Pad {pad} at mid-plane — deformation ×{}", sig4(scene.exaggeration));
+    let kind = scene.shown.label().to_lowercase();
+    let title = format!("Pad {pad} at mid-plane — {kind} deformation ×{}", sig4(scene.exaggeration));
     let mut hover = section_ui(&painter, section_rect, &scene.section, range, hover_pos, &title, ui.visuals().text_color());
     hover = hover.or(maps_ui(ui, view, &painter, maps_rect, &scene, range, hover_pos));
     hover = hover.or(gallery_ui(ui, view, &painter, gallery_rect, &scene, hover_pos));
@@ -122,20 +134,24 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
         Some(h) => format!("{}: {:.3} µm", h.what, h.value_m * MICRONS),
         None => "Hover over the section, a map or a mode to read the value in µm.".into(),
     };
-    ui.label(line);
+    ui.horizontal(|ui| {
+        ui.label(format!("Colour scale: {kind} u from {} to {} µm", sig4(range.0 * MICRONS), sig4(range.1 * MICRONS)));
+        ui.separator();
+        ui.label(line);
+    });
     ui.label(
         RichText::new(format!(
-            "Radial displacement of the pad (mechanical: the solved bending-mode amplitudes; thermal growth is not modelled \
-             yet, so this is also the total), positive away from the journal. Pad thickness {:.2} mm. Rigid film: the film \
-             at the same pad positions without the bending.",
+            "Radial displacement of the pad, positive away from the journal: mechanical (the solved bending-mode amplitudes), \
+             thermal (the pad's growth from its temperature, TEHD; the journal's uniform growth is not the pad's) or their \
+             total. Pad thickness {:.2} mm. Film h − u: the film at the same pad positions without the shown displacement.",
             scene.thickness_m * 1e3
         ))
         .small(),
     );
 }
 
-fn controls_ui(ui: &mut Ui, view: &mut DeformationView, pads: &[usize], pad: usize) {
-    ui.horizontal(|ui| {
+fn controls_ui(ui: &mut Ui, view: &mut DeformationView, pads: &[usize], pad: usize, thermal: bool) {
+    ui.horizontal_wrapped(|ui| {
         let label = ui.label("Pad");
         let mut chosen = pad;
         egui::ComboBox::from_id_salt("deformation-pad")
@@ -159,7 +175,19 @@ fn controls_ui(ui: &mut Ui, view: &mut DeformationView, pads: &[usize], pad: usi
             ui.add(egui::DragValue::new(e).range(1.0..=1e6).speed(10.0).prefix("×")).labelled_by(label.id);
         }
         ui.separator();
-        ui.selectable_value(&mut view.films, FilmMaps::SideBySide, "Rigid and flexible film");
+        ui.label("Colour by");
+        for d in Displacement::ALL {
+            let enabled = thermal || d == Displacement::Mechanical;
+            let selected = view.shown == d || (!thermal && d == Displacement::Mechanical);
+            let response = ui
+                .add_enabled(enabled, egui::Button::selectable(selected, d.label()))
+                .on_disabled_hover_text("Thermal growth needs a TEHD solve: the THD model with a pad expansion coefficient (thermal.pad_expansion_ppm_per_k).");
+            if response.clicked() {
+                view.shown = d;
+            }
+        }
+        ui.separator();
+        ui.selectable_value(&mut view.films, FilmMaps::SideBySide, "Film with and without u");
         ui.selectable_value(&mut view.films, FilmMaps::Difference, "Difference map");
     });
 }
@@ -286,7 +314,8 @@ fn maps_ui(ui: &Ui, view: &mut DeformationView, painter: &egui::Painter, rect: R
     let upper = Rect::from_min_size(body.min, Vec2::new(body.width(), half));
     let lower = Rect::from_min_max(Pos2::new(body.left(), body.top() + half), body.max);
     let bar = |r: Rect| Rect::from_min_max(Pos2::new(rect.right() - bar_w + 8.0, r.top() + 24.0), Pos2::new(rect.right() - bar_w + 22.0, r.bottom() - 10.0));
-    let u = MapSpec { map: &scene.displacement, name: "u", title: "Film-face radial displacement u", range };
+    let u_title = format!("Film-face radial displacement u ({})", scene.shown.label().to_lowercase());
+    let u = MapSpec { map: &scene.displacement, name: "u", title: &u_title, range };
     let mut hover = map_ui(ui, view, painter, upper, &u, hover_pos);
     colour_bar(painter, bar(upper), ColorMap::Viridis, "u [µm]", MICRONS, range, text);
     match view.films {
@@ -295,14 +324,14 @@ fn maps_ui(ui: &Ui, view: &mut DeformationView, painter: &egui::Painter, rect: R
             let w = lower.width() * 0.5;
             let left = Rect::from_min_size(lower.min, Vec2::new(w, lower.height()));
             let right = Rect::from_min_max(Pos2::new(lower.left() + w, lower.top()), lower.max);
-            let flexible = MapSpec { map: &scene.film_flexible, name: "h", title: "Film h, flexible pad", range: h };
-            let rigid = MapSpec { map: &scene.film_rigid, name: "h-rigid", title: "Film h − u, rigid pad", range: h };
+            let flexible = MapSpec { map: &scene.film_flexible, name: "h", title: "Film h", range: h };
+            let rigid = MapSpec { map: &scene.film_rigid, name: "h-rigid", title: "Film h − u, without u", range: h };
             hover = hover.or(map_ui(ui, view, painter, left, &flexible, hover_pos));
             hover = hover.or(map_ui(ui, view, painter, right, &rigid, hover_pos));
             colour_bar(painter, bar(lower), ColorMap::Viridis, "h [µm]", MICRONS, h, text);
         }
         FilmMaps::Difference => {
-            let difference = MapSpec { map: &scene.displacement, name: "u", title: "Flexible − rigid film thickness", range };
+            let difference = MapSpec { map: &scene.displacement, name: "u", title: "Film h − (h − u)", range };
             hover = hover.or(map_ui(ui, view, painter, lower, &difference, hover_pos));
             colour_bar(painter, bar(lower), ColorMap::Viridis, "Δh [µm]", MICRONS, range, text);
         }

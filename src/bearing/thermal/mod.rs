@@ -118,6 +118,13 @@ pub struct ThermalReport {
     pub journal_growth_m: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pad_growth_range_m: Option<[f64; 2]>,
+    /// TEHD, of `thermal_seconds`: building the growth model (pad solids assembled and factorised, thermal-load
+    /// operators) and the growth steps of every outer iteration (pad conduction for BC1, thermal loads,
+    /// solves) [s].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub growth_setup_seconds: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub growth_seconds: Option<f64>,
     pub warnings: Vec<String>,
 }
 

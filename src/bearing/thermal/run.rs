@@ -288,9 +288,11 @@ impl ThdRun {
         if Growth::of(case).is_off() {
             return Ok(0.0);
         }
+        let started = Instant::now();
         if self.tehd.is_none() {
             let meshes: Vec<_> = thermal.pads.iter().map(|p| p.conduction.as_ref().map(|c| c.mesh.clone())).collect();
             self.tehd = TehdModel::new(case, model, &meshes)?;
+            self.report.growth_setup_seconds = Some(started.elapsed().as_secs_f64());
         }
         let Some(tehd) = self.tehd.as_mut() else { return Ok(0.0) };
         let mut pad_c = Vec::with_capacity(sols.len());
@@ -307,6 +309,7 @@ impl ThdRun {
         let change = self.growth.as_ref().map_or_else(|| g.magnitude(), |old| g.change(old));
         self.report.growth_change_m.push(change);
         self.growth_next = Some(g);
+        *self.report.growth_seconds.get_or_insert(0.0) += started.elapsed().as_secs_f64();
         Ok(change)
     }
 
