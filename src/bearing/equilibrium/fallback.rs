@@ -52,13 +52,10 @@ pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cance
         Err(s) => ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason)),
     }
     if let Some((pad, below_n, above_n)) = ctx.force_gap {
-        // The load falls in a jump of the force law along it: the scan and the continuation would meet the
-        // same jump (every fraction of the load falls in it too).
+        // The force along the load jumps from below it to above it (the ray's bracket): the scan and the
+        // continuation would meet the same jump (every fraction of the load falls in it too).
         let w = external_load(ctx.op, 1.0);
-        let load_n = w[0].hypot(w[1]);
-        if below_n < load_n && above_n > load_n {
-            return Err(SolveError::ForceGap { pad, below_n, above_n, load_n });
-        }
+        return Err(SolveError::ForceGap { pad, below_n, above_n, load_n: w[0].hypot(w[1]) });
     }
     if let Some(u_scan) = scan_along_load(model, &centred, ctx, cancel)? {
         match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, "scan along the load + Newton") {

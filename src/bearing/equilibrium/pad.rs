@@ -86,21 +86,26 @@ fn admissible_interval(pm: &PadModel, local: &[f64], slot: usize) -> Result<(f64
     let hc = film.nodal_thickness(&base);
     let phi = &film.geom.shapes[slot].node;
     let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-    let contact = |i: usize, h: f64| FilmError::Contact { h_min_m: h, theta_deg: film.geom.node_theta[i].to_degrees(), z_m: film.geom.node_z[i] };
-    for (i, (&h, &f)) in hc.iter().zip(phi).enumerate() {
+    for (&h, &f) in hc.iter().zip(phi) {
         if f < 0.0 {
             hi = hi.min(h / -f);
         } else if f > 0.0 {
             lo = lo.max(-h / f);
         } else if h <= 0.0 {
-            return Err(contact(i, h));
+            return Err(thinnest(pm, &hc));
         }
     }
     if lo >= hi {
-        let (h, i) = hc.iter().enumerate().fold((f64::INFINITY, 0), |m, (i, &v)| if v < m.0 { (v, i) } else { m });
-        return Err(contact(i, h));
+        return Err(thinnest(pm, &hc));
     }
     Ok((lo, hi))
+}
+
+/// The film closed at its thinnest node (nodal thicknesses `h`), as a contact.
+fn thinnest(pm: &PadModel, h: &[f64]) -> FilmError {
+    let g = &pm.film.geom;
+    let (i, h_min_m) = h.iter().enumerate().fold((0, f64::INFINITY), |m, (i, &v)| if v < m.1 { (i, v) } else { m });
+    FilmError::Contact { h_min_m, theta_deg: g.node_theta[i].to_degrees(), z_m: g.node_z[i] }
 }
 
 /// Tilt solve: Newton safeguarded by bisection on the admissible interval (`slot`: the tilt's local index).
@@ -207,7 +212,7 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
             if loaded && !state.unloaded && rel > ctx.params.pad_tol && (blo == lo + margin || bhi == hi - margin) {
                 // The film's own moment presses an edge of the pad onto the journal over the whole admissible
                 // range (an unloaded negative-preload pad leaning on its edge): the film closes there.
-                return Err(closed_edge(pm, &local));
+                return Err(thinnest(pm, &pm.film.nodal_thickness(&local)));
             }
             last = Some(state);
             break;
@@ -216,14 +221,6 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
         d = next;
     }
     last.map(|s| if s.unloaded { PadState { residual: 0.0, ..s } } else { s }).ok_or_else(|| FilmError::Input("no tilt iteration".into()))
-}
-
-/// The film at its thinnest node, as a contact.
-fn closed_edge(pm: &PadModel, local: &[f64]) -> FilmError {
-    let film = &pm.film;
-    let h = film.nodal_thickness(local);
-    let (i, hmin) = h.iter().enumerate().fold((0, f64::INFINITY), |m, (i, &v)| if v < m.1 { (i, v) } else { m });
-    FilmError::Contact { h_min_m: hmin, theta_deg: film.geom.node_theta[i].to_degrees(), z_m: film.geom.node_z[i] }
 }
 
 /// Tilt samples across the loaded side when looking for a loaded root beyond the onset of pressure.

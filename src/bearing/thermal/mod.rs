@@ -38,7 +38,7 @@ use crate::physics::energy::{BalanceInputs, Exchange, FilmHeat, Injection, Oil};
 use crate::fem::SolverError;
 use crate::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
 
-use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
+use super::equilibrium::{Cancel, Equilibrium, EquilibriumParams, NoSuspend, Progress};
 use super::error::{Budget, Iteration, SolveError};
 use super::model::{BearingModel, OperatingPoint};
 use super::anderson::{flatten, unflatten, Anderson};
@@ -306,12 +306,14 @@ fn equilibrium_params(last_change: f64, params: &ThermalParams) -> EquilibriumPa
     }
 }
 
-/// The equilibrium warm-started from `u`, retried from scratch if that fails.
+/// The equilibrium warm-started from `u`, retried from scratch if that fails, to its end: the resumable
+/// form's rule ([`resumable::equilibrium_part`]) without pauses.
 fn warm_equilibrium(model: &mut BearingModel, op: &OperatingPoint, params: EquilibriumParams, u: Option<&[f64]>, cancel: &dyn Cancel) -> Result<Equilibrium, SolveError> {
-    match solve_equilibrium(model, op, params, u, cancel) {
-        Err(SolveError::Cancelled) => Err(SolveError::Cancelled),
-        Err(_) if u.is_some() => solve_equilibrium(model, op, params, None, cancel),
-        r => r,
+    let pending = resumable::PendingEquilibrium::new(params, u.map(<[f64]>::to_vec));
+    match resumable::equilibrium_part(model, op, pending, &NoSuspend(cancel))? {
+        Progress::Done(eq) => Ok(eq),
+        // NoSuspend never asks for a pause.
+        Progress::Suspended(p) => Err(SolveError::Invalid(format!("equilibrium paused unexpectedly after {} parts", p.parts()))),
     }
 }
 
