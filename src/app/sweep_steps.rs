@@ -10,24 +10,9 @@ use std::collections::VecDeque;
 use web_time::Instant;
 
 use crate::bearing::stages::{Request, Stages, Step};
-use crate::bearing::{Cancel, SolveError};
+use crate::bearing::{Cancel, FrameBudget, NoCancel, SolveError};
 use crate::scene::sweep::point_override;
 use crate::study::{PointError, Row, Runner};
-
-/// Asks the stages to pause once the frame's budget is spent.
-struct FrameBudget {
-    start: Instant,
-    budget_s: f64,
-}
-
-impl Cancel for FrameBudget {
-    fn cancelled(&self) -> bool {
-        false
-    }
-    fn suspend(&self) -> bool {
-        self.start.elapsed().as_secs_f64() >= self.budget_s
-    }
-}
 
 /// The points of a sweep still to solve, and the stages that solve them.
 pub struct SteppedPoints {
@@ -51,7 +36,7 @@ impl SteppedPoints {
     /// Works on the next points until `budget_s` is spent (at least one step); returns the points finished,
     /// as `(value, row)`.
     pub fn poll(&mut self, budget_s: f64) -> Vec<(f64, Row)> {
-        let cancel = FrameBudget { start: Instant::now(), budget_s };
+        let cancel = FrameBudget::new(&NoCancel, Instant::now(), budget_s);
         let mut rows = Vec::new();
         while let Some(&x) = self.left.front() {
             let overrides = point_override(&self.key, x);

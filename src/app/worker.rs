@@ -217,23 +217,7 @@ mod web {
 
     use super::{Event, Running, Superseded};
     use crate::bearing::stages::Stages;
-    use crate::bearing::Cancel;
-
-    /// Cancels a superseded job, and suspends the equilibrium once the frame's budget is spent.
-    struct Budgeted {
-        superseded: Superseded,
-        start: Instant,
-        budget_s: f64,
-    }
-
-    impl Cancel for Budgeted {
-        fn cancelled(&self) -> bool {
-            self.superseded.cancelled()
-        }
-        fn suspend(&self) -> bool {
-            self.start.elapsed().as_secs_f64() >= self.budget_s
-        }
-    }
+    use crate::bearing::FrameBudget;
 
     pub struct Stepper {
         stages: Stages,
@@ -256,7 +240,8 @@ mod web {
             let start = Instant::now();
             let mut events = Vec::new();
             while let Some(running) = self.running.as_mut() {
-                let cancel = Budgeted { superseded: Superseded { latest: latest.clone(), job: running.job }, start, budget_s };
+                let superseded = Superseded { latest: latest.clone(), job: running.job };
+                let cancel = FrameBudget::new(&superseded, start, budget_s);
                 let (event, finished) = running.step(&mut self.stages, &cancel);
                 events.extend(event);
                 if finished {

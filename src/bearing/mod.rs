@@ -31,7 +31,7 @@ pub mod thermal_pad;
 pub use coefficients::{FullCoefficients, ReducedCoefficients};
 pub use coordinates::{Coord, DofMap, PadDof};
 pub use equilibrium::EquilibriumParams;
-pub use progress::{Cancel, NoCancel, NoSuspend, Progress};
+pub use progress::{Cancel, FrameBudget, NoCancel, NoSuspend, Progress};
 pub use report::SolveReport;
 pub use error::SolveError;
 pub use job::{solve_case, solve_operating_point, solve_point};

@@ -21,6 +21,30 @@ impl Cancel for NoSuspend<'_> {
     }
 }
 
+/// Suspends once a frame's time budget, counted from `start`, is spent (the web build); cancels when `inner`
+/// does.
+pub struct FrameBudget<'a> {
+    inner: &'a dyn Cancel,
+    start: web_time::Instant,
+    budget_s: f64,
+}
+
+impl<'a> FrameBudget<'a> {
+    #[must_use]
+    pub fn new(inner: &'a dyn Cancel, start: web_time::Instant, budget_s: f64) -> Self {
+        Self { inner, start, budget_s }
+    }
+}
+
+impl Cancel for FrameBudget<'_> {
+    fn cancelled(&self) -> bool {
+        self.inner.cancelled()
+    }
+    fn suspend(&self) -> bool {
+        self.start.elapsed().as_secs_f64() >= self.budget_s
+    }
+}
+
 /// Never cancels.
 pub struct NoCancel;
 impl Cancel for NoCancel {
