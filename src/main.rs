@@ -38,6 +38,19 @@ fn run_workbench() -> Result<(), ()> {
 
 #[cfg(target_arch = "wasm32")]
 fn main() {
+    // On the page the workbench starts; in the solver's web worker (no window, `web/worker.js`) the program
+    // only answers jobs through `tiltpad_worker_receive`.
     #[cfg(feature = "gui")]
-    tiltpad::app::web::start();
+    if web_sys::window().is_some() {
+        tiltpad::app::web::start();
+    } else {
+        tiltpad::app::web_solver::init_worker();
+    }
+}
+
+/// Web worker entry: one job from the page, as bytes (`web/worker.js` calls it for each message).
+#[cfg(all(target_arch = "wasm32", feature = "gui"))]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn tiltpad_worker_receive(bytes: &[u8]) {
+    tiltpad::app::web_solver::receive(bytes);
 }

@@ -30,6 +30,8 @@ pub mod sweep_steps;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+#[cfg(target_arch = "wasm32")]
+pub mod web_solver;
 pub mod worker;
 
 use std::sync::Arc;

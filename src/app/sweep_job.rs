@@ -3,14 +3,15 @@
 //! [`SweepTable`].
 //!
 //! Where it runs: on native a named thread solves the points and sends each row over a channel (the UI
-//! thread takes them in [`SweepJob::poll`] and asks for a repaint); on the web there are no threads, so
-//! `poll` steps the points within the frame's solve budget ([`super::sweep_steps`]: a point spreads over
-//! frames like the edited case's solve). Dropping the job (a new sweep, closing the app) stops it after the
-//! point under way (native) or at once (web).
+//! thread takes them in [`SweepJob::poll`] and asks for a repaint); on the web a web worker of its own solves
+//! them ([`super::web_solver::SweepLink`]; where no worker runs, `poll` steps the points within the frame's
+//! solve budget, [`super::sweep_steps`]). Dropping the job (a new sweep, closing the app) stops it after the
+//! point under way (native) or at once (web: the worker is terminated).
 
 #[cfg(not(target_arch = "wasm32"))]
 use crate::scene::sweep::point_override;
 use crate::scene::sweep::{SweepSpec, SweepSpecError, SweepTable};
+#[cfg(not(target_arch = "wasm32"))]
 use crate::study::Runner;
 
 /// A sweep under way or finished.
@@ -23,7 +24,7 @@ pub struct SweepJob {
     #[cfg(not(target_arch = "wasm32"))]
     stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
     #[cfg(target_arch = "wasm32")]
-    points: super::sweep_steps::SteppedPoints,
+    points: super::web_solver::SweepLink,
 }
 
 fn base_overrides(spec: &SweepSpec) -> Vec<String> {
@@ -38,7 +39,6 @@ impl SweepJob {
     pub fn start(text: String, spec: &SweepSpec, repaint: &egui::Context) -> Result<Self, SweepSpecError> {
         let values = spec.values()?;
         let total = values.len();
-        let runner = Runner::new(text, base_overrides(spec), true);
         let table = SweepTable::new(&spec.key);
         #[cfg(not(target_arch = "wasm32"))]
         {
@@ -46,7 +46,7 @@ impl SweepJob {
             let (tx, rows) = std::sync::mpsc::channel();
             let stop = std::sync::Arc::new(AtomicBool::new(false));
             let (flag, key, ctx) = (stop.clone(), spec.key.clone(), repaint.clone());
-            let mut runner = runner;
+            let mut runner = Runner::new(text, base_overrides(spec), true);
             let spawned = std::thread::Builder::new().name("tiltpad-sweep".into()).spawn(move || {
                 for (i, x) in values.into_iter().enumerate() {
                     if flag.load(Ordering::Relaxed) {
@@ -66,8 +66,8 @@ impl SweepJob {
         }
         #[cfg(target_arch = "wasm32")]
         {
-            let _ = repaint;
-            let points = super::sweep_steps::SteppedPoints::new(runner, &spec.key, values);
+            let order = super::web_solver::SweepOrder { text, overrides: base_overrides(spec), key: spec.key.clone(), values };
+            let points = super::web_solver::SweepLink::start(order, repaint);
             Ok(Self { spec: spec.clone(), table, total, points })
         }
     }

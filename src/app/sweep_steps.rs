@@ -33,6 +33,19 @@ impl SteppedPoints {
         Self { runner, stages: Stages::new(), key: key.to_string(), left: values.into(), solved: 0, seconds: 0.0 }
     }
 
+    /// Numbers the rows from `first` on (the rest of a sweep whose first points were solved elsewhere).
+    #[must_use]
+    pub fn numbered_from(mut self, first: usize) -> Self {
+        self.solved = first;
+        self
+    }
+
+    /// All points are solved.
+    #[must_use]
+    pub fn finished(&self) -> bool {
+        self.left.is_empty()
+    }
+
     /// Works on the next points until `budget_s` is spent (at least one step); returns the points finished,
     /// as `(value, row)`.
     pub fn poll(&mut self, budget_s: f64) -> Vec<(f64, Row)> {

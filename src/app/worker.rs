@@ -5,12 +5,12 @@
 //!   and wake the UI with `request_repaint`. A newer job cancels the running one: the stages'
 //!   [`Cancel`] hook compares the job's id with the latest submitted id, so even a long equilibrium stops
 //!   within one film solve.
-//! - Web (no threads): the app calls [`Worker::poll`] every frame and the stages step until a time
-//!   budget is spent; one step is one stage, or the part of an equilibrium solve that fits the budget (the
-//!   coupled Newton suspends between pad placements and iterations, [`crate::bearing::Cancel::suspend`],
-//!   and the next frame resumes from its iterate), or one THD outer iteration or the part of its
-//!   equilibrium that fits ([`crate::bearing::thermal::resumable`]). Isothermal speed-sweep points are
-//!   split the same way; a THD speed-sweep point is one step.
+//! - Web: a web worker owns the stages ([`super::web_solver`]); jobs and events cross as bytes. Where no
+//!   worker can run, the app calls [`Worker::poll`] every frame and the stages step until a time budget is
+//!   spent; one step is one stage, or the part of an equilibrium solve that fits the budget (the coupled
+//!   Newton suspends between pad placements and iterations, [`crate::bearing::Cancel::suspend`], and the
+//!   next frame resumes from its iterate), or one THD outer iteration or the part of its equilibrium that
+//!   fits ([`crate::bearing::thermal::resumable`]).
 //!
 //! A job runs in two phases: first the solution and the frequency sweep (what most views need, so they
 //! update as soon as possible), then the speed sweep if the coefficient view asked for it.
@@ -22,7 +22,7 @@ use crate::bearing::stages::{Outcome, Request, StageId, Stages, Step};
 use crate::bearing::{Cancel, SolveError};
 
 /// What the worker reports.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub enum Event {
     Progress { job: u64, stage: StageId, fraction: f64 },
     /// A phase finished: the outcome so far (the speed sweep only after the second phase).
@@ -31,9 +31,9 @@ pub enum Event {
 }
 
 /// Cancels a job once a newer one has been submitted.
-struct Superseded {
-    latest: Arc<AtomicU64>,
-    job: u64,
+pub(super) struct Superseded {
+    pub latest: Arc<AtomicU64>,
+    pub job: u64,
 }
 
 impl Cancel for Superseded {
@@ -43,8 +43,9 @@ impl Cancel for Superseded {
 }
 
 /// One job being worked on, stepped by either runner.
-struct Running {
-    job: u64,
+#[derive(serde::Serialize, serde::Deserialize)]
+pub(super) struct Running {
+    pub job: u64,
     request: Request,
     /// False while working on the first phase (no speed sweep).
     second_phase: bool,
@@ -61,7 +62,7 @@ impl Running {
     }
 
     /// One step of the stages; returns the event to report and whether the job is finished.
-    fn step(&mut self, stages: &mut Stages, cancel: &dyn Cancel) -> (Option<Event>, bool) {
+    pub fn step(&mut self, stages: &mut Stages, cancel: &dyn Cancel) -> (Option<Event>, bool) {
         let job = self.job;
         match stages.step(&self.phase_request(), cancel) {
             Ok(Step::Pending { stage, fraction }) => (Some(Event::Progress { job, stage, fraction }), false),
@@ -84,7 +85,7 @@ pub struct Worker {
     #[cfg(not(target_arch = "wasm32"))]
     native: native::Thread,
     #[cfg(target_arch = "wasm32")]
-    web: web::Stepper,
+    web: super::web_solver::Link,
 }
 
 impl Worker {
@@ -96,7 +97,7 @@ impl Worker {
             #[cfg(not(target_arch = "wasm32"))]
             native: native::Thread::spawn(latest.clone(), repaint),
             #[cfg(target_arch = "wasm32")]
-            web: web::Stepper::new(repaint),
+            web: super::web_solver::Link::new(repaint),
             latest,
             next_id: 0,
             busy_job: None,
@@ -125,7 +126,7 @@ impl Worker {
             self.native.drain()
         };
         #[cfg(target_arch = "wasm32")]
-        let events = self.web.run_for(budget_s, &self.latest);
+        let events = self.web.poll(budget_s, &self.latest);
         let latest = self.latest.load(Ordering::Relaxed);
         for e in &events {
             match e {
@@ -143,7 +144,7 @@ impl Worker {
     }
 }
 
-fn event_job(e: &Event) -> u64 {
+pub(super) fn event_job(e: &Event) -> u64 {
     match e {
         Event::Progress { job, .. } | Event::Solved { job, .. } | Event::Failed { job, .. } => *job,
     }
@@ -204,57 +205,6 @@ mod native {
 
         pub fn drain(&self) -> Vec<Event> {
             self.events.try_iter().collect()
-        }
-    }
-}
-
-#[cfg(target_arch = "wasm32")]
-mod web {
-    use std::sync::atomic::AtomicU64;
-    use std::sync::Arc;
-
-    use web_time::Instant;
-
-    use super::{Event, Running, Superseded};
-    use crate::bearing::stages::Stages;
-    use crate::bearing::FrameBudget;
-
-    pub struct Stepper {
-        stages: Stages,
-        running: Option<Running>,
-        repaint: egui::Context,
-    }
-
-    impl Stepper {
-        pub fn new(repaint: egui::Context) -> Self {
-            Self { stages: Stages::new(), running: None, repaint }
-        }
-
-        pub fn start(&mut self, running: Running) {
-            self.running = Some(running);
-            self.repaint.request_repaint();
-        }
-
-        /// Steps the current job until `budget_s` is spent (at least one step per call).
-        pub fn run_for(&mut self, budget_s: f64, latest: &Arc<AtomicU64>) -> Vec<Event> {
-            let start = Instant::now();
-            let mut events = Vec::new();
-            while let Some(running) = self.running.as_mut() {
-                let superseded = Superseded { latest: latest.clone(), job: running.job };
-                let cancel = FrameBudget::new(&superseded, start, budget_s);
-                let (event, finished) = running.step(&mut self.stages, &cancel);
-                events.extend(event);
-                if finished {
-                    self.running = None;
-                }
-                if start.elapsed().as_secs_f64() >= budget_s {
-                    break;
-                }
-            }
-            if self.running.is_some() {
-                self.repaint.request_repaint();
-            }
-            events
         }
     }
 }

@@ -10,14 +10,14 @@
 //! `C_jj − C_jp K_pp⁻¹ K_pj − K_jp K_pp⁻¹ C_pj + K_jp K_pp⁻¹ C_pp K_pp⁻¹ K_pj`.
 
 use nalgebra::{Complex, DMatrix};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::coordinates::{Coord, JOURNAL_DOFS};
 use super::equilibrium::Equilibrium;
 use super::model::BearingModel;
 
 /// Full coefficient matrices and what each row means.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FullCoefficients {
     /// The coordinate of each row and column: journal x, y, then each pad's coordinates.
     pub coords: Vec<Coord>,
@@ -38,7 +38,7 @@ impl FullCoefficients {
 }
 
 /// Reduced 2×2 journal coefficients (rows/cols x, y).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ReducedCoefficients {
     /// Excitation frequency ω [rad/s].
     pub omega_rad_s: f64,

@@ -1,11 +1,12 @@
 //! Errors of a bearing solve. Each says what failed and where; none is ever replaced by NaN.
 
+use serde::{Deserialize, Serialize};
 use crate::model::CaseError;
 use crate::physics::reynolds::FilmError;
 use thiserror::Error;
 
 /// An iteration that runs under a budget ([`SolveError::BudgetExceeded`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Iteration {
     /// The thermal (THD) outer loop: equilibrium, film and pad temperatures, viscosity update.
     Thermal,
@@ -34,7 +35,7 @@ impl std::fmt::Display for Iteration {
 }
 
 /// The budget that stopped an iteration.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Budget {
     /// At most this many iterations.
     Iterations(usize),
@@ -54,7 +55,7 @@ impl std::fmt::Display for Budget {
     }
 }
 
-#[derive(Debug, Clone, PartialEq, Error)]
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
 pub enum SolveError {
     #[error(transparent)]
     Case(#[from] CaseError),

@@ -24,6 +24,7 @@
 //! Not in the model: the extra phase lag between nozzle pressure and force the thesis measured (its §6.3);
 //! the valve's linearisation beyond ~10 % of full-scale signal.
 
+use serde::{Deserialize, Serialize};
 use nalgebra::{Complex, DMatrix, DVector};
 
 use crate::physics::hydraulics::pipeline::Truncation;
@@ -78,7 +79,7 @@ pub enum Mounting {
 }
 
 /// The bearing linearised at its equilibrium: everything the FRFs need, computed once.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BearingDynamics {
     pub k: DMatrix<f64>,
     pub c: DMatrix<f64>,

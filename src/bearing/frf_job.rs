@@ -9,7 +9,7 @@
 //! Bernoulli at the supply and return pressures; each line's bulk modulus with entrained air at the port's
 //! static pressure (`β_air = 1.4 p_abs`, adiabatic); laminar line friction at the injected oil's viscosity.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use web_time::Instant;
 
 use crate::model::hydraulics::Hydraulics as HydraulicsCase;
@@ -35,7 +35,7 @@ const ATMOSPHERE: f64 = 101_325.0;
 const AIR_POLYTROPIC: f64 = 1.4;
 
 /// The bearing linearised at its equilibrium, ready for FRF sweeps.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FrfModel {
     pub dynamics: BearingDynamics,
     /// Static injection pressure of each port [Pa] (mean over its pads).

@@ -1,10 +1,10 @@
 //! What a solve did: iterations, residuals, time, warnings ([`SolveReport`]). Every equilibrium returns
 //! one; the thermal loop keeps its own ([`super::ThermalReport`]) around the equilibria it runs.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// What an equilibrium solve did.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct SolveReport {
     /// Outer (journal) Newton iterations, summed over methods and continuation steps (and for a THD
     /// solve over every equilibrium of the thermal loop: counts and `seconds` are the whole solve's).

@@ -1,6 +1,6 @@
 //! Results of a bearing solve, in SI, self-describing (the resolved inputs travel with them).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::model::{Case, LoadSpec, PadFilmBc};
 use crate::physics::energy::FilmHeat;
@@ -11,7 +11,7 @@ use super::report::SolveReport;
 use super::thermal::ThermalReport;
 
 /// Quantities derived from the inputs that a reader of a result file needs.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Derived {
     pub assembled_clearance_m: f64,
     pub pad_clearances_m: Vec<f64>,
@@ -24,7 +24,7 @@ pub struct Derived {
 }
 
 /// Nodal fields of one pad on its grid (z fastest).
-#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 pub struct PadField {
     /// Circumferential node positions: arc length from the leading edge [m].
     pub s_m: Vec<f64>,
@@ -63,7 +63,7 @@ impl PadField {
 }
 
 /// Per-pad results.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PadResult {
     pub index: usize,
     /// Pad tilt about the pivot [rad] (counter-clockwise; > 0 closes the trailing edge); `None` for fixed sectors.
@@ -91,10 +91,10 @@ pub struct PadResult {
     pub unloaded: bool,
     /// Amplitude of each retained bending mode (flexible pads) [m]: the largest film-face radial
     /// displacement of the mode, positive opening the film where the mode's shape peaks.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub mode_amplitudes_m: Vec<f64>,
     /// Elastic radial displacement of the film face at each film node, Σ q_i φ_i [m] (empty for rigid pads).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub elastic_displacement_m: Vec<f64>,
     /// The pad solid's thermal growth in the converged TEHD state (`None` without pad growth).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -113,7 +113,7 @@ pub struct PadResult {
 }
 
 /// A flexible pad's retained modes (shared with the model) and the radii of its solid's node layers.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PadFlex {
     pub modes: std::sync::Arc<crate::physics::pad_modes::PadModes>,
     /// Layer radii of the pad solid, film face first [m] (pad node = layer · film nodes + film node).
@@ -122,7 +122,7 @@ pub struct PadFlex {
 
 /// Thermal growth of a pad solid (TEHD, [`super::tehd`]): displacement from the reference temperature, the
 /// pad supported on its pivot line (the journal's growth is not in it).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PadThermalGrowth {
     /// Radial displacement of the film face at each film node [m] (positive away from the journal).
     pub film_radial_m: Vec<f64>,
@@ -135,7 +135,7 @@ pub struct PadThermalGrowth {
 }
 
 /// The 3-D pad temperature field, stored compactly on the extruded film grid.
-#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 pub struct PadSolidField {
     /// Layer radii from the film-side face (Rp) to the back (Rp + t) [m].
     pub radii_m: Vec<f64>,
@@ -144,7 +144,7 @@ pub struct PadSolidField {
 }
 
 /// Thermal results of one pad.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PadThermalResult {
     /// Leading-edge oil temperature (given or from the groove mixing).
     pub inlet_temperature_c: f64,
@@ -164,7 +164,7 @@ pub struct PadThermalResult {
 }
 
 /// Thermal results of the bearing.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ThermalResult {
     pub pad_film_bc: PadFilmBc,
     pub journal_temperature_c: f64,
@@ -188,7 +188,7 @@ pub struct ThermalResult {
 }
 
 /// Whole-bearing flows [m³/s].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 pub struct BearingFlows {
     pub leading_edges_in: f64,
     pub trailing_edges_out: f64,
@@ -200,7 +200,7 @@ pub struct BearingFlows {
 }
 
 /// Everything a solve produces.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Solution {
     pub title: String,
     pub eccentricity_ratio: f64,

@@ -8,6 +8,7 @@
 //! Rows and columns can be "fixed" (Dirichlet or cavitated nodes): they are replaced by identity rows in the
 //! factorised copy, so the pattern and the symbolic factorisation never change.
 
+use serde::{Deserialize, Serialize};
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::sparse::linalg::cholesky::{factorize_symbolic_cholesky, LltRef, SymbolicCholesky};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
@@ -15,7 +16,7 @@ use faer::{Conj, MatMut, Par, Side};
 use thiserror::Error;
 
 /// Failure of the linear algebra.
-#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[derive(Debug, Clone, PartialEq, Eq, Error, Serialize, Deserialize)]
 pub enum SolverError {
     #[error("matrix is not positive definite (film thickness or viscosity not positive?)")]
     NotPositiveDefinite,

@@ -3,12 +3,12 @@
 //! Angles are radians measured from +x counter-clockwise (x horizontal, y vertical up); the journal surface
 //! moves towards +θ. Temperatures are °C (they only enter through differences and the viscosity law).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 pub use super::file::{CavitatedFilmFile as CavitatedFilm, Cavitation, Fidelity, ThermalModelKind};
 
 /// A complete, validated case in SI units.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Case {
     pub title: String,
     pub bearing: Bearing,
@@ -22,7 +22,7 @@ pub struct Case {
     pub limits: super::limits::Limits,
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Bearing {
     /// Journal radius R [m].
     pub journal_radius_m: f64,
@@ -41,7 +41,7 @@ impl Bearing {
     }
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum PadKind {
     Tilting,
@@ -49,7 +49,7 @@ pub enum PadKind {
 }
 
 /// One pad (or fixed sector).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Pad {
     pub kind: PadKind,
     /// Leading-edge angle θ_le [rad].
@@ -100,7 +100,7 @@ impl Pad {
 }
 
 /// An injection orifice (capillary) through a pad.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Orifice {
     /// Angle of the centre θ0 [rad].
     pub angle_rad: f64,
@@ -111,7 +111,7 @@ pub struct Orifice {
 }
 
 /// µ(T) = µ_ref exp(−η (T − T_ref)).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ViscosityLaw {
     pub mu_ref_pa_s: f64,
     pub t_ref_c: f64,
@@ -126,7 +126,7 @@ impl ViscosityLaw {
     }
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Lubricant {
     pub name: String,
     pub viscosity: ViscosityLaw,
@@ -136,7 +136,7 @@ pub struct Lubricant {
 }
 
 /// What fixes the journal position.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "mode", rename_all = "snake_case")]
 pub enum LoadSpec {
     /// A static load on the journal: find the position.
@@ -145,7 +145,7 @@ pub enum LoadSpec {
     Position { eccentricity_ratio: f64, angle_rad: f64 },
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Operating {
     /// Journal angular speed Ω [rad/s].
     pub speed_rad_s: f64,
@@ -169,7 +169,7 @@ impl Operating {
 }
 
 /// Resolved mesh density.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub struct MeshSpec {
     pub fidelity: Fidelity,
     pub circumferential_elements: usize,
@@ -182,7 +182,7 @@ pub struct MeshSpec {
     pub max_nodes: usize,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Physics {
     pub cavitation: Cavitation,
     /// Film thickness below which an equilibrium counts as touchdown [m].
@@ -193,7 +193,7 @@ pub struct Physics {
 }
 
 /// Film–pad heat exchange (model.md §3).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum PadFilmBc {
     /// Adiabatic film; pad surface = film temperature (Dirichlet). Film and pad decouple.
@@ -205,7 +205,7 @@ pub enum PadFilmBc {
 }
 
 /// Thermal model settings, SI (temperatures °C).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Thermal {
     pub model: ThermalModelKind,
     pub pad_film_bc: PadFilmBc,

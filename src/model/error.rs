@@ -4,10 +4,11 @@
 //! and where it makes sense the offending value and the allowed range, so a message can be shown next to
 //! the field it concerns.
 
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 /// A problem with a case file or with one of its values.
-#[derive(Debug, Clone, PartialEq, Error)]
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
 pub enum CaseError {
     /// The text is not valid TOML.
     #[error("case file is not valid TOML: {message}")]

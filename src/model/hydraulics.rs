@@ -94,7 +94,7 @@ pub struct RigFile {
 }
 
 /// The hydraulic system in SI.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Hydraulics {
     pub supply_pressure_pa: f64,
     pub return_pressure_pa: f64,
@@ -103,7 +103,7 @@ pub struct Hydraulics {
     pub rig: Option<Rig>,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Valve {
     pub natural_frequency_rad_s: f64,
     pub damping_ratio: f64,
@@ -115,7 +115,7 @@ pub struct Valve {
     pub leakage_m3_s: f64,
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Port {
     /// +1 for A, −1 for B.
     pub sign: f64,
@@ -129,7 +129,7 @@ pub struct Port {
     pub modes: usize,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Rig {
     pub mass_kg: f64,
     pub support_stiffness_n_per_m: f64,

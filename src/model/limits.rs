@@ -68,7 +68,7 @@ impl LimitsFile {
 }
 
 /// Design limits, SI (temperatures °C).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Limits {
     pub min_film_thickness_m: f64,
     pub max_pad_temperature_c: f64,

@@ -30,11 +30,11 @@
 //!
 //! Contract: SI in and out; F > 0 (a pivot carries compression only; the caller floors the load).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 /// The pivot's contact geometry.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ContactKind {
     /// Cylinder in a cylindrical seat (line contact along the pad's length).
@@ -44,7 +44,7 @@ pub enum ContactKind {
 }
 
 /// A pivot's Hertz contact: geometry and materials [SI].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct PivotContact {
     pub kind: ContactKind,
     /// Radius of the convex body (rocker back, ball) R₁ [m].
@@ -71,7 +71,7 @@ pub enum HertzError {
 }
 
 /// The contact's state at one load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ContactState {
     pub load_n: f64,
     /// Approach δ [m].

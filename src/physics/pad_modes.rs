@@ -55,7 +55,7 @@ impl FilmField {
 }
 
 /// One retained bending mode of a pad.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PadMode {
     /// Natural frequency on the pivot (free tilt) [Hz].
     pub frequency_hz: f64,
@@ -72,7 +72,7 @@ pub struct PadMode {
 }
 
 /// How the modes were found.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ModeReport {
     /// Reduced unknowns of the pad solid.
     pub unknowns: usize,
@@ -87,7 +87,7 @@ pub struct ModeReport {
 }
 
 /// A pad's bending modes on its pivot.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PadModes {
     pub modes: Vec<PadMode>,
     pub report: ModeReport,

@@ -9,13 +9,14 @@
 
 use web_time::Instant;
 
+use crate::bearing::limits::LimitKind;
 use crate::bearing::{solve_point, BearingModel, NoCancel, SolveError, Solution, ThermalModel};
 use crate::model::{load_case, Case, CaseError};
 
 use super::columns::{outputs, COLUMNS};
 
 /// Why one point has no results.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, serde::Deserialize)]
 pub enum PointError {
     #[error(transparent)]
     Case(#[from] CaseError),
@@ -24,7 +25,7 @@ pub enum PointError {
 }
 
 /// One row of a study: the point's index and overrides, and its output cells or its error.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Row {
     pub index: usize,
     /// The point's `(key, value)` overrides, as given.
@@ -33,9 +34,19 @@ pub struct Row {
     pub result: Result<Vec<Option<f64>>, PointError>,
     /// Names of the design limits the point's solution exceeds ([`crate::bearing::limits`]); empty for a
     /// point within them and for a failed point.
+    #[serde(deserialize_with = "limit_names")]
     pub limits_exceeded: Vec<&'static str>,
     /// Wall time of the point [s] (the only column that differs from run to run).
     pub seconds: f64,
+}
+
+/// Limit names read back as the names [`LimitKind::name`] gives (the web build's sweep rows cross a wire).
+fn limit_names<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<&'static str>, D::Error> {
+    let names: Vec<String> = serde::Deserialize::deserialize(d)?;
+    names
+        .iter()
+        .map(|n| LimitKind::ALL.iter().map(|k| k.name()).find(|k| k == n).ok_or_else(|| serde::de::Error::custom(format!("no design limit named {n:?}"))))
+        .collect()
 }
 
 /// The CSV column (and JSON key) listing the exceeded design limits, `;`-separated.
@@ -236,5 +247,22 @@ mod tests {
         let _ = after.row(0, &p("0.1"));
         let (y, _) = after.row(0, &p("0.3"));
         assert_eq!(x.result, y.result);
+    }
+
+    /// Rows cross the web build's wire: limits, cells and errors come back equal; an unknown limit name
+    /// is refused.
+    #[test]
+    fn rows_round_trip_through_the_wire_format() {
+        use crate::bearing::stages::{from_bytes, to_bytes};
+        let mut r = runner(true);
+        let p = |k: &str, v: &str| vec![(k.to_string(), v.to_string())];
+        let (hot, _) = r.row(0, &p("operating.load_n", "60000.0"));
+        let (bad, _) = r.row(1, &p("operating.speed_rpm", "-5.0"));
+        assert!(!hot.limits_exceeded.is_empty() && bad.result.is_err(), "{:?} {:?}", hot.limits_exceeded, bad.result);
+        for row in [hot, bad] {
+            assert_eq!(from_bytes::<Row>(&to_bytes(&row).unwrap()).unwrap(), row);
+        }
+        let unknown = Row { index: 0, inputs: Vec::new(), result: Ok(Vec::new()), limits_exceeded: vec!["no_such_limit"], seconds: 0.0 };
+        assert!(from_bytes::<Row>(&to_bytes(&unknown).unwrap()).is_err_and(|e| e.to_string().contains("no_such_limit")));
     }
 }

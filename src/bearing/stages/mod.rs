@@ -62,10 +62,11 @@
 //! tests assert what ran.
 
 mod cache;
+mod wire;
 use std::any::Any;
 use std::sync::Arc;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::model::Case;
 
@@ -77,6 +78,7 @@ pub use cache::Cached;
 pub use equilibrium::MAX_SUSPENSIONS;
 pub use frequency_sweep::FrequencySweep;
 pub use speed_sweep::{SpeedPoint, SweepValues};
+pub use wire::{from_bytes, to_bytes, OutputData, UnnamedOutput, WireError};
 
 /// One unit of a stage's work: its output, or paused with the fraction of the work done.
 pub type Poll<T> = Progress<T, f64>;
@@ -122,7 +124,7 @@ macro_rules! stages {
         $(pub mod $module;)*
 
         /// The stages, in the order they run.
-        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
         pub enum StageId { $($(#[$doc])* $id,)* }
 
         impl StageId {
@@ -173,7 +175,7 @@ impl StageId {
 }
 
 /// What the caller wants computed.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Request {
     pub case: Case,
     /// The stages whose results are wanted (the stages they read run too).

@@ -4,7 +4,7 @@
 
 use std::sync::Arc;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::bearing::coefficients::ReducedCoefficients;
 use crate::bearing::equilibrium::EquilibriumParams;
@@ -22,7 +22,7 @@ use super::films::{install_structure, FilmsStage};
 use super::{Cached, Ctx, Poll, Progress, Published, Request, Stage, StageId};
 
 /// One point of a speed sweep.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SpeedPoint {
     pub speed_rpm: f64,
     /// `Err` text when this point failed (touchdown, …).
@@ -30,7 +30,7 @@ pub struct SpeedPoint {
 }
 
 /// The scalar results a sweep keeps per point.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SweepValues {
     pub eccentricity_ratio: f64,
     pub attitude_angle_deg: f64,

@@ -28,7 +28,7 @@
 //!
 //! Inlet mixing and the journal temperature: [`super::mixing`]; the acceleration: [`super::anderson`].
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use web_time::Instant;
 
 use crate::fem::supg::Stabilisation;
@@ -83,7 +83,7 @@ impl Default for ThermalParams {
 }
 
 /// What the thermal loop did.
-#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct ThermalReport {
     /// Outer (equilibrium + thermal) iterations.
     pub outer_iterations: usize,
@@ -110,7 +110,7 @@ pub struct ThermalReport {
     pub pad_conduction_seconds: f64,
     /// TEHD: largest change of the films' thermal growth after each outer iteration [m] (empty without
     /// thermal growth; the loop also needs it below `GROWTH_TOL` × the assembled clearance).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub growth_change_m: Vec<f64>,
     /// TEHD: journal growth α_j R (T_j − T_ref) and the range of the pads' film-face growth in the converged
     /// films [m].

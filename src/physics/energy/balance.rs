@@ -18,14 +18,14 @@
 //! only weights a residual mass imbalance). The inlet conduction is the reaction of the leading-edge
 //! Dirichlet rows, computed by the caller from the unmodified rows.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::{Exchange, FilmEnergy, FlowState, Oil};
 use crate::mesh::grid::NodeSite;
 use crate::physics::reynolds::PadFilm;
 
 /// Heat balance of one pad's film [W], whole pad.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct FilmHeat {
     /// Journal shear power with the film fraction.
     pub shear_power_w: f64,

@@ -18,6 +18,7 @@
 //! fields that give them are computed by [`crate::physics::reynolds::PadFilm::injection_response`] and
 //! assembled over pads by [`crate::bearing::injection`].
 
+use serde::{Deserialize, Serialize};
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// π d⁴/(128 µ l): flow per unit pressure drop of a capillary of diameter `d`, length `l` (Hagen–Poiseuille),
@@ -30,7 +31,7 @@ pub fn capillary_conductance(diameter: f64, length: f64, viscosity: f64) -> f64 
 /// Linearised nozzle–film coupling: over a pad's local coordinates and its orifices
 /// ([`crate::physics::reynolds::InjectionResponse`]), or over the bearing's global coordinates and the valve
 /// ports ([`crate::bearing::injection::injection_coupling`]).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct NozzleCoupling {
     /// Y [m³/(s·Pa)], ports × ports.
     pub admittance: DMatrix<f64>,

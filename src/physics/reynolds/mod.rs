@@ -48,6 +48,7 @@
 //! cavitation solves; `linearize.rs` forces and their perturbations; `outputs.rs` flows, friction and
 //! extrema; `injection.rs` the response to the injection pressure.
 
+use serde::{Deserialize, Serialize};
 use crate::fem::{SolverError, SpdSolver};
 use crate::model::Cavitation;
 use nalgebra::DMatrix;
@@ -103,7 +104,7 @@ pub enum Viscosity<'a> {
 }
 
 /// Failure of a film solve.
-#[derive(Debug, Clone, PartialEq, Error)]
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
 pub enum FilmError {
     /// The film thickness is zero or negative somewhere: the journal touches the pad.
     #[error("film thickness {h_min_m:.3e} m ≤ 0 at θ = {theta_deg:.1}°, z = {z_m:.4} m (contact)")]
@@ -126,7 +127,7 @@ pub struct FilmSolveInfo {
 }
 
 /// Flows of one pad [m³/s], for the whole pad (symmetry already applied).
-#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PadFlows {
     /// Into the film through the leading edge.
     pub leading_edge_in: f64,
