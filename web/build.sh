@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the web workbench into web/pkg/ (serve web/ with any static file server, e.g.
 # `python3 -m http.server -d web 8080`, and open http://127.0.0.1:8080).
+# The solver runs in a web worker (web/worker.js, which loads the same web/pkg/), so serve over http.
 # `?case=fillon-a` opens a shipped case; `?probe` logs frame times to the browser console per job
 # (`?probe&sweep` also runs the sweep view's sweep); docs/PERFORMANCE.md has the measured numbers.
 #

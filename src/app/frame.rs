@@ -24,6 +24,7 @@ impl WorkbenchApp {
         self.guard_close(&ctx);
         self.take_screenshot(&ctx);
 
+        let t0 = web_time::Instant::now();
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
         // On windows narrower than ~1330 points the side panels start narrower, so the view keeps about half
@@ -38,10 +39,13 @@ impl WorkbenchApp {
             })
             .map(|r| r.inner);
         self.dragging = edit.is_some_and(|e| e.dragging);
+        let t1 = web_time::Instant::now();
         let mut results_open = self.persisted.results_open;
         egui::Panel::right("results").resizable(true).default_size(330.0_f32.min(0.25 * width)).show_collapsible(ui, &mut results_open, |ui| self.results_ui(ui));
         self.persisted.results_open = results_open;
+        let t2 = web_time::Instant::now();
         egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
+        let t3 = web_time::Instant::now();
         self.guard_ui(&ctx);
         self.save_dialog_ui(&ctx);
         if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
@@ -55,6 +59,9 @@ impl WorkbenchApp {
             );
         }
         self.drive_solver();
+        let t4 = web_time::Instant::now();
+        let ms = |a: web_time::Instant, b: web_time::Instant| (b - a).as_secs_f64() * 1e3;
+        self.frame_parts_ms = [ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4)];
         if !self.is_idle() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }

@@ -102,6 +102,8 @@ pub struct WorkbenchApp {
     pub notice: Option<String>,
     /// Smoothed duration of building a frame [s].
     pub frame_time_s: f64,
+    /// Where the last frame's time went [ms]: menu, status and editor; results panel; view; solver events.
+    pub frame_parts_ms: [f64; 4],
     /// Durations of the last frames [s].
     pub recent_frames_s: std::collections::VecDeque<f64>,
     /// Replace wall-clock times by dashes (reproducible screenshots).
@@ -156,6 +158,7 @@ impl WorkbenchApp {
             allow_close: false,
             notice: None,
             frame_time_s: 0.0,
+            frame_parts_ms: [0.0; 4],
             recent_frames_s: std::collections::VecDeque::with_capacity(120),
             hide_timings: false,
             view_rect: None,
@@ -287,7 +290,12 @@ impl eframe::App for WorkbenchApp {
         // The web build solves inside frames: say so in the browser console when one runs long.
         #[cfg(target_arch = "wasm32")]
         if dt > 0.033 {
-            log::info!("slow frame: {:.1} ms ({})", dt * 1e3, if self.worker.busy() { "solving" } else { "idle" });
+            let [edit, results, view, solver] = self.frame_parts_ms;
+            log::info!(
+                "slow frame: {:.1} ms ({}): menu and editor {edit:.1}, results {results:.1}, view {view:.1}, solver events {solver:.1} ms",
+                dt * 1e3,
+                if self.worker.busy() { "solving" } else { "idle" }
+            );
         }
         self.frame_time_s = if self.frame_time_s == 0.0 { dt } else { 0.9 * self.frame_time_s + 0.1 * dt };
         if self.recent_frames_s.len() == 120 {
