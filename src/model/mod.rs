@@ -3,7 +3,8 @@
 //! ([`resolve`]) into a [`Case`] that the solver reads; [`budget`] counts the mesh nodes a case would
 //! allocate, so that an oversized one is refused before anything is built. [`schema`] lists every key with
 //! its unit, allowed values and meaning (for `tiltpad schema` and the editor); [`limits`] holds the design limits results are checked against; [`edit`] writes an edited
-//! case back into the user's own file, keeping its comments.
+//! case back into the user's own file, keeping its comments; [`rotor_sections`] adds and removes a rotor
+//! file's shaft sections, renumbering what sits on its nodes.
 
 pub mod budget;
 pub mod case;
@@ -16,6 +17,7 @@ pub mod load;
 pub mod resolve;
 pub mod rotor;
 pub mod rotor_schema;
+pub mod rotor_sections;
 pub mod schema;
 
 pub use case::{

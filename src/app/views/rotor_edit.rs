@@ -1,8 +1,11 @@
 //! Editing the rotor from its sketch, as the case editor edits the bearing: a click on the sketch selects a
 //! shaft section, a disk, a bearing or an unbalance ([`Selected`]); its values are edited in a row under the
 //! sketch, each labelled with its unit, with the rotor-file schema's meaning, allowed values and key as
-//! tooltip ([`crate::model::rotor_schema`]); disks and unbalances are added and removed; the rotor file is
-//! saved with its comments, order and number style kept ([`crate::model::edit::write_preserving`]).
+//! tooltip ([`crate::model::rotor_schema`]); disks and unbalances are added and removed; shaft sections are
+//! split, appended at either end and removed, entries on removed nodes moving to the nearest remaining node
+//! with a notice naming each ([`crate::model::rotor_sections`]); a bearing position given by numbers shows
+//! its K, C rows (and their speeds) for editing; the rotor file is saved with its comments, order and number
+//! style kept ([`crate::model::edit::write_preserving`]).
 //!
 //! Contract (the case editor's): a typed value is kept in the edited [`RotorFile`] whatever it is; the file
 //! is validated after every edit by the same checks as the CLI ([`RotorFile::resolve`], bearing cases at
@@ -18,6 +21,7 @@ use crate::app::presets::PRESETS;
 use crate::model::edit::write_preserving;
 use crate::model::rotor::{parse_rotor_file, DiskTable, Rotor, RotorFile, UnbalanceTable};
 use crate::model::rotor_schema::ROTOR_KEYS;
+use crate::model::rotor_sections::{append_section, remove_section, split_section, ShaftEnd};
 use crate::model::CaseError;
 
 use super::super::editor::widgets::{flag_invalid_ui, ERROR_COLOR};
@@ -53,6 +57,9 @@ pub struct RotorEdit {
     valid: Rotor,
     /// Counts valid edits.
     pub revision: usize,
+    /// What the last section change did besides itself (entries moved off removed nodes), or why it was
+    /// refused.
+    notice: Option<String>,
 }
 
 /// Resolves `file` with its bearing cases at preview fidelity, read from beside `path` (native) or among
@@ -77,11 +84,16 @@ fn resolve_preview(file: &RotorFile, path: Option<&Path>) -> Result<Rotor, CaseE
     file.resolve(&read)
 }
 
-/// The schema row of an indexed key (`rotor.disk[2].mass_kg` → `rotor.disk[].mass_kg`): unit and tooltip.
+/// The schema row of an indexed key (`rotor.disk[2].mass_kg` → `rotor.disk[].mass_kg`; a row of a list,
+/// `rotor.bearing[0].k_n_per_m[1]`, → `rotor.bearing[].k_n_per_m`): unit and tooltip.
 fn schema(key: &str) -> (&'static str, String) {
     let generic = match (key.find('['), key.find(']')) {
         (Some(a), Some(b)) if a < b => format!("{}[]{}", &key[..a], &key[b + 1..]),
         _ => key.to_string(),
+    };
+    let generic = match generic.rfind('[') {
+        Some(a) if generic.ends_with(']') && a + 2 < generic.len() => generic[..a].to_string(),
+        _ => generic,
     };
     ROTOR_KEYS.iter().find(|s| s.key == generic).map_or(("", format!("Rotor key: {key}")), |s| (s.unit, format!("{}\n\nAllowed: {}\nRotor key: {key}", s.meaning, s.allowed.describe())))
 }
@@ -94,7 +106,7 @@ impl RotorEdit {
     pub fn open(name: &str, path: Option<&Path>, text: &str) -> Result<Self, String> {
         let file = parse_rotor_file(text).map_err(|e| e.to_string())?;
         let valid = resolve_preview(&file, path).map_err(|e| e.to_string())?;
-        Ok(Self { name: name.to_string(), path: path.map(Path::to_path_buf), source: text.to_string(), file, selected: None, error: None, valid, revision: 0 })
+        Ok(Self { name: name.to_string(), path: path.map(Path::to_path_buf), source: text.to_string(), file, selected: None, error: None, valid, revision: 0, notice: None })
     }
 
     /// The last valid rotor.
@@ -140,6 +152,39 @@ impl RotorEdit {
         }
     }
 
+    /// What the last section change moved (or why it was refused).
+    #[must_use]
+    pub fn notice(&self) -> Option<&str> {
+        self.notice.as_deref()
+    }
+
+    /// Splits the selected section, appends one at an end or removes the selected one
+    /// ([`crate::model::rotor_sections`]); the selection follows (none after a removal), and the entries
+    /// moved off removed nodes, or the refusal, become the notice.
+    pub fn change_sections(&mut self, change: SectionChange) {
+        let mut notice = None;
+        let mut selected = self.selected;
+        self.apply(|f| match change {
+            SectionChange::Split(i) => match split_section(&mut f.rotor, i) {
+                Ok(_) => selected = Some(Selected::Section(i)),
+                Err(e) => notice = Some(e.to_string()),
+            },
+            SectionChange::Append(end) => selected = Some(Selected::Section(append_section(&mut f.rotor, end))),
+            SectionChange::Remove(i) => match remove_section(&mut f.rotor, i) {
+                Ok(moved) => {
+                    selected = None;
+                    if !moved.is_empty() {
+                        let list: Vec<String> = moved.iter().map(ToString::to_string).collect();
+                        notice = Some(format!("Removed rotor.section[{i}]; {}.", list.join(", ")));
+                    }
+                }
+                Err(e) => notice = Some(e.to_string()),
+            },
+        });
+        self.selected = selected;
+        self.notice = notice;
+    }
+
     /// The section (rotor-file table index) of every element of the last valid rotor.
     #[must_use]
     pub fn section_of_elements(&self) -> Vec<usize> {
@@ -161,6 +206,14 @@ impl RotorEdit {
     fn invalid(&self, key: &str) -> bool {
         self.error.as_ref().and_then(CaseError::key).is_some_and(|k| k == key)
     }
+}
+
+/// A change of the shaft sections.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SectionChange {
+    Split(usize),
+    Append(ShaftEnd),
+    Remove(usize),
 }
 
 /// A number of the rotor file: label with its unit, value; the edit is applied when it changed.
@@ -227,8 +280,12 @@ fn selected_ui(ui: &mut Ui, edit: &mut RotorEdit, selected: Selected) {
             let Some(b) = r.bearing.get(i) else { return };
             ui.label(RichText::new(format!("Bearing {}", i + 1)).strong());
             integer_ui(ui, edit, &format!("rotor.bearing[{i}].node"), "node", b.node, move |f, v| f.rotor.bearing[i].node = v);
-            let what = b.case.as_ref().map_or_else(|| "coefficients given by numbers (edit them in the rotor file)".to_string(), |c| format!("bearing case {c} (edit it in the bearing editor)"));
-            ui.label(RichText::new(what).weak());
+            match &b.case {
+                Some(c) => {
+                    ui.label(RichText::new(format!("bearing case {c} (edit it in the bearing editor)")).weak());
+                }
+                None => numbers_ui(ui, edit, i, b),
+            }
         }
         Selected::Unbalance(i) => {
             let Some(u) = r.unbalance.get(i) else { return };
@@ -238,6 +295,50 @@ fn selected_ui(ui: &mut Ui, edit: &mut RotorEdit, selected: Selected) {
             number_ui(ui, edit, &k("amount_g_mm"), "amount", u.amount_g_mm, move |f, v| f.rotor.unbalance[i].amount_g_mm = v);
             number_ui(ui, edit, &k("phase_deg"), "phase", u.phase_deg, move |f, v| f.rotor.unbalance[i].phase_deg = v);
         }
+    }
+}
+
+/// A bearing position's coefficients given by numbers: per row (one per speed, or one), its speed, then
+/// K and C as [xx, xy, yx, yy]. Labels name the entry (`K xy`) and, for tabulated rows, the row's speed.
+fn numbers_ui(ui: &mut Ui, edit: &mut RotorEdit, i: usize, b: &crate::model::rotor::BearingTable) {
+    const ENTRIES: [&str; 4] = ["xx", "xy", "yx", "yy"];
+    let rows = b.k_n_per_m.len().max(b.c_ns_per_m.len());
+    for j in 0..rows {
+        let row = |name: &str| if b.speeds_rpm.is_empty() { name.to_string() } else { format!("{name} (row {})", j + 1) };
+        ui.end_row();
+        if let Some(&s) = b.speeds_rpm.get(j) {
+            number_ui(ui, edit, &format!("rotor.bearing[{i}].speeds_rpm[{j}]"), &row("speed"), s, move |f, v| f.rotor.bearing[i].speeds_rpm[j] = v);
+        }
+        for (e, name) in ENTRIES.iter().enumerate() {
+            if let Some(k) = b.k_n_per_m.get(j) {
+                number_ui(ui, edit, &format!("rotor.bearing[{i}].k_n_per_m[{j}]"), &row(&format!("K {name}")), k[e], move |f, v| f.rotor.bearing[i].k_n_per_m[j][e] = v);
+            }
+        }
+        for (e, name) in ENTRIES.iter().enumerate() {
+            if let Some(c) = b.c_ns_per_m.get(j) {
+                number_ui(ui, edit, &format!("rotor.bearing[{i}].c_ns_per_m[{j}]"), &row(&format!("C {name}")), c[e], move |f, v| f.rotor.bearing[i].c_ns_per_m[j][e] = v);
+            }
+        }
+    }
+}
+
+/// Buttons that change the shaft sections: split and remove the selected one, append at either end.
+fn sections_ui(ui: &mut Ui, edit: &mut RotorEdit) {
+    if let Some(Selected::Section(i)) = edit.selected {
+        if ui.button("Split section").on_hover_text("Two sections in its place, the elements shared between them (one element: two of half the length)").clicked() {
+            edit.change_sections(SectionChange::Split(i));
+        }
+        let tip = "Removes the section; disks, unbalances, bearings and supports on its nodes move to the nearest remaining node (listed under the strip)";
+        if ui.add_enabled(edit.file.rotor.section.len() > 1, egui::Button::new("Remove section")).on_hover_text(tip).on_disabled_hover_text("The only shaft section").clicked() {
+            edit.change_sections(SectionChange::Remove(i));
+        }
+    }
+    let tip = |end: &str| format!("A {} mm section with the diameters of the {end} section", crate::model::rotor_sections::APPENDED_LENGTH_MM);
+    if ui.button("Add section at start").on_hover_text(tip("first")).clicked() {
+        edit.change_sections(SectionChange::Append(ShaftEnd::Start));
+    }
+    if ui.button("Add section at end").on_hover_text(tip("last")).clicked() {
+        edit.change_sections(SectionChange::Append(ShaftEnd::End));
     }
 }
 
@@ -262,6 +363,7 @@ pub fn edit_ui(ui: &mut Ui, edit: &mut RotorEdit) -> Option<SaveRequest> {
             edit.apply(|f| f.rotor.unbalance.push(UnbalanceTable { node, amount_g_mm: 100.0, phase_deg: 0.0 }));
             edit.selected = Some(Selected::Unbalance(edit.file.rotor.unbalance.len() - 1));
         }
+        sections_ui(ui, edit);
         match edit.selected {
             Some(Selected::Disk(i)) if ui.button("Remove disk").clicked() => {
                 edit.apply(|f| {
@@ -284,6 +386,9 @@ pub fn edit_ui(ui: &mut Ui, edit: &mut RotorEdit) -> Option<SaveRequest> {
             }
         }
     });
+    if let Some(n) = &edit.notice {
+        ui.label(RichText::new(n).weak());
+    }
     if let Some(e) = &edit.error {
         ui.label(RichText::new(format!("Invalid rotor: {e}. The sketch and results are of the last valid rotor.")).color(ERROR_COLOR));
     }
@@ -327,5 +432,32 @@ mod tests {
         assert_eq!(schema("rotor.disk[12].mass_kg").0, "kg");
         assert_eq!(schema("rotor.unbalance[0].amount_g_mm").0, "g·mm");
         assert!(schema("rotor.section[3].outer_diameter_mm").1.contains("Allowed: (0, 10000]"));
+        assert_eq!(schema("rotor.bearing[2].k_n_per_m[1]").0, "N/m");
+        assert_eq!(schema("rotor.bearing[0].speeds_rpm[0]").0, "rpm");
+    }
+
+    #[test]
+    fn removing_the_coupling_stub_moves_the_hub_and_its_unbalance_and_says_so() {
+        // Section 0 (210 mm, Ø 101.6 mm, nodes 0–7): the coupling hub (disk 0) and the coupling unbalance
+        // (unbalance 1) sit on its free end; bearing 1 sits on node 7, which section 1 keeps.
+        let mut e = RotorEdit::open("compressor-rotor.toml", None, ROTOR).unwrap();
+        let mass = e.rotor().mass();
+        e.selected = Some(Selected::Section(0));
+        e.change_sections(SectionChange::Remove(0));
+        assert!(e.error().is_none());
+        assert_eq!(e.notice(), Some("Removed rotor.section[0]; rotor.disk[0] (on removed node 0) now at node 0, rotor.unbalance[1] (on removed node 0) now at node 0."));
+        let r = &e.file().rotor;
+        assert_eq!((r.bearing[0].node, r.bearing[1].node, r.disk[1].node), (0, 42, 9));
+        let stub = 7850.0 * std::f64::consts::PI / 4.0 * 0.1016_f64.powi(2) * 0.21;
+        assert!((mass - e.rotor().mass() - stub).abs() < 1e-9 * mass, "{mass} − {} ≠ {stub}", e.rotor().mass());
+        assert_eq!((e.selected, e.revision), (None, 1));
+        // Down to one section, the last one is refused and nothing changes.
+        for _ in 0..3 {
+            e.change_sections(SectionChange::Remove(0));
+        }
+        let before = e.file().clone();
+        e.change_sections(SectionChange::Remove(0));
+        assert_eq!(e.notice(), Some("rotor.section[0] is the only shaft section; a rotor needs at least one"));
+        assert_eq!((e.file(), e.revision), (&before, 4));
     }
 }

@@ -294,16 +294,76 @@ fn whirl_color(w: Whirl) -> Color32 {
 }
 
 fn plot(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
+    plot_without_legend(id, ui, height).legend(Legend::default().position(egui_plot::Corner::LeftTop))
+}
+
+fn plot_without_legend(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
     let width = ui.available_width().min(ui.clip_rect().width());
-    Plot::new(id.to_string()).height(height).width(width).allow_scroll(false).legend(Legend::default().position(egui_plot::Corner::LeftTop))
+    Plot::new(id.to_string()).height(height).width(width).allow_scroll(false)
+}
+
+/// How a legend entry's sample is drawn.
+#[derive(Clone, Copy)]
+enum Sample {
+    Solid,
+    Dashed,
+    Dotted,
+    Dot,
+}
+
+/// The legend of the Campbell diagram and the stability map, as a row above the plot: inside it, the
+/// entries (eight modes, the 1× line, the critical speeds, the operating range) covered much of the curves
+/// at 1280×720. Short labels keep it to one row there; each curve keeps its name (F1, B2, …: whirl and rank)
+/// for the plot's hover label.
+fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<f64>) {
+    let grey = Color32::from_gray(150);
+    let mut entries = vec![("forward".to_string(), FORWARD, Sample::Solid), ("backward".to_string(), BACKWARD, Sample::Dashed)];
+    if campbell {
+        entries.push(("1×".into(), grey, Sample::Dashed));
+        entries.push(("1× critical".into(), LIMIT, Sample::Dot));
+    } else {
+        entries.push(("δ = 0".into(), grey, Sample::Solid));
+        if let Some(x) = onset {
+            entries.push((format!("onset {x:.0} rpm"), LIMIT, Sample::Solid));
+        }
+    }
+    if operating {
+        entries.push(("operating range".into(), grey, Sample::Dotted));
+    }
+    ui.horizontal_wrapped(|ui| {
+        for (label, color, sample) in entries {
+            let (rect, sample_response) = ui.allocate_exact_size(egui::vec2(18.0, 12.0), egui::Sense::hover());
+            sample_response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend sample: {label}")));
+            let (a, b) = (rect.left_center(), rect.right_center());
+            let stroke = Stroke::new(1.6, color);
+            let painter = ui.painter();
+            match sample {
+                Sample::Solid => {
+                    painter.line_segment([a, b], stroke);
+                }
+                Sample::Dashed => {
+                    painter.extend(egui::Shape::dashed_line(&[a, b], stroke, 5.0, 3.0));
+                }
+                Sample::Dotted => {
+                    painter.extend(egui::Shape::dotted_line(&[a, b], color, 4.0, 1.0));
+                }
+                Sample::Dot => {
+                    painter.circle_filled(rect.center(), 4.0, color);
+                }
+            }
+            ui.label(RichText::new(label).small());
+        }
+    });
 }
 
 fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
     let c = mode_curves(r, rotor, RANKS);
     let height = (ui.available_height() - 10.0).max(160.0);
     let campbell = tab == RotorTab::Campbell;
-    let (id, y_label, curves) = if campbell { ("rotor_campbell", "damped natural frequency [Hz]", &c.frequency_hz) } else { ("rotor_stability", "logarithmic decrement [–]", &c.log_dec) };
-    plot(id, ui, height).x_axis_label("speed [rpm]").y_axis_label(y_label).show(ui, |p| {
+    let (id, y_label, curves) = if campbell { ("rotor_campbell", "damped frequency [Hz]", &c.frequency_hz) } else { ("rotor_stability", "log decrement [–]", &c.log_dec) };
+    curves_legend_ui(ui, campbell, c.operating_rpm.is_some(), c.onset_rpm);
+    let height = (height - ui.spacing().interact_size.y - ui.spacing().item_spacing.y).max(160.0);
+    plot_without_legend(id, ui, height).x_axis_label("speed [rpm]").y_axis_label(y_label).show(ui, |p| {
         for curve in curves {
             let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
             p.line(Line::new(curve.name.clone(), curve.points.clone()).color(whirl_color(curve.whirl)).style(style).width(1.6));
