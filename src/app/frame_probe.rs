@@ -27,6 +27,8 @@ pub enum Job {
     Sweep,
     /// Re-solving a pinned case.
     Pin,
+    /// The rotor view's analysis.
+    Rotor,
 }
 
 impl fmt::Display for Job {
@@ -38,6 +40,7 @@ impl fmt::Display for Job {
                 stage.map_or(Ok(()), |s| write!(f, " ({})", s.label()))
             }
             Self::Sweep => write!(f, "sweep"),
+            Self::Rotor => write!(f, "rotor analysis"),
             Self::Pin => write!(f, "pin re-solve"),
         }
     }

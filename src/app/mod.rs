@@ -205,6 +205,8 @@ impl WorkbenchApp {
             Job::Solve { thd, stage: match self.status { Status::Solving { stage, .. } => stage, _ => None } }
         } else if self.pinned.busy() {
             Job::Pin
+        } else if !self.rotor.is_idle() {
+            Job::Rotor
         } else {
             Job::Idle
         }

@@ -3,9 +3,9 @@
 //! - Native: one named thread per job loops [`Analysis::step`] (one speed: its bearing solves and the
 //!   eigen-solution), reports progress over a channel and wakes the UI with `request_repaint`; a newer job
 //!   (or dropping the runner) raises the old job's cancel flag, checked between speeds.
-//! - Web (no threads): [`RotorRunner::poll`] does one step per frame — one speed, or the finishing onset
-//!   bisection — and asks for the next frame. A bearing solve is not split between frames here: at preview
-//!   fidelity one speed is a few tens of milliseconds in release builds.
+//! - Web: a web worker runs the analysis ([`super::web_solver::RotorLink`]); where no worker can run,
+//!   [`RotorRunner::poll`] does one step per frame — one speed, or the finishing onset bisection — and asks
+//!   for the next frame (a bearing solve is not split between frames then).
 
 use std::sync::Arc;
 
@@ -20,7 +20,7 @@ pub enum RotorEvent {
 }
 
 /// Steps an analysis once: its progress, or the result when it finished (the analysis is then taken).
-fn advance(analysis: &mut Option<Analysis>) -> RotorEvent {
+pub(super) fn advance(analysis: &mut Option<Analysis>) -> RotorEvent {
     let Some(a) = analysis.as_mut() else { return RotorEvent::Done(Err("no analysis".into())) };
     match a.step() {
         Ok(Step::More { done, of }) => RotorEvent::Progress { done, of },
@@ -41,7 +41,7 @@ pub struct RotorRunner {
     #[cfg(not(target_arch = "wasm32"))]
     job: Option<native::Job>,
     #[cfg(target_arch = "wasm32")]
-    analysis: Option<Analysis>,
+    link: Option<super::web_solver::RotorLink>,
     /// A job that could not start, reported at the next poll.
     failed: Option<String>,
     busy: bool,
@@ -55,7 +55,7 @@ impl RotorRunner {
             #[cfg(not(target_arch = "wasm32"))]
             job: None,
             #[cfg(target_arch = "wasm32")]
-            analysis: None,
+            link: None,
             failed: None,
             busy: false,
         }
@@ -70,8 +70,15 @@ impl RotorRunner {
         }
         #[cfg(target_arch = "wasm32")]
         {
-            self.analysis = None;
+            self.link = Some(super::web_solver::RotorLink::start(rotor, params, &self.repaint));
+            self.repaint.request_repaint();
         }
+        #[cfg(not(target_arch = "wasm32"))]
+        self.start_native(rotor, params);
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
+    fn start_native(&mut self, rotor: &Rotor, params: AnalysisParams) {
         let analysis = match Analysis::new(rotor, params) {
             Ok(a) => a,
             Err(e) => {
@@ -80,14 +87,7 @@ impl RotorRunner {
                 return;
             }
         };
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            self.job = Some(native::Job::spawn(analysis, self.repaint.clone()));
-        }
-        #[cfg(target_arch = "wasm32")]
-        {
-            self.analysis = Some(analysis);
-        }
+        self.job = Some(native::Job::spawn(analysis, self.repaint.clone()));
         self.repaint.request_repaint();
     }
 
@@ -100,13 +100,7 @@ impl RotorRunner {
         #[cfg(not(target_arch = "wasm32"))]
         let events: Vec<RotorEvent> = self.job.as_ref().map(native::Job::drain).unwrap_or_default();
         #[cfg(target_arch = "wasm32")]
-        let events: Vec<RotorEvent> = if self.analysis.is_some() {
-            let e = advance(&mut self.analysis);
-            self.repaint.request_repaint();
-            vec![e]
-        } else {
-            Vec::new()
-        };
+        let events: Vec<RotorEvent> = self.link.as_mut().map(super::web_solver::RotorLink::poll).unwrap_or_default();
         if events.iter().any(|e| matches!(e, RotorEvent::Done(_))) {
             self.busy = false;
         }

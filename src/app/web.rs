@@ -31,6 +31,10 @@ pub fn start() {
                         app.persisted.view = super::state::View::Sweep;
                         app.sweep.job = app.doc.text().ok().and_then(|t| super::sweep_job::SweepJob::start(t, &app.persisted.sweep, &cc.egui_ctx).ok());
                     }
+                    // `?probe&rotor`: the rotor view opens (its analysis starts at once).
+                    if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "rotor") {
+                        app.persisted.view = super::state::View::Rotor;
+                    }
                     app.probe = probe;
                     if let Some(k) = preset {
                         app.request(super::Pending::Preset(k));

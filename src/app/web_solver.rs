@@ -3,7 +3,7 @@
 //! [`Report`]s as bytes in the wire format ([`crate::bearing::stages::to_bytes`]). The page's frames then
 //! carry only the UI, however long a stage's step takes. Each page-side solver has a worker of its own:
 //! the edited case's and the pins' [`Link`]s (jobs and [`Event`]s), the sweep view's [`SweepLink`] (points
-//! and their rows).
+//! and their rows), the rotor view's [`RotorLink`] (an analysis, its progress and result).
 //!
 //! - Page side: an order is posted to the worker, and the reports its message handler receives are collected
 //!   (with a repaint). If the worker cannot be created, fails to load, or a report does not decode, the
@@ -24,10 +24,14 @@ use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast as _, JsValue};
 use web_time::Instant;
 
+use super::rotor_worker::{advance, RotorEvent};
 use super::sweep_steps::SteppedPoints;
 use super::worker::{event_job, Event, Running, Superseded};
 use crate::bearing::stages::{from_bytes, to_bytes, Stages};
 use crate::bearing::FrameBudget;
+use crate::model::rotor::Rotor;
+use crate::rotor::analysis::{Analysis, AnalysisParams};
+use crate::rotor::wire::AnalysisData;
 use crate::study::{Row, Runner};
 
 /// What the page asks of a worker.
@@ -37,6 +41,8 @@ pub(super) enum Order {
     Solve(Box<Running>),
     /// Solve a sweep's points.
     Sweep(SweepOrder),
+    /// Analyse a rotor (supersedes the analysis under way).
+    Rotor(Box<(Rotor, AnalysisParams)>),
 }
 
 /// A sweep's points: each point's case is `text` with `overrides` and `key` = the point's value.
@@ -62,6 +68,26 @@ pub(super) enum Report {
     Event(Event),
     /// Sweep points finished, as `(value, row)`.
     Rows(Vec<(f64, Row)>),
+    /// A rotor analysis's progress, or its result.
+    RotorProgress { done: usize, of: usize },
+    RotorDone(Result<Box<AnalysisData>, String>),
+}
+
+impl Report {
+    fn of_rotor(e: &RotorEvent) -> Self {
+        match e {
+            RotorEvent::Progress { done, of } => Self::RotorProgress { done: *done, of: *of },
+            RotorEvent::Done(r) => Self::RotorDone(r.as_ref().map(|a| Box::new(AnalysisData::from(a.as_ref()))).map_err(Clone::clone)),
+        }
+    }
+
+    fn into_rotor(self) -> Option<RotorEvent> {
+        match self {
+            Self::RotorProgress { done, of } => Some(RotorEvent::Progress { done, of }),
+            Self::RotorDone(r) => Some(RotorEvent::Done(r.map(|d| Arc::new((*d).into())))),
+            _ => None,
+        }
+    }
 }
 /// Worker-side work between two looks at the message queue [s].
 pub const TICK_S: f64 = 0.1;
@@ -290,22 +316,90 @@ impl SweepLink {
     }
 }
 
+/// The page's end of a rotor analysis.
+pub(super) struct RotorLink {
+    repaint: egui::Context,
+    order: Option<Box<(Rotor, AnalysisParams)>>,
+    remote: Option<Remote>,
+    /// Stepping in the page's frames (no worker, or it failed).
+    local: Option<Analysis>,
+    /// The analysis could not start here (reported at the next poll).
+    failed: Option<String>,
+}
+
+impl RotorLink {
+    pub fn start(rotor: &Rotor, params: AnalysisParams, repaint: &egui::Context) -> Self {
+        let order = Order::Rotor(Box::new((rotor.clone(), params)));
+        let remote = Remote::try_start(repaint).and_then(|r| r.post(&order).map_err(|e| log_fallback(&e)).ok().map(|()| r));
+        let Order::Rotor(order) = order else { unreachable!("built above") };
+        let mut link = Self { repaint: repaint.clone(), order: Some(order), remote, local: None, failed: None };
+        if link.remote.is_none() {
+            link.start_local();
+        }
+        link
+    }
+
+    /// Falls back to stepping here; a rotor that does not start is reported at the next poll.
+    fn start_local(&mut self) {
+        if let Some(order) = self.order.take() {
+            let (rotor, params) = *order;
+            match Analysis::new(&rotor, params) {
+                Ok(a) => self.local = Some(a),
+                Err(e) => self.failed = Some(e.to_string()),
+            }
+        }
+    }
+
+    /// Events since the last call; without a worker one step of the analysis happens here.
+    pub fn poll(&mut self) -> Vec<RotorEvent> {
+        let mut events = Vec::new();
+        if let Some(remote) = &self.remote {
+            match remote.take() {
+                Ok(reports) => events.extend(reports.into_iter().filter_map(Report::into_rotor)),
+                Err(e) => {
+                    log_fallback(&e);
+                    self.remote = None;
+                    self.start_local();
+                }
+            }
+        }
+        if let Some(e) = self.failed.take() {
+            events.push(RotorEvent::Done(Err(e)));
+        } else if self.remote.is_none() && self.local.is_some() {
+            events.push(advance(&mut self.local));
+            self.repaint.request_repaint();
+        }
+        events
+    }
+}
+
 /// The worker's state (one per worker instance).
 struct WorkerSide {
     stepper: Stepper,
     latest: Arc<AtomicU64>,
     sweep: Option<SteppedPoints>,
+    rotor: Option<Analysis>,
     tick_queued: bool,
 }
 
 impl WorkerSide {
     fn busy(&self) -> bool {
-        self.stepper.busy() || self.sweep.as_ref().is_some_and(|s| !s.finished())
+        self.stepper.busy() || self.sweep.as_ref().is_some_and(|s| !s.finished()) || self.rotor.is_some()
+    }
+
+    /// Steps the rotor analysis for up to `budget_s` (at least once); its events.
+    fn step_rotor(&mut self, budget_s: f64) -> Vec<RotorEvent> {
+        let start = Instant::now();
+        let mut events = Vec::new();
+        while self.rotor.is_some() && (events.is_empty() || start.elapsed().as_secs_f64() < budget_s) {
+            events.push(advance(&mut self.rotor));
+        }
+        events
     }
 }
 
 thread_local! {
-    static WORKER: RefCell<WorkerSide> = RefCell::new(WorkerSide { stepper: Stepper::new(), latest: Arc::new(AtomicU64::new(0)), sweep: None, tick_queued: false });
+    static WORKER: RefCell<WorkerSide> = RefCell::new(WorkerSide { stepper: Stepper::new(), latest: Arc::new(AtomicU64::new(0)), sweep: None, rotor: None, tick_queued: false });
 }
 
 /// Worker side: starts logging to the worker's console (called once, before the first job).
@@ -329,6 +423,16 @@ pub fn receive(bytes: &[u8]) {
                 w.stepper.start(*running);
             }
             Order::Sweep(sweep) => w.sweep = Some(sweep.stepped(0)),
+            Order::Rotor(order) => {
+                let (rotor, params) = *order;
+                match Analysis::new(&rotor, params) {
+                    Ok(a) => w.rotor = Some(a),
+                    Err(e) => {
+                        w.rotor = None;
+                        post(&Report::RotorDone(Err(e.to_string())), || Report::RotorDone(Err("the rotor analysis cannot start".into())));
+                    }
+                }
+            }
         }
         !std::mem::replace(&mut w.tick_queued, true)
     });
@@ -349,16 +453,26 @@ fn queue_tick() {
 
 /// One tick of work; posts its reports (the last progress, every result or failure, the rows finished).
 fn tick() {
-    let (events, rows, more) = WORKER.with_borrow_mut(|w| {
+    let (events, rows, rotor, more) = WORKER.with_borrow_mut(|w| {
         let latest = w.latest.clone();
-        let (events, rows) = if w.stepper.busy() {
-            (w.stepper.run_for(TICK_S, &latest), Vec::new())
+        let (mut events, mut rows, mut rotor) = (Vec::new(), Vec::new(), Vec::new());
+        if w.stepper.busy() {
+            events = w.stepper.run_for(TICK_S, &latest);
+        } else if w.rotor.is_some() {
+            rotor = w.step_rotor(TICK_S);
         } else {
-            (Vec::new(), w.sweep.as_mut().map(|s| s.poll(TICK_S)).unwrap_or_default())
-        };
+            rows = w.sweep.as_mut().map(|s| s.poll(TICK_S)).unwrap_or_default();
+        }
         w.tick_queued = w.busy();
-        (events, rows, w.tick_queued)
+        (events, rows, rotor, w.tick_queued)
     });
+    // The rotor's last progress and its result.
+    let last_rotor = rotor.len().checked_sub(1);
+    for (i, e) in rotor.iter().enumerate() {
+        if matches!(e, RotorEvent::Done(_)) || Some(i) == last_rotor {
+            post(&Report::of_rotor(e), || Report::RotorDone(Err("the solver worker cannot send the rotor result".into())));
+        }
+    }
     let last_progress = events.iter().rposition(|e| matches!(e, Event::Progress { .. }));
     for (i, event) in events.into_iter().enumerate() {
         if matches!(event, Event::Progress { .. }) && Some(i) != last_progress {

@@ -195,7 +195,7 @@ pub struct SupportTable {
 // ---------------------------------------------------------------------------------------------- SI form
 
 /// A rigid disk at a node [kg, kg·m²].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Disk {
     pub node: usize,
     pub mass: f64,
@@ -204,7 +204,7 @@ pub struct Disk {
 }
 
 /// An unbalance `m e` [kg·m] at a node, at angle `phase` [rad] from +x at t = 0.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Unbalance {
     pub node: usize,
     pub amount: f64,
@@ -212,7 +212,7 @@ pub struct Unbalance {
 }
 
 /// 2×2 coefficients given by numbers, constant or tabulated against speed [SI].
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CoefficientTable {
     /// Speeds [rad/s]; empty for constant coefficients (one row).
     pub speeds: Vec<f64>,
@@ -250,7 +250,7 @@ impl CoefficientTable {
 }
 
 /// What a bearing position holds.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum BearingSupport {
     /// A bearing case, solved at each speed; `name` is the path as written (identical names share solves).
     Case { name: String, case: Box<Case> },
@@ -259,14 +259,14 @@ pub enum BearingSupport {
 }
 
 /// A bearing at a node.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BearingPosition {
     pub node: usize,
     pub support: BearingSupport,
 }
 
 /// An isotropic linear support [N/m, N·s/m].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Support {
     pub node: usize,
     pub stiffness: f64,
@@ -274,14 +274,14 @@ pub struct Support {
 }
 
 /// Proportional damping: `ratio` on the free–free flexible modes `modes` (1-based).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct ModalDamping {
     pub ratio: f64,
     pub modes: [usize; 2],
 }
 
 /// A validated rotor [SI].
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Rotor {
     pub title: String,
     pub representative: bool,

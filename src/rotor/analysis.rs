@@ -4,7 +4,7 @@
 //!
 //! Steppable: [`Analysis::step`] does one speed and returns; [`run`] loops it to the end.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use web_time::Instant;
 
 use super::assembly::ShaftModel;
@@ -20,7 +20,7 @@ use super::unbalance::{api617_limit_um, response, Orbit};
 use crate::model::rotor::Rotor;
 
 /// Settings of an analysis.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct AnalysisParams {
     /// Spin speeds [rad/s], ascending.
     pub speeds_rad_s: Vec<f64>,
@@ -38,7 +38,7 @@ impl AnalysisParams {
 }
 
 /// Results at one speed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SpeedResult {
     pub point: SpeedPoint,
     /// Orbits at the response nodes (bearing and unbalance nodes).
@@ -48,7 +48,7 @@ pub struct SpeedResult {
 }
 
 /// Numbers about the run.
-#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 pub struct AnalysisReport {
     pub bearing_solves: usize,
     pub eigen_solutions: usize,
@@ -64,7 +64,7 @@ pub struct AnalysisReport {
 }
 
 /// Everything an analysis produces.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct AnalysisResult {
     pub title: String,
     pub representative: bool,

@@ -14,13 +14,13 @@
 //! points have and is numbered within that whirl by its frequency at the first speed.
 
 use nalgebra::Complex;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::eigen::{Mode, Whirl};
 use super::stability::SpeedPoint;
 
 /// A crossing of a mode with an n× line.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct CriticalSpeed {
     /// Excitation order n.
     pub order: f64,

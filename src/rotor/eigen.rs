@@ -12,14 +12,14 @@
 //! Real eigenvalues (over-damped motions) are not modes; one with Re λ > 0 is an instability and is reported.
 
 use nalgebra::{Complex, DMatrix};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::assembly::{NodeDof, ShaftModel, Weights};
 use super::coupling::System;
 use super::error::RotorError;
 
 /// Whirl direction of a mode.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Whirl {
     Forward,
@@ -27,7 +27,7 @@ pub enum Whirl {
 }
 
 /// One damped mode.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Mode {
     /// Eigenvalue λ [1/s].
     pub real_per_s: f64,
@@ -52,7 +52,7 @@ impl Mode {
 }
 
 /// All damped modes at one speed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Modes {
     /// Oscillatory modes, ascending in frequency.
     pub modes: Vec<Mode>,

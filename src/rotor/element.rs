@@ -51,7 +51,7 @@ pub enum BeamTheory {
 }
 
 /// Section and material of one element [SI].
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BeamSection {
     pub length_m: f64,
     pub outer_diameter_m: f64,

@@ -25,6 +25,7 @@ pub mod error;
 pub mod reduction;
 pub mod stability;
 pub mod unbalance;
+pub mod wire;
 #[cfg(test)]
 mod closed_form;
 #[cfg(test)]

@@ -6,7 +6,7 @@
 //! changes sign, located by bisection on the speed (each probe a new eigen-solution with the provider's
 //! coefficients at that speed) until the bracket is narrower than `tol` relative.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::assembly::ShaftModel;
 use super::coupling::{assemble, BearingCoefficients};
@@ -17,7 +17,7 @@ use super::error::RotorError;
 pub type Provider<'a> = dyn FnMut(f64) -> Result<Vec<BearingCoefficients>, RotorError> + 'a;
 
 /// Modes at one speed.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SpeedPoint {
     pub speed_rad_s: f64,
     pub modes: Modes,
@@ -45,7 +45,7 @@ pub fn modes_at(shaft: &ShaftModel, nodes: &[usize], provider: &mut Provider<'_>
 }
 
 /// Onset search result.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Onset {
     /// Onset speed [rad/s].
     pub speed_rad_s: f64,

@@ -9,7 +9,7 @@
 //! `A = 25.4 √(12000/N)` µm (N in rpm) bounds.
 
 use nalgebra::{Complex, DMatrix, DVector};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::assembly::{NodeDof, ShaftModel};
 use super::coupling::System;
@@ -23,7 +23,7 @@ pub fn api617_limit_um(speed_rpm: f64) -> f64 {
 }
 
 /// Orbit at one node.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Orbit {
     pub node: usize,
     /// Amplitudes [m] and phases [rad] of x and y (`x = |X| cos(Ωt + ∠X)`).
