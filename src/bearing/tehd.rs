@@ -96,19 +96,33 @@ impl GrowthSolver {
         let solid = Solid::from_pad(&mesh);
         let (fixed, pin, anchor) = determinate_supports(&mesh, &solid, pivot_rad, half);
         let supports = Supports::new(&solid, &fixed, &[], [0.0, 0.0]);
-        let system = ElasticSystem::assemble(&solid, &material, Formulation::Incompatible, supports)?;
+        let (system, load) = ElasticSystem::assemble_with_thermal_load(&solid, &material, Formulation::Incompatible, supports)?;
         let mut solver = SpdSolver::new(&system.pattern).map_err(ElasticError::Factor)?;
         solver.factor(&system.pattern, &system.stiffness).map_err(ElasticError::Factor)?;
-        let load = ThermalLoad::new(&solid, &material)?;
         Ok(Self { solid, system, solver, load, material, pivot_from_le, mesh, pin, anchor })
     }
 
-    /// The pad's displacement for the temperature rise `dt` (all pad nodes) [K].
-    fn displacement(&mut self, alpha: f64, dt: &[f64]) -> Result<PadGrowth, ElasticError> {
-        let f = self.load.forces(&self.solid, alpha, dt);
-        let mut q = self.system.supports.reduce(&f);
-        self.solver.solve_in_place(&mut q);
-        let u = self.system.supports.expand(&q);
+    /// Reduced unknowns of the solid.
+    fn unknowns(&self) -> usize {
+        self.system.supports.len()
+    }
+
+    /// The reduced thermal load of the temperature rise `dt` (all pad nodes) [K].
+    fn reduced_load(&self, alpha: f64, dt: &[f64]) -> Vec<f64> {
+        self.system.supports.reduce(&self.load.forces(&self.solid, alpha, dt))
+    }
+
+    /// The pad's displacements for several reduced loads at once (column-major, one column per pad): one
+    /// pass of the factor serves them all.
+    fn displacements(&mut self, mut loads: Vec<f64>) -> Vec<PadGrowth> {
+        let n = self.unknowns();
+        self.solver.solve_many_in_place(&mut loads, n);
+        loads.chunks_exact(n).map(|q| self.displacement(q)).collect()
+    }
+
+    /// The pad's displacement from the solved reduced unknowns `q`.
+    fn displacement(&self, q: &[f64]) -> PadGrowth {
+        let u = self.system.supports.expand(q);
         // Remove the rotation δ about the pivot line that the Cartesian rotation support leaves: the anchor
         // node (under the pivot line) then has no displacement across the line–anchor direction.
         let p = self.pin;
@@ -127,7 +141,7 @@ impl GrowthSolver {
             })
             .collect();
         let film_m = (0..self.mesh.n_film).map(|i| nodal_polar_m[3 * i]).collect();
-        Ok(PadGrowth { film_m, nodal_polar_m })
+        PadGrowth { film_m, nodal_polar_m }
     }
 }
 
@@ -251,26 +265,30 @@ impl TehdModel {
     }
 
     /// The growth for the pads' temperatures (`pad_c[k]`: all pad nodes of pad k [°C], `None` without a
-    /// solid) and the journal temperature `t_j` [°C]; `film_nodes[k]`: pad k's film node count.
-    ///
-    /// # Errors
-    /// [`SolveError::Invalid`] naming the pad if its elastic solve fails.
-    pub fn evaluate(&mut self, pad_c: &[Option<Vec<f64>>], t_j: f64, film_nodes: &[usize]) -> Result<GrowthField, SolveError> {
+    /// solid) and the journal temperature `t_j` [°C]; `film_nodes[k]`: pad k's film node count. The solids
+    /// are factorised already, so nothing here can fail.
+    #[must_use]
+    pub fn evaluate(&mut self, pad_c: &[Option<Vec<f64>>], t_j: f64, film_nodes: &[usize]) -> GrowthField {
         let g = self.growth;
-        let mut pad_film_m = Vec::with_capacity(pad_c.len());
-        let mut pad_nodal_m = Vec::with_capacity(pad_c.len());
-        for (k, t) in pad_c.iter().enumerate() {
-            let u = match (self.solver_of.get(k).copied().flatten(), t) {
-                (Some(i), Some(t)) => {
+        let mut pad_film_m: Vec<Vec<f64>> = (0..pad_c.len()).map(|k| vec![0.0; film_nodes.get(k).copied().unwrap_or(0)]).collect();
+        let mut pad_nodal_m = vec![Vec::new(); pad_c.len()];
+        // The pads of each distinct solid, solved together.
+        for (i, solver) in self.solvers.iter_mut().enumerate() {
+            let pads: Vec<(usize, &Vec<f64>)> =
+                pad_c.iter().enumerate().filter_map(|(k, t)| t.as_ref().filter(|_| self.solver_of.get(k).copied().flatten() == Some(i)).map(|t| (k, t))).collect();
+            let loads: Vec<f64> = pads
+                .iter()
+                .flat_map(|(_, t)| {
                     let dt: Vec<f64> = t.iter().map(|x| x - g.reference_c).collect();
-                    self.solvers[i].displacement(g.pad_per_k, &dt).map_err(|e| SolveError::Invalid(format!("pad {k} thermal growth: {e}")))?
-                }
-                _ => PadGrowth { film_m: vec![0.0; film_nodes.get(k).copied().unwrap_or(0)], nodal_polar_m: Vec::new() },
-            };
-            pad_film_m.push(u.film_m);
-            pad_nodal_m.push(u.nodal_polar_m);
+                    solver.reduced_load(g.pad_per_k, &dt)
+                })
+                .collect();
+            for ((k, _), u) in pads.iter().zip(solver.displacements(loads)) {
+                pad_film_m[*k] = u.film_m;
+                pad_nodal_m[*k] = u.nodal_polar_m;
+            }
         }
-        Ok(GrowthField { pad_film_m, pad_nodal_m, journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c) })
+        GrowthField { pad_film_m, pad_nodal_m, journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c) }
     }
 }
 
@@ -331,7 +349,7 @@ mod tests {
         let dt = 30.0;
         let pad_c: Vec<Option<Vec<f64>>> = meshes.iter().map(|m| m.as_ref().map(|m| vec![20.0 + dt; m.n_nodes()])).collect();
         let nodes: Vec<usize> = model.pads.iter().map(|p| p.film.geom.n_nodes()).collect();
-        let g = tehd.evaluate(&pad_c, 50.0, &nodes).unwrap();
+        let g = tehd.evaluate(&pad_c, 50.0, &nodes);
         // Journal: α_j R ΔT_j.
         assert!((g.journal_m - 1.1e-5 * 0.05 * 30.0).abs() < 1e-18, "{}", g.journal_m);
         for k in 1..4 {

@@ -59,16 +59,13 @@ pub enum EigenError {
     TooMany { wanted: usize, n: usize },
 }
 
-/// `Y = A X` for every column of `x`.
+/// `Y = A X` for every column of `x`, in one pass over the pattern ([`Pattern::sym_matmat_interleaved`]).
 fn matvec_block(pattern: &Pattern, values: &[f64], x: &DMatrix<f64>) -> DMatrix<f64> {
-    let mut y = DMatrix::zeros(x.nrows(), x.ncols());
-    for c in 0..x.ncols() {
-        let col: Vec<f64> = x.column(c).iter().copied().collect();
-        let mut out = vec![0.0; x.nrows()];
-        pattern.sym_matvec(values, &col, &mut out);
-        y.column_mut(c).copy_from_slice(&out);
-    }
-    y
+    let (n, p) = (x.nrows(), x.ncols());
+    let xt: Vec<f64> = x.transpose().as_slice().to_vec();
+    let mut yt = vec![0.0; n * p];
+    pattern.sym_matmat_interleaved(values, p, &xt, &mut yt);
+    DMatrix::from_row_slice(n, p, &yt)
 }
 
 /// Deterministic start block: one column per unknown-pattern (smooth plus a few hashed entries), so runs
@@ -122,14 +119,17 @@ pub fn lowest(pattern: &Pattern, k: &[f64], m: &[f64], wanted: usize, shift: f64
     let mut iterations = 0;
     let mut previous = vec![f64::INFINITY; wanted];
     let mut history: Vec<f64> = Vec::new();
+    // M X: one block product for the start; afterwards X = Z Q gives M X = (M Z) Q from the products at hand.
+    let mut mx_block = matvec_block(pattern, m, &x);
     while iterations < params.max_iterations {
         iterations += 1;
-        let mut z = matvec_block(pattern, m, &x);
+        let mut z = mx_block;
         solver.solve_many_in_place(z.as_mut_slice(), n);
         let kz = matvec_block(pattern, k, &z);
         let mz = matvec_block(pattern, m, &z);
         let (lambda, q) = projected(&(z.transpose() * &kz), &(z.transpose() * &mz)).ok_or(EigenError::Projection { iteration: iterations })?;
         x = &z * &q;
+        mx_block = &mz * &q;
         values = lambda;
         // Residuals of the Ritz pairs from the products already at hand: K X = (K Z) Q, M X = (M Z) Q.
         let qw = q.columns(0, wanted);

@@ -191,14 +191,20 @@ fn integrate(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<Part
 /// (`det J ≤ 0` at a Gauss point).
 #[must_use]
 pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24)> {
+    element_matrices_and_thermal(x, mat, form).map(|(k, m, _)| (k, m))
+}
+
+/// Stiffness, mass and the condensed thermal-load operator ([`element_thermal_operator`]) of one element
+/// from one integration (a thermally loaded solid needs all three).
+#[must_use]
+pub fn element_matrices_and_thermal(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24, SMatrix<f64, 24, 8>)> {
     let p = integrate(x, mat, form)?;
-    let k = if form == Formulation::Incompatible {
+    if form == Formulation::Incompatible {
         let chol = p.kii.cholesky()?;
-        p.kcc - p.kci * chol.solve(&p.kci.transpose())
+        Some((p.kcc - p.kci * chol.solve(&p.kci.transpose()), p.m, p.gc - p.kci * chol.solve(&p.gi)))
     } else {
-        p.kcc
-    };
-    Some((k, p.m))
+        Some((p.kcc, p.m, p.gc))
+    }
 }
 
 /// Equivalent nodal forces of a thermal strain `α ΔT` (ΔT given at the nodes, interpolated trilinearly),
@@ -213,13 +219,7 @@ pub fn element_thermal_load(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation,
 /// turns every later thermal load into a 24 × 8 product.
 #[must_use]
 pub fn element_thermal_operator(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<SMatrix<f64, 24, 8>> {
-    let p = integrate(x, mat, form)?;
-    if form == Formulation::Incompatible {
-        let chol = p.kii.cholesky()?;
-        Some(p.gc - p.kci * chol.solve(&p.gi))
-    } else {
-        Some(p.gc)
-    }
+    element_matrices_and_thermal(x, mat, form).map(|(_, _, g)| g)
 }
 
 /// Momentum of a displacement (velocity) field over the element, `∫ ρ u dV` [kg · unit of u].

@@ -83,6 +83,29 @@ impl Pattern {
         }
     }
 
+    /// Y = A X for a block of `p` vectors stored interleaved (row-major: entry (i, j) at `i p + j`), in one
+    /// pass over the pattern — the eigen-solver's block products, several times faster than `p` single
+    /// products because each matrix entry is read once.
+    pub fn sym_matmat_interleaved(&self, values: &[f64], p: usize, x: &[f64], y: &mut [f64]) {
+        y.fill(0.0);
+        for c in 0..self.n {
+            let xc = c * p;
+            for k in self.col_ptr[c]..self.col_ptr[c + 1] {
+                let r = self.row_idx[k];
+                let v = values[k];
+                let xr = r * p;
+                for (yv, xv) in y[xr..xr + p].iter_mut().zip(&x[xc..xc + p]) {
+                    *yv += v * xv;
+                }
+                if r != c {
+                    for (yv, xv) in y[xc..xc + p].iter_mut().zip(&x[xr..xr + p]) {
+                        *yv += v * xv;
+                    }
+                }
+            }
+        }
+    }
+
     /// Copies `values` into `out`, replacing fixed rows/columns by identity rows.
     pub fn fix_rows(&self, values: &[f64], fixed: &[bool], out: &mut [f64]) {
         for c in 0..self.n {
@@ -287,6 +310,29 @@ mod tests {
         rhs[4] = 7.0;
         s.solve_in_place(&mut rhs);
         assert!((rhs[4] - 7.0).abs() < 1e-14);
+    }
+
+    /// The interleaved block product is the column-by-column product, entry by entry.
+    #[test]
+    fn block_product_equals_single_products() {
+        let node = |i: usize, j: usize| i * 4 + j;
+        let elems: Vec<[usize; 4]> = (0..3).flat_map(|i| (0..3).map(move |j| [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)])).collect();
+        let p = Pattern::from_elements(16, &elems);
+        #[allow(clippy::cast_precision_loss)]
+        let vals: Vec<f64> = (0..p.nnz()).map(|k| 1.0 + (k % 7) as f64 - 0.3 * (k % 3) as f64).collect();
+        let cols = 3;
+        #[allow(clippy::cast_precision_loss)]
+        let x: Vec<f64> = (0..16 * cols).map(|k| ((k * 37) % 11) as f64 - 5.0).collect();
+        let mut y = vec![0.0; 16 * cols];
+        p.sym_matmat_interleaved(&vals, cols, &x, &mut y);
+        for c in 0..cols {
+            let xc: Vec<f64> = (0..16).map(|i| x[i * cols + c]).collect();
+            let mut yc = vec![0.0; 16];
+            p.sym_matvec(&vals, &xc, &mut yc);
+            for i in 0..16 {
+                assert_eq!(y[i * cols + c], yc[i], "row {i}, column {c}");
+            }
+        }
     }
 
     #[test]

@@ -23,7 +23,7 @@
 //! them as they are. Units: SI.
 
 use crate::fem::eigen::{self, EigenError, EigenPairs, EigenParams};
-use crate::fem::solid8::{element_matrices, element_thermal_operator, Elastic, Formulation};
+use crate::fem::solid8::{element_matrices_and_thermal, element_thermal_operator, Elastic, Formulation};
 use crate::fem::{Pattern, SolverError, SpdSolver};
 use crate::fem::hex8::NODES;
 use crate::mesh::pad3d::PadMesh;
@@ -211,6 +211,14 @@ impl ElasticSystem {
     /// # Errors
     /// [`ElasticError::Element`] for an inverted element, [`ElasticError::Empty`] if nothing is free.
     pub fn assemble(solid: &Solid, material: &Elastic, form: Formulation, supports: Supports) -> Result<Self, ElasticError> {
+        Self::assemble_with_thermal_load(solid, material, form, supports).map(|(system, _)| system)
+    }
+
+    /// [`Self::assemble`] and the solid's [`ThermalLoad`] from the same element integrations.
+    ///
+    /// # Errors
+    /// As [`Self::assemble`].
+    pub fn assemble_with_thermal_load(solid: &Solid, material: &Elastic, form: Formulation, supports: Supports) -> Result<(Self, ThermalLoad), ElasticError> {
         if supports.is_empty() {
             return Err(ElasticError::Empty);
         }
@@ -225,8 +233,10 @@ impl ElasticSystem {
         let mut stiffness = vec![0.0; pattern.nnz()];
         let mut mass = vec![0.0; pattern.nnz()];
         let mut offset = 0;
+        let mut thermal = Vec::with_capacity(solid.hexes.len());
         for (e, g) in linked.iter().enumerate() {
-            let (ke, me) = element_matrices(&solid.element_nodes(e), material, form).ok_or(ElasticError::Element { element: e })?;
+            let (ke, me, ge) = element_matrices_and_thermal(&solid.element_nodes(e), material, form).ok_or(ElasticError::Element { element: e })?;
+            thermal.push(ge);
             let len = g.len();
             for (a, &(la, _, ca)) in g.iter().enumerate() {
                 for (b, &(lb, _, cb)) in g.iter().enumerate() {
@@ -239,7 +249,7 @@ impl ElasticSystem {
             }
             offset += len * len;
         }
-        Ok(Self { supports, pattern, stiffness, mass })
+        Ok((Self { supports, pattern, stiffness, mass }, ThermalLoad { elements: thermal }))
     }
 
     /// Nodal displacements under nodal forces `f` (3 per node) [m].

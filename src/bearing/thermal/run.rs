@@ -305,7 +305,7 @@ impl ThdRun {
             });
         }
         let nodes: Vec<usize> = model.pads.iter().map(|p| p.film.geom.n_nodes()).collect();
-        let g = tehd.evaluate(&pad_c, t_j, &nodes)?;
+        let g = tehd.evaluate(&pad_c, t_j, &nodes);
         let change = self.growth.as_ref().map_or_else(|| g.magnitude(), |old| g.change(old));
         self.report.growth_change_m.push(change);
         self.growth_next = Some(g);
