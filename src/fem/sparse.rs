@@ -258,16 +258,15 @@ impl SpdSolver {
         llt.solve_in_place_with_conj(Conj::No, MatMut::from_column_major_slice_mut(rhs, n, 1), Par::Seq, MemStack::new(&mut self.work));
     }
 
-    /// Solves for up to eight right-hand sides stored column-major in `rhs` (n × k).
+    /// Solves for the right-hand sides stored column-major in `rhs` (n × k), eight at a time (the work
+    /// space holds eight).
     pub fn solve_many_in_place(&mut self, rhs: &mut [f64], n: usize) {
         debug_assert!(self.factored, "solve before factor");
-        let k = rhs.len() / n;
         for chunk in rhs.chunks_mut(8 * n) {
             let kk = chunk.len() / n;
             let llt = LltRef::new(&self.symbolic, &self.l_values);
             llt.solve_in_place_with_conj(Conj::No, MatMut::from_column_major_slice_mut(chunk, n, kk), Par::Seq, MemStack::new(&mut self.work));
         }
-        let _ = k;
     }
 }
 
