@@ -194,8 +194,10 @@ pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> 
     element_matrices_and_thermal(x, mat, form).map(|(k, m, _)| (k, m))
 }
 
-/// Stiffness, mass and the condensed thermal-load operator ([`element_thermal_operator`]) of one element
-/// from one integration (a thermally loaded solid needs all three).
+/// Stiffness, mass and the condensed thermal-load operator of one element from one integration (a thermally
+/// loaded solid needs all three). The operator is the load per unit α and unit nodal temperature rise,
+/// `G = G_c − K_ci K_ii⁻¹ G_i` (column a: the load of ΔT = N_a, `∫ Bᵀ D m N_a dV` condensed consistently with
+/// the stiffness), so the load of `α ΔT` is `α G ΔT_nodal`: one 24 × 8 product per new temperature field.
 #[must_use]
 pub fn element_matrices_and_thermal(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24, SMatrix<f64, 24, 8>)> {
     let p = integrate(x, mat, form)?;
@@ -205,21 +207,6 @@ pub fn element_matrices_and_thermal(x: &[[f64; 3]; 8], mat: &Elastic, form: Form
     } else {
         Some((p.kcc, p.m, p.gc))
     }
-}
-
-/// Equivalent nodal forces of a thermal strain `α ΔT` (ΔT given at the nodes, interpolated trilinearly),
-/// `f = ∫ Bᵀ D ε_th dV`, condensed consistently with the stiffness: `f_c − K_ci K_ii⁻¹ f_i`.
-#[must_use]
-pub fn element_thermal_load(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation, alpha: f64, dt: &[f64; 8]) -> Option<SVector<f64, 24>> {
-    Some(element_thermal_operator(x, mat, form)? * SVector::<f64, 8>::from_row_slice(dt) * alpha)
-}
-
-/// The condensed thermal load per unit α and unit nodal temperature rise, `G = G_c − K_ci K_ii⁻¹ G_i`
-/// (column a: the load of ΔT = N_a): [`element_thermal_load`] is `α G ΔT_nodal`. Built once per element, it
-/// turns every later thermal load into a 24 × 8 product.
-#[must_use]
-pub fn element_thermal_operator(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<SMatrix<f64, 24, 8>> {
-    element_matrices_and_thermal(x, mat, form).map(|(_, _, g)| g)
 }
 
 /// Momentum of a displacement (velocity) field over the element, `∫ ρ u dV` [kg · unit of u].

@@ -23,7 +23,7 @@
 //! them as they are. Units: SI.
 
 use crate::fem::eigen::{self, EigenError, EigenPairs, EigenParams};
-use crate::fem::solid8::{element_matrices_and_thermal, element_thermal_operator, Elastic, Formulation};
+use crate::fem::solid8::{element_matrices_and_thermal, Elastic, Formulation};
 use crate::fem::{Pattern, SolverError, SpdSolver};
 use crate::fem::hex8::NODES;
 use crate::mesh::pad3d::PadMesh;
@@ -152,33 +152,16 @@ pub enum ElasticError {
     Eigen(#[from] EigenError),
 }
 
-/// Nodal forces (3 per node) equivalent to the thermal strain `α ΔT` of a nodal temperature rise `dt`
-/// (thermal growth, model.md §5).
-///
-/// # Errors
-/// [`ElasticError::Element`] for an inverted element.
-pub fn thermal_forces(solid: &Solid, material: &Elastic, alpha: f64, dt: &[f64]) -> Result<Vec<f64>, ElasticError> {
-    Ok(ThermalLoad::new(solid, material)?.forces(solid, alpha, dt))
-}
-
-/// The thermal-load operator of a solid, built once per solid and material: each element's condensed load
-/// per unit α and unit nodal temperature rise ([`crate::fem::solid8::element_thermal_operator`]), so that a
-/// new temperature field costs one 24 × 8 product per element instead of an element integration.
+/// The thermal-load operator of a solid, built with its stiffness ([`ElasticSystem::assemble_with_thermal_load`]):
+/// each element's condensed load per unit α and unit nodal temperature rise
+/// ([`crate::fem::solid8::element_matrices_and_thermal`]), so that a new temperature field costs one 24 × 8
+/// product per element instead of an element integration.
 #[derive(Debug, Clone)]
 pub struct ThermalLoad {
     elements: Vec<nalgebra::SMatrix<f64, 24, 8>>,
 }
 
 impl ThermalLoad {
-    /// # Errors
-    /// [`ElasticError::Element`] for an inverted element.
-    pub fn new(solid: &Solid, material: &Elastic) -> Result<Self, ElasticError> {
-        let elements = (0..solid.hexes.len())
-            .map(|e| element_thermal_operator(&solid.element_nodes(e), material, Formulation::Incompatible).ok_or(ElasticError::Element { element: e }))
-            .collect::<Result<_, _>>()?;
-        Ok(Self { elements })
-    }
-
     /// Equivalent nodal forces `∫ Bᵀ D α ΔT m dV` of the nodal temperature rise `dt` (all nodes) [K].
     #[must_use]
     pub fn forces(&self, solid: &Solid, alpha: f64, dt: &[f64]) -> Vec<f64> {
@@ -428,10 +411,10 @@ mod tests {
             }
         }
         let steel = Elastic { youngs_modulus: 200e9, poisson_ratio: 0.3, density: 7800.0 };
-        let sys = ElasticSystem::assemble(&solid, &steel, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+        let (sys, load) = ElasticSystem::assemble_with_thermal_load(&solid, &steel, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
         let (alpha, a, slope) = (1.2e-5, 30.0, 2000.0);
         let dt: Vec<f64> = solid.nodes.iter().map(|x| a + slope * x[1]).collect();
-        let u = sys.static_solve(&thermal_forces(&solid, &steel, alpha, &dt).unwrap()).unwrap();
+        let u = sys.static_solve(&load.forces(&solid, alpha, &dt)).unwrap();
         let exact = |x: [f64; 3]| [alpha * (a + slope * x[1]) * x[0], alpha * (a * x[1] + 0.5 * slope * (x[1] * x[1] - x[0] * x[0] - x[2] * x[2])), alpha * (a + slope * x[1]) * x[2]];
         let scale = alpha * slope * l * l;
         let worst = solid.nodes.iter().enumerate().flat_map(|(i, x)| (0..3).map(move |c| (i, c, *x))).map(|(i, c, x)| (u[3 * i + c] - exact(x)[c]).abs()).fold(0.0, f64::max);
