@@ -201,6 +201,25 @@ impl Remote {
     fn try_start(repaint: &egui::Context) -> Option<Self> {
         Self::start(repaint).map_err(|e| log::warn!("no solver worker ({e}); solving inside the page's frames")).ok()
     }
+
+    /// Starts a worker and posts `order` to it; `None` (logged) when either fails.
+    fn start_with(repaint: &egui::Context, order: &Order) -> Option<Self> {
+        Self::try_start(repaint).and_then(|r| r.post(order).map_err(|e| log_fallback(&e)).ok().map(|()| r))
+    }
+}
+
+/// The worker stopped being usable (it has been dropped; the caller falls back to stepping in the page).
+struct WorkerFailed;
+
+/// The reports of `remote` since the last call (none without a worker); when the worker has failed it is
+/// dropped, with the reason logged.
+fn take_reports(remote: &mut Option<Remote>) -> Result<Vec<Report>, WorkerFailed> {
+    let Some(r) = remote.as_ref() else { return Ok(Vec::new()) };
+    r.take().map_err(|e| {
+        log_fallback(&e);
+        *remote = None;
+        WorkerFailed
+    })
 }
 
 impl Drop for Remote {
@@ -220,38 +239,29 @@ impl Link {
 
     pub fn start(&mut self, running: Running) {
         if let Some(remote) = &self.remote {
-            let order = Order::Solve(Box::new(running));
-            let posted = remote.post(&order);
-            let Order::Solve(running) = order else { return };
-            match posted {
+            match remote.post(&Order::Solve(Box::new(running.clone()))) {
                 Ok(()) => {
-                    self.current = Some(*running);
+                    self.current = Some(running);
                     return;
                 }
                 Err(e) => {
                     log_fallback(&e);
                     self.remote = None;
-                    self.local.start(*running);
                 }
             }
-        } else {
-            self.local.start(running);
         }
+        self.local.start(running);
         self.repaint.request_repaint();
     }
 
     /// Events since the last call; without a worker the stages step here within `budget_s`.
     pub fn poll(&mut self, budget_s: f64, latest: &Arc<AtomicU64>) -> Vec<Event> {
         let mut events = Vec::new();
-        if let Some(remote) = &self.remote {
-            match remote.take() {
-                Ok(reports) => events.extend(reports.into_iter().filter_map(|r| if let Report::Event(e) = r { Some(e) } else { None })),
-                Err(e) => {
-                    log_fallback(&e);
-                    self.remote = None;
-                    if let Some(running) = self.current.take() {
-                        self.local.start(running);
-                    }
+        match take_reports(&mut self.remote) {
+            Ok(reports) => events.extend(reports.into_iter().filter_map(|r| if let Report::Event(e) = r { Some(e) } else { None })),
+            Err(WorkerFailed) => {
+                if let Some(running) = self.current.take() {
+                    self.local.start(running);
                 }
             }
         }
@@ -287,7 +297,7 @@ pub(super) struct SweepLink {
 
 impl SweepLink {
     pub fn start(order: SweepOrder, repaint: &egui::Context) -> Self {
-        let remote = Remote::try_start(repaint).and_then(|r| r.post(&Order::Sweep(order.clone())).map_err(|e| log_fallback(&e)).ok().map(|()| r));
+        let remote = Remote::start_with(repaint, &Order::Sweep(order.clone()));
         let local = remote.is_none().then(|| order.stepped(0));
         Self { repaint: repaint.clone(), order, remote, local, received: 0 }
     }
@@ -295,15 +305,9 @@ impl SweepLink {
     /// Rows finished since the last call; without a worker the points step here within `budget_s`.
     pub fn poll(&mut self, budget_s: f64) -> Vec<(f64, Row)> {
         let mut rows = Vec::new();
-        if let Some(remote) = &self.remote {
-            match remote.take() {
-                Ok(reports) => rows.extend(reports.into_iter().flat_map(|r| if let Report::Rows(rows) = r { rows } else { Vec::new() })),
-                Err(e) => {
-                    log_fallback(&e);
-                    self.remote = None;
-                    self.local = Some(self.order.stepped(self.received));
-                }
-            }
+        match take_reports(&mut self.remote) {
+            Ok(reports) => rows.extend(reports.into_iter().flat_map(|r| if let Report::Rows(rows) = r { rows } else { Vec::new() })),
+            Err(WorkerFailed) => self.local = Some(self.order.stepped(self.received)),
         }
         if let Some(local) = self.local.as_mut() {
             rows.extend(local.poll(budget_s));
@@ -329,9 +333,8 @@ pub(super) struct RotorLink {
 
 impl RotorLink {
     pub fn start(rotor: &Rotor, params: AnalysisParams, repaint: &egui::Context) -> Self {
-        let order = Order::Rotor(Box::new((rotor.clone(), params)));
-        let remote = Remote::try_start(repaint).and_then(|r| r.post(&order).map_err(|e| log_fallback(&e)).ok().map(|()| r));
-        let Order::Rotor(order) = order else { unreachable!("built above") };
+        let order = Box::new((rotor.clone(), params));
+        let remote = Remote::start_with(repaint, &Order::Rotor(order.clone()));
         let mut link = Self { repaint: repaint.clone(), order: Some(order), remote, local: None, failed: None };
         if link.remote.is_none() {
             link.start_local();
@@ -353,15 +356,9 @@ impl RotorLink {
     /// Events since the last call; without a worker one step of the analysis happens here.
     pub fn poll(&mut self) -> Vec<RotorEvent> {
         let mut events = Vec::new();
-        if let Some(remote) = &self.remote {
-            match remote.take() {
-                Ok(reports) => events.extend(reports.into_iter().filter_map(Report::into_rotor)),
-                Err(e) => {
-                    log_fallback(&e);
-                    self.remote = None;
-                    self.start_local();
-                }
-            }
+        match take_reports(&mut self.remote) {
+            Ok(reports) => events.extend(reports.into_iter().filter_map(Report::into_rotor)),
+            Err(WorkerFailed) => self.start_local(),
         }
         if let Some(e) = self.failed.take() {
             events.push(RotorEvent::Done(Err(e)));

@@ -43,7 +43,7 @@ impl Cancel for Superseded {
 }
 
 /// One job being worked on, stepped by either runner.
-#[derive(serde::Serialize, serde::Deserialize)]
+#[derive(Clone, serde::Serialize, serde::Deserialize)]
 pub(super) struct Running {
     pub job: u64,
     request: Request,
