@@ -201,10 +201,7 @@ fn family_solve(pads: usize, preload: f64, offset: f64, lop: bool, load_n: f64, 
 /// floats around the centre, and a pad that engages does so beyond a fold of its tilt equilibrium, already
 /// carrying several hundred newtons. Along the load the force law jumps from zero across the load, so no
 /// static position balances it (the map's 24 points used to spend the 9000-film-solve budget). Ten times the
-/// load (S = 1) converges on the same bearing, which shows the gap is the bearing's, not the search's. (Loads
-/// between the jump and about 1000 N still fail along 0°: the loaded pad's force points 30° off the load and
-/// the neighbour that would balance the rest would have to carry less than its own fold load; not classified
-/// yet, see docs/VALIDATION.md.)
+/// load (S = 1) converges on the same bearing, which shows the gap is the bearing's, not the search's.
 #[test]
 fn a_load_inside_the_force_gap_has_no_static_equilibrium() {
     for angle in [0.0, 30.0, 90.0] {
@@ -237,4 +234,49 @@ fn an_unloaded_pad_leaning_on_its_edge_is_touchdown() {
         }
         other => panic!("expected no stiffness across the pivot line, got {:?}", other.map(|s| s.eccentricity_ratio)),
     }
+}
+
+/// The same bearing between the two (S = 1, and 581 N and 700 N along 0°, which the check along the load
+/// missed): the loaded pad's force runs along its pivot line, 20° off the load, and the neighbour that would
+/// balance the rest would have to carry less than its own fold load. The journal positions that balance the
+/// load along their own direction break off where that neighbour engages: the residual force jumps over zero
+/// there (`ForceGap2d`). Mirror-image loads about the pad at 30° (20° and 40°) meet mirror-image jumps at
+/// mirror-image pads; ten times the load converges.
+#[test]
+fn a_load_inside_a_two_dimensional_force_gap_has_no_static_equilibrium() {
+    let gap = |load_n: f64, angle: f64| match family_solve(3, -0.3, 0.6, true, load_n, angle) {
+        Err(SolveError::ForceGap2d { pad, angle_deg, before_n, after_n, load_n: w }) => {
+            assert!((w - load_n).abs() < 1e-9 * load_n);
+            assert!(before_n * after_n < 0.0 && (before_n - after_n).abs() > 1e-2 * load_n, "{angle}°: jump {before_n} → {after_n} N");
+            (pad, angle_deg)
+        }
+        other => panic!("{load_n} N at {angle}°: expected a two-dimensional force gap, got {:?}", other.map(|s| s.eccentricity_ratio)),
+    };
+    let (pad20, at20) = gap(1250.0, 20.0);
+    let (pad40, at40) = gap(1250.0, 40.0);
+    // Pads at 270° (0), 30° (1), 150° (2): the mirror about 30° swaps pads 0 and 2.
+    assert_eq!((pad20, pad40), (0, 2));
+    assert!((at20 + at40 - 60.0).abs() < 1e-3, "jumps at {at20}° and {at40}° are not mirror images about 30°");
+    for load_n in [581.0, 700.0] {
+        gap(load_n, 0.0);
+    }
+    let s = family_solve(3, -0.3, 0.6, true, 12_500.0, 20.0).unwrap_or_else(|e| panic!("ten times the load must converge: {e}"));
+    assert!(s.report.residual <= EquilibriumParams::default().force_tol, "residual {:.2e}", s.report.residual);
+}
+
+/// Three pads with negative preload and centre pivots, heavily loaded (S = 0.01) 15° off the pad at 30°: a
+/// tilting pad's force runs along its pivot line, so the neighbour at 270° must carry W sin 15° / sin 120°.
+/// The walk along the unsupported direction used to carry that floating neighbour rigidly with the journal,
+/// its film diverging and without pressure until it closed, and the solve spent its budget (the map's 54
+/// points); the walk now searches the approached pad for its loaded state. The third pad floats.
+#[test]
+fn a_heavy_load_beside_a_pad_engages_its_negative_preload_neighbour() {
+    let w = 125_000.0;
+    let s = family_solve(3, -0.3, 0.5, true, w, 15.0).unwrap_or_else(|e| panic!("must converge: {e}"));
+    assert!(s.report.residual <= EquilibriumParams::default().force_tol, "residual {:.2e}", s.report.residual);
+    let f: Vec<f64> = s.pads.iter().map(|p| p.force_n[0].hypot(p.force_n[1])).collect();
+    // The force lines pass through the displaced journal centre, not the bearing centre: e/R ≈ 0.4 % of angle.
+    let expected = w * 15f64.to_radians().sin() / 120f64.to_radians().sin();
+    assert!((f[0] - expected).abs() < 1e-3 * expected, "pad 0 carries {} N, statics {expected} N", f[0]);
+    assert!(f[2] < 1e-4 * w && s.report.floating_pads == vec![2], "pad forces {f:?}, floating {:?}", s.report.floating_pads);
 }

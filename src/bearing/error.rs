@@ -85,6 +85,20 @@ pub enum SolveError {
          or the preload, or move the pivot towards mid-pad"
     )]
     ForceGap { pad: usize, below_n: f64, above_n: f64, load_n: f64 },
+    /// The two-dimensional form of [`Self::ForceGap`]: the journal positions that balance the load along their
+    /// own direction from the centre break off at a direction where the residual force (along that direction,
+    /// or across it) jumps over zero because a pad engages beyond a fold of its tilt equilibrium, and neither
+    /// the scan along the load nor load continuation finds a position beyond it. What was searched, not a proof
+    /// over the whole plane.
+    #[error(
+        "no static equilibrium found: the journal positions that balance the load along their direction break \
+         off near {angle_deg:.2}° from the bearing centre, where the residual force (film force plus load) jumps \
+         from {before_n:.3e} N to {after_n:.3e} N, across zero, as pad {pad} engages beyond a fold of its tilt \
+         equilibrium (it has no loaded state carrying less); a scan along the load and load continuation found no \
+         position either, so the load of {load_n:.3e} N falls in a two-dimensional force gap; raise the load or \
+         the preload, or move the pivot towards mid-pad"
+    )]
+    ForceGap2d { pad: usize, angle_deg: f64, before_n: f64, after_n: f64, load_n: f64 },
     /// Newton (and its fallbacks) stopped without meeting the tolerance.
     #[error("equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})")]
     NotConverged { iterations: usize, residual: f64, reason: String },

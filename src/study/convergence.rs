@@ -111,7 +111,7 @@ pub fn classify(result: &Result<Solution, SolveError>) -> (Class, String) {
         }
         Err(SolveError::Touchdown { .. }) => (Class::Touchdown, result.as_ref().err().map(ToString::to_string).unwrap_or_default()),
         Err(e @ SolveError::NoStiffness { .. }) => (Class::NoStiffness, e.to_string()),
-        Err(e @ SolveError::ForceGap { .. }) => (Class::ForceGap, e.to_string()),
+        Err(e @ (SolveError::ForceGap { .. } | SolveError::ForceGap2d { .. })) => (Class::ForceGap, e.to_string()),
         Err(e) => (Class::Failure, e.to_string()),
     }
 }

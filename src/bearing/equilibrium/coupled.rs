@@ -100,7 +100,13 @@ pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, c
         if walks < model.pads.len() {
             if let Some(d) = unsupported_direction(&kred, &Vector2::new(r[0], r[1]), tol).filter(|d| pads_ahead(&model.pads, *d)) {
                 walks += 1;
-                if let Some((u2, s2)) = advance_until_loaded(model, &u, &states, d, ctx)? {
+                // Following the journal rigidly first (cheap); then, if no pad picked up load before a film
+                // closed, searching the approached floating pads for a loaded state on the way.
+                let walked = match advance_until_loaded(model, &u, &states, d, false, ctx)? {
+                    None => advance_until_loaded(model, &u, &states, d, true, ctx)?,
+                    found => found,
+                };
+                if let Some((u2, s2)) = walked {
                     u = u2;
                     states = s2;
                     continue;
@@ -234,11 +240,16 @@ const WALK_STEPS: usize = 60;
 
 /// Moves the journal along the unit direction `d` in steps of [`WALK_STEP`] Cb, every pad with coordinates
 /// following it rigidly ([`follow_journal`]), until a pad that floats now picks up load; `None` if a film
-/// closes first or none does within [`WALK_STEPS`].
-fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState], d: Vector2<f64>, ctx: &mut Ctx<'_>) -> Result<Option<Accepted>, SolveError> {
+/// closes first or none does within [`WALK_STEPS`]. `search_approached`: a floating pad whose film thins
+/// is also searched for a loaded state beyond its fold at each step (a negative-preload pad followed
+/// rigidly keeps a diverging film, without pressure, until it closes).
+fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState], d: Vector2<f64>, search_approached: bool, ctx: &mut Ctx<'_>) -> Result<Option<Accepted>, SolveError> {
     let cb = model.assembled_clearance;
     let follows: Vec<bool> = model.pads.iter().enumerate().map(|(k, pm)| !(pm.dofs().is_empty() || ctx.held(k) && states[k].unloaded)).collect();
     let floating: Vec<bool> = follows.iter().zip(states).map(|(f, s)| *f && s.unloaded).collect();
+    // Thinnest film of each floating pad at the previous step (the first step only sets it: the pads were
+    // searched at the start).
+    let mut last_h_min = vec![0.0; model.pads.len()];
     for i in 1..=WALK_STEPS {
         #[allow(clippy::cast_precision_loss)]
         let de = [WALK_STEP * cb * i as f64 * d[0], WALK_STEP * cb * i as f64 * d[1]];
@@ -255,6 +266,21 @@ fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState]
             a.unloaded |= b.unloaded && ctx.share(a) < UNLOADED_SHARE;
         }
         place_hard_pads(model, &mut trial, &mut st2, &floating, ctx)?;
+        // A floating pad the journal approaches may have a loaded state beyond its fold (negative preload)
+        // that following the journal rigidly never reaches: search it thoroughly while its film thins.
+        for k in 0..model.pads.len() {
+            if !(search_approached && floating[k] && st2[k].unloaded) {
+                continue;
+            }
+            let h = model.pads[k].film.h_min().0;
+            if h < last_h_min[k] {
+                ctx.thorough_onset = true;
+                let placed = replace_pad(model, k, &mut trial, ctx);
+                ctx.thorough_onset = false;
+                st2[k] = placed?;
+            }
+            last_h_min[k] = h;
+        }
         if st2.iter().zip(&floating).any(|(s, f)| *f && !s.unloaded) {
             return Ok(Some((trial, st2)));
         }

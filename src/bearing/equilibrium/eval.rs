@@ -63,6 +63,9 @@ pub(crate) struct Ctx<'a> {
     /// Along the load the bearing force jumps across the load: (pad that switches, force along the load
     /// before and after the jump [N]).
     pub force_gap: Option<(usize, f64, f64)>,
+    /// The polar search met a jump over zero of the residual force inside its angular bracket, along a ray or
+    /// across neighbouring rays: (pad that switched, direction [rad], residual component on either side [N]).
+    pub gap_2d: Option<(usize, f64, f64, f64)>,
     /// Film solves allowed in total.
     budget: usize,
     started: Instant,
@@ -71,7 +74,7 @@ pub(crate) struct Ctx<'a> {
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
-        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, loaded_state_found: Vec::new(), force_gap: None, budget, started }
+        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, loaded_state_found: Vec::new(), force_gap: None, gap_2d: None, budget, started }
     }
 
     /// Seconds since the solve started.

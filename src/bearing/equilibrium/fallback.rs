@@ -193,6 +193,12 @@ fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, ca
             }
         }
     }
+    if let Some((pad, angle_rad, before_n, after_n)) = ctx.gap_2d {
+        // The polar search met the jump off the load direction, and neither the scan nor the continuation
+        // found a state beyond it.
+        let w = external_load(ctx.op, 1.0);
+        return Err(SolveError::ForceGap2d { pad, angle_deg: angle_rad.to_degrees(), before_n, after_n, load_n: w[0].hypot(w[1]) });
+    }
     if let Some(b) = ctx.exhausted() {
         return Err(ctx.budget_error(b));
     }

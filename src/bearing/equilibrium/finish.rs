@@ -88,6 +88,12 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
 /// way (an unloaded pad pressed onto the journal by its own film while the journal wandered along the
 /// unsupported direction): a touchdown there is reported as the missing stiffness it follows from.
 pub(super) fn classify_failure(model: &BearingModel, ctx: &Ctx<'_>, e: SolveError) -> SolveError {
+    // A budget spent after the polar search saw the films close before the load balanced: touchdown, as the
+    // continuation would have answered had the budget lasted.
+    let e = match (e, ctx.closes_before_balance) {
+        (SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. }, Some((pad, h, ecc))) => SolveError::Touchdown { pad, h_min_um: h * 1e6, eccentricity_ratio: ecc },
+        (e, _) => e,
+    };
     match classify_contact(model, e) {
         e @ SolveError::Touchdown { .. } => unsupported_load(model, ctx).unwrap_or(e),
         e => e,

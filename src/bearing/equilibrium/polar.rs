@@ -19,7 +19,7 @@ use super::super::error::SolveError;
 use super::super::model::BearingModel;
 use super::eval::{assemble_u, external_load, min_film, solve_all_pads, Ctx};
 use super::fallback::TOUCHDOWN_FRACTION;
-use super::{Cancel, Found, PadState, Stall};
+use super::{Cancel, Found, PadState, Stall, UNLOADED_SHARE};
 use crate::physics::reynolds::FilmError;
 
 /// First angular step from the load direction [rad] (doubled until the bracket is found), and the largest
@@ -36,6 +36,13 @@ const MAX_BRACKET_ITERATIONS: usize = 80;
 /// A ray whose bracket collapses onto a step of its force law larger than this fraction of the load ends at
 /// a jump, not a root.
 const JUMP: f64 = 1e-3;
+/// A ray's root is solved to this fraction of the smaller transverse residual at the ends of the angular
+/// bracket (enough to know the sign of the transverse residual), never tighter than a tenth of the
+/// tolerance; the first rays use the load as that scale.
+const RAY_TOL_FRACTION: f64 = 1e-3;
+/// An angular bracket narrower than this [rad] whose ends still differ by more than [`JUMP`] of the load
+/// across their rays has collapsed onto a jump of the transverse force, not onto a root.
+const ANGLE_JUMP_WIDTH: f64 = 1e-7;
 
 /// The converged point on one ray.
 struct RayRoot {
@@ -76,6 +83,8 @@ struct Search<'m, 'c, 'o> {
     w: [f64; 2],
     warm: Vec<f64>,
     tol: f64,
+    /// Tolerance of the current ray's root [N] (see [`RAY_TOL_FRACTION`]).
+    ray_tol: f64,
     /// The last ray ended at a jump of its force law rather than at a root: (pad that switched, g on the
     /// carrying-less side, g on the other) [N].
     jump: Option<(usize, f64, f64)>,
@@ -98,9 +107,35 @@ impl Search<'_, '_, '_> {
         }
     }
 
+    /// The search stops at a ray ψ without a restoring root; one that ended at a jump of its force law over
+    /// zero is recorded as a gap in two dimensions.
+    fn ray_without_root(&mut self, psi: f64) -> Result<Result<Found, Stall>, SolveError> {
+        if let Some((pad, g_before, g_after)) = self.jump {
+            self.ctx.gap_2d = Some((pad, psi, g_before, g_after));
+            return Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: "the force along a ray inside the angular bracket jumps over zero".into() }));
+        }
+        Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: "a ray without a restoring root inside the angular bracket".into() }))
+    }
+
+    /// The ray's root to a tolerance of [`RAY_TOL_FRACTION`] of `transverse_scale` [N]; solved again to a tenth
+    /// of the tolerance when its transverse residual is already within the tolerance (a candidate answer).
+    fn ray_to(&mut self, psi: f64, guess: f64, transverse_scale: f64, cancel: &dyn Cancel) -> Result<Option<RayRoot>, SolveError> {
+        let tight = 0.1 * self.tol;
+        self.ray_tol = (RAY_TOL_FRACTION * transverse_scale).max(tight);
+        let r = self.ray(psi, guess, cancel)?;
+        match r {
+            Some(r) if self.ray_tol > tight && r.h.abs() <= self.tol && r.g.abs() > tight => {
+                self.ray_tol = tight;
+                self.ray(psi, r.s, cancel)
+            }
+            r => Ok(r),
+        }
+    }
+
     /// The first root of g on the ray ψ, searched from `guess` [m]; `None` if the ray has no restoring root.
     fn ray(&mut self, psi: f64, guess: f64, cancel: &dyn Cancel) -> Result<Option<RayRoot>, SolveError> {
         let cb = self.model.assembled_clearance;
+        self.jump = None;
         // Last point with g > 0, and first with g ≤ 0 or a closed film (`None` probe).
         let mut lo: Option<(f64, Probe)> = None;
         let mut hi: Option<(f64, Option<Probe>)> = None;
@@ -138,17 +173,14 @@ impl Search<'_, '_, '_> {
         let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
         for _ in 0..MAX_BRACKET_ITERATIONS {
             let gb = pb.as_ref().map_or(f64::NEG_INFINITY, |p| p.g);
-            let converged_b = gb.abs() <= 0.1 * self.tol;
-            if converged_b || pa.g.abs() <= 0.1 * self.tol || (b - a).abs() <= 1e-13 * cb {
-                if let Some(p) = pb.as_ref().filter(|p| !converged_b && pa.g.abs() > 0.1 * self.tol && pa.g - p.g > JUMP * self.w[0].hypot(self.w[1])) {
-                    // No root but a jump: a pad switched between floating and a loaded state across it.
-                    let pad = (0..p.states.len())
-                        .max_by(|&i, &j| {
-                            let d = |k: usize| (self.ctx.share(&p.states[k]) - self.ctx.share(&pa.states[k])).abs();
-                            d(i).total_cmp(&d(j))
-                        })
-                        .unwrap_or(0);
-                    self.jump = Some((pad, pa.g, p.g));
+            let converged_b = gb.abs() <= self.ray_tol;
+            if converged_b || pa.g.abs() <= self.ray_tol || (b - a).abs() <= 1e-13 * cb {
+                if let Some(p) = pb.as_ref().filter(|p| !converged_b && pa.g.abs() > self.ray_tol && pa.g - p.g > JUMP * self.w[0].hypot(self.w[1])) {
+                    // No root but a jump: a pad switched between floating and a loaded state across it (any
+                    // other jump — near a closing film, say — is only the end of this ray's search).
+                    if let Some(pad) = switching_pad(self.ctx, (&pa.states, pa.thinnest.1), (&p.states, p.thinnest.1), cb) {
+                        self.jump = Some((pad, pa.g, p.g));
+                    }
                     return Ok(None);
                 }
                 let (s, p) = if converged_b || pa.g.abs() > gb.abs() { (b, pb) } else { (a, Some(pa)) };
@@ -185,6 +217,21 @@ impl Search<'_, '_, '_> {
     }
 }
 
+/// The pad that switches between floating and a loaded state across a jump between the states `a` and `b`
+/// (each with its thinnest film [m]): the one whose load share changes most, if it floats on one side and
+/// carries load on the other, and neither side's film is closing (that is touchdown's territory).
+fn switching_pad(ctx: &Ctx<'_>, a: (&[PadState], f64), b: (&[PadState], f64), cb: f64) -> Option<usize> {
+    if a.1.min(b.1) < TOUCHDOWN_FRACTION * cb {
+        return None;
+    }
+    let pad = (0..a.0.len()).max_by(|&i, &j| {
+        let d = |k: usize| (ctx.share(&a.0[k]) - ctx.share(&b.0[k])).abs();
+        d(i).total_cmp(&d(j))
+    })?;
+    let (sa, sb) = (ctx.share(&a.0[pad]), ctx.share(&b.0[pad]));
+    (sa.min(sb) < UNLOADED_SHARE && sa.max(sb) >= UNLOADED_SHARE).then_some(pad)
+}
+
 /// Runs the polar bracketing search (force-prescribed loads only).
 ///
 /// Where a pad has two states (floating, and loaded beyond a fold), the loaded one is taken: the force law is
@@ -207,11 +254,11 @@ fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: 
     let tol = ctx.params.force_tol * ctx.force_scale;
     let cb = model.assembled_clearance;
     let warm = centred.to_vec();
-    let mut search = Search { model, ctx, w, warm, tol, jump: None };
+    let load = w[0].hypot(w[1]);
+    let mut search = Search { model, ctx, w, warm, tol, ray_tol: 0.1 * tol, jump: None };
     let mut guess = 0.3 * cb;
-    let Some(mid) = search.ray(psi_w, guess, cancel)? else {
+    let Some(mid) = search.ray_to(psi_w, guess, load, cancel)? else {
         if let Some((pad, g_before, g_after)) = search.jump {
-            let load = w[0].hypot(w[1]);
             search.ctx.force_gap = Some((pad, load - g_before, load - g_after));
             return stall("the force along the load jumps across the load");
         }
@@ -235,7 +282,7 @@ fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: 
         }
         let psi = if up { psi_w + step } else { psi_w - step };
         search.ctx.report.iterations += 1;
-        let Some(r) = search.ray(psi, guess, cancel)? else { return stall("a ray without a restoring root inside the angular bracket") };
+        let Some(r) = search.ray_to(psi, guess, load, cancel)? else { return search.ray_without_root(psi) };
         guess = r.s;
         match (up, r.h > 0.0) {
             (true, true) => (a, ra) = (psi, Some(r)),
@@ -256,13 +303,22 @@ fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: 
             }
         }
         let (Some(pa), Some(pb)) = (ra.as_ref(), rb.as_ref()) else { break };
+        let across = pa.h.abs().min(pb.h.abs());
+        if (b - a).abs() <= ANGLE_JUMP_WIDTH && across > JUMP * load {
+            // The rays' transverse force steps across zero between two rays a hair apart: if a pad engages
+            // there beyond its fold, no ray in between balances the load.
+            if let Some(pad) = switching_pad(search.ctx, (&pa.states, pa.thinnest.1), (&pb.states, pb.thinnest.1), cb) {
+                search.ctx.gap_2d = Some((pad, 0.5 * (a + b), pa.h, pb.h));
+                return stall("the force across the balancing rays jumps across zero");
+            }
+        }
         if (b - a).abs() <= 1e-14 {
             break;
         }
         search.ctx.report.residual_history.push(pa.h.abs().min(pb.h.abs()) / search.ctx.force_scale);
         let psi = illinois(a, fa_scale * pa.h, b, fb_scale * pb.h);
         search.ctx.report.iterations += 1;
-        let Some(r) = search.ray(psi, guess, cancel)? else { return stall("a ray without a restoring root inside the angular bracket") };
+        let Some(r) = search.ray_to(psi, guess, across, cancel)? else { return search.ray_without_root(psi) };
         guess = r.s;
         if r.h > 0.0 {
             (a, ra) = (psi, Some(r));
