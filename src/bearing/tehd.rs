@@ -96,7 +96,8 @@ impl GrowthSolver {
         let solid = Solid::from_pad(&mesh);
         let (fixed, pin, anchor) = determinate_supports(&mesh, &solid, pivot_rad, half);
         let supports = Supports::new(&solid, &fixed, &[], [0.0, 0.0]);
-        let (system, load) = ElasticSystem::assemble_with_thermal_load(&solid, &material, Formulation::Incompatible, supports)?;
+        let (mut system, load) = ElasticSystem::assemble_with_thermal_load(&solid, &material, Formulation::Incompatible, supports)?;
+        system.order_as_pad(&solid);
         let mut solver = SpdSolver::new(&system.pattern).map_err(ElasticError::Factor)?;
         solver.factor(&system.pattern, &system.stiffness).map_err(ElasticError::Factor)?;
         Ok(Self { solid, system, solver, load, material, pivot_from_le, mesh, pin, anchor })

@@ -4,7 +4,7 @@
 //! ```text
 //! A = K − σ M   (positive definite: K ⪰ 0, M ≻ 0, σ < 0), factorised once by sparse Cholesky
 //! repeat:  Z = A⁻¹ M X                               (p block vectors, p = max(2m, m + 8))
-//!          K̂ = Zᵀ K Z,  M̂ = Zᵀ M Z                  (projection on the subspace)
+//!          K̂ = Zᵀ K Z,  M̂ = Zᵀ M Z                  (projection; K Z = M X + σ M Z needs no product with K)
 //!          K̂ Q = M̂ Q Λ,  Qᵀ M̂ Q = I                  (dense p × p problem)
 //!          X = Z Q
 //! until the m wanted Ritz pairs have residuals ‖K v − λ M v‖∞ < tol · max_j ‖K v_j‖∞, or the Ritz values
@@ -123,10 +123,12 @@ pub fn lowest(pattern: &Pattern, k: &[f64], m: &[f64], wanted: usize, shift: f64
     let mut mx_block = matvec_block(pattern, m, &x);
     while iterations < params.max_iterations {
         iterations += 1;
-        let mut z = mx_block;
+        let mut z = mx_block.clone();
         solver.solve_many_in_place(z.as_mut_slice(), n);
-        let kz = matvec_block(pattern, k, &z);
         let mz = matvec_block(pattern, m, &z);
+        // K Z = (K − σM) Z + σ M Z = M X + σ M Z: no product with K (Bathe's projection). It omits the solve's
+        // round-off, which the true residuals after the loop include.
+        let kz = mx_block + &mz * shift;
         let (lambda, q) = projected(&(z.transpose() * &kz), &(z.transpose() * &mz)).ok_or(EigenError::Projection { iteration: iterations })?;
         x = &z * &q;
         mx_block = &mz * &q;
@@ -154,6 +156,12 @@ pub fn lowest(pattern: &Pattern, k: &[f64], m: &[f64], wanted: usize, shift: f64
     }
     let vectors = x.columns(0, wanted).into_owned();
     values.truncate(wanted);
+    // The reported residuals are the true ones, from products with K and M.
+    let (kx, mx) = (matvec_block(pattern, k, &vectors), matvec_block(pattern, m, &vectors));
+    let scale = kx.amax().max(f64::MIN_POSITIVE);
+    for (i, r) in residuals.iter_mut().enumerate() {
+        *r = (kx.column(i) - mx.column(i) * values[i]).amax() / scale;
+    }
     Ok(EigenPairs { values, vectors, iterations, residuals, converged })
 }
 

@@ -10,7 +10,8 @@
 
 use serde::{Deserialize, Serialize};
 use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::sparse::linalg::cholesky::{factorize_symbolic_cholesky, LltRef, SymbolicCholesky};
+use faer::perm::PermRef;
+use faer::sparse::linalg::cholesky::{factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par, Side};
 use thiserror::Error;
@@ -38,6 +39,9 @@ pub struct Pattern {
     pub scatter: Vec<[usize; 16]>,
     /// Position of each diagonal entry.
     pub diag: Vec<usize>,
+    /// Elimination order of the unknowns for the Cholesky factorisation (`order[k]`: the unknown eliminated
+    /// k-th), when the caller knows a better one than faer's approximate minimum degree (`None`).
+    pub ordering: Option<Vec<usize>>,
 }
 
 impl Pattern {
@@ -56,7 +60,7 @@ impl Pattern {
     #[must_use]
     pub fn from_groups<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone) -> (Self, Vec<usize>) {
         let c = CscGroups::build(n, groups, |row, col| row >= col);
-        (Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: Vec::new(), diag: c.diag }, c.scatter)
+        (Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: Vec::new(), diag: c.diag, ordering: None }, c.scatter)
     }
 
     #[must_use]
@@ -221,7 +225,22 @@ impl SpdSolver {
             supernodal_flop_ratio_threshold: supernodal_threshold(pattern.n),
             ..Default::default()
         };
-        let symbolic = factorize_symbolic_cholesky(pattern.symbolic(), Side::Lower, Default::default(), params)
+        // A given ordering that is not a permutation of the unknowns falls back to AMD.
+        let inverse: Option<Vec<usize>> = pattern.ordering.as_ref().filter(|o| o.len() == pattern.n).and_then(|order| {
+            let mut inv = vec![usize::MAX; order.len()];
+            for (k, &i) in order.iter().enumerate() {
+                if *inv.get(i)? != usize::MAX {
+                    return None;
+                }
+                inv[i] = k;
+            }
+            Some(inv)
+        });
+        let ordering = match (&pattern.ordering, &inverse) {
+            (Some(order), Some(inv)) => SymmetricOrdering::Custom(PermRef::new_checked(order, inv, pattern.n)),
+            _ => SymmetricOrdering::Amd,
+        };
+        let symbolic = factorize_symbolic_cholesky(pattern.symbolic(), Side::Lower, ordering, params)
             .map_err(|e| SolverError::Symbolic(format!("{e:?}")))?;
         let l_values = vec![0.0; symbolic.len_val()];
         let work = MemBuffer::new(Self::scratch(&symbolic));

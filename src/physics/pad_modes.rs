@@ -170,7 +170,8 @@ impl PadModes {
         let fixed: Vec<(usize, usize)> = if half { (0..solid.n_nodes()).filter(|&n| solid.nodes[n][2].abs() < 1e-12).map(|n| (n, 2)).collect() } else { Vec::new() };
         let p = [pivot.lever * pivot.pivot_rad.cos(), pivot.lever * pivot.pivot_rad.sin()];
         let supports = Supports::new(&solid, &fixed, &patch, p);
-        let sys = ElasticSystem::assemble(&solid, material, Formulation::Incompatible, supports)?;
+        let mut sys = ElasticSystem::assemble(&solid, material, Formulation::Incompatible, supports)?;
+        sys.order_as_pad(&solid);
         let pairs = sys.modes(bending + 1)?;
         let sym = if half { 2.0 } else { 1.0 };
         let modes = (1..=bending).map(|i| mode_from_pair(&pairs, i, &sys, &solid, mesh, material, pivot.pivot_rad, sym)).collect();
