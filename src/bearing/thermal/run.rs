@@ -11,7 +11,11 @@ use crate::bearing::progress::Progress;
 /// build) can spread a THD solve over frames; when the caller's [`Cancel::suspend`] asks, the outer
 /// iteration's equilibrium itself pauses ([`super::resumable`]) and the next step resumes it.
 ///
-/// Robustness: the temperature update is Anderson-accelerated (depth [`ANDERSON_DEPTH`], damping ω); if the
+/// Robustness: the temperature update is Anderson-accelerated (depth [`ANDERSON_DEPTH`], damping ω); after
+/// [`SAFEGUARD_AFTER`] outer iterations without convergence it is safeguarded: an outer iteration whose
+/// viscosity change is larger than the previous one drops the history and halves ω (down to
+/// [`MIN_RELAXATION`]), so the loop falls back to damped fixed-point steps where the extrapolation does not
+/// contract (near touchdown, where the film's heating is steep in the viscosity); if the
 /// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
 /// curve loses its root), the proposal is halved back towards the last field that worked, up to
 /// [`MAX_BACKTRACKS`] times, and the history is restarted.
@@ -91,7 +95,7 @@ impl ThdRun {
             t_iso: model.pads.iter().map(|p| vec![case.operating.film_temperature_c; p.film.geom.n_nodes()]).collect(),
             t_ok: None,
             t_try: None,
-            anderson: Anderson::new(ANDERSON_DEPTH, params.relaxation),
+            anderson: Anderson::safeguarded(ANDERSON_DEPTH, params.relaxation, MIN_RELAXATION),
             backtracks: 0,
             last_change: f64::INFINITY,
             uniform: vec![false; n],
@@ -269,7 +273,11 @@ impl ThdRun {
         if self.report.outer_iterations >= params.max_iterations {
             return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
         }
-        let next = self.anderson.step(&flatten(current), &flatten(&t_new));
+        let next = if self.report.outer_iterations > SAFEGUARD_AFTER {
+            self.anderson.step_safeguarded(&flatten(current), &flatten(&t_new), change)
+        } else {
+            self.anderson.step(&flatten(current), &flatten(&t_new))
+        };
         self.t_try = Some(unflatten(&next, &t_new));
         for (pt, t) in thermal.pads.iter_mut().zip(t_new) {
             pt.t_prev = Some(t);
