@@ -36,7 +36,8 @@ fn fillon_a_max_pad_temperature_within_5_degrees_of_measurement() {
 
 /// With thermal growth of the pads and the journal (TEHD, `cases/fillon-a-tehd.toml`: steel, clearances at
 /// 20 °C; docs/THERMAL.md) the maximum pad surface temperature at 4000 rpm meets the measurement (76.6 °C on
-/// the standard mesh). The rise from 1000 rpm (12.3 K against > 20 K measured) is not met: reported there.
+/// the standard mesh). Its rise from 1000 rpm (12.3 K against > 20 K measured) is short with BC1; BC3 meets
+/// both criteria (tested below, docs/THERMAL.md).
 #[test]
 fn fillon_a_tehd_max_pad_temperature_within_5_degrees_of_measurement() {
     let s = common::solve("fillon-a-tehd.toml", &[]);
@@ -69,4 +70,30 @@ fn fillon_a_temperatures_rise_with_speed() {
         assert!(t > last, "{rpm} rpm: {t:.2} °C after {last:.2} °C");
         last = t;
     }
+}
+
+/// One model for all speeds that meets both of the criteria (docs/THERMAL.md, "Where the heat goes"):
+/// TEHD with the film–pad conduction coupled (BC3) instead of BC1's adiabatic film, every other input as in
+/// `fillon-a-tehd.toml`, nothing changed per speed. The pad's hottest point rises with speed by more than the
+/// measured 20 K from 1000 to 4000 rpm (24.1 K on the standard mesh) and is within 5 °C of the measured 76.5 °C
+/// at 4000 rpm (73.9 °C). BC1 gives 12.3 K: at 1000 rpm its film keeps the 8 % of the friction power that BC3
+/// conducts into the pads.
+#[test]
+fn fillon_a_tehd_bc3_rises_with_speed_like_the_measurement() {
+    let bc3 = "thermal.pad_film_bc=\"bc3\"";
+    let mut maxima = Vec::new();
+    for rpm in [1000, 2000, 3000, 4000] {
+        let s = common::solve("fillon-a-tehd.toml", &[bc3, &format!("operating.speed_rpm={rpm}")]);
+        let t = s.thermal.as_ref().expect("a THD case");
+        assert!(t.report.converged, "{rpm} rpm: {:?}", t.report);
+        assert!(t.energy_balance_closure.abs() < 1e-12, "{rpm} rpm: energy balance closure {:.2e}", t.energy_balance_closure);
+        // BC3: the heat conducted into the pads is what they give to the surroundings (steady pads).
+        assert!((t.heat.heat_to_pad_w - t.heat_pads_to_surroundings_w).abs() < 1e-12 * t.heat.power_in(), "{rpm} rpm: pad heat balance");
+        maxima.push(pad_max(&s));
+    }
+    println!("BC3 TEHD max pad temperature at 1000–4000 rpm: {maxima:.2?} °C");
+    assert!(maxima.windows(2).all(|w| w[1] > w[0]), "not rising: {maxima:?}");
+    let rise = maxima[3] - maxima[0];
+    assert!(rise > 20.0, "rise {rise:.1} K from 1000 to 4000 rpm, measured more than 20 K");
+    assert!((maxima[3] - 76.5).abs() < 5.0, "max pad temperature {:.1} °C at 4000 rpm vs measured 76.5 °C", maxima[3]);
 }
