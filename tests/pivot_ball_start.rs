@@ -79,19 +79,3 @@ fn the_ball_pivot_equilibrium_does_not_depend_on_the_start() {
         }
     }
 }
-
-/// Hertz pivots with the THD model: refused with an error that names the key and the alternative (the THD
-/// loop solves its equilibria on fixed pivot springs; the contact's load iteration is not wrapped around it).
-#[test]
-fn hertz_pivots_with_the_thd_model_are_refused_by_name() {
-    let text = std::fs::read_to_string(common::case_path(CASE)).expect("case file");
-    for contact in ["ball", "rocker"] {
-        let set: Vec<String> = [format!("bearing.pads.pivot_contact=\"{contact}\""), "bearing.pads.pivot_radius_mm=12.7".into(), "bearing.pads.pivot_seat_radius_mm=13".into(), "thermal.model=\"thd\"".into()].into();
-        let e = tiltpad::model::load_case(&text, &set).expect_err("THD with a Hertz pivot");
-        assert_eq!(e.key(), Some("bearing.pads.pivot_contact"), "{e}");
-        let msg = e.to_string();
-        assert!(msg.contains("isothermal") && msg.contains("pivot_stiffness_n_per_m"), "{msg}");
-        // The same contact is accepted with the isothermal model.
-        assert!(tiltpad::model::load_case(&text, &set[..3]).is_ok(), "{contact}");
-    }
-}

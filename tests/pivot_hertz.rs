@@ -7,16 +7,21 @@
 //!   coefficients linearise the nonlinear spring).
 //! - A ball-in-socket pivot is softer than the rocker, a smaller ball softer still: each sinks the journal
 //!   further and softens the bearing.
+//! - With the THD model the pivot loads converge inside the thermal loop (one load step per outer
+//!   iteration): the converged state has the same two properties, on the converged viscosity field.
 
 mod common;
 
 use common::case;
 use tiltpad::bearing::coefficients::reduce;
 use tiltpad::bearing::coordinates::{Coord, PadDof};
+use tiltpad::bearing::pivot_contact::FLOOR;
 use tiltpad::bearing::solve_case;
 
 const CASE: &str = "compressor-bearing-rocker-pivot.toml";
 const PREVIEW: &str = "mesh.fidelity=preview";
+/// The case's static load [N].
+const LOAD_N: f64 = 1918.0;
 
 #[test]
 fn hertz_pivots_carry_their_loads_and_linearise_with_the_tangent() {
@@ -91,4 +96,52 @@ fn softer_pivots_soften_the_bearing() {
         assert!(kyy(w[1]) < 0.995 * kyy(w[0]));
         assert!(w[1].coordinates[1] < w[0].coordinates[1]);
     }
+}
+
+/// THD with Hertz pivots: each pivot carries its pad's film load at the converged temperatures with exactly
+/// the Hertz approach, and linear springs at the converged secants give the same THD state (journal, pads
+/// and film temperature), within what the thermal loop's tolerance (viscosity change 1e-4) leaves.
+#[test]
+fn hertz_pivots_converge_inside_the_thd_loop() {
+    let c = case(CASE, &[PREVIEW, "thermal.model=\"thd\""]);
+    let s = solve_case(&c).expect("THD Hertz-pivot solve");
+    let t = s.thermal.as_ref().expect("thermal result");
+    eprintln!("{}; {} outer iterations; {:?}", s.report.method, t.report.outer_iterations, s.report.warnings);
+    assert!(t.report.converged && s.report.method.contains("Hertz pivots"));
+    let iso = solve_case(&case(CASE, &[PREVIEW])).expect("isothermal");
+    let mut springs = c.clone();
+    for (k, (pad, res)) in c.bearing.pads.iter().zip(&s.pads).enumerate() {
+        let contact = pad.pivot_contact.expect("contact pads");
+        let state = res.pivot_contact.expect("contact state");
+        let xi = res.pivot_displacement_m.expect("pivot coordinate");
+        let e_p = [pad.pivot_rad.cos(), pad.pivot_rad.sin()];
+        let load = -(res.force_n[0] * e_p[0] + res.force_n[1] * e_p[1]);
+        let iso_load = iso.pads[k].pivot_contact.expect("isothermal state").load_n;
+        eprintln!("pad {k}: THD load {load:.2} N (isothermal {iso_load:.2}), state {:.2} N, ξ {:.4} µm, floats {}", state.load_n, 1e6 * xi, res.unloaded);
+        if res.unloaded {
+            // A floating pad's pivot takes the floor load's stiffness (its ξ is held, not balanced by a film).
+            assert!(load.abs() < 1e-9 * LOAD_N && (state.load_n / (FLOOR * LOAD_N) - 1.0).abs() < 1e-12, "pad {k}");
+        } else {
+            let hertz = contact.state(load).expect("in Hertz range");
+            assert!((xi - hertz.approach_m).abs() < 1e-4 * hertz.approach_m, "pad {k}: ξ {xi} vs δ {}", hertz.approach_m);
+            assert!((state.load_n / load - 1.0).abs() < 1e-4, "pad {k}: state at {} N, film {load} N", state.load_n);
+        }
+        springs.bearing.pads[k].pivot_contact = None;
+        springs.bearing.pads[k].pivot_stiffness_n_per_m = Some(state.secant_n_per_m());
+    }
+    let lin = solve_case(&springs).expect("THD on linear springs");
+    let tl = lin.thermal.as_ref().expect("thermal result");
+    eprintln!("T_max {:.4} vs {:.4} °C; coordinates {:?} vs {:?}", t.t_max_film_c, tl.t_max_film_c, s.coordinates, lin.coordinates);
+    // The journal, and each pad's load (the tilts differ by up to 3e-4 of their size: two loops stopped at
+    // the same viscosity tolerance from different paths).
+    let scale = s.coordinates[0].hypot(s.coordinates[1]);
+    for (a, b) in s.coordinates[..2].iter().zip(&lin.coordinates[..2]) {
+        assert!((a - b).abs() < 1e-4 * scale, "journal {:?} vs {:?}", &s.coordinates[..2], &lin.coordinates[..2]);
+    }
+    for (k, (a, b)) in s.pads.iter().zip(&lin.pads).enumerate() {
+        let d = (a.force_n[0] - b.force_n[0]).hypot(a.force_n[1] - b.force_n[1]);
+        eprintln!("pad {k}: load difference {d:.3e} N");
+        assert!(d < 2e-5 * LOAD_N, "pad {k}: {:?} vs {:?}", a.force_n, b.force_n);
+    }
+    assert!((t.t_max_film_c - tl.t_max_film_c).abs() < 1e-3, "T_max {} vs {}", t.t_max_film_c, tl.t_max_film_c);
 }

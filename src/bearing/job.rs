@@ -59,9 +59,16 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
     if let Some(g) = &state.growth {
         super::tehd::install(model, g);
     }
+    if let Some(p) = &state.pivots {
+        p.install_tangents(model);
+    }
     let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium);
     if state.growth.is_some() {
         super::tehd::clear(model);
+    }
+    if let Some(p) = &state.pivots {
+        // The loop stops only once the pivot loads have converged with the viscosity field.
+        p.annotate(&mut sol, true);
     }
     // The headline report is the whole loop's (every equilibrium of it, and its wall time), not the last
     // equilibrium's; residuals and method stay those of the converged state.

@@ -21,7 +21,7 @@ use crate::model::{Case, LoadSpec};
 use crate::physics::hertz::{ContactState, PivotContact};
 
 use super::coordinates::{Coord, PadDof};
-use super::equilibrium::{solve_equilibrium, Cancel, EquilibriumParams};
+use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
 use super::error::SolveError;
 use super::job::assemble_solution;
 use super::model::{BearingModel, OperatingPoint};
@@ -35,6 +35,7 @@ pub const MAX_ITERATIONS: usize = 30;
 pub const FLOOR: f64 = 1e-3;
 
 /// A pad whose pivot is a Hertz contact: where its spring lives.
+#[derive(Debug, Clone, PartialEq)]
 struct ContactPad {
     pad: usize,
     contact: PivotContact,
@@ -87,18 +88,127 @@ fn accelerated(k: f64, mapped: f64, previous: Option<(f64, f64)>) -> f64 {
 /// begins (not balanced by the film), so its spring force would be a load that nothing supplies — taking it
 /// made the load iteration chase that phantom load (the compressor's top pad on 12.7 mm balls: 68 N on a pad
 /// carrying nothing; on 40 mm balls in 41 mm sockets 30 iterations without converging).
-fn pivot_load(case: &Case, c: &ContactPad, eq: &super::equilibrium::Equilibrium) -> f64 {
+fn pivot_load(case: &Case, c: &ContactPad, eq: &Equilibrium) -> f64 {
     let theta = case.bearing.pads[c.pad].pivot_rad;
     let f = eq.pads.get(c.pad).map_or([0.0, 0.0], super::equilibrium::PadState::journal_force);
     -(f[0] * theta.cos() + f[1] * theta.sin())
 }
 
-fn set_stiffness(model: &mut BearingModel, c: &ContactPad, k: f64) {
-    model.pads[c.pad].structure.stiffness[(c.local, c.local)] = k;
-}
-
 fn state(c: &ContactPad, load_n: f64) -> Result<ContactState, SolveError> {
     c.contact.state(load_n).map_err(|e| SolveError::Invalid(format!("pad {} pivot contact: {e}", c.pad)))
+}
+
+/// The load iteration of a case's Hertz pivots (module docs): each contact pad's secant spring, the previous
+/// iterate of its secant step, and the contact states at the loads of the last equilibrium.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HertzPivots {
+    pads: Vec<ContactPad>,
+    /// Loads below this get the stiffness at it [N] ([`FLOOR`] of the static load).
+    floor: f64,
+    /// The secant stiffness each contact's spring has in the next equilibrium [N/m].
+    secant: Vec<f64>,
+    /// The previous iterate's (stiffness, mapped stiffness) per pad, for the secant acceleration.
+    previous: Vec<Option<(f64, f64)>>,
+    /// Contact states at the loads of the last equilibrium given to [`HertzPivots::update`].
+    states: Vec<ContactState>,
+    /// Warnings of that last update (loads under the floor).
+    warnings: Vec<String>,
+    /// Load steps taken ([`HertzPivots::update`] calls).
+    iterations: usize,
+}
+
+impl HertzPivots {
+    /// The iteration for the case's contact pads, each spring starting at the secant of the static load;
+    /// `None` when no pad has a contact.
+    ///
+    /// # Errors
+    /// [`SolveError::Invalid`] for a contact pad without its radial pivot coordinate, or a contact outside
+    /// Hertz theory at the static load.
+    pub fn new(model: &BearingModel, case: &Case) -> Result<Option<Self>, SolveError> {
+        let pads = contact_pads(model, case)?;
+        if pads.is_empty() {
+            return Ok(None);
+        }
+        let scale = match case.operating.load {
+            LoadSpec::Force { magnitude_n, .. } => magnitude_n.abs(),
+            LoadSpec::Position { .. } => 0.0,
+        }
+        .max(1.0);
+        let secant = pads.iter().map(|c| state(c, scale).map(|s| s.secant_n_per_m())).collect::<Result<Vec<_>, _>>()?;
+        let n = pads.len();
+        Ok(Some(Self { pads, floor: FLOOR * scale, secant, previous: vec![None; n], states: Vec::new(), warnings: Vec::new(), iterations: 0 }))
+    }
+
+    /// Puts the current secant springs into the model (before each equilibrium: a stage that rebuilds the
+    /// pad structures resets them).
+    pub fn install(&self, model: &mut BearingModel) {
+        for (c, k) in self.pads.iter().zip(&self.secant) {
+            model.pads[c.pad].structure.stiffness[(c.local, c.local)] = *k;
+        }
+    }
+
+    /// One load step after an equilibrium `eq` solved with the installed springs: each contact's state at
+    /// its pad's load, and the next secant stiffness. Returns the largest relative difference between the
+    /// installed secants and the ones the loads give (the iteration has converged when it is small).
+    ///
+    /// # Errors
+    /// [`SolveError::Invalid`] for a contact outside Hertz theory at its load.
+    pub fn update(&mut self, case: &Case, eq: &Equilibrium) -> Result<f64, SolveError> {
+        self.iterations += 1;
+        self.states.clear();
+        self.warnings.clear();
+        let mut change = 0.0_f64;
+        for ((c, k), prev) in self.pads.iter().zip(self.secant.iter_mut()).zip(self.previous.iter_mut()) {
+            let load = pivot_load(case, c, eq);
+            if load < self.floor {
+                self.warnings.push(format!(
+                    "pad {}: pivot load {load:.4e} N below {FLOOR} of the static load; its contact stiffness is taken at {:.4e} N",
+                    c.pad, self.floor
+                ));
+            }
+            let s = state(c, load.max(self.floor))?;
+            let mapped = s.secant_n_per_m();
+            change = change.max((mapped - *k).abs() / mapped);
+            let next = accelerated(*k, mapped, *prev);
+            *prev = Some((*k, mapped));
+            *k = next;
+            self.states.push(s);
+        }
+        Ok(change)
+    }
+
+    /// Load steps taken so far.
+    #[must_use]
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
+
+    /// Puts each contact's **tangent** stiffness at its last load into the model, for the linearisation
+    /// (the model keeps them: a later linearisation on it sees the same coefficients; the next solve starts
+    /// its own iteration).
+    pub fn install_tangents(&self, model: &mut BearingModel) {
+        for (c, s) in self.pads.iter().zip(&self.states) {
+            model.pads[c.pad].structure.stiffness[(c.local, c.local)] = s.tangent_n_per_m;
+        }
+    }
+
+    /// Each contact pad's state in the solution (`PadResult::pivot_contact`), the iteration in its report's
+    /// method, and its warnings; `converged`: whether the loads converged (a warning otherwise).
+    pub fn annotate(&self, sol: &mut Solution, converged: bool) {
+        for (c, s) in self.pads.iter().zip(&self.states) {
+            if let Some(p) = sol.pads.get_mut(c.pad) {
+                p.pivot_contact = Some(*s);
+            }
+        }
+        let r = &mut sol.report;
+        r.method = format!("{}; Hertz pivots: {} load iteration(s)", r.method, self.iterations);
+        if !converged {
+            r.warn(format!("Hertz pivot loads not converged in {MAX_ITERATIONS} iterations (relative stiffness change above {RTOL})"));
+        }
+        for w in &self.warnings {
+            r.warn(w.clone());
+        }
+    }
 }
 
 /// Solves the operating point with each Hertz pivot's stiffness at its pad's load (module docs), and
@@ -115,74 +225,28 @@ pub fn solve(
     params: EquilibriumParams,
     cancel: &dyn Cancel,
 ) -> Result<Solution, SolveError> {
-    let pads = contact_pads(model, case)?;
-    let scale = match case.operating.load {
-        LoadSpec::Force { magnitude_n, .. } => magnitude_n.abs(),
-        LoadSpec::Position { .. } => 0.0,
-    }
-    .max(1.0);
-    let floor = FLOOR * scale;
-    let mut secant: Vec<f64> = Vec::with_capacity(pads.len());
-    for c in &pads {
-        let k = state(c, scale)?.secant_n_per_m();
-        set_stiffness(model, c, k);
-        secant.push(k);
-    }
-    // The previous iterate's (stiffness, mapped stiffness) per pad, for the secant acceleration.
-    let mut previous: Vec<Option<(f64, f64)>> = vec![None; pads.len()];
+    let Some(mut pivots) = HertzPivots::new(model, case)? else {
+        let eq = solve_equilibrium(model, op, params, start, cancel)?;
+        return Ok(assemble_solution(model, case, op, &eq));
+    };
     let mut earlier: Option<super::report::SolveReport> = None;
     let mut u: Option<Vec<f64>> = start.map(<[f64]>::to_vec);
-    let mut iterations = 0;
-    let (eq, states, warnings, converged) = loop {
-        iterations += 1;
+    let (eq, converged) = loop {
+        pivots.install(model);
         let mut eq = solve_equilibrium(model, op, params, u.as_deref(), cancel)?;
-        let mut states = Vec::with_capacity(pads.len());
-        let mut warnings = Vec::new();
-        let mut change = 0.0_f64;
-        for ((c, k), prev) in pads.iter().zip(secant.iter_mut()).zip(previous.iter_mut()) {
-            let load = pivot_load(case, c, &eq);
-            if load < floor {
-                warnings.push(format!("pad {}: pivot load {load:.4e} N below {FLOOR} of the static load; its contact stiffness is taken at {floor:.4e} N", c.pad));
-            }
-            let s = state(c, load.max(floor))?;
-            let mapped = s.secant_n_per_m();
-            change = change.max((mapped - *k).abs() / mapped);
-            let next = accelerated(*k, mapped, *prev);
-            *prev = Some((*k, mapped));
-            *k = next;
-            states.push(s);
-        }
+        let change = pivots.update(case, &eq)?;
         if let Some(r) = earlier.take() {
             eq.report.add_earlier(r);
         }
-        if change < RTOL || iterations >= MAX_ITERATIONS {
-            break (eq, states, warnings, change < RTOL);
-        }
-        for (c, k) in pads.iter().zip(&secant) {
-            set_stiffness(model, c, *k);
+        if change < RTOL || pivots.iterations() >= MAX_ITERATIONS {
+            break (eq, change < RTOL);
         }
         u = Some(eq.u.clone());
         earlier = Some(eq.report);
     };
     // `eq` was solved with the previous secant stiffnesses; the states hold the loads it produced.
-    for (c, s) in pads.iter().zip(&states) {
-        set_stiffness(model, c, s.tangent_n_per_m);
-    }
-    // The model keeps the tangent stiffnesses (a later linearisation on it sees the same coefficients; the
-    // next solve starts its own iteration).
+    pivots.install_tangents(model);
     let mut sol = assemble_solution(model, case, op, &eq);
-    for (c, s) in pads.iter().zip(states) {
-        if let Some(p) = sol.pads.get_mut(c.pad) {
-            p.pivot_contact = Some(s);
-        }
-    }
-    let r = &mut sol.report;
-    r.method = format!("{}; Hertz pivots: {iterations} load iteration(s)", r.method);
-    if !converged {
-        r.warn(format!("Hertz pivot loads not converged in {MAX_ITERATIONS} iterations (relative stiffness change above {RTOL})"));
-    }
-    for w in warnings {
-        r.warn(w);
-    }
+    pivots.annotate(&mut sol, converged);
     Ok(sol)
 }

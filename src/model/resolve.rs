@@ -8,7 +8,7 @@ use std::f64::consts::{PI, TAU};
 
 use super::budget::{DEFAULT_MAX_NODES, MAX_NODES_RANGE};
 use super::case::{
-    Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind,
+    Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal,
 };
 use super::error::{CaseError, Range};
 use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
@@ -49,11 +49,6 @@ impl CaseFile {
         };
         let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
         let thermal = resolve_thermal(self, &operating)?;
-        if thermal.model == ThermalModelKind::Thd && bearing.pads.iter().any(|p| p.pivot_contact.is_some()) {
-            // The THD loop solves its equilibria on fixed pivot springs; the contact's load iteration wraps
-            // the isothermal solve only (docs/FLEXIBILITY.md).
-            return Err(inconsistent("bearing.pads.pivot_contact", "a Hertz pivot contact works with the isothermal model only (thermal.model = \"isothermal\"); give pivot_stiffness_n_per_m for THD"));
-        }
         let hydraulics = self.hydraulics.as_ref().map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len())).transpose()?;
         let limits = super::limits::resolve_limits(&self.limits)?;
         let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal, hydraulics, limits };

@@ -276,6 +276,8 @@ pub struct ThdState {
     pub report: ThermalReport,
     /// The thermal growth in the films of the converged state (TEHD), installed to assemble the solution.
     pub growth: Option<GrowthField>,
+    /// The Hertz pivots' load iteration at the converged state (their tangent stiffnesses linearise it).
+    pub pivots: Option<crate::bearing::pivot_contact::HertzPivots>,
 }
 
 fn setup(case: &Case, op: &OperatingPoint, k: usize, stabilisation: Stabilisation) -> ThermalSetup {

@@ -1,10 +1,12 @@
 //! The THD outer loop ([`ThdRun`]): one outer iteration per step — equilibrium at the current viscosity
 //! field, film and pad temperatures, viscosity update (Anderson-accelerated, backtracked), thermal growth of
-//! pads and journal when the case asks for it (TEHD) — with its budgets, deadline and report.
+//! pads and journal when the case asks for it (TEHD), a load step of the Hertz pivots when the pads have
+//! them ([`HertzPivots`]) — with its budgets, deadline and report.
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
 use super::resumable::{equilibrium_part, PendingEquilibrium};
+use crate::bearing::pivot_contact::{self, HertzPivots};
 use crate::bearing::progress::Progress;
 /// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
 /// the current viscosity field, then the film and pad temperatures), so a caller without threads (the web
@@ -49,6 +51,10 @@ pub struct ThdRun {
     growth_next: Option<GrowthField>,
     /// The current outer iteration's equilibrium, suspended.
     pending: Option<PendingEquilibrium>,
+    /// Hertz pivots: their load iteration, one load step per outer iteration (built on first use), and the
+    /// last step's relative change of the secant springs.
+    pivots: Option<HertzPivots>,
+    pivot_change: f64,
 }
 
 /// Forwards the caller's cancellation and suspension, and cancels once a time budget is spent.
@@ -105,6 +111,8 @@ impl ThdRun {
             growth: None,
             growth_next: None,
             pending: None,
+            pivots: None,
+            pivot_change: 0.0,
         }
     }
 
@@ -167,9 +175,16 @@ impl ThdRun {
                 PendingEquilibrium::new(equilibrium_params(self.last_change, &params), self.u.clone())
             }
         };
-        // Installed at every step: a step ends with the films cleared (see `step`).
+        // Installed at every step: a step ends with the films cleared (see `step`), and a stage may rebuild
+        // the pad structures between steps.
         if let Some(g) = &self.growth {
             tehd::install(model, g);
+        }
+        if self.pivots.is_none() && pivot_contact::has_contacts(case) {
+            self.pivots = HertzPivots::new(model, case)?;
+        }
+        if let Some(p) = &self.pivots {
+            p.install(model);
         }
         let te = Instant::now();
         let exact = pending.params == EquilibriumParams::default();
@@ -240,6 +255,9 @@ impl ThdRun {
         self.report.equilibrium_factorizations += eq.report.factorizations;
         self.u = Some(eq.u.clone());
         self.t_ok = self.t_try.take();
+        if let Some(p) = self.pivots.as_mut() {
+            self.pivot_change = p.update(case, &eq)?;
+        }
         let tt = Instant::now();
         let (sols, t_in, t_j, t_new) = film_temperatures(model, thermal, case, &self.op, &params)?;
         let growth_change = self.update_growth(model, thermal, case, (&sols, &t_in, t_j, &t_new))?;
@@ -248,19 +266,26 @@ impl ThdRun {
         self.report.viscosity_change.push(change);
         self.last_change = change;
         self.report.thermal_seconds += tt.elapsed().as_secs_f64();
-        if change < params.viscosity_tol && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m {
+        if change < params.viscosity_tol && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m && self.pivot_change < pivot_contact::RTOL {
             self.report.converged = true;
             self.report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
+            if self.pivots.is_some() {
+                self.report.stop_reason += &format!(", Hertz pivot springs changing by {:.1e} (below {:.0e})", self.pivot_change, pivot_contact::RTOL);
+            }
             self.report.thermal_factorizations = self.factorizations0;
             let report = std::mem::take(&mut self.report);
             if exact {
-                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_growth(s)));
+                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_structure(s)));
             }
             // The last equilibrium was solved loosely (early iterations are inexact on purpose): polish it with
             // the full tolerances on the same viscosity field, and take the temperatures of that state.
             let mut report = report;
             let te = Instant::now();
             let eq = warm_equilibrium(model, &self.op, EquilibriumParams::default(), Some(&eq.u), cancel)?;
+            if let Some(p) = self.pivots.as_mut() {
+                // The contact states at the polished loads (the springs moved by less than the tolerance).
+                p.update(case, &eq)?;
+            }
             report.equilibrium_seconds += te.elapsed().as_secs_f64();
             report.equilibrium_iterations += eq.report.iterations;
             report.inner_iterations += eq.report.inner_iterations;
@@ -268,7 +293,7 @@ impl ThdRun {
             report.equilibrium_factorizations += eq.report.factorizations;
             let (sols, t_in, t_j, t_polished) = film_temperatures(model, thermal, case, &self.op, &params)?;
             report.viscosity_change.push(viscosity_change(&law, &t_polished, current));
-            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_growth(s)));
+            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_structure(s)));
         }
         if self.report.outer_iterations >= params.max_iterations {
             return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
@@ -321,13 +346,14 @@ impl ThdRun {
         Ok(change)
     }
 
-    /// The converged state with the growth its films hold, reported.
-    fn with_growth(&self, mut state: ThdState) -> ThdState {
+    /// The converged state with the growth its films hold and its pivots' load iteration, reported.
+    fn with_structure(&self, mut state: ThdState) -> ThdState {
         if let Some(g) = &self.growth {
             state.report.journal_growth_m = Some(g.journal_m);
             state.report.pad_growth_range_m = Some(g.pad_film_m.iter().flatten().fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &v| [lo.min(v), hi.max(v)]));
         }
         state.growth.clone_from(&self.growth);
+        state.pivots.clone_from(&self.pivots);
         state
     }
 }
@@ -407,5 +433,5 @@ fn finish(
         report.warnings.push(format!("energy balance closes to {:.2} % only", 100.0 * report.energy_balance_closure));
     }
     report.seconds = t0.elapsed().as_secs_f64();
-    Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report, growth: None })
+    Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report, growth: None, pivots: None })
 }
