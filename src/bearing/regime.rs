@@ -14,6 +14,9 @@
 //!                          surfaces touch through their asperities (mixed lubrication, not modelled)
 //! Cb / R                   built bearings have clearance ratios of about 0.5–3 ‰; outside
 //!                          [MIN_CLEARANCE_RATIO, MAX_CLEARANCE_RATIO] the case is unusual enough to say so
+//! |ξ| / Cb                 a pivot spring deflecting by more than the assembled clearance moves the
+//!                          journal as far: the linear spring, the pad's seat in its housing and the
+//!                          film's small-displacement kinematics describe no built bearing there
 //! ```
 //!
 //! The caller passes the case, the surface speed and the pad fields of a solution; the result is plain data
@@ -46,6 +49,10 @@ pub struct Regime {
     pub h_min_m: f64,
     /// Assembled clearance ratio Cb/R.
     pub clearance_ratio: f64,
+    /// Largest radial pivot deflection |ξ| over the pads, as a multiple of the assembled clearance, and
+    /// its pad (0 without pivot springs).
+    pub pivot_deflection_cb: f64,
+    pub pivot_pad: usize,
 }
 
 impl Regime {
@@ -62,6 +69,8 @@ impl Regime {
             taylor_max: 0.0,
             h_min_m: f64::INFINITY,
             clearance_ratio: case.bearing.assembled_clearance_m / r,
+            pivot_deflection_cb: 0.0,
+            pivot_pad: 0,
         };
         for p in pads {
             let f = &p.field;
@@ -74,6 +83,11 @@ impl Regime {
                 out.taylor_max = out.taylor_max.max(re * (h / r).sqrt());
             }
             out.h_min_m = out.h_min_m.min(p.h_min_m);
+            let xi = p.pivot_displacement_m.unwrap_or(0.0).abs() / case.bearing.assembled_clearance_m;
+            if xi > out.pivot_deflection_cb {
+                out.pivot_deflection_cb = xi;
+                out.pivot_pad = p.index;
+            }
         }
         out
     }
@@ -111,6 +125,14 @@ impl Regime {
                 self.clearance_ratio
             ));
         }
+        if self.pivot_deflection_cb > 1.0 {
+            w.push(format!(
+                "pad {}'s pivot deflects by {:.1} times the assembled clearance, and the journal moves as far: no built \
+                 bearing allows that (its linear pivot spring, its seat in the housing and the film's small-displacement \
+                 kinematics are far outside their range); check the pivot stiffness against the load",
+                self.pivot_pad, self.pivot_deflection_cb
+            ));
+        }
         w
     }
 }
@@ -120,7 +142,7 @@ mod tests {
     use super::*;
 
     fn regime(reynolds_max: f64, taylor_max: f64, h_min_m: f64, clearance_ratio: f64) -> Regime {
-        Regime { reynolds_max, reynolds_pad: 2, taylor_max, h_min_m, clearance_ratio }
+        Regime { reynolds_max, reynolds_pad: 2, taylor_max, h_min_m, clearance_ratio, pivot_deflection_cb: 0.99, pivot_pad: 1 }
     }
 
     #[test]
@@ -137,5 +159,7 @@ mod tests {
             let w = regime(1.0, 0.1, 20e-6, ratio).warnings();
             assert!(w.len() == 1 && w[0].starts_with("clearance ratio"), "{ratio}: {w:?}");
         }
+        let deflected = Regime { pivot_deflection_cb: 1.01, ..regime(1.0, 0.1, 20e-6, 1.5e-3) }.warnings();
+        assert!(deflected.len() == 1 && deflected[0].starts_with("pad 1's pivot deflects by 1.0 times"), "{deflected:?}");
     }
 }
