@@ -138,38 +138,68 @@ pub(crate) struct CscGroups {
 
 impl CscGroups {
     pub(crate) fn build<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone, keep: impl Fn(usize, usize) -> bool) -> Self {
-        let mut cols: Vec<Vec<usize>> = (0..n).map(|i| vec![i]).collect();
-        for g in groups.clone() {
-            for &a in g {
-                for &b in g {
+        // The groups flattened, and the groups of each unknown (incidence), so that each column gathers its rows
+        // once, with a marker against repeats, instead of collecting every pair and sorting the repeats away.
+        let mut g_ptr = vec![0];
+        let mut g_items: Vec<usize> = Vec::new();
+        for g in groups {
+            g_items.extend_from_slice(g);
+            g_ptr.push(g_items.len());
+        }
+        let n_groups = g_ptr.len() - 1;
+        let mut inc_ptr = vec![0usize; n + 1];
+        for &a in &g_items {
+            inc_ptr[a + 1] += 1;
+        }
+        for i in 0..n {
+            inc_ptr[i + 1] += inc_ptr[i];
+        }
+        let mut next = inc_ptr.clone();
+        let mut inc = vec![0usize; g_items.len()];
+        for g in 0..n_groups {
+            for &a in &g_items[g_ptr[g]..g_ptr[g + 1]] {
+                inc[next[a]] = g;
+                next[a] += 1;
+            }
+        }
+        let mut mark = vec![usize::MAX; n];
+        let mut col_ptr = Vec::with_capacity(n + 1);
+        let mut row_idx = Vec::new();
+        col_ptr.push(0);
+        for b in 0..n {
+            let first = row_idx.len();
+            mark[b] = b;
+            row_idx.push(b);
+            for &g in &inc[inc_ptr[b]..inc_ptr[b + 1]] {
+                for &a in &g_items[g_ptr[g]..g_ptr[g + 1]] {
+                    if mark[a] != b && keep(a, b) {
+                        mark[a] = b;
+                        row_idx.push(a);
+                    }
+                }
+            }
+            row_idx[first..].sort_unstable();
+            col_ptr.push(row_idx.len());
+        }
+        // Each group's block, row-major: the position of each row of column b from a dense map of that column.
+        let mut pos = vec![usize::MAX; n];
+        let mut scatter = Vec::with_capacity(g_ptr.iter().zip(&g_ptr[1..]).map(|(a, b)| (b - a) * (b - a)).sum());
+        for g in 0..n_groups {
+            let items = &g_items[g_ptr[g]..g_ptr[g + 1]];
+            let (len, offset) = (items.len(), scatter.len());
+            scatter.resize(offset + len * len, usize::MAX);
+            for (ib, &b) in items.iter().enumerate() {
+                for k in col_ptr[b]..col_ptr[b + 1] {
+                    pos[row_idx[k]] = k;
+                }
+                for (ia, &a) in items.iter().enumerate() {
                     if keep(a, b) {
-                        cols[b].push(a);
+                        scatter[offset + ia * len + ib] = pos[a];
                     }
                 }
             }
         }
-        let mut col_ptr = Vec::with_capacity(n + 1);
-        let mut row_idx = Vec::new();
-        col_ptr.push(0);
-        for c in &mut cols {
-            c.sort_unstable();
-            c.dedup();
-            row_idx.extend_from_slice(c);
-            col_ptr.push(row_idx.len());
-        }
-        let find = |row: usize, col: usize| -> usize {
-            let slice = &row_idx[col_ptr[col]..col_ptr[col + 1]];
-            col_ptr[col] + slice.binary_search(&row).unwrap_or_else(|_| unreachable!("entry in pattern"))
-        };
-        let mut scatter = Vec::new();
-        for g in groups {
-            for &a in g {
-                for &b in g {
-                    scatter.push(if keep(a, b) { find(a, b) } else { usize::MAX });
-                }
-            }
-        }
-        let diag = (0..n).map(|i| find(i, i)).collect();
+        let diag = (0..n).map(|i| col_ptr[i] + row_idx[col_ptr[i]..col_ptr[i + 1]].binary_search(&i).unwrap_or_else(|_| unreachable!("diagonal in pattern"))).collect();
         Self { col_ptr, row_idx, scatter, diag }
     }
 }
@@ -292,6 +322,55 @@ impl SpdSolver {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The pattern and scatter map from every pair of every group, sorted and deduplicated, each entry found
+    /// by search: the straightforward construction [`CscGroups::build`] must reproduce.
+    fn build_by_pairs(n: usize, groups: &[Vec<usize>], keep: impl Fn(usize, usize) -> bool) -> (Vec<usize>, Vec<usize>, Vec<usize>, Vec<usize>) {
+        let mut cols: Vec<Vec<usize>> = (0..n).map(|i| vec![i]).collect();
+        for g in groups {
+            for &a in g {
+                for &b in g {
+                    if keep(a, b) {
+                        cols[b].push(a);
+                    }
+                }
+            }
+        }
+        let (mut col_ptr, mut row_idx) = (vec![0], Vec::new());
+        for c in &mut cols {
+            c.sort_unstable();
+            c.dedup();
+            row_idx.extend_from_slice(c);
+            col_ptr.push(row_idx.len());
+        }
+        let find = |r: usize, c: usize| col_ptr[c] + row_idx[col_ptr[c]..col_ptr[c + 1]].binary_search(&r).unwrap();
+        let scatter = groups.iter().flat_map(|g| g.iter().flat_map(|&a| g.iter().map(move |&b| (a, b)))).map(|(a, b)| if keep(a, b) { find(a, b) } else { usize::MAX }).collect();
+        let diag = (0..n).map(|i| find(i, i)).collect();
+        (col_ptr, row_idx, scatter, diag)
+    }
+
+    /// Irregular groups (sizes 1 to 7, shared and repeated unknowns, an unknown in no group) give the same
+    /// pattern, scatter map and diagonal as the pair-by-pair construction, lower triangle and full.
+    #[test]
+    fn group_pattern_matches_the_pair_by_pair_construction() {
+        let n = 40;
+        let mut seed = 12345_u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            usize::try_from(seed >> 33).unwrap()
+        };
+        let mut groups: Vec<Vec<usize>> = (0..60).map(|_| (0..1 + next() % 7).map(|_| next() % (n - 1)).collect()).collect();
+        groups.push(vec![3, 3, 5]);
+        for lower in [true, false] {
+            let keep = move |r: usize, c: usize| !lower || r >= c;
+            let c = CscGroups::build(n, groups.iter().map(Vec::as_slice), keep);
+            let (col_ptr, row_idx, scatter, diag) = build_by_pairs(n, &groups, keep);
+            assert_eq!(c.col_ptr, col_ptr, "lower {lower}");
+            assert_eq!(c.row_idx, row_idx, "lower {lower}");
+            assert_eq!(c.scatter, scatter, "lower {lower}");
+            assert_eq!(c.diag, diag, "lower {lower}");
+        }
+    }
 
     /// 1-D chain of "elements" (degenerate quads) gives the classic tridiagonal Laplacian.
     #[test]
