@@ -30,17 +30,19 @@
 //! Identical pads (same mesh shape up to rotation, pivot position within the arc and material) share one
 //! factorised stiffness: the radial component of the displacement does not depend on the pad's angle.
 //!
-//! The growth solid can take every second element layer of the pad mesh ([`growth_layer_step`], off:
-//! [`MERGE_GROWTH_LAYERS`]): the temperatures of the kept node layers load it, and the displacement of the
-//! skipped node layers is interpolated linearly in r (the trilinear elements' own interpolation). Its
-//! factorisation then has 3/5 of the unknowns. Measured on the compressor bearing's TEHD at standard
-//! fidelity (`tiltpad bench --only flex`, loaded machine, median of 3): 1673 → 1089 ms (growth set-up 216 → 64
-//! ms, steps 250 → 128 ms), but the errors against the reference moved ε 1.55 → 1.56 %, C 0.90 → 0.89 %,
-//! h_min 0.29 → 0.31 % (the solution itself by 1.1 × 10⁻⁴ in ε, 2.3 × 10⁻⁴ in h_min). On Fillon's pad under
-//! a conducted temperature field the film-face growth of 2 layers differs from that of 8 by 15 % of its
-//! largest value at worst (rms 3.6 %), that of 4 layers by 5 % (rms 1.1 %) (test
-//! `every_second_layer_against_all_layers` compares 2 with 4). Since the bench's errors must not grow, it is
-//! off until a finer choice (merging only the layers away from the film face) is measured.
+//! Below the reference fidelity the growth solid takes every second element layer of the pad mesh (from four
+//! even layers up, [`growth_layer_step`]); the pad conduction keeps all. The temperatures of the kept node
+//! layers load it, and the displacement of the skipped node layers is interpolated linearly in r (the
+//! trilinear elements' own interpolation). Its factorisation then has 3/5 of the unknowns. Measured on the
+//! compressor bearing's TEHD at the standard film mesh against 8 pad layers with every layer in the solid
+//! (`tiltpad bench --only flex`, docs/PERFORMANCE.md): 4 layers with the merged growth solid err by 0.05 % in
+//! ε and h_min and 0.12 % in C, 4 layers with all by 0.04 %, 0.03 % and 0.11 % — a fiftieth of the standard
+//! film mesh's own error (ε 1.55 %), for 0.25 s less (growth set-up and steps). Fillon's bearing A (TEHD,
+//! 4000 rpm, standard): h_min 23.580 µm merged, 23.576 µm with all 4 layers, 23.575 µm with 8; pad T_max
+//! 76.631 / 76.634 / 76.635 °C. On Fillon's pad under a conducted temperature field alone the film-face growth
+//! of 2 layers differs from that of 8 by 15 % of its largest value at worst (rms 3.6 %), that of 4 layers by 5
+//! % (rms 1.1 %) (test `every_second_layer_against_all_layers` compares 2 with 4); in the coupled solve the
+//! film closes much of that difference (above).
 
 use crate::fem::solid8::{Elastic, Formulation};
 use crate::fem::SpdSolver;
@@ -86,16 +88,12 @@ impl Growth {
     }
 }
 
-/// Whether the growth solid merges element layers by default (module documentation: off, as it moves the
-/// bench's errors).
-pub const MERGE_GROWTH_LAYERS: bool = false;
-
-/// The element layers of the pad mesh that make one layer of the growth solid: with
-/// [`MERGE_GROWTH_LAYERS`], 2 from four (even) layers up below the reference fidelity (the reference keeps
-/// every layer: it is what the levels are measured against); else 1.
+/// The element layers of the pad mesh that make one layer of the growth solid: 2 from four (even) layers up
+/// below the reference fidelity (the reference keeps every layer: it is what the levels are measured
+/// against); else 1.
 #[must_use]
 pub fn growth_layer_step(fidelity: Fidelity, layers: usize) -> usize {
-    if MERGE_GROWTH_LAYERS && fidelity != Fidelity::Reference && layers >= 4 && layers % 2 == 0 { 2 } else { 1 }
+    if fidelity != Fidelity::Reference && layers >= 4 && layers % 2 == 0 { 2 } else { 1 }
 }
 
 /// `step` if it divides the mesh's layers, else 1.

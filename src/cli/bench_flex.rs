@@ -6,7 +6,8 @@
 //! TEHD: the same case with the THD model (BC1) and steel pads and journal growing from a 20 °C assembly
 //! ([`TEHD`]), at the preview and standard fidelity, with the error on ε, K, C (Frobenius, synchronously
 //! reduced), the film temperature rise and h_min against the reference film mesh (4 pad layers); and where the
-//! time goes (equilibria, film energy + pad conduction + growth, outer iterations).
+//! time goes (equilibria, film energy + pad conduction + growth, outer iterations). Then the pad layers' own
+//! share at the standard film mesh: 2, 4 (growth solid merged and not) and 8 layers.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -110,6 +111,51 @@ fn tehd_table(text: &str, repeats: usize) -> Result<String> {
             r.outer_iterations,
             1e3 * r.equilibrium_seconds,
             1e3 * r.thermal_seconds,
+            1e3 * r.growth_setup_seconds.unwrap_or(0.0),
+            1e3 * (r.growth_seconds.unwrap_or(0.0) - r.growth_setup_seconds.unwrap_or(0.0)),
+            100.0 * rel(s.eccentricity_ratio, truth.eccentricity_ratio),
+            100.0 * frob_rel(s.reduced.k_n_per_m, truth.reduced.k_n_per_m),
+            100.0 * frob_rel(s.reduced.c_ns_per_m, truth.reduced.c_ns_per_m),
+            100.0 * t_err,
+            100.0 * rel(s.h_min_m, truth.h_min_m),
+        );
+    }
+    md.push_str(&layers_table(text, repeats)?);
+    Ok(md)
+}
+
+/// The pad layers' share of the TEHD error: the standard film mesh with 2, 4 (the growth solid on every second
+/// layer, the standard default, and on all) and 8 pad layers (the truth). The explicit film mesh with the
+/// reference fidelity keeps every layer in the growth solid ([`crate::bearing::tehd::growth_layer_step`]).
+fn layers_table(text: &str, repeats: usize) -> Result<String> {
+    let with = |extra: &[String]| -> Vec<String> { TEHD.iter().map(|s| (*s).to_string()).chain(extra.iter().cloned()).collect() };
+    let standard = with(&["mesh.fidelity=\"standard\"".to_string()]);
+    let m = load_case(text, &standard)?.1.mesh;
+    let film = |fidelity: &str, layers: usize| -> Vec<String> {
+        with(&[
+            format!("mesh.fidelity=\"{fidelity}\""),
+            format!("mesh.circumferential_elements={}", m.circumferential_elements),
+            format!("mesh.axial_elements={}", m.axial_elements),
+            format!("mesh.orifice_elements={}", m.orifice_elements),
+            format!("mesh.pad_radial_elements={layers}"),
+        ])
+    };
+    let (truth_ms, truth) = solve_set(text, &film("reference", 8), 1)?;
+    let mut md = format!(
+        "\nPad layers at the standard film mesh ({} film nodes), against 8 layers with every layer in the growth solid \
+         ({truth_ms:.0} ms): standard fidelity merges every two element layers into one of the growth solid (pad \
+         conduction keeps all; `bearing/tehd.rs`).\n\n\
+         | pad layers | growth solid layers | time | growth | ε error | K error | C error | T_max error | h_min error |\n\
+         |---|---|---|---|---|---|---|---|---|\n",
+        truth.derived.film_nodes
+    );
+    for (layers, growth, set) in [(2, 2, film("standard", 2)), (4, 2, film("standard", 4)), (4, 4, film("reference", 4))] {
+        let (ms, s) = solve_set(text, &set, repeats)?;
+        let r = s.thermal.as_ref().map(|t| t.report.clone()).context("a THD solution")?;
+        let t_err = t_rise(&s).zip(t_rise(&truth)).map_or(f64::NAN, |(a, b)| rel(a, b));
+        let _ = writeln!(
+            md,
+            "| {layers} | {growth} | {ms:.1} ms | {:.0} + {:.0} ms | {:.3} % | {:.3} % | {:.3} % | {:.3} % | {:.3} % |",
             1e3 * r.growth_setup_seconds.unwrap_or(0.0),
             1e3 * (r.growth_seconds.unwrap_or(0.0) - r.growth_setup_seconds.unwrap_or(0.0)),
             100.0 * rel(s.eccentricity_ratio, truth.eccentricity_ratio),
