@@ -162,6 +162,8 @@ fn thermal_table() {
     assert_names(&err(&["thermal.convection_w_per_m2_k=-5"]), "thermal.convection_w_per_m2_k", &["-5"]);
     assert_names(&err(&["thermal.journal_temperature_c=nan"]), "thermal.journal_temperature_c", &["finite"]);
     assert_names(&err(&["mesh.pad_radial_elements=0"]), "mesh.pad_radial_elements", &["[1, 200]"]);
+    assert_names(&err(&["thermal.housing_expansion_ppm_per_k=150"]), "thermal.housing_expansion_ppm_per_k", &["150", "[0, 100]"]);
+    assert_names(&err(&["thermal.housing_temperature_c=inf"]), "thermal.housing_temperature_c", &["finite"]);
     let e = err(&["thermal.model=\"hot\""]);
     assert_names(&e, "thermal.model", &[]);
     let e = err(&["thermal.pad_bc=\"bc1\""]);

@@ -74,16 +74,15 @@ fn fillon_a_temperatures_rise_with_speed() {
 
 /// One model for all speeds that meets both of the criteria (docs/THERMAL.md, "Where the heat goes"):
 /// TEHD with the film–pad conduction coupled (BC3) instead of BC1's adiabatic film, every other input as in
-/// `fillon-a-tehd.toml`, nothing changed per speed. The pad's hottest point rises with speed by more than the
+/// `fillon-a-tehd.toml` (the shipped `fillon-a-tehd-bc3.toml`), nothing changed per speed. The pad's hottest point rises with speed by more than the
 /// measured 20 K from 1000 to 4000 rpm (24.1 K on the standard mesh) and is within 5 °C of the measured 76.5 °C
 /// at 4000 rpm (73.9 °C). BC1 gives 12.3 K: at 1000 rpm its film keeps the 8 % of the friction power that BC3
 /// conducts into the pads.
 #[test]
 fn fillon_a_tehd_bc3_rises_with_speed_like_the_measurement() {
-    let bc3 = "thermal.pad_film_bc=\"bc3\"";
     let mut maxima = Vec::new();
     for rpm in [1000, 2000, 3000, 4000] {
-        let s = common::solve("fillon-a-tehd.toml", &[bc3, &format!("operating.speed_rpm={rpm}")]);
+        let s = common::solve("fillon-a-tehd-bc3.toml", &[&format!("operating.speed_rpm={rpm}")]);
         let t = s.thermal.as_ref().expect("a THD case");
         assert!(t.report.converged, "{rpm} rpm: {:?}", t.report);
         assert!(t.energy_balance_closure.abs() < 1e-12, "{rpm} rpm: energy balance closure {:.2e}", t.energy_balance_closure);

@@ -100,7 +100,9 @@ fn a_case_at_its_budget_solves() {
     }
 }
 
-/// Every shipped case, at every fidelity, fits the default budget with a wide margin.
+/// Every shipped case, at every fidelity, fits the default budget with a wide margin (twice its nodes: the
+/// largest, `compressor-bearing-tehd.toml` at the reference fidelity, has 230 100 — 23 010 film nodes and the
+/// five pad solids of 8 layers that its thermal growth and pad conduction need).
 #[test]
 fn shipped_cases_fit_the_default_budget() {
     for entry in std::fs::read_dir(common::case_path("")).unwrap() {
@@ -112,7 +114,7 @@ fn shipped_cases_fit_the_default_budget() {
         for fidelity in ["preview", "standard", "reference"] {
             let case = common::case(&name, &[&format!("mesh.fidelity=\"{fidelity}\"")]);
             let n = count(&case).total();
-            assert!(n < DEFAULT_MAX_NODES / 4, "{name} {fidelity}: {n} nodes");
+            assert!(n < DEFAULT_MAX_NODES / 2, "{name} {fidelity}: {n} nodes");
         }
     }
 }

@@ -60,3 +60,45 @@ fn growth_converges_closes_the_film_and_keeps_the_energy_balance() {
     assert!(tehd.h_min_m < thd.h_min_m);
     assert!(pad_max(&tehd) > pad_max(&thd));
 }
+
+/// Housing growth (a case option, at a given housing temperature) moves every pivot out along its line by
+/// α_h R_p (T_h − T_ref), R_p = R + Cb + t: the bearing is then the one assembled with that much more
+/// clearance (the pads' bores unchanged). Journal position, h_min, the pads' hottest point and the stiffness
+/// agree with that bearing's THD solve to the interpolation of cos(θ − θ_p) between film nodes (steel housing
+/// 20 K above assembly: δ_h = 16.8 µm; measured 1.6e-4 of e, 2.0e-4 in h_min, 1.3e-3 K, 1.05e-4 in K_yy).
+#[test]
+fn housing_growth_is_a_larger_assembled_clearance() {
+    let grown = common::solve(
+        "fillon-a.toml",
+        &[PREVIEW, "thermal.housing_expansion_ppm_per_k=12", "thermal.housing_temperature_c=40", "thermal.reference_temperature_c=20"],
+    );
+    let b = &grown.inputs.bearing;
+    let r = &grown.thermal.as_ref().unwrap().report;
+    assert!(r.converged, "{r:?}");
+    assert_eq!(r.housing_growth_m.len(), b.pads.len());
+    let mut delta = 0.0;
+    for (d, pad) in r.housing_growth_m.iter().zip(&b.pads) {
+        delta = 12e-6 * (b.journal_radius_m + b.assembled_clearance_m + pad.thickness_m) * 20.0;
+        assert!((d - delta).abs() <= 1e-14 * delta, "{d:.6e} vs {delta:.6e}");
+    }
+    let cb_um = format!("bearing.assembled_clearance_um={}", (b.assembled_clearance_m + delta) * 1e6);
+    let wider = common::solve("fillon-a.toml", &[PREVIEW, &cb_um]);
+    let (x, y) = (grown.journal_position_m, wider.journal_position_m);
+    let e = x[0].hypot(x[1]);
+    let de = (x[0] - y[0]).hypot(x[1] - y[1]) / e;
+    let dh = common::rel(grown.h_min_m, wider.h_min_m);
+    let dt = pad_max(&grown) - pad_max(&wider);
+    let dk = common::rel(grown.reduced.k_n_per_m[1][1], wider.reduced.k_n_per_m[1][1]);
+    println!("housing growth {:.3} µm: journal {de:.2e} of e, h_min {dh:.2e}, pad max {dt:.2e} K, K_yy {dk:.2e}", delta * 1e6);
+    assert!(de.abs() < 2e-4 && dh.abs() < 2.5e-4 && dt.abs() < 2e-3 && dk.abs() < 1.5e-4, "{de:.2e} {dh:.2e} {dt:.2e} {dk:.2e}");
+    // The preload falls from 0.47 to 0.36 and the upper pads become lightly loaded: both solves give them their
+    // mean film viscosity (the housing's growth is in the films from the loop's first equilibrium, which decides).
+    let light = |s: &Solution| -> Vec<String> {
+        s.thermal.as_ref().unwrap().report.warnings.iter().filter(|w| w.contains("mean film viscosity")).map(|w| w[..5].to_string()).collect()
+    };
+    assert!(!light(&wider).is_empty());
+    assert_eq!(light(&grown), light(&wider));
+    // And it is not a negligible change: h_min moves by more than 1 % against the bearing as assembled.
+    let plain = common::solve("fillon-a.toml", &[PREVIEW]);
+    assert!((grown.h_min_m - plain.h_min_m).abs() > 1e-2 * plain.h_min_m, "{} vs {}", grown.h_min_m, plain.h_min_m);
+}

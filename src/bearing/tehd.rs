@@ -5,6 +5,9 @@
 //! ```text
 //! h = h_rigid(q) + u_p(s, z) − δ_j                 each film's extra thickness (PadFilm::set_extra_thickness)
 //! δ_j = α_j R (T_j − T_ref)                        journal growth, uniform around the bearing
+//! h += δ_h cos(θ − θ_p),  δ_h = α_h R_p (T_h − T_ref)   housing and pivot growth (a case option, given T_h):
+//!                                                  the pivot (at R_p = R + Cb + t) moves out along its line;
+//!                                                  a fixed sector's bore (R + Cp) grows uniformly instead
 //! K u = f_th,  f_th = ∫ Bᵀ D α_p (T − T_ref) m dV   pad solid (physics::pad_elastic), m = [1 1 1 0 0 0]ᵀ,
 //!                                                  supported statically determinately at its pivot line
 //! u_p = u · e_r on the film face                   positive away from the journal (opens the film)
@@ -47,7 +50,7 @@
 use crate::fem::solid8::{Elastic, Formulation};
 use crate::fem::SpdSolver;
 use crate::mesh::pad3d::PadMesh;
-use crate::model::{Case, Fidelity};
+use crate::model::{Case, Fidelity, PadKind};
 use crate::physics::pad_elastic::{ElasticError, ElasticSystem, Solid, Supports, ThermalLoad};
 use crate::physics::reynolds::SampledField;
 
@@ -67,6 +70,9 @@ pub struct Growth {
     pub journal_per_k: f64,
     /// Temperature at which the clearances are given [°C].
     pub reference_c: f64,
+    /// Housing and pivot expansion coefficient α_h [1/K] and the housing temperature [°C].
+    pub housing_per_k: f64,
+    pub housing_c: f64,
 }
 
 impl Growth {
@@ -79,12 +85,46 @@ impl Growth {
             pad_per_k: t.pad_expansion_per_k,
             journal_per_k: t.journal_expansion_per_k,
             reference_c: t.reference_temperature_c.unwrap_or(case.operating.supply_temperature_c),
+            housing_per_k: t.housing_expansion_per_k,
+            housing_c: t.housing_temperature_c.unwrap_or(case.operating.supply_temperature_c),
         }
     }
 
     #[must_use]
     pub fn is_off(&self) -> bool {
-        self.pad_per_k == 0.0 && self.journal_per_k == 0.0
+        self.pad_per_k == 0.0 && self.journal_per_k == 0.0 && self.housing_per_k == 0.0
+    }
+
+    /// The housing's growth under each pad of a case: the outward displacement of the pad's pivot (of a fixed
+    /// sector's bore) [m], and its film's extra thickness at the film nodes of `model` [m]: `δ_h cos(θ − θ_p)`
+    /// for a tilting pad (a translation along the pivot line), `δ_h` for a fixed sector (a uniformly
+    /// grown bore). Empty when α_h = 0.
+    #[must_use]
+    pub fn housing(&self, case: &Case, model: &BearingModel) -> (Vec<f64>, Vec<Vec<f64>>) {
+        if self.housing_per_k == 0.0 {
+            return (Vec::new(), Vec::new());
+        }
+        let b = &case.bearing;
+        let r = b.journal_radius_m;
+        let rise = self.housing_c - self.reference_c;
+        case.bearing
+            .pads
+            .iter()
+            .zip(&model.pads)
+            .map(|(pad, pm)| {
+                let grid = &pm.film.geom.grid;
+                if pad.kind == PadKind::Tilting {
+                    let delta = self.housing_per_k * (r + b.assembled_clearance_m + pad.thickness_m) * rise;
+                    let film = (0..grid.n_nodes())
+                        .map(|n| delta * (pad.leading_edge_rad + grid.s[grid.col_row(n).0] / r - pad.pivot_rad).cos())
+                        .collect();
+                    (delta, film)
+                } else {
+                    let delta = self.housing_per_k * pad.bore_radius_m(r) * rise;
+                    (delta, vec![delta; grid.n_nodes()])
+                }
+            })
+            .unzip()
     }
 }
 
@@ -281,6 +321,8 @@ pub struct TehdModel {
     pub growth: Growth,
     journal_radius: f64,
     solvers: Vec<GrowthSolver>,
+    /// The housing's growth under each pad ([`Growth::housing`]).
+    housing: (Vec<f64>, Vec<Vec<f64>>),
     /// Which solver each pad uses (`None`: no pad solid, only the journal grows under it).
     solver_of: Vec<Option<usize>>,
 }
@@ -293,22 +335,29 @@ pub struct GrowthField {
     /// (u_r, u_θ, u_z) at every node of pad k's solid [m] ([`PadGrowth::nodal_polar_m`]).
     pub pad_nodal_m: Vec<Vec<f64>>,
     pub journal_m: f64,
+    /// The housing's growth ([`Growth::housing`]): each pad's pivot displacement [m] and the extra film
+    /// thickness it makes at the film nodes [m] (both empty without housing growth).
+    pub housing_m: Vec<f64>,
+    pub housing_film_m: Vec<Vec<f64>>,
 }
 
 impl GrowthField {
-    /// The extra film thickness of pad k at its nodes: `u_p − δ_j`.
+    /// The extra film thickness of pad k at its nodes: `u_p − δ_j + δ_h cos(θ − θ_p)`.
     #[must_use]
     pub fn extra(&self, k: usize) -> Vec<f64> {
-        self.pad_film_m[k].iter().map(|u| u - self.journal_m).collect()
+        let housing = self.housing_film_m.get(k);
+        self.pad_film_m[k].iter().enumerate().map(|(n, u)| u - self.journal_m + housing.map_or(0.0, |h| h[n])).collect()
     }
 
     /// Largest extra film thickness (against no growth at all) [m].
     #[must_use]
     pub fn magnitude(&self) -> f64 {
-        self.journal_m.abs() + self.pad_film_m.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()))
+        let largest = |v: &[Vec<f64>]| v.iter().flatten().fold(0.0_f64, |m, x| m.max(x.abs()));
+        self.journal_m.abs() + largest(&self.pad_film_m) + largest(&self.housing_film_m)
     }
 
-    /// Largest change of the extra film thickness against another evaluation [m].
+    /// Largest change of the extra film thickness against another evaluation [m] (the housing's growth is
+    /// given, so it does not change).
     #[must_use]
     pub fn change(&self, other: &Self) -> f64 {
         let dj = (self.journal_m - other.journal_m).abs();
@@ -361,7 +410,8 @@ impl TehdModel {
             };
             solver_of.push(Some(index));
         }
-        Ok(Some(Self { growth, journal_radius: case.bearing.journal_radius_m, solvers, solver_of }))
+        let housing = growth.housing(case, model);
+        Ok(Some(Self { growth, journal_radius: case.bearing.journal_radius_m, solvers, housing, solver_of }))
     }
 
     /// Distinct factorised pad solids.
@@ -394,8 +444,29 @@ impl TehdModel {
                 pad_nodal_m[*k] = u.nodal_polar_m;
             }
         }
-        GrowthField { pad_film_m, pad_nodal_m, journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c) }
+        GrowthField {
+            pad_film_m,
+            pad_nodal_m,
+            journal_m: g.journal_per_k * self.journal_radius * (t_j - g.reference_c),
+            housing_m: self.housing.0.clone(),
+            housing_film_m: self.housing.1.clone(),
+        }
     }
+}
+
+/// The growth before any temperature is known: the housing's alone (it is given, not computed), so that the
+/// loop's first equilibrium — which decides the lightly loaded pads — sees the bearing the housing makes.
+/// `None` without housing growth.
+#[must_use]
+pub fn housing_only(case: &Case, model: &BearingModel) -> Option<GrowthField> {
+    let (housing_m, housing_film_m) = Growth::of(case).housing(case, model);
+    (!housing_m.is_empty()).then(|| GrowthField {
+        pad_film_m: model.pads.iter().map(|p| vec![0.0; p.film.geom.n_nodes()]).collect(),
+        pad_nodal_m: vec![Vec::new(); model.pads.len()],
+        journal_m: 0.0,
+        housing_m,
+        housing_film_m,
+    })
 }
 
 /// Installs a growth field as each film's extra thickness (nodal values, interpolated bilinearly to the

@@ -227,6 +227,10 @@ pub struct Thermal {
     pub journal_expansion_per_k: f64,
     /// Temperature at which the clearances are given [°C], else the supply temperature.
     pub reference_temperature_c: Option<f64>,
+    /// Thermal expansion of the housing and pivots α_h [1/K] (0: none) at the housing temperature [°C]
+    /// (else the supply temperature).
+    pub housing_expansion_per_k: f64,
+    pub housing_temperature_c: Option<f64>,
 }
 
 /// The pad arc the levels' circumferential counts are set for (the 60–80° pads of the shipped

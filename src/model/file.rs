@@ -380,4 +380,10 @@ pub struct ThermalFile {
     /// Temperature at which the clearances are given (default: the supply temperature).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub reference_temperature_c: Option<f64>,
+    /// Housing (and pivot) thermal expansion coefficient [10⁻⁶/K] (default 0: no housing growth).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub housing_expansion_ppm_per_k: Option<f64>,
+    /// Housing temperature (default: the supply temperature).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub housing_temperature_c: Option<f64>,
 }

@@ -552,5 +552,7 @@ fn resolve_thermal(file: &CaseFile, operating: &Operating) -> Result<Thermal, Ca
         pad_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.pad_expansion_ppm_per_k", t.pad_expansion_ppm_per_k.unwrap_or(0.0))?,
         journal_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.journal_expansion_ppm_per_k", t.journal_expansion_ppm_per_k.unwrap_or(0.0))?,
         reference_temperature_c: opt_t("thermal.reference_temperature_c", t.reference_temperature_c)?,
+        housing_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.housing_expansion_ppm_per_k", t.housing_expansion_ppm_per_k.unwrap_or(0.0))?,
+        housing_temperature_c: opt_t("thermal.housing_temperature_c", t.housing_temperature_c)?,
     })
 }

@@ -382,6 +382,15 @@ pub const KEYS: &[KeySpec] = &[
         "TEHD: thermal expansion of the journal (steel ≈ 11–12): it grows by α R (T_journal − T_ref), closing every film by as much. 0: no journal growth.",
     ),
     num("thermal.reference_temperature_c", "°C", TEMP, (0.0, 60.0), "the supply temperature", "TEHD: temperature at which the clearances are given (the assembly temperature); growth is counted from it."),
+    num(
+        "thermal.housing_expansion_ppm_per_k",
+        "10⁻⁶/K",
+        Range::closed(0.0, 100.0),
+        (10.0, 24.0),
+        "0",
+        "TEHD: thermal expansion of the housing and pivots (steel ≈ 12, aluminium ≈ 23) at the housing temperature: each pivot moves out by α R_p (T_housing − T_ref) (R_p: the pivot radius, journal radius + assembled clearance + pad thickness), opening its film by that times cos(θ − θ_pivot); a fixed sector's bore grows by α times its radius. 0: no housing growth.",
+    ),
+    num("thermal.housing_temperature_c", "°C", TEMP, (20.0, 80.0), "the supply temperature", "TEHD: temperature of the housing and pivots, for their growth (thermal.housing_expansion_ppm_per_k)."),
     other(
         "thermal.cavitated_film",
         "",

@@ -14,7 +14,7 @@ struct OptionalRow {
     set: fn(&mut crate::model::CaseFile, Option<f64>),
 }
 
-const ROWS: [OptionalRow; 10] = [
+const ROWS: [OptionalRow; 12] = [
     OptionalRow {
         num: Num { key: "thermal.h_oil_pad_w_per_m2_k", label: "Film–pad exchange H", decimals: 0 },
         default: |_| 4000.0,
@@ -74,6 +74,18 @@ const ROWS: [OptionalRow; 10] = [
         default: |f| f.operating.supply_temperature_c,
         get: |f| f.thermal.reference_temperature_c,
         set: |f, v| f.thermal.reference_temperature_c = v,
+    },
+    OptionalRow {
+        num: Num { key: "thermal.housing_expansion_ppm_per_k", label: "Housing expansion α [10⁻⁶/K]", decimals: 1 },
+        default: |_| 0.0,
+        get: |f| f.thermal.housing_expansion_ppm_per_k,
+        set: |f, v| f.thermal.housing_expansion_ppm_per_k = v,
+    },
+    OptionalRow {
+        num: Num { key: "thermal.housing_temperature_c", label: "Housing temperature", decimals: 1 },
+        default: |f| f.operating.supply_temperature_c,
+        get: |f| f.thermal.housing_temperature_c,
+        set: |f, v| f.thermal.housing_temperature_c = v,
     },
 ];
 

@@ -80,6 +80,8 @@ impl ThermalInputs {
             pad_expansion_per_k,
             journal_expansion_per_k: _,
             reference_temperature_c: _,
+            housing_expansion_per_k: _,
+            housing_temperature_c: _,
         } = thermal;
         // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
         let pad_elastic = (*pad_expansion_per_k != 0.0).then(|| bearing.pads.iter().map(|p| [p.youngs_modulus_pa, p.poisson_ratio]).collect());

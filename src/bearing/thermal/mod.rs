@@ -130,6 +130,10 @@ pub struct ThermalReport {
     pub journal_growth_m: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pad_growth_range_m: Option<[f64; 2]>,
+    /// TEHD: outward displacement of each pad's pivot (of a fixed sector's bore) by the housing's growth
+    /// α_h R_p (T_h − T_ref) [m] (empty without housing growth).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub housing_growth_m: Vec<f64>,
     /// TEHD, of `thermal_seconds`: building the growth model (pad solids assembled and factorised, thermal-load
     /// operators) and the growth steps of every outer iteration (pad conduction for BC1, thermal loads,
     /// solves) [s].

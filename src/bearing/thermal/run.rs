@@ -168,6 +168,9 @@ impl ThdRun {
             Some(p) => p,
             None => {
                 self.report.outer_iterations += 1;
+                if self.report.outer_iterations == 1 {
+                    self.growth_next = tehd::housing_only(case, model);
+                }
                 self.growth.clone_from(&self.growth_next);
                 for k in 0..n {
                     self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
@@ -350,6 +353,7 @@ impl ThdRun {
     fn with_structure(&self, mut state: ThdState) -> ThdState {
         if let Some(g) = &self.growth {
             state.report.journal_growth_m = Some(g.journal_m);
+            state.report.housing_growth_m.clone_from(&g.housing_m);
             state.report.pad_growth_range_m = Some(g.pad_film_m.iter().flatten().fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &v| [lo.min(v), hi.max(v)]));
         }
         state.growth.clone_from(&self.growth);
