@@ -24,6 +24,7 @@ pub mod regime;
 pub mod report;
 pub mod solution;
 pub mod stages;
+pub mod growth_solid;
 pub mod tehd;
 pub mod thermal;
 pub mod thermal_pad;

@@ -155,7 +155,7 @@ pub fn summary_text(s: &Solution) -> String {
         );
         if let Some(j) = r.journal_growth_m {
             let pads = r.pad_growth_range_m.map_or_else(String::new, |[lo, hi]| format!(", pads' film faces {:.2} … {:.2} µm", lo * 1e6, hi * 1e6));
-            let housing = r.housing_growth_m.iter().fold(None, |m: Option<f64>, &v| Some(m.map_or(v, |m| m.max(v))));
+            let housing = r.housing_growth_m.iter().copied().reduce(f64::max);
             let housing = housing.map_or_else(String::new, |h| format!(", housing at the pivots {:.2} µm", h * 1e6));
             let _ = writeln!(o, "    thermal growth: journal {:.2} µm{pads}{housing}", j * 1e6);
         }

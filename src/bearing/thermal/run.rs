@@ -109,7 +109,9 @@ impl ThdRun {
             work_seconds: 0.0,
             tehd: None,
             growth: None,
-            growth_next: None,
+            // The housing's growth is given: in the films from the first equilibrium, which decides the
+            // lightly loaded pads.
+            growth_next: tehd::housing_only(case, model),
             pending: None,
             pivots: None,
             pivot_change: 0.0,
@@ -168,9 +170,6 @@ impl ThdRun {
             Some(p) => p,
             None => {
                 self.report.outer_iterations += 1;
-                if self.report.outer_iterations == 1 {
-                    self.growth_next = tehd::housing_only(case, model);
-                }
                 self.growth.clone_from(&self.growth_next);
                 for k in 0..n {
                     self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
