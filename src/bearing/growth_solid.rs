@@ -33,7 +33,7 @@
 //! ε and h_min and 0.12 % in C, 4 layers with all by 0.04 %, 0.03 % and 0.11 % — a thirtieth of the standard
 //! film mesh's own error (ε 1.56 %), for 0.25 s less (growth set-up and steps). Fillon's bearing A (TEHD,
 //! 4000 rpm, standard): h_min 23.580 µm merged, 23.576 µm with all 4 layers, 23.575 µm with 8; pad T_max
-//! 76.631 / 76.634 / 76.635 °C. On Fillon's pad under a conducted temperature field alone the film-face growth
+//! 76.631 / 76.634 / 76.635 °C (measured before the rupture was placed between nodes). On Fillon's pad under a conducted temperature field alone the film-face growth
 //! of 2 layers differs from that of 8 by 15 % of its largest value at worst (rms 3.6 %), that of 4 layers by 5
 //! % (rms 1.1 %) (test `every_second_layer_against_all_layers` compares 2 with 4); in the coupled solve the
 //! film closes much of that difference (above).

@@ -58,6 +58,16 @@ pub const MIN_RELAXATION: f64 = 0.1;
 /// bearing's 40 bar leading-edge injection, which the plain loop converges in 27 iterations through rises
 /// of its change, spend 100 iterations).
 pub const SAFEGUARD_AFTER: usize = 40;
+/// Outer iterations of the safeguarded phase without the viscosity change falling below [`STALL_GAIN`]
+/// times its best after which the loop gives up the Anderson extrapolation for plain damped steps
+/// ([`PLAIN_RELAXATION`], still halved on growth and restored on falls). Where the extrapolation keeps
+/// proposing fields whose images move away (Fillon A at S = 0.1, 40°: a change of 0.1–0.2 for 260
+/// iterations), the damped steps contract (converged in 74 outer iterations).
+pub const STALL_WINDOW: usize = 20;
+/// See [`STALL_WINDOW`].
+pub const STALL_GAIN: f64 = 0.5;
+/// Damping of the plain steps a stalled loop falls back to ([`STALL_WINDOW`]).
+pub const PLAIN_RELAXATION: f64 = 0.4;
 /// Default iteration budget of the thermal loop. The safeguarded steps contract at about 0.93 per step where
 /// they are needed ([`MIN_RELAXATION`]), so from a change of order 1e-1 at [`SAFEGUARD_AFTER`] the 1e-4
 /// tolerance takes about 100 more: a budget of 100 stopped such loops short by construction (Fillon A at

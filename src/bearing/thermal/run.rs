@@ -8,6 +8,8 @@ use super::*;
 use super::resumable::{equilibrium_part, PendingEquilibrium};
 use crate::bearing::pivot_contact::{self, HertzPivots};
 use crate::bearing::progress::Progress;
+
+mod update;
 /// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
 /// the current viscosity field, then the film and pad temperatures), so a caller without threads (the web
 /// build) can spread a THD solve over frames; when the caller's [`Cancel::suspend`] asks, the outer
@@ -20,7 +22,11 @@ use crate::bearing::progress::Progress;
 /// contract (near touchdown, where the film's heating is steep in the viscosity); if the
 /// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
 /// curve loses its root), the proposal is halved back towards the last field that worked, up to
-/// [`MAX_BACKTRACKS`] times, and the history is restarted.
+/// [`MAX_BACKTRACKS`] times, and the history is restarted. Every proposal is clamped to the range of the
+/// image it was made from; ω is doubled again after falls of the change ([`super::super::anderson::RECOVER_AFTER`]);
+/// a safeguarded loop whose change has not halved in [`STALL_WINDOW`] outer iterations drops the
+/// extrapolation for plain damped steps; and a touchdown the loop walked into restarts it once, safeguarded
+/// from the start (`update.rs`).
 pub struct ThdRun {
     t0: Instant,
     params: ThermalParams,
@@ -55,6 +61,15 @@ pub struct ThdRun {
     /// last step's relative change of the secant springs.
     pivots: Option<HertzPivots>,
     pivot_change: f64,
+    /// Smallest viscosity change of the safeguarded phase and the outer iteration it was reached at; and
+    /// whether the loop has fallen back to plain damped steps ([`STALL_WINDOW`]).
+    best_change: (f64, usize),
+    plain: bool,
+    /// Restarted with the safeguard from its first step ([`ThdRun::restart_cautiously`]), and what it
+    /// restarts from.
+    cautious: bool,
+    growth_at_start: Option<GrowthField>,
+    u_start: Option<Vec<f64>>,
 }
 
 /// Forwards the caller's cancellation and suspension, and cancels once a time budget is spent.
@@ -112,9 +127,14 @@ impl ThdRun {
             // The housing's growth is given: in the films from the first equilibrium, which decides the
             // lightly loaded pads.
             growth_next: tehd::housing_only(case, model),
+            growth_at_start: tehd::housing_only(case, model),
+            u_start: start.map(<[f64]>::to_vec),
             pending: None,
             pivots: None,
             pivot_change: 0.0,
+            best_change: (f64::INFINITY, 0),
+            plain: false,
+            cautious: false,
         }
     }
 
@@ -199,33 +219,7 @@ impl ThdRun {
                 return Ok(None);
             }
             Err(SolveError::Cancelled) => return Err(SolveError::Cancelled),
-            Err(e) => {
-                let Some(tt) = &self.t_try else { return Err(e) };
-                let light: Vec<usize> = (0..n).filter(|&k| !self.uniform[k] && self.shares[k] < LIGHT_PAD_SHARE).collect();
-                if !light.is_empty() {
-                    for &k in &light {
-                        self.uniform[k] = true;
-                        self.report.warnings.push(format!(
-                            "pad {k} carries {:.1} % of the load and had no equilibrium tilt with its non-uniform viscosity \
-                             ({e}): it is given its mean film viscosity",
-                            100.0 * self.shares[k]
-                        ));
-                    }
-                    return Ok(None);
-                }
-                if self.report.outer_iterations >= params.max_iterations {
-                    return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
-                }
-                if self.backtracks >= MAX_BACKTRACKS {
-                    return Err(e);
-                }
-                self.backtracks += 1;
-                let base = self.t_ok.as_ref().unwrap_or(&self.t_iso);
-                self.t_try = Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
-                self.anderson.reset();
-                self.report.warnings.push(format!("equilibrium failed with the updated viscosity field ({e}); step halved"));
-                return Ok(None);
-            }
+            Err(e) => return self.failed_equilibrium(thermal, e),
         };
         self.backtracks = 0;
         self.shares = load_shares(&eq);
@@ -300,12 +294,8 @@ impl ThdRun {
         if self.report.outer_iterations >= params.max_iterations {
             return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
         }
-        let next = if self.report.outer_iterations > SAFEGUARD_AFTER {
-            self.anderson.step_safeguarded(&flatten(current), &flatten(&t_new), change)
-        } else {
-            self.anderson.step(&flatten(current), &flatten(&t_new))
-        };
-        self.t_try = Some(unflatten(&next, &t_new));
+        let current = flatten(current);
+        self.t_try = Some(self.propose(case, &current, &t_new, change));
         for (pt, t) in thermal.pads.iter_mut().zip(t_new) {
             pt.t_prev = Some(t);
         }
@@ -438,3 +428,4 @@ fn finish(
     report.seconds = t0.elapsed().as_secs_f64();
     Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report, growth: None, pivots: None })
 }
+

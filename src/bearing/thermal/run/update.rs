@@ -1,0 +1,118 @@
+//! The thermal loop's temperature update ([`ThdRun`]): the next proposed field from the current one and its
+//! image — Anderson-extrapolated, safeguarded, clamped — and what the loop does when an equilibrium fails
+//! with a proposed field (backtracking, the lightly loaded pads' mean viscosity, the cautious restart).
+
+#[allow(clippy::wildcard_imports)]
+use super::super::*;
+use super::ThdRun;
+
+/// How far below the coldest oil or surroundings a proposed film temperature may lie [K]: the
+/// discretisation's own undershoot in converged states is far smaller (0.08 K below the supply temperature,
+/// compressor bearing with 40 bar leading-edge injection, standard mesh; a proposal clamped at the supply
+/// temperature itself left that loop at a change of 2.9e-3 for good).
+const UNDERSHOOT_ALLOWANCE_K: f64 = 10.0;
+
+impl ThdRun {
+    /// The next proposed temperature field from the current one (flattened), its image `t_new` and their
+    /// viscosity change (see [`ThdRun`]'s robustness notes).
+    pub(super) fn propose(&mut self, case: &Case, current: &[f64], t_new: &[Vec<f64>], change: f64) -> Vec<Vec<f64>> {
+        let it = self.report.outer_iterations;
+        let safeguarded = self.cautious || it > SAFEGUARD_AFTER;
+        if safeguarded && !self.plain {
+            if change < STALL_GAIN * self.best_change.0 {
+                self.best_change = (change, it);
+            } else if it - self.best_change.1 >= STALL_WINDOW {
+                self.plain = true;
+                self.anderson = Anderson::safeguarded(0, PLAIN_RELAXATION, MIN_RELAXATION);
+                self.report.warnings.push(format!(
+                    "the accelerated temperature update stalled (viscosity change {:.1e} at best, outer iteration {}): damped \
+                     fixed-point steps from outer iteration {it}",
+                    self.best_change.0, self.best_change.1
+                ));
+            }
+        }
+        let mut next = if safeguarded {
+            self.anderson.step_safeguarded(current, &flatten(t_new), change)
+        } else {
+            self.anderson.step(current, &flatten(t_new))
+        };
+        // The fixed point is one of the images, so it lies within their range: an extrapolation beyond the
+        // range of this image is cut back to it (unclamped, Fillon A at S = 0.1, 55°, proposed film
+        // temperatures of −880 and 840 °C), and to no more than UNDERSHOOT_ALLOWANCE_K below the coldest oil
+        // or surroundings there are (the film is heated by shear): an image of a film near touchdown can
+        // undershoot (−219 °C, Fillon A at S = 0.1, 35°), and its viscosity would run away.
+        let th = &case.thermal;
+        let coldest = [th.inlet_temperature_c, th.journal_temperature_c]
+            .into_iter()
+            .flatten()
+            .fold(case.operating.supply_temperature_c.min(th.ambient_temperature_c), f64::min);
+        let floor = coldest - UNDERSHOOT_ALLOWANCE_K;
+        let (lo, hi) = t_new.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+        let (lo, hi) = (lo.max(floor), hi.max(floor));
+        for v in &mut next {
+            *v = v.clamp(lo, hi);
+        }
+        unflatten(&next, t_new)
+    }
+
+    /// An equilibrium failed with the proposed field: the lightly loaded pads get their mean viscosity, or the
+    /// step is halved back towards the last field that worked, or — a touchdown that backtracking could not
+    /// leave — the loop restarts cautiously once ([`ThdRun::restart_cautiously`]); else the error stands.
+    pub(super) fn failed_equilibrium(&mut self, thermal: &mut ThermalModel, e: SolveError) -> Result<Option<ThdState>, SolveError> {
+        let Some(tt) = &self.t_try else { return Err(e) };
+        let light: Vec<usize> = (0..self.uniform.len()).filter(|&k| !self.uniform[k] && self.shares[k] < LIGHT_PAD_SHARE).collect();
+        if !light.is_empty() {
+            for &k in &light {
+                self.uniform[k] = true;
+                self.report.warnings.push(format!(
+                    "pad {k} carries {:.1} % of the load and had no equilibrium tilt with its non-uniform viscosity \
+                     ({e}): it is given its mean film viscosity",
+                    100.0 * self.shares[k]
+                ));
+            }
+            return Ok(None);
+        }
+        let max_iterations = self.params.max_iterations;
+        if self.report.outer_iterations >= max_iterations {
+            return Err(self.budget_exceeded(Budget::Iterations(max_iterations)));
+        }
+        if self.backtracks >= MAX_BACKTRACKS {
+            if matches!(e, SolveError::Touchdown { .. }) && !self.cautious {
+                self.restart_cautiously(thermal, &e);
+                return Ok(None);
+            }
+            return Err(e);
+        }
+        self.backtracks += 1;
+        let base = self.t_ok.as_ref().unwrap_or(&self.t_iso);
+        self.t_try = Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
+        self.anderson.reset();
+        self.report.warnings.push(format!("equilibrium failed with the updated viscosity field ({e}); step halved"));
+        Ok(None)
+    }
+
+    /// The loop walked into a touchdown that backtracking could not leave: start again, once, from the
+    /// isothermal field, safeguarded from the first step (the iteration and time budgets go on). The
+    /// unsafeguarded extrapolation of the first [`SAFEGUARD_AFTER`] steps can overshoot into a film hotter
+    /// than the converged one (Fillon A at S = 0.1, 35°: 265 °C and h_min 0.79 µm at the fifth step, where
+    /// the converged state has 192 °C and 1.8 µm); a touchdown of the cautious loop is the answer.
+    fn restart_cautiously(&mut self, thermal: &mut ThermalModel, e: &SolveError) {
+        self.report.warnings.push(format!(
+            "the thermal loop reached touchdown at outer iteration {} ({e}): restarted from the isothermal field with safeguarded steps",
+            self.report.outer_iterations
+        ));
+        self.cautious = true;
+        self.t_ok = None;
+        self.t_try = None;
+        self.backtracks = 0;
+        self.anderson = Anderson::safeguarded(ANDERSON_DEPTH, self.params.relaxation, MIN_RELAXATION);
+        self.best_change = (f64::INFINITY, 0);
+        self.plain = false;
+        self.last_change = f64::INFINITY;
+        self.growth_next.clone_from(&self.growth_at_start);
+        self.u.clone_from(&self.u_start);
+        for pt in &mut thermal.pads {
+            pt.t_prev = None;
+        }
+    }
+}
