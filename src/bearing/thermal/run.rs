@@ -68,6 +68,7 @@ pub struct ThdRun {
     /// Restarted with the safeguard from its first step ([`ThdRun::restart_cautiously`]), and what it
     /// restarts from.
     cautious: bool,
+    restarted_from: Option<SolveError>,
     growth_at_start: Option<GrowthField>,
     u_start: Option<Vec<f64>>,
 }
@@ -135,6 +136,7 @@ impl ThdRun {
             best_change: (f64::INFINITY, 0),
             plain: false,
             cautious: false,
+            restarted_from: None,
         }
     }
 
@@ -172,7 +174,12 @@ impl ThdRun {
         }
     }
 
+    /// The loop ran out of a budget; after a cautious restart ([`ThdRun`]'s robustness notes) whose loop did
+    /// not finish in it, the answer is the touchdown that started it.
     fn budget_exceeded(&self, budget: Budget) -> SolveError {
+        if let Some(e) = &self.restarted_from {
+            return e.clone();
+        }
         SolveError::BudgetExceeded {
             what: Iteration::Thermal,
             budget,

@@ -95,13 +95,16 @@ impl ThdRun {
     /// isothermal field, safeguarded from the first step (the iteration and time budgets go on). The
     /// unsafeguarded extrapolation of the first [`SAFEGUARD_AFTER`] steps can overshoot into a film hotter
     /// than the converged one (Fillon A at S = 0.1, 35°: 265 °C and h_min 0.79 µm at the fifth step, where
-    /// the converged state has 192 °C and 1.8 µm); a touchdown of the cautious loop is the answer.
+    /// the converged state has 192 °C and 1.8 µm); a touchdown of the cautious loop is the answer, and so is
+    /// the first touchdown when the cautious loop spends the iteration or time budget (compressor bearing with
+    /// thermal growth at S = 0.1: 4 map points whose touchdown took 60 s, then the restart ran out of 120 s).
     fn restart_cautiously(&mut self, thermal: &mut ThermalModel, e: &SolveError) {
         self.report.warnings.push(format!(
             "the thermal loop reached touchdown at outer iteration {} ({e}): restarted from the isothermal field with safeguarded steps",
             self.report.outer_iterations
         ));
         self.cautious = true;
+        self.restarted_from = Some(e.clone());
         self.t_ok = None;
         self.t_try = None;
         self.backtracks = 0;
