@@ -83,3 +83,24 @@ fn fillon_a_at_s_0_1_restarts_cautiously_after_an_overshoot_into_touchdown() {
     let warnings = converges("fillon-a.toml", 0.1, 35.0);
     assert!(warnings.iter().any(|w| w.contains("restarted from the isothermal field")), "{warnings:?}");
 }
+
+/// The same point with an iteration budget of 40: the loop reaches touchdown at its ninth outer iteration
+/// and backtracks, restarts cautiously, and the restarted loop (83 outer iterations to converge with the
+/// default budget) cannot converge in the iterations left. The answer is
+/// the touchdown that started the restart, not a spent budget: a restart never turns a physical answer into
+/// a failure. (Without that rule the compressor bearing with thermal growth had 4 map points at S = 0.1
+/// that were touchdowns and became time-budget failures.)
+#[test]
+fn a_restart_that_spends_the_budget_answers_with_its_touchdown() {
+    use tiltpad::bearing::thermal::solve_thd;
+    use tiltpad::bearing::{SolveError, ThermalModel};
+    let mut case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);
+    case.operating.load = LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, 0.1), angle_rad: 35.0_f64.to_radians() };
+    let mut model = BearingModel::new(&case).unwrap();
+    let mut thermal = ThermalModel::new(&case, &model).unwrap();
+    let params = ThermalParams { max_iterations: 40, ..ThermalParams::default() };
+    match solve_thd(&mut model, &mut thermal, &case, params, None, &NoCancel) {
+        Err(SolveError::Touchdown { h_min_um, .. }) => assert!(h_min_um < 0.8, "h_min {h_min_um} µm"),
+        other => panic!("expected the touchdown that started the restart, got {other:?}"),
+    }
+}
