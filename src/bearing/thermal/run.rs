@@ -65,9 +65,8 @@ pub struct ThdRun {
     /// whether the loop has fallen back to plain damped steps ([`STALL_WINDOW`]).
     best_change: (f64, usize),
     plain: bool,
-    /// Restarted with the safeguard from its first step ([`ThdRun::restart_cautiously`]), and what it
-    /// restarts from.
-    cautious: bool,
+    /// The touchdown that made the loop restart, safeguarded from its first step
+    /// ([`ThdRun::restart_cautiously`]; `None`: not restarted), and what it restarts from.
     restarted_from: Option<SolveError>,
     growth_at_start: Option<GrowthField>,
     u_start: Option<Vec<f64>>,
@@ -107,6 +106,7 @@ impl ThdRun {
         for pt in &mut thermal.pads {
             pt.t_prev = None;
         }
+        let housing = tehd::housing_only(case, model);
         Self {
             t0: Instant::now(),
             params,
@@ -127,15 +127,14 @@ impl ThdRun {
             growth: None,
             // The housing's growth is given: in the films from the first equilibrium, which decides the
             // lightly loaded pads.
-            growth_next: tehd::housing_only(case, model),
-            growth_at_start: tehd::housing_only(case, model),
+            growth_next: housing.clone(),
+            growth_at_start: housing,
             u_start: start.map(<[f64]>::to_vec),
             pending: None,
             pivots: None,
             pivot_change: 0.0,
             best_change: (f64::INFINITY, 0),
             plain: false,
-            cautious: false,
             restarted_from: None,
         }
     }
@@ -435,4 +434,3 @@ fn finish(
     report.seconds = t0.elapsed().as_secs_f64();
     Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report, growth: None, pivots: None })
 }
-

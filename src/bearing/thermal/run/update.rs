@@ -17,7 +17,7 @@ impl ThdRun {
     /// viscosity change (see [`ThdRun`]'s robustness notes).
     pub(super) fn propose(&mut self, case: &Case, current: &[f64], t_new: &[Vec<f64>], change: f64) -> Vec<Vec<f64>> {
         let it = self.report.outer_iterations;
-        let safeguarded = self.cautious || it > SAFEGUARD_AFTER;
+        let safeguarded = self.restarted_from.is_some() || it > SAFEGUARD_AFTER;
         if safeguarded && !self.plain {
             if change < STALL_GAIN * self.best_change.0 {
                 self.best_change = (change, it);
@@ -77,7 +77,7 @@ impl ThdRun {
             return Err(self.budget_exceeded(Budget::Iterations(max_iterations)));
         }
         if self.backtracks >= MAX_BACKTRACKS {
-            if matches!(e, SolveError::Touchdown { .. }) && !self.cautious {
+            if matches!(e, SolveError::Touchdown { .. }) && self.restarted_from.is_none() {
                 self.restart_cautiously(thermal, &e);
                 return Ok(None);
             }
@@ -103,7 +103,6 @@ impl ThdRun {
             "the thermal loop reached touchdown at outer iteration {} ({e}): restarted from the isothermal field with safeguarded steps",
             self.report.outer_iterations
         ));
-        self.cautious = true;
         self.restarted_from = Some(e.clone());
         self.t_ok = None;
         self.t_try = None;
