@@ -37,7 +37,10 @@
 // builds may; `[lints]` cannot tell test targets apart, so this one stays here).
 #![cfg_attr(not(test), warn(clippy::unwrap_used, clippy::expect_used))]
 
+#[cfg(feature = "gui")]
+pub mod app;
 pub mod bearing;
+pub mod cli;
 pub mod fem;
 pub mod io;
 pub mod mesh;
@@ -47,6 +50,3 @@ pub mod physics;
 pub mod rotor;
 pub mod scene;
 pub mod study;
-pub mod cli;
-#[cfg(feature = "gui")]
-pub mod app;

@@ -28,7 +28,9 @@ fn main() {
 #[cfg(all(not(target_arch = "wasm32"), feature = "gui"))]
 fn run_workbench() -> Result<(), ()> {
     let options = eframe::NativeOptions {
-        viewport: egui::ViewportBuilder::default().with_title("tiltpad — tilting-pad bearing workbench").with_inner_size([1400.0, 860.0]),
+        viewport: egui::ViewportBuilder::default()
+            .with_title("tiltpad — tilting-pad bearing workbench")
+            .with_inner_size([1400.0, 860.0]),
         ..Default::default()
     };
     eframe::run_native("tiltpad", options, Box::new(|cc| Ok(Box::new(tiltpad::app::WorkbenchApp::new(cc))))).map_err(|e| {

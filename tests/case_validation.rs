@@ -67,9 +67,15 @@ fn overlapping_pads() {
 fn orifice_outside_its_pad() {
     let e = err(&["bearing.pads.orifice=[{position_frac = 0.02, diameter_mm = 5.0, length_mm = 5.0}]"]);
     assert_names(&e, "bearing.pads.orifice[0].position_frac", &["outside its pad", "allowed position_frac in"]);
-    let e = err(&["bearing.pads.orifice=[{position_frac = 0.5, axial_frac = 0.97, diameter_mm = 5.0, length_mm = 5.0}]", "mesh.half_model=false"]);
+    let e = err(&[
+        "bearing.pads.orifice=[{position_frac = 0.5, axial_frac = 0.97, diameter_mm = 5.0, length_mm = 5.0}]",
+        "mesh.half_model=false",
+    ]);
     assert_names(&e, "bearing.pads.orifice[0].axial_frac", &["outside its pad"]);
-    let e = err(&["bearing.pads.orifice=[{position_frac = 0.5, axial_frac = 0.3, diameter_mm = 5.0, length_mm = 5.0}]", "mesh.half_model=true"]);
+    let e = err(&[
+        "bearing.pads.orifice=[{position_frac = 0.5, axial_frac = 0.3, diameter_mm = 5.0, length_mm = 5.0}]",
+        "mesh.half_model=true",
+    ]);
     assert_names(&e, "mesh.half_model", &["mid-plane"]);
 }
 
@@ -109,10 +115,18 @@ fn wrong_types_and_inconsistent_values() {
     let e = err(&["operating.speed_rpm=\"fast\""]);
     assert!(matches!(e, CaseError::WrongType { .. }), "{e:?}");
     assert_names(&e, "operating.speed_rpm", &[]);
-    assert_names(&err(&["operating.injection_pressure_bar=[1.0, 2.0]"]), "operating.injection_pressure_bar", &["2 values for 5 pads"]);
+    assert_names(
+        &err(&["operating.injection_pressure_bar=[1.0, 2.0]"]),
+        "operating.injection_pressure_bar",
+        &["2 values for 5 pads"],
+    );
     assert_names(&err(&["operating.eccentricity_ratio=0.5"]), "operating.eccentricity_ratio", &["not both"]);
     assert_names(&err(&["bearing.pads.count=0"]), "bearing.pads.count", &["[1, 24]"]);
-    assert_names(&err(&["lubricant.viscosity2_pa_s=0.05"]), "lubricant.viscosity2_pa_s", &["must fall with temperature"]);
+    assert_names(
+        &err(&["lubricant.viscosity2_pa_s=0.05"]),
+        "lubricant.viscosity2_pa_s",
+        &["must fall with temperature"],
+    );
     assert_names(&err(&["mesh.axial_elements=15"]), "mesh.axial_elements", &["even"]);
 }
 
@@ -154,7 +168,9 @@ fn thermal_table() {
     // BC2 needs its coefficient, and only BC2 takes one.
     assert_names(&err(&["thermal.pad_film_bc=\"bc2\""]), "thermal.h_oil_pad_w_per_m2_k", &["missing", "bc2"]);
     assert_names(&err(&["thermal.h_oil_pad_w_per_m2_k=4000"]), "thermal.h_oil_pad_w_per_m2_k", &["only used with"]);
-    let (_, c) = load_case(&base(), &["thermal.pad_film_bc=\"bc2\"".into(), "thermal.h_oil_pad_w_per_m2_k=4000".into()]).unwrap();
+    let (_, c) =
+        load_case(&base(), &["thermal.pad_film_bc=\"bc2\"".into(), "thermal.h_oil_pad_w_per_m2_k=4000".into()])
+            .unwrap();
     assert_eq!(c.thermal.pad_film_bc, tiltpad::model::PadFilmBc::Bc2 { h_w_per_m2_k: 4000.0 });
     // Ranges name key, value and the allowed interval.
     assert_names(&err(&["thermal.carry_over=1.2"]), "thermal.carry_over", &["1.2", "[0, 1]"]);
@@ -162,7 +178,11 @@ fn thermal_table() {
     assert_names(&err(&["thermal.convection_w_per_m2_k=-5"]), "thermal.convection_w_per_m2_k", &["-5"]);
     assert_names(&err(&["thermal.journal_temperature_c=nan"]), "thermal.journal_temperature_c", &["finite"]);
     assert_names(&err(&["mesh.pad_radial_elements=0"]), "mesh.pad_radial_elements", &["[1, 200]"]);
-    assert_names(&err(&["thermal.housing_expansion_ppm_per_k=150"]), "thermal.housing_expansion_ppm_per_k", &["150", "[0, 100]"]);
+    assert_names(
+        &err(&["thermal.housing_expansion_ppm_per_k=150"]),
+        "thermal.housing_expansion_ppm_per_k",
+        &["150", "[0, 100]"],
+    );
     assert_names(&err(&["thermal.housing_temperature_c=inf"]), "thermal.housing_temperature_c", &["finite"]);
     let e = err(&["thermal.model=\"hot\""]);
     assert_names(&e, "thermal.model", &[]);

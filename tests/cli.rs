@@ -14,7 +14,13 @@ fn solve_writes_self_describing_json() {
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("r.json");
     let o = tiltpad()
-        .args(["solve", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--set", "operating.speed_rpm=7000", "--json"])
+        .args([
+            "solve",
+            common::case_path("compressor-bearing.toml").to_str().unwrap(),
+            "--set",
+            "operating.speed_rpm=7000",
+            "--json",
+        ])
         .arg(&out)
         .output()
         .unwrap();
@@ -22,7 +28,16 @@ fn solve_writes_self_describing_json() {
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("eccentricity") && text.contains("reduced coefficients"), "{text}");
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    for key in ["eccentricity_ratio", "attitude_angle_deg", "journal_position_m", "sommerfeld", "friction_power_w", "flows_m3_per_s", "report", "inputs"] {
+    for key in [
+        "eccentricity_ratio",
+        "attitude_angle_deg",
+        "journal_position_m",
+        "sommerfeld",
+        "friction_power_w",
+        "flows_m3_per_s",
+        "report",
+        "inputs",
+    ] {
         assert!(j.get(key).is_some(), "missing {key}");
     }
     assert_eq!(j["reduced"]["k_n_per_m"].as_array().unwrap().len(), 2);
@@ -49,7 +64,19 @@ fn sweep_writes_csv() {
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("s.csv");
     let o = tiltpad()
-        .args(["sweep", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--param", "operating.speed_rpm", "--from", "6000", "--to", "10000", "--steps", "3", "--csv"])
+        .args([
+            "sweep",
+            common::case_path("compressor-bearing.toml").to_str().unwrap(),
+            "--param",
+            "operating.speed_rpm",
+            "--from",
+            "6000",
+            "--to",
+            "10000",
+            "--steps",
+            "3",
+            "--csv",
+        ])
         .arg(&out)
         .output()
         .unwrap();
@@ -67,7 +94,14 @@ fn sweep_writes_csv() {
 #[test]
 fn invalid_case_is_a_clear_error() {
     let o = tiltpad()
-        .args(["solve", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--set", "bearing.pads.bore_radius_mm=", "--set", "bearing.pads.preload=1.2"])
+        .args([
+            "solve",
+            common::case_path("compressor-bearing.toml").to_str().unwrap(),
+            "--set",
+            "bearing.pads.bore_radius_mm=",
+            "--set",
+            "bearing.pads.preload=1.2",
+        ])
         .output()
         .unwrap();
     assert!(!o.status.success());
@@ -78,7 +112,14 @@ fn invalid_case_is_a_clear_error() {
 #[test]
 fn touchdown_is_reported_not_nan() {
     let o = tiltpad()
-        .args(["solve", common::case_path("compressor-bearing.toml").to_str().unwrap(), "--set", "operating.load_n=5e6", "--set", "bearing.pads.orifice=[]"])
+        .args([
+            "solve",
+            common::case_path("compressor-bearing.toml").to_str().unwrap(),
+            "--set",
+            "operating.load_n=5e6",
+            "--set",
+            "bearing.pads.orifice=[]",
+        ])
         .output()
         .unwrap();
     assert!(!o.status.success());
@@ -93,7 +134,13 @@ fn thermal_solve_reports_temperatures_in_json_and_summary() {
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("t.json");
     let o = tiltpad()
-        .args(["solve", common::case_path("fillon-a.toml").to_str().unwrap(), "--set", "mesh.fidelity=\"preview\"", "--json"])
+        .args([
+            "solve",
+            common::case_path("fillon-a.toml").to_str().unwrap(),
+            "--set",
+            "mesh.fidelity=\"preview\"",
+            "--json",
+        ])
         .arg(&out)
         .output()
         .unwrap();
@@ -103,18 +150,37 @@ fn thermal_solve_reports_temperatures_in_json_and_summary() {
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
     let film = j["t_max_film_c"].as_f64().unwrap();
     let pad = j["t_max_pad_c"].as_f64().unwrap();
-    assert!(film > 40.0 && pad > 40.0 && pad <= film + 1e-9, "BC1: the pad is never hotter than the film ({pad} vs {film})");
+    assert!(
+        film > 40.0 && pad > 40.0 && pad <= film + 1e-9,
+        "BC1: the pad is never hotter than the film ({pad} vs {film})"
+    );
     let t = &j["thermal"];
     assert!(t["report"]["outer_iterations"].as_u64().unwrap() > 1 && t["report"]["converged"].as_bool().unwrap());
-    assert!(t["energy_balance_closure"].as_f64().unwrap().abs() < 1e-12, "closes to round-off: {}", t["energy_balance_closure"]);
+    assert!(
+        t["energy_balance_closure"].as_f64().unwrap().abs() < 1e-12,
+        "closes to round-off: {}",
+        t["energy_balance_closure"]
+    );
     assert_eq!(t["inlet_temperatures_c"].as_array().unwrap().len(), 4);
-    for key in ["journal_temperature_c", "t_mean_film_c", "heat_carried_by_oil_w", "heat_conducted_w", "heat_pads_to_surroundings_w"] {
+    for key in [
+        "journal_temperature_c",
+        "t_mean_film_c",
+        "heat_carried_by_oil_w",
+        "heat_conducted_w",
+        "heat_pads_to_surroundings_w",
+    ] {
         assert!(t[key].is_f64(), "missing {key}");
     }
     assert!(j["pads"][2]["thermal"]["inlet_temperature_c"].is_f64());
     // An isothermal solve says so.
     let o = tiltpad()
-        .args(["solve", common::case_path("fillon-a.toml").to_str().unwrap(), "--set", "thermal.model=\"isothermal\"", "--json"])
+        .args([
+            "solve",
+            common::case_path("fillon-a.toml").to_str().unwrap(),
+            "--set",
+            "thermal.model=\"isothermal\"",
+            "--json",
+        ])
         .arg(&out)
         .output()
         .unwrap();
@@ -159,7 +225,19 @@ fn frf_writes_curves_as_csv_and_json() {
     std::fs::create_dir_all(&dir).unwrap();
     let (csv, json) = (dir.join("f.csv"), dir.join("f.json"));
     let o = tiltpad()
-        .args(["frf", common::case_path("test-rig-pub5.toml").to_str().unwrap(), "--from", "10", "--to", "500", "--points", "20", "--amplitude-v", "2", "--csv"])
+        .args([
+            "frf",
+            common::case_path("test-rig-pub5.toml").to_str().unwrap(),
+            "--from",
+            "10",
+            "--to",
+            "500",
+            "--points",
+            "20",
+            "--amplitude-v",
+            "2",
+            "--csv",
+        ])
         .arg(&csv)
         .arg("--json")
         .arg(&json)
@@ -172,7 +250,15 @@ fn frf_writes_curves_as_csv_and_json() {
     let rows: Vec<&str> = text.lines().collect();
     assert_eq!(rows.len(), 21);
     let header: Vec<&str> = rows[0].split(',').collect();
-    for name in ["G1_mag_V_per_V", "G2_A_mag_bar_per_V", "G2_B_phase_deg", "G3_A_y_mag_N_per_bar", "G_y_mag_N_per_V", "H_direct_mag_µm_per_N", "H_chain_mag_µm_per_N"] {
+    for name in [
+        "G1_mag_V_per_V",
+        "G2_A_mag_bar_per_V",
+        "G2_B_phase_deg",
+        "G3_A_y_mag_N_per_bar",
+        "G_y_mag_N_per_V",
+        "H_direct_mag_µm_per_N",
+        "H_chain_mag_µm_per_N",
+    ] {
         assert!(header.contains(&name), "{name} missing from {header:?}");
     }
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
@@ -199,17 +285,34 @@ fn help_names_the_workbench_and_describes_the_sweep_options() {
     let o = tiltpad().args(["sweep", "--help"]).output().unwrap();
     let text = String::from_utf8_lossy(&o.stdout);
     // clap prints an option's description on its line; an undescribed option's line ends after its value.
-    for option in ["<CASE>", "--vary <KEY=VALUES>", "--param <KEY>", "--from <FROM>", "--to <TO>", "--steps <STEPS>", "--set <KEY=VALUE>", "--csv <OUT>", "--jsonl <OUT>", "--vtu <OUT.pvd>"] {
-        let line = text.lines().find(|l| l.trim_start().starts_with(option)).unwrap_or_else(|| panic!("{option} missing: {text}"));
+    for option in [
+        "<CASE>",
+        "--vary <KEY=VALUES>",
+        "--param <KEY>",
+        "--from <FROM>",
+        "--to <TO>",
+        "--steps <STEPS>",
+        "--set <KEY=VALUE>",
+        "--csv <OUT>",
+        "--jsonl <OUT>",
+        "--vtu <OUT.pvd>",
+    ] {
+        let line = text
+            .lines()
+            .find(|l| l.trim_start().starts_with(option))
+            .unwrap_or_else(|| panic!("{option} missing: {text}"));
         assert!(line.trim().len() > option.len() + 4, "{option} has no description: {line:?}");
     }
     // Every argument and option of every command has a description: clap separates it from the option by
     // two or more spaces, so a line with none is only the option (and its value name).
-    for command in ["solve", "sweep", "batch", "coefficients", "modes", "frf", "rotor", "schema", "bench", "convergence-map"] {
+    for command in
+        ["solve", "sweep", "batch", "coefficients", "modes", "frf", "rotor", "schema", "bench", "convergence-map"]
+    {
         let o = tiltpad().args([command, "--help"]).output().unwrap();
         assert!(o.status.success(), "{command}");
         let text = String::from_utf8_lossy(&o.stdout);
-        let options: Vec<&str> = text.lines().map(str::trim).filter(|l| l.starts_with('-') || l.starts_with('<')).collect();
+        let options: Vec<&str> =
+            text.lines().map(str::trim).filter(|l| l.starts_with('-') || l.starts_with('<')).collect();
         assert!(!options.is_empty(), "{command}: {text}");
         for line in options {
             assert!(line.contains("  "), "`tiltpad {command}`: {line:?} has no description");
@@ -224,7 +327,17 @@ fn rotor_critical_map_writes_the_map_the_bearing_curves_and_their_crossings() {
     std::fs::create_dir_all(&dir).unwrap();
     let csv = dir.join("map.csv");
     let o = tiltpad()
-        .args(["rotor", rotor.to_str().unwrap(), "--speeds", "2000:14000:7", "--critical-map", "--json", "-", "--csv", csv.to_str().unwrap()])
+        .args([
+            "rotor",
+            rotor.to_str().unwrap(),
+            "--speeds",
+            "2000:14000:7",
+            "--critical-map",
+            "--json",
+            "-",
+            "--csv",
+            csv.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));

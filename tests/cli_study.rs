@@ -64,27 +64,44 @@ fn a_sweep_with_an_invalid_point_in_the_middle_keeps_every_other_row() {
     assert_eq!(r.len(), 6, "header and five rows");
     let (ecc, err, speed) = (col(&r, "eccentricity_ratio"), col(&r, "error"), col(&r, "operating.speed_rpm"));
     assert_eq!(r[3][speed], "-5");
-    assert!(r[3][ecc].is_empty() && r[3][err].contains("operating.speed_rpm") && r[3][err].contains("-5"), "{:?}", r[3]);
+    assert!(
+        r[3][ecc].is_empty() && r[3][err].contains("operating.speed_rpm") && r[3][err].contains("-5"),
+        "{:?}",
+        r[3]
+    );
     assert!([1, 2, 4, 5].iter().all(|&i| r[i][err].is_empty() && r[i][ecc].parse::<f64>().unwrap() > 0.0));
     // The other rows are exactly those of the sweep without the invalid point (but for wall time).
-    let o2 = run(&["sweep", &case("compressor-bearing.toml"), "--set", PREVIEW, "--vary", "operating.speed_rpm=6000,7000,9000,10000", "--csv", "-"]);
+    let o2 = run(&[
+        "sweep",
+        &case("compressor-bearing.toml"),
+        "--set",
+        PREVIEW,
+        "--vary",
+        "operating.speed_rpm=6000,7000,9000,10000",
+        "--csv",
+        "-",
+    ]);
     assert!(o2.status.success(), "{}", stderr(&o2));
     let clean = rows(&String::from_utf8_lossy(&o2.stdout));
     let seconds = col(&r, "seconds");
-    let strip = |row: &Vec<String>| row.iter().enumerate().filter(|(k, _)| *k != 0 && *k != seconds).map(|(_, v)| v.clone()).collect::<Vec<_>>();
+    let strip = |row: &Vec<String>| {
+        row.iter().enumerate().filter(|(k, _)| *k != 0 && *k != seconds).map(|(_, v)| v.clone()).collect::<Vec<_>>()
+    };
     for (i, j) in [(1, 1), (2, 2), (4, 3), (5, 4)] {
         assert_eq!(strip(&r[i]), strip(&clean[j]), "row {i}");
     }
     // Isothermal: the temperature columns exist and are empty.
     assert!(r[1][col(&r, "t_max_film_c")].is_empty());
     assert!(stderr(&o).contains("1 of 5 points failed"), "{}", stderr(&o));
-    let lines: Vec<serde_json::Value> = std::fs::read_to_string(&jsonl_path).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines: Vec<serde_json::Value> =
+        std::fs::read_to_string(&jsonl_path).unwrap().lines().map(|l| serde_json::from_str(l).unwrap()).collect();
     assert_eq!(lines.len(), 5);
     assert!(lines[2]["error"].as_str().unwrap().contains("operating.speed_rpm"));
     assert_eq!(lines[3]["inputs"]["operating.speed_rpm"].as_f64(), Some(9000.0));
     assert_eq!(lines[3]["outputs"]["eccentricity_ratio"].as_f64().unwrap().to_string(), r[4][ecc]);
     // Nothing else is left beside the outputs.
-    let mut names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    let mut names: Vec<String> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     names.sort();
     assert_eq!(names, ["s.csv", "s.jsonl"]);
     std::fs::remove_dir_all(&dir).ok();
@@ -94,7 +111,14 @@ fn a_sweep_with_an_invalid_point_in_the_middle_keeps_every_other_row() {
 fn a_sweep_whose_every_point_fails_exits_non_zero_with_its_rows() {
     let dir = scratch("sweep-all-bad");
     let out = dir.join("s.csv");
-    let o = run(&["sweep", &case("compressor-bearing.toml"), "--vary", "operating.speed_rpm=-1,-2", "--csv", out.to_str().unwrap()]);
+    let o = run(&[
+        "sweep",
+        &case("compressor-bearing.toml"),
+        "--vary",
+        "operating.speed_rpm=-1,-2",
+        "--csv",
+        out.to_str().unwrap(),
+    ]);
     assert!(!o.status.success());
     assert!(stderr(&o).contains("every point of the sweep failed"), "{}", stderr(&o));
     let r = rows(&std::fs::read_to_string(&out).unwrap());
@@ -105,12 +129,27 @@ fn a_sweep_whose_every_point_fails_exits_non_zero_with_its_rows() {
 
 #[test]
 fn a_sweep_over_two_keys_is_a_grid_on_standard_output() {
-    let o = run(&["sweep", &case("compressor-bearing.toml"), "--set", PREVIEW, "--vary", "bearing.pads.offset=0.5,0.6", "--vary", "operating.speed_rpm=7000:9000:2", "--csv", "-"]);
+    let o = run(&[
+        "sweep",
+        &case("compressor-bearing.toml"),
+        "--set",
+        PREVIEW,
+        "--vary",
+        "bearing.pads.offset=0.5,0.6",
+        "--vary",
+        "operating.speed_rpm=7000:9000:2",
+        "--csv",
+        "-",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let r = rows(&String::from_utf8_lossy(&o.stdout));
     let (a, b) = (col(&r, "bearing.pads.offset"), col(&r, "operating.speed_rpm"));
     let grid: Vec<(String, String)> = r[1..].iter().map(|row| (row[a].clone(), row[b].clone())).collect();
-    assert_eq!(grid, [("0.5", "7000"), ("0.5", "9000"), ("0.6", "7000"), ("0.6", "9000")].map(|(x, y)| (x.to_string(), y.to_string())));
+    assert_eq!(
+        grid,
+        [("0.5", "7000"), ("0.5", "9000"), ("0.6", "7000"), ("0.6", "9000")]
+            .map(|(x, y)| (x.to_string(), y.to_string()))
+    );
     // A centred pivot carries the load on a thinner film than the 0.6 offset at the same speed.
     let h = col(&r, "h_min_um");
     let hv = |i: usize| r[i][h].parse::<f64>().unwrap();
@@ -129,7 +168,20 @@ fn a_batch_in_three_shards_concatenated_equals_the_whole_batch() {
     for i in 1..=3 {
         let part = dir.join(format!("part-{i}.csv"));
         let jsonl = dir.join(format!("part-{i}.jsonl"));
-        let o = run(&["batch", &designs, "--case", &base, "--set", PREVIEW, "--shard", &format!("{i}/3"), "--csv", part.to_str().unwrap(), "--jsonl", jsonl.to_str().unwrap()]);
+        let o = run(&[
+            "batch",
+            &designs,
+            "--case",
+            &base,
+            "--set",
+            PREVIEW,
+            "--shard",
+            &format!("{i}/3"),
+            "--csv",
+            part.to_str().unwrap(),
+            "--jsonl",
+            jsonl.to_str().unwrap(),
+        ]);
         assert!(o.status.success(), "{}", stderr(&o));
         let r = rows(&std::fs::read_to_string(&part).unwrap());
         assert_eq!(r.len(), 1 + 4, "12 designs in 3 shards of 4");
@@ -143,12 +195,15 @@ fn a_batch_in_three_shards_concatenated_equals_the_whole_batch() {
     assert_eq!(all.len(), 13);
     assert_eq!(all[0], joined[0]);
     let seconds = col(&all, "seconds");
-    let drop_time = |r: &Vec<String>| r.iter().enumerate().filter(|(k, _)| *k != seconds).map(|(_, v)| v.clone()).collect::<Vec<_>>();
+    let drop_time = |r: &Vec<String>| {
+        r.iter().enumerate().filter(|(k, _)| *k != seconds).map(|(_, v)| v.clone()).collect::<Vec<_>>()
+    };
     for (a, b) in all.iter().zip(&joined).skip(1) {
         assert_eq!(drop_time(a), drop_time(b), "row differs between the sharded and the whole run");
     }
     // Each row carries its design's inputs beside its results.
-    let (design, offset, speed) = (col(&all, "design"), col(&all, "bearing.pads.offset"), col(&all, "operating.speed_rpm"));
+    let (design, offset, speed) =
+        (col(&all, "design"), col(&all, "bearing.pads.offset"), col(&all, "operating.speed_rpm"));
     assert_eq!((all[12][design].as_str(), all[12][offset].as_str(), all[12][speed].as_str()), ("11", "0.6", "10000"));
     assert!(all[1..].iter().all(|r| r.last().unwrap().is_empty()), "every design solves");
     std::fs::remove_dir_all(&dir).ok();
@@ -212,7 +267,20 @@ fn coefficients_over_speed_and_frequency_for_ross_and_csv() {
     let dir = scratch("coef");
     let (ross, csv_path) = (dir.join("brg.toml"), dir.join("brg.csv"));
     let base = case("compressor-bearing.toml");
-    let o = run(&["coefficients", &base, "--set", PREVIEW, "--speed-rpm", "6000:10000:3", "--node", "8", "--ross", ross.to_str().unwrap(), "--csv", csv_path.to_str().unwrap()]);
+    let o = run(&[
+        "coefficients",
+        &base,
+        "--set",
+        PREVIEW,
+        "--speed-rpm",
+        "6000:10000:3",
+        "--node",
+        "8",
+        "--ross",
+        ross.to_str().unwrap(),
+        "--csv",
+        csv_path.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let doc: toml::Table = std::fs::read_to_string(&ross).unwrap().parse().unwrap();
     let t = doc["BearingElement_tiltpad"].as_table().unwrap();
@@ -224,13 +292,28 @@ fn coefficients_over_speed_and_frequency_for_ross_and_csv() {
     let s = common::solve("compressor-bearing.toml", &["mesh.fidelity=\"preview\"", "operating.speed_rpm=8000"]);
     for (k, i, j) in [("kxx", 0, 0), ("kxy", 0, 1), ("kyx", 1, 0), ("kyy", 1, 1)] {
         let v = toml_list(t, k)[1];
-        assert!((v - s.reduced.k_n_per_m[i][j]).abs() <= 1e-6 * s.reduced.k_n_per_m[1][1].abs(), "{k}: {v} vs {}", s.reduced.k_n_per_m[i][j]);
+        assert!(
+            (v - s.reduced.k_n_per_m[i][j]).abs() <= 1e-6 * s.reduced.k_n_per_m[1][1].abs(),
+            "{k}: {v} vs {}",
+            s.reduced.k_n_per_m[i][j]
+        );
     }
     let c = rows(&std::fs::read_to_string(&csv_path).unwrap());
     assert_eq!(c.len(), 4);
     assert_eq!(c[2][col(&c, "cyy_ns_per_m")].parse::<f64>().unwrap(), toml_list(t, "cyy")[1]);
     // Frequency-dependent at one speed: ω = ratio · Ω, and ratio 1 is the solve's synchronous reduction.
-    let o = run(&["coefficients", &base, "--set", PREVIEW, "--set", "operating.speed_rpm=8000", "--excitation-ratio", "0.5,1,2", "--csv", "-"]);
+    let o = run(&[
+        "coefficients",
+        &base,
+        "--set",
+        PREVIEW,
+        "--set",
+        "operating.speed_rpm=8000",
+        "--excitation-ratio",
+        "0.5,1,2",
+        "--csv",
+        "-",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let c = rows(&String::from_utf8_lossy(&o.stdout));
     let omega = 8000.0 * std::f64::consts::TAU / 60.0;
@@ -252,7 +335,12 @@ fn in_namespace(script: &str) -> String {
         .env("CASE", case("compressor-bearing.toml"))
         .output()
         .expect("unshare (util-linux) runs the safe-write tests in a mount namespace");
-    assert!(o.status.success(), "namespace script failed: {}\n{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.status.success(),
+        "namespace script failed: {}\n{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
@@ -305,8 +393,13 @@ fn json_onto_a_symlink_writes_through_it() {
     assert!(j["h_min_m"].as_f64().unwrap() > 0.0);
     // A directory as the target: an error naming it, the directory untouched.
     let o = run(&["solve", &case("compressor-bearing.toml"), "--set", PREVIEW, "--json", dir.to_str().unwrap()]);
-    assert!(!o.status.success() && stderr(&o).contains(&dir.display().to_string()) && stderr(&o).contains("directory"), "{}", stderr(&o));
-    let mut names: Vec<String> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    assert!(
+        !o.status.success() && stderr(&o).contains(&dir.display().to_string()) && stderr(&o).contains("directory"),
+        "{}",
+        stderr(&o)
+    );
+    let mut names: Vec<String> =
+        std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     names.sort();
     assert_eq!(names, ["link.json", "real.json"]);
     std::fs::remove_dir_all(&dir).ok();
@@ -340,13 +433,26 @@ fn vtu_files_read_back_with_their_nodes_and_values() {
     let dir = scratch("vtu");
     let out = dir.join("fillon.vtu");
     let json = dir.join("fillon.json");
-    let o = run(&["solve", &case("fillon-a.toml"), "--set", PREVIEW, "--vtu", out.to_str().unwrap(), "--json", json.to_str().unwrap()]);
+    let o = run(&[
+        "solve",
+        &case("fillon-a.toml"),
+        "--set",
+        PREVIEW,
+        "--vtu",
+        out.to_str().unwrap(),
+        "--json",
+        json.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let s = common::solve("fillon-a.toml", &["mesh.fidelity=\"preview\""]);
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     // Film: every pad's grid, the half model mirrored to the full length.
     let film = read_vtu(&out);
-    let nodes: usize = s.pads.iter().map(|p| p.field.s_m.len() * (if p.field.half { 2 * p.field.z_m.len() - 1 } else { p.field.z_m.len() })).sum();
+    let nodes: usize = s
+        .pads
+        .iter()
+        .map(|p| p.field.s_m.len() * (if p.field.half { 2 * p.field.z_m.len() - 1 } else { p.field.z_m.len() }))
+        .sum();
     assert_eq!(film.num_points(), nodes);
     let p = point_array(&film, "pressure_pa");
     assert_eq!(p.len(), nodes);
@@ -371,10 +477,15 @@ fn vtu_files_read_back_with_their_nodes_and_values() {
     let tp = point_array(&pads, "pad_temperature_c");
     assert_eq!(tp.iter().copied().fold(f64::NEG_INFINITY, f64::max), j["t_max_pad_c"].as_f64().unwrap());
     // Rigid pads: no deformation field.
-    assert!(film.data.point.iter().all(|a| !matches!(a, vtkio::model::Attribute::DataArray(d) if d.name == "elastic_radial_displacement_m")));
+    assert!(film
+        .data
+        .point
+        .iter()
+        .all(|a| !matches!(a, vtkio::model::Attribute::DataArray(d) if d.name == "elastic_radial_displacement_m")));
     // Flexible pads: the film face's elastic radial displacement, its extremes those of the solution's pads.
     let flex = dir.join("flex.vtu");
-    let o = run(&["solve", &case("compressor-bearing-flexible.toml"), "--set", PREVIEW, "--vtu", flex.to_str().unwrap()]);
+    let o =
+        run(&["solve", &case("compressor-bearing-flexible.toml"), "--set", PREVIEW, "--vtu", flex.to_str().unwrap()]);
     assert!(o.status.success(), "{}", stderr(&o));
     let s = common::solve("compressor-bearing-flexible.toml", &["mesh.fidelity=\"preview\""]);
     let u = point_array(&read_vtu(&flex), "elastic_radial_displacement_m");
@@ -408,10 +519,26 @@ fn vtu_files_read_back_with_their_nodes_and_values() {
 fn a_sweep_writes_a_paraview_collection() {
     let dir = scratch("pvd");
     let pvd = dir.join("speed.pvd");
-    let o = run(&["sweep", &case("compressor-bearing.toml"), "--set", PREVIEW, "--vary", "operating.speed_rpm=7000,9000", "--csv", dir.join("s.csv").to_str().unwrap(), "--vtu", pvd.to_str().unwrap()]);
+    let o = run(&[
+        "sweep",
+        &case("compressor-bearing.toml"),
+        "--set",
+        PREVIEW,
+        "--vary",
+        "operating.speed_rpm=7000,9000",
+        "--csv",
+        dir.join("s.csv").to_str().unwrap(),
+        "--vtu",
+        pvd.to_str().unwrap(),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let text = std::fs::read_to_string(&pvd).unwrap();
-    assert!(text.contains("timestep=\"7e3\"") && text.contains("file=\"speed-0000.vtu\"") && text.contains("file=\"speed-0001.vtu\""), "{text}");
+    assert!(
+        text.contains("timestep=\"7e3\"")
+            && text.contains("file=\"speed-0000.vtu\"")
+            && text.contains("file=\"speed-0001.vtu\""),
+        "{text}"
+    );
     let a = read_vtu(&dir.join("speed-0000.vtu"));
     let b = read_vtu(&dir.join("speed-0001.vtu"));
     assert_eq!(a.num_points(), b.num_points());
@@ -426,16 +553,37 @@ fn a_sweep_writes_a_paraview_collection() {
 /// exceeds the 3.5 MPa convention; a limit set on the command line applies.
 #[test]
 fn sweeps_and_solves_mark_the_exceeded_design_limits() {
-    let o = run(&["sweep", &case("compressor-bearing.toml"), "--set", PREVIEW, "--vary", "operating.load_n=1918,18000", "--csv", "-"]);
+    let o = run(&[
+        "sweep",
+        &case("compressor-bearing.toml"),
+        "--set",
+        PREVIEW,
+        "--vary",
+        "operating.load_n=1918,18000",
+        "--csv",
+        "-",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let r = rows(&String::from_utf8_lossy(&o.stdout));
     let k = col(&r, "limits_exceeded");
     assert_eq!(r[1][k], "", "{:?}", r[1]);
     assert!(r[2][k].split(';').any(|n| n == "specific_load"), "{:?}", r[2]);
-    let o = run(&["solve", &case("compressor-overload.toml"), "--set", PREVIEW, "--set", "limits.max_peak_pressure_mpa=1", "--json", "-"]);
+    let o = run(&[
+        "solve",
+        &case("compressor-overload.toml"),
+        "--set",
+        PREVIEW,
+        "--set",
+        "limits.max_peak_pressure_mpa=1",
+        "--json",
+        "-",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let summary = stderr(&o);
-    assert!(summary.contains("DESIGN LIMITS EXCEEDED") && summary.contains("W/(L·D) 3.986 MPa > limit 3.5 MPa"), "{summary}");
+    assert!(
+        summary.contains("DESIGN LIMITS EXCEEDED") && summary.contains("W/(L·D) 3.986 MPa > limit 3.5 MPa"),
+        "{summary}"
+    );
     assert!(summary.contains("> limit 1 MPa"), "{summary}");
     let j: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let checks = j["design_limits"]["checks"].as_array().unwrap();

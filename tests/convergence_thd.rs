@@ -21,7 +21,8 @@ fn converges(case_file: &str, sommerfeld: f64, direction_deg: f64) -> Vec<String
 
 fn map_point_as(case_file: &str, sommerfeld: f64, direction_deg: f64, physical_allowed: bool) -> Vec<String> {
     let mut case = common::case(case_file, &["mesh.fidelity=\"preview\""]);
-    case.operating.load = LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, sommerfeld), angle_rad: direction_deg.to_radians() };
+    case.operating.load =
+        LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, sommerfeld), angle_rad: direction_deg.to_radians() };
     let mut model = BearingModel::new(&case).unwrap();
     let result = solve_point(&mut model, &mut None, &case, None, &NoCancel);
     let (class, detail) = classify(&result);
@@ -36,7 +37,11 @@ fn map_point_as(case_file: &str, sommerfeld: f64, direction_deg: f64, physical_a
     // The last entry is the polishing equilibrium's (full tolerances on the converged field), the one before
     // it the loop's own test when the last equilibrium was inexact.
     let tol = ThermalParams::default().viscosity_tol;
-    assert!(r.converged && r.viscosity_change.iter().rev().take(2).any(|&c| c < tol), "{at}: viscosity changes {:?}", r.viscosity_change);
+    assert!(
+        r.converged && r.viscosity_change.iter().rev().take(2).any(|&c| c < tol),
+        "{at}: viscosity changes {:?}",
+        r.viscosity_change
+    );
     assert!(r.energy_balance_closure.abs() < 1e-12, "{at}: energy balance closes to {:.1e}", r.energy_balance_closure);
     r.warnings.clone()
 }
@@ -95,7 +100,8 @@ fn a_restart_that_spends_the_budget_answers_with_its_touchdown() {
     use tiltpad::bearing::thermal::solve_thd;
     use tiltpad::bearing::{SolveError, ThermalModel};
     let mut case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);
-    case.operating.load = LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, 0.1), angle_rad: 35.0_f64.to_radians() };
+    case.operating.load =
+        LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, 0.1), angle_rad: 35.0_f64.to_radians() };
     let mut model = BearingModel::new(&case).unwrap();
     let mut thermal = ThermalModel::new(&case, &model).unwrap();
     let params = ThermalParams { max_iterations: 40, ..ThermalParams::default() };

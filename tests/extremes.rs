@@ -5,7 +5,7 @@
 
 mod common;
 
-use tiltpad::bearing::{solve_case, EquilibriumParams, SolveError, Solution};
+use tiltpad::bearing::{solve_case, EquilibriumParams, Solution, SolveError};
 use tiltpad::model::load_case;
 
 /// Preview meshes keep the suite fast; the behaviour at the extremes does not depend on the mesh level.
@@ -27,13 +27,28 @@ const MASS_BALANCE: f64 = 1e-12;
 /// bounded work.
 fn sane(s: &Solution, what: &str) {
     let tol = EquilibriumParams::default().force_tol;
-    assert!(s.report.residual <= tol, "{what}: residual {:.3e} above the solver's tolerance {tol:.0e}", s.report.residual);
+    assert!(
+        s.report.residual <= tol,
+        "{what}: residual {:.3e} above the solver's tolerance {tol:.0e}",
+        s.report.residual
+    );
     // A THD solve sums the Newton iterations of its loop's equilibria: Fillon A with preload 0.9 takes 280
     // outer iterations and 569 Newton iterations (the loop lingers near its fixed point where the rupture
     // between nodes still moves in small steps; 14 outer iterations before the rupture was interpolated).
-    assert!(s.report.iterations < 600 && s.report.film_solves < 20_000, "{what}: unbounded work {:?}", (s.report.iterations, s.report.film_solves));
-    assert!(s.eccentricity_ratio.is_finite() && s.attitude_angle_deg.is_finite() && s.friction_power_w.is_finite(), "{what}");
-    assert!(s.flows_m3_per_s.mass_balance_error.abs() < MASS_BALANCE, "{what}: mass balance {:.3e}", s.flows_m3_per_s.mass_balance_error);
+    assert!(
+        s.report.iterations < 600 && s.report.film_solves < 20_000,
+        "{what}: unbounded work {:?}",
+        (s.report.iterations, s.report.film_solves)
+    );
+    assert!(
+        s.eccentricity_ratio.is_finite() && s.attitude_angle_deg.is_finite() && s.friction_power_w.is_finite(),
+        "{what}"
+    );
+    assert!(
+        s.flows_m3_per_s.mass_balance_error.abs() < MASS_BALANCE,
+        "{what}: mass balance {:.3e}",
+        s.flows_m3_per_s.mass_balance_error
+    );
     for row in s.reduced.k_n_per_m.iter().chain(s.reduced.c_ns_per_m.iter()) {
         assert!(row.iter().all(|v| v.is_finite()), "{what}: reduced coefficients {:?}", s.reduced);
     }
@@ -55,7 +70,10 @@ fn converges(case_file: &str, set: &[&str]) -> Solution {
 fn touches_down(case_file: &str, set: &[&str]) {
     match run(case_file, set) {
         Err(e @ SolveError::Touchdown { h_min_um, eccentricity_ratio, .. }) => {
-            assert!(h_min_um.is_finite() && eccentricity_ratio.is_finite() && !e.to_string().to_lowercase().contains("nan"), "{e}");
+            assert!(
+                h_min_um.is_finite() && eccentricity_ratio.is_finite() && !e.to_string().to_lowercase().contains("nan"),
+                "{e}"
+            );
         }
         other => panic!("{case_file} {set:?}: expected touchdown, got {:?}", other.map(|s| s.eccentricity_ratio)),
     }
@@ -73,7 +91,10 @@ fn eccentricity_up_to_0_98_and_touchdown() {
     // Beyond what the film can carry above the touchdown threshold: a clear touchdown error.
     touches_down("fillon-a.toml", &["operating.load_n=5e6"]);
     // A prescribed position that closes the film is touchdown too.
-    touches_down("fillon-a.toml", &["operating.load_n=", "operating.load_angle_deg=", "operating.eccentricity_ratio=2.5"]);
+    touches_down(
+        "fillon-a.toml",
+        &["operating.load_n=", "operating.load_angle_deg=", "operating.eccentricity_ratio=2.5"],
+    );
 }
 
 #[test]
@@ -111,7 +132,8 @@ fn peclet_number_up_to_a_million() {
     let t = s.thermal.as_ref().expect("thermal results");
     assert!(t.t_max_film_c.is_finite() && t.t_max_film_c > 50.0 && t.t_max_film_c < 250.0, "T max {}", t.t_max_film_c);
     // The film temperature never falls below the coldest oil that enters it (no SUPG undershoot beyond 0.5 K).
-    let t_min = s.pads.iter().flat_map(|p| p.field.film_temperature_c.iter().flatten()).fold(f64::INFINITY, |m, &v| m.min(v));
+    let t_min =
+        s.pads.iter().flat_map(|p| p.field.film_temperature_c.iter().flatten()).fold(f64::INFINITY, |m, &v| m.min(v));
     assert!(t_min > 50.0 - 0.5, "undershoot: T min {t_min}");
 }
 
@@ -125,10 +147,15 @@ fn preload_from_minus_0_5_to_0_9() {
 #[test]
 fn two_to_twelve_pads() {
     for (n, arc) in [(3, 100), (5, 60), (8, 40), (12, 25)] {
-        converges("fillon-a.toml", &[&format!("bearing.pads.count={n}"), &format!("bearing.pads.arc_deg={arc}"), "bearing.pads.pivot_deg=0.0"]);
+        converges(
+            "fillon-a.toml",
+            &[&format!("bearing.pads.count={n}"), &format!("bearing.pads.arc_deg={arc}"), "bearing.pads.pivot_deg=0.0"],
+        );
     }
     // Two pads at 0° and 180° have no stiffness along the vertical load: the solve says so.
-    let e = run("fillon-a.toml", &["bearing.pads.count=2", "bearing.pads.arc_deg=150", "bearing.pads.pivot_deg=0.0"]).map(|s| s.eccentricity_ratio).unwrap_err();
+    let e = run("fillon-a.toml", &["bearing.pads.count=2", "bearing.pads.arc_deg=150", "bearing.pads.pivot_deg=0.0"])
+        .map(|s| s.eccentricity_ratio)
+        .unwrap_err();
     assert!(e.to_string().contains("no stiffness"), "{e}");
 }
 
@@ -162,7 +189,10 @@ fn zero_speed_with_injection_is_hydrostatic() {
     // With an oversized, unrestricted orifice the pocket pressure does not depend on the gap: no
     // hydrostatic stiffness, and an equilibrium found there is reported as statically unstable.
     let open = "bearing.pads.orifice=[{position_frac = 0.5, diameter_mm = 1.5, length_mm = 10.0}]";
-    let s = converges("fillon-a.toml", &["operating.speed_rpm=0", "operating.injection_pressure_bar=40", open, "operating.load_n=500"]);
+    let s = converges(
+        "fillon-a.toml",
+        &["operating.speed_rpm=0", "operating.injection_pressure_bar=40", open, "operating.load_n=500"],
+    );
     assert!(s.report.warnings.iter().any(|w| w.contains("statically unstable")), "{:?}", s.report.warnings);
 }
 
@@ -194,14 +224,24 @@ fn absurd_but_valid_inputs_solve_with_a_warning() {
     assert!(has(&s, "mixed lubrication") && has(&s, "clearance ratio Cb/R = 2.00e-8"), "{:?}", s.report.warnings);
     // 10⁶ rpm: a film Reynolds number far past laminar.
     let s = converges("fillon-a.toml", &["operating.speed_rpm=1e6", "thermal.model=\"isothermal\""]);
-    let turbulent = s.report.warnings.iter().find(|w| w.starts_with("turbulent film")).unwrap_or_else(|| panic!("{:?}", s.report.warnings));
-    let re: f64 = turbulent.split("reaches ").nth(1).and_then(|t| t.split(' ').next()).and_then(|t| t.parse().ok()).unwrap();
+    let turbulent = s
+        .report
+        .warnings
+        .iter()
+        .find(|w| w.starts_with("turbulent film"))
+        .unwrap_or_else(|| panic!("{:?}", s.report.warnings));
+    let re: f64 =
+        turbulent.split("reaches ").nth(1).and_then(|t| t.split(' ').next()).and_then(|t| t.parse().ok()).unwrap();
     // ρ U h / µ with U = 5236 m/s, h ≈ Cp = 148 µm, µ = 0.0277 Pa·s: about 2.4e4 at the thickest film.
     assert!(re > 1e4 && re < 2.5e4, "{turbulent}");
     // The shipped cases at their design points are laminar and of ordinary proportions (Taniguchi's
     // 4000 rpm bearing, published as running in the laminar and turbulent regimes, is the exception).
     for case in ["compressor-bearing.toml", "someya-4pad-lbp.toml", "test-rig.toml"] {
         let s = converges(case, &[]);
-        assert!(!["turbulent", "Taylor", "mixed lubrication", "clearance ratio"].iter().any(|w| has(&s, w)), "{case}: {:?}", s.report.warnings);
+        assert!(
+            !["turbulent", "Taylor", "mixed lubrication", "clearance ratio"].iter().any(|w| has(&s, w)),
+            "{case}: {:?}",
+            s.report.warnings
+        );
     }
 }

@@ -31,22 +31,36 @@ fn a_level_scales_its_circumferential_elements_with_the_arc() {
     // The counts an 80° pad gets, unscaled along 360° (what the levels gave before).
     let (w_96, _) = load(&["mesh.circumferential_elements=96", "mesh.axial_elements=48"]);
     let (w_36, _) = load(&["mesh.circumferential_elements=36", "mesh.axial_elements=16"]);
-    let (e_ref, e_std, e_96, e_36) = (common::rel(w_ref, fine), common::rel(w_std, fine), common::rel(w_96, fine), common::rel(w_36, fine));
-    eprintln!("load error vs 720×48: reference {e_ref:.2e} (unscaled {e_96:.2e}), standard {e_std:.2e} (unscaled {e_36:.2e})");
+    let (e_ref, e_std, e_96, e_36) =
+        (common::rel(w_ref, fine), common::rel(w_std, fine), common::rel(w_96, fine), common::rel(w_36, fine));
+    eprintln!(
+        "load error vs 720×48: reference {e_ref:.2e} (unscaled {e_96:.2e}), standard {e_std:.2e} (unscaled {e_36:.2e})"
+    );
     assert!(e_ref.abs() < TOL_REFERENCE, "reference: {e_ref:.2e}");
     assert!(e_std.abs() < TOL_STANDARD, "standard: {e_std:.2e}");
     // Measured: reference 3.5e-4 → 1.1e-5 (the circumferential error dominated); standard 9.0e-3 → 3.4e-3
     // (its 16 axial elements now limit it).
-    assert!(e_96.abs() > 20.0 * e_ref.abs() && e_36.abs() > 2.0 * e_std.abs(), "scaling gains: {e_96:.2e} → {e_ref:.2e}, {e_36:.2e} → {e_std:.2e}");
+    assert!(
+        e_96.abs() > 20.0 * e_ref.abs() && e_36.abs() > 2.0 * e_std.abs(),
+        "scaling gains: {e_96:.2e} → {e_ref:.2e}, {e_36:.2e} → {e_std:.2e}"
+    );
 }
 
 #[test]
 fn pads_up_to_80_degrees_keep_the_level_counts() {
     assert_eq!(common::case("compressor-bearing.toml", &[]).mesh.circumferential_elements, 36, "60° pads");
-    assert_eq!(common::case("taniguchi-b.toml", &["mesh.fidelity=\"reference\""]).mesh.circumferential_elements, 96, "80° pads");
+    assert_eq!(
+        common::case("taniguchi-b.toml", &["mesh.fidelity=\"reference\""]).mesh.circumferential_elements,
+        96,
+        "80° pads"
+    );
     // An explicit count is taken as given.
     assert_eq!(common::case("plain-2groove-ld05.toml", &[]).mesh.circumferential_elements, 72);
-    assert_eq!(common::case("plain-2groove-ld05.toml", &["mesh.circumferential_elements="]).mesh.circumferential_elements, 73, "162° sector: ⌈36 · 162/80⌉");
+    assert_eq!(
+        common::case("plain-2groove-ld05.toml", &["mesh.circumferential_elements="]).mesh.circumferential_elements,
+        73,
+        "162° sector: ⌈36 · 162/80⌉"
+    );
 }
 
 /// Load error against the 720 × 48 mesh, just above what was measured (1.13e-5 and 3.37e-3).

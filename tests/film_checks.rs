@@ -49,7 +49,11 @@ fn film_flows_balance() {
             assert!(f.imbalance().abs() < 1e-9 * f.throughput(), "pad {k}: consistent flows close to round-off");
             let (le, te, side) = pm.film.direct_edge_flows(&inp);
             // Leading edge: direct and consistent agree within 1 %.
-            assert!(common::rel(le, f.leading_edge_in).abs() < 0.01, "pad {k}: LE direct {le:.4e} vs consistent {:.4e}", f.leading_edge_in);
+            assert!(
+                common::rel(le, f.leading_edge_in).abs() < 0.01,
+                "pad {k}: LE direct {le:.4e} vs consistent {:.4e}",
+                f.leading_edge_in
+            );
             // Direct balance; the trailing-edge integral includes the ruptured film leaving cavitated zones.
             worst = worst.max((le + f.orifice_in - te - side).abs() / (le.abs() + f.orifice_in.abs()));
         }
@@ -68,7 +72,14 @@ fn film_flows_balance() {
 fn load_on_pad_symmetry() {
     let s = common::solve(
         "compressor-bearing.toml",
-        &["bearing.pads.count=4", "bearing.pads.pivot_deg=[0.0,90.0,180.0,270.0]", "bearing.pads.offset=0.5", "bearing.pads.arc_deg=70", "bearing.pads.orifice=[]", "bearing.pads.density_kg_per_m3=1e-9"],
+        &[
+            "bearing.pads.count=4",
+            "bearing.pads.pivot_deg=[0.0,90.0,180.0,270.0]",
+            "bearing.pads.offset=0.5",
+            "bearing.pads.arc_deg=70",
+            "bearing.pads.orifice=[]",
+            "bearing.pads.density_kg_per_m3=1e-9",
+        ],
     );
     // Measured: attitude 7e-8°, cross-coupling 5e-16 of the direct stiffness, e_x/e_y 1e-9 (what the
     // equilibrium tolerance leaves; the film forces themselves are symmetric to round-off).
@@ -84,7 +95,11 @@ fn load_on_pad_symmetry() {
 #[test]
 fn analytic_stiffness_matches_finite_differences() {
     let text = std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap();
-    let (_, case) = load_case(&text, &["bearing.pads.pivot_stiffness_n_per_m=2e8".to_string(), "operating.injection_pressure_bar=20".to_string()]).unwrap();
+    let (_, case) = load_case(
+        &text,
+        &["bearing.pads.pivot_stiffness_n_per_m=2e8".to_string(), "operating.injection_pressure_bar=20".to_string()],
+    )
+    .unwrap();
     let mut model = BearingModel::new(&case).unwrap();
     let op = OperatingPoint::isothermal(&case);
     let eq = solve_equilibrium(&mut model, &op, EquilibriumParams::default(), None, &NoCancel).unwrap();
@@ -95,7 +110,12 @@ fn analytic_stiffness_matches_finite_differences() {
     pm.film.set_coordinates(&q0).unwrap();
     pm.film.solve(&inp, true).unwrap();
     let lin = pm.film.linearize(&inp);
-    let steps = [1e-3 * case.bearing.assembled_clearance_m, 1e-3 * case.bearing.assembled_clearance_m, 1e-8, 1e-3 * case.bearing.assembled_clearance_m];
+    let steps = [
+        1e-3 * case.bearing.assembled_clearance_m,
+        1e-3 * case.bearing.assembled_clearance_m,
+        1e-8,
+        1e-3 * case.bearing.assembled_clearance_m,
+    ];
     for j in 0..q0.len() {
         let mut f = [vec![], vec![]];
         for (side, sign) in [1.0, -1.0].iter().enumerate() {
@@ -109,7 +129,11 @@ fn analytic_stiffness_matches_finite_differences() {
             let fd = -(fp - fm) / (2.0 * steps[j]);
             let scale = lin.stiffness[(i, i)].abs().max(lin.stiffness[(j, j)].abs()) * if i == j { 1.0 } else { 0.1 };
             let tol = 2e-3 * (lin.stiffness[(i, j)].abs().max(1e-3 * scale));
-            assert!((fd - lin.stiffness[(i, j)]).abs() < tol.max(1e-4 * scale), "K[{i}][{j}]: analytic {:.6e} vs FD {fd:.6e}", lin.stiffness[(i, j)]);
+            assert!(
+                (fd - lin.stiffness[(i, j)]).abs() < tol.max(1e-4 * scale),
+                "K[{i}][{j}]: analytic {:.6e} vs FD {fd:.6e}",
+                lin.stiffness[(i, j)]
+            );
         }
     }
     // Film damping is symmetric positive semi-definite (C = 24 fᵀ A⁻¹ f).
@@ -117,7 +141,10 @@ fn analytic_stiffness_matches_finite_differences() {
     for i in 0..c.nrows() {
         assert!(c[(i, i)] >= 0.0);
         for j in 0..c.ncols() {
-            assert!((c[(i, j)] - c[(j, i)]).abs() < 1e-9 * c[(i, i)].abs().max(c[(j, j)].abs()), "C not symmetric at {i},{j}");
+            assert!(
+                (c[(i, j)] - c[(j, i)]).abs() < 1e-9 * c[(i, i)].abs().max(c[(j, j)].abs()),
+                "C not symmetric at {i},{j}"
+            );
         }
     }
 }

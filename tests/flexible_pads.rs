@@ -49,7 +49,11 @@ fn modes_are_coordinates_and_stiff_pads_tend_to_rigid() {
     for p in &soft.pads {
         assert_eq!(p.mode_amplitudes_m.len(), 1);
         let peak = p.elastic_displacement_m.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-        assert!((peak - p.mode_amplitudes_m[0].abs()).abs() <= 1e-12 * peak.max(1e-30), "{peak} {:?}", p.mode_amplitudes_m);
+        assert!(
+            (peak - p.mode_amplitudes_m[0].abs()).abs() <= 1e-12 * peak.max(1e-30),
+            "{peak} {:?}",
+            p.mode_amplitudes_m
+        );
     }
     eprintln!("loaded pad (4) mode amplitude {:.3} µm", 1e6 * soft.pads[3].mode_amplitudes_m[0]);
     let stiff = flex(2000.0);
@@ -87,7 +91,10 @@ fn modes_are_coordinates_and_stiff_pads_tend_to_rigid() {
 #[test]
 fn massless_flexible_pads_have_no_modal_mass() {
     let heavy = solve("compressor-bearing-flexible.toml", &[PREVIEW]);
-    let light = solve("compressor-bearing-flexible.toml", &[PREVIEW, "bearing.pads.density_kg_per_m3=", "bearing.pads.massless=true"]);
+    let light = solve(
+        "compressor-bearing-flexible.toml",
+        &[PREVIEW, "bearing.pads.density_kg_per_m3=", "bearing.pads.massless=true"],
+    );
     let mode = heavy.full.index(Coord::Pad { pad: 3, dof: PadDof::Mode(0) }).expect("mode coordinate");
     assert!(heavy.full.m[mode][mode] > 0.0, "the steel pad's mode has a modal mass");
     assert!(light.full.m.iter().flatten().all(|v| *v == 0.0), "massless: no inertia anywhere");

@@ -15,7 +15,11 @@ fn thd(set: &[&str]) -> Solution {
     let s = common::solve("fillon-a.toml", set);
     let t = s.thermal.as_ref().expect("fillon-a.toml is a THD case");
     assert!(t.report.converged, "{:?}", t.report);
-    assert!(t.energy_balance_closure.abs() < 1e-12, "energy balance closure {:.2e} (round-off expected)", t.energy_balance_closure);
+    assert!(
+        t.energy_balance_closure.abs() < 1e-12,
+        "energy balance closure {:.2e} (round-off expected)",
+        t.energy_balance_closure
+    );
     s
 }
 
@@ -54,7 +58,12 @@ fn fillon_a_shaft_temperature_as_published() {
     // Publication 3: the mean film temperature, "in this case equal to 52 degrees Celsius" (BC1 model).
     let s = thd(&[]);
     let t = s.thermal.as_ref().unwrap();
-    println!("journal {:.2} °C, film max {:.2} °C, pad max {:.2} °C", t.journal_temperature_c, t.t_max_film_c, pad_max(&s));
+    println!(
+        "journal {:.2} °C, film max {:.2} °C, pad max {:.2} °C",
+        t.journal_temperature_c,
+        t.t_max_film_c,
+        pad_max(&s)
+    );
     assert!((t.journal_temperature_c - 52.0).abs() < 1.0, "journal {:.2} °C", t.journal_temperature_c);
     // BC1: the pad surface takes the film temperature, so the pad's hottest point is the film's.
     assert!((pad_max(&s) - t.t_max_film_c).abs() < 1e-9);
@@ -66,7 +75,10 @@ fn fillon_a_temperatures_rise_with_speed() {
     for rpm in [1000, 2000, 3000, 4000] {
         let s = thd(&[&format!("operating.speed_rpm={rpm}")]);
         let t = pad_max(&s);
-        println!("{rpm} rpm: max pad temperature {t:.2} °C, journal {:.2} °C", s.thermal.as_ref().unwrap().journal_temperature_c);
+        println!(
+            "{rpm} rpm: max pad temperature {t:.2} °C, journal {:.2} °C",
+            s.thermal.as_ref().unwrap().journal_temperature_c
+        );
         assert!(t > last, "{rpm} rpm: {t:.2} °C after {last:.2} °C");
         last = t;
     }
@@ -85,9 +97,16 @@ fn fillon_a_tehd_bc3_rises_with_speed_like_the_measurement() {
         let s = common::solve("fillon-a-tehd-bc3.toml", &[&format!("operating.speed_rpm={rpm}")]);
         let t = s.thermal.as_ref().expect("a THD case");
         assert!(t.report.converged, "{rpm} rpm: {:?}", t.report);
-        assert!(t.energy_balance_closure.abs() < 1e-12, "{rpm} rpm: energy balance closure {:.2e}", t.energy_balance_closure);
+        assert!(
+            t.energy_balance_closure.abs() < 1e-12,
+            "{rpm} rpm: energy balance closure {:.2e}",
+            t.energy_balance_closure
+        );
         // BC3: the heat conducted into the pads is what they give to the surroundings (steady pads).
-        assert!((t.heat.heat_to_pad_w - t.heat_pads_to_surroundings_w).abs() < 1e-12 * t.heat.power_in(), "{rpm} rpm: pad heat balance");
+        assert!(
+            (t.heat.heat_to_pad_w - t.heat_pads_to_surroundings_w).abs() < 1e-12 * t.heat.power_in(),
+            "{rpm} rpm: pad heat balance"
+        );
         maxima.push(pad_max(&s));
     }
     println!("BC3 TEHD max pad temperature at 1000–4000 rpm: {maxima:.2?} °C");

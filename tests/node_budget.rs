@@ -21,13 +21,15 @@ fn with_orifices(holes: &[(f64, f64)]) -> String {
 /// axially): every hole refines a column and a row of the tensor-product grid, so the grid grows as the
 /// square of the hole count (the reported failure: 55 GB, then an abort).
 fn hundred_scattered_orifices() -> String {
-    let holes: Vec<(f64, f64)> = (0..100).map(|i| (0.05 + 0.9 * (f64::from(i) * 0.618_034).fract(), 0.05 + 0.9 * f64::from(i) / 99.0)).collect();
+    let holes: Vec<(f64, f64)> =
+        (0..100).map(|i| (0.05 + 0.9 * (f64::from(i) * 0.618_034).fract(), 0.05 + 0.9 * f64::from(i) / 99.0)).collect();
     with_orifices(&holes)
 }
 
 /// A 10 × 10 pattern of holes (ten columns and ten rows of refinement).
 fn hundred_orifices_in_a_pattern() -> String {
-    let holes: Vec<(f64, f64)> = (0..100).map(|k| (0.1 + 0.08 * f64::from(k / 10), 0.1 + 0.08 * f64::from(k % 10))).collect();
+    let holes: Vec<(f64, f64)> =
+        (0..100).map(|k| (0.1 + 0.08 * f64::from(k / 10), 0.1 + 0.08 * f64::from(k % 10))).collect();
     with_orifices(&holes)
 }
 
@@ -53,12 +55,25 @@ fn hundred_small_orifices_are_refused_before_allocating() {
 fn the_count_is_what_the_meshes_have() {
     let hundred = hundred_orifices_in_a_pattern();
     let cases: Vec<(String, Vec<String>)> = vec![
-        (std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap(), vec!["mesh.fidelity=\"reference\"".into()]),
-        (std::fs::read_to_string(common::case_path("fillon-a.toml")).unwrap(), vec!["mesh.pad_radial_elements=7".into()]),
+        (
+            std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap(),
+            vec!["mesh.fidelity=\"reference\"".into()],
+        ),
+        (
+            std::fs::read_to_string(common::case_path("fillon-a.toml")).unwrap(),
+            vec!["mesh.pad_radial_elements=7".into()],
+        ),
         (std::fs::read_to_string(common::case_path("test-rig-pub5.toml")).unwrap(), vec![]),
         (std::fs::read_to_string(common::case_path("plain-2groove-ld05.toml")).unwrap(), vec![]),
         (common::PLAIN_360.to_string(), vec![]),
-        (hundred, vec!["mesh.fidelity=\"preview\"".into(), "mesh.orifice_elements=2".into(), "mesh.max_nodes=50000000".into()]),
+        (
+            hundred,
+            vec![
+                "mesh.fidelity=\"preview\"".into(),
+                "mesh.orifice_elements=2".into(),
+                "mesh.max_nodes=50000000".into(),
+            ],
+        ),
     ];
     for (text, set) in &cases {
         let (_, case) = load_case(text, set).unwrap();
@@ -68,7 +83,8 @@ fn the_count_is_what_the_meshes_have() {
         assert_eq!(n.film_per_pad, per_pad, "{} {set:?}", case.title);
         if case.thermal.model == tiltpad::model::ThermalModelKind::Thd {
             let thermal = ThermalModel::new(&case, &model).unwrap();
-            let solid: usize = thermal.pads.iter().filter_map(|p| p.conduction.as_ref()).map(|c| c.mesh.n_nodes()).sum();
+            let solid: usize =
+                thermal.pads.iter().filter_map(|p| p.conduction.as_ref()).map(|c| c.mesh.n_nodes()).sum();
             assert!(solid > 0);
             assert_eq!(n.pad_solid, solid, "{}", case.title);
         } else {
@@ -87,7 +103,10 @@ fn with_budget(case_file: &str, set: &[&str], budget: usize) -> Result<Case, Cas
 /// A case exactly at its budget solves; one node less is refused.
 #[test]
 fn a_case_at_its_budget_solves() {
-    for (file, set) in [("compressor-bearing.toml", vec!["mesh.fidelity=\"preview\""]), ("fillon-a.toml", vec!["mesh.fidelity=\"preview\""])] {
+    for (file, set) in [
+        ("compressor-bearing.toml", vec!["mesh.fidelity=\"preview\""]),
+        ("fillon-a.toml", vec!["mesh.fidelity=\"preview\""]),
+    ] {
         let needed = count(&common::case(file, &set)).total();
         let case = with_budget(file, &set, needed).unwrap_or_else(|e| panic!("{file}: {e}"));
         let s = solve_case(&case).unwrap_or_else(|e| panic!("{file} at its budget: {e}"));
@@ -122,7 +141,11 @@ fn shipped_cases_fit_the_default_budget() {
 /// The orifice operators hold only the nodes of the elements each hole touches, however many holes a pad has.
 #[test]
 fn orifice_operators_are_sparse() {
-    let (_, case) = load_case(&hundred_orifices_in_a_pattern(), &["mesh.fidelity=\"preview\"".into(), "mesh.orifice_elements=2".into(), "mesh.max_nodes=50000000".into()]).unwrap();
+    let (_, case) = load_case(
+        &hundred_orifices_in_a_pattern(),
+        &["mesh.fidelity=\"preview\"".into(), "mesh.orifice_elements=2".into(), "mesh.max_nodes=50000000".into()],
+    )
+    .unwrap();
     let model = BearingModel::new(&case).unwrap();
     let geom = &model.pads[0].film.geom;
     assert_eq!(geom.orifices.len(), 100);
@@ -130,7 +153,12 @@ fn orifice_operators_are_sparse() {
         let o = op.orifice;
         let touched = geom.rects.iter().filter(|r| o.touches(r.s0, r.s0 + r.ds, r.z0, r.z0 + r.dz)).count();
         assert!(touched > 0, "orifice {k}");
-        assert!(op.vector.len() <= 4 * touched && op.matrix.len() <= 10 * touched, "orifice {k}: {} / {} entries for {touched} elements", op.vector.len(), op.matrix.len());
+        assert!(
+            op.vector.len() <= 4 * touched && op.matrix.len() <= 10 * touched,
+            "orifice {k}: {} / {} entries for {touched} elements",
+            op.vector.len(),
+            op.matrix.len()
+        );
         // ∫ 3 g / l0 dA = 3 π d⁴ / (32 l0) (full model here).
         let exact = 3.0 * std::f64::consts::PI * o.diameter.powi(4) / (32.0 * o.length);
         // Sub-cell quadrature on the rim: measured up to 2.5e-4 over these holes (two elements across each).

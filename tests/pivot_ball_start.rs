@@ -20,7 +20,12 @@ const CASE: &str = "compressor-bearing.toml";
 const LOAD_N: f64 = 1918.0;
 
 fn ball(extra: &[&str]) -> Case {
-    let mut set = vec!["mesh.fidelity=preview", "bearing.pads.pivot_contact=\"ball\"", "bearing.pads.pivot_radius_mm=12.7", "bearing.pads.pivot_seat_radius_mm=13"];
+    let mut set = vec![
+        "mesh.fidelity=preview",
+        "bearing.pads.pivot_contact=\"ball\"",
+        "bearing.pads.pivot_radius_mm=12.7",
+        "bearing.pads.pivot_seat_radius_mm=13",
+    ];
     set.extend_from_slice(extra);
     case(CASE, &set)
 }
@@ -41,7 +46,11 @@ fn assert_pivots_carry_the_film_loads(c: &Case, s: &Solution, tag: &str) {
         let state = s.pads[k].pivot_contact.expect("contact state");
         let film = film_load(c, s, k);
         eprintln!("{tag} pad {k}: pivot {:.3} N, film {film:.3} N, floating {}", state.load_n, s.pads[k].unloaded);
-        assert!((state.load_n - film.max(FLOOR * LOAD_N)).abs() < 1e-4 * LOAD_N, "{tag} pad {k}: pivot {} N vs film {film} N", state.load_n);
+        assert!(
+            (state.load_n - film.max(FLOOR * LOAD_N)).abs() < 1e-4 * LOAD_N,
+            "{tag} pad {k}: pivot {} N vs film {film} N",
+            state.load_n
+        );
     }
 }
 
@@ -62,7 +71,14 @@ fn a_floating_pad_puts_no_load_on_its_ball() {
 fn the_ball_pivot_equilibrium_does_not_depend_on_the_start() {
     let c = ball(&[]);
     let cold = solve(&c, None);
-    let rocker = solve(&ball(&["bearing.pads.pivot_contact=\"rocker\"", "bearing.pads.pivot_radius_mm=40", "bearing.pads.pivot_seat_radius_mm=61.5"]), None);
+    let rocker = solve(
+        &ball(&[
+            "bearing.pads.pivot_contact=\"rocker\"",
+            "bearing.pads.pivot_radius_mm=40",
+            "bearing.pads.pivot_seat_radius_mm=61.5",
+        ]),
+        None,
+    );
     assert!(!rocker.pads[0].unloaded, "on rockers the top pad is loaded");
     let light = solve(&ball(&["operating.load_n=191.8"]), None);
     assert!(light.pads.iter().all(|p| !p.unloaded), "at a tenth of the load every pad is loaded");
@@ -72,7 +88,12 @@ fn the_ball_pivot_equilibrium_does_not_depend_on_the_start() {
         assert_eq!(warm.pads[0].unloaded, cold.pads[0].unloaded, "{tag}");
         let scale = cold.coordinates[1].abs();
         for (a, b) in warm.coordinates[..2].iter().zip(&cold.coordinates[..2]) {
-            assert!((a - b).abs() < 1e-6 * scale, "{tag}: journal {:?} vs {:?}", &warm.coordinates[..2], &cold.coordinates[..2]);
+            assert!(
+                (a - b).abs() < 1e-6 * scale,
+                "{tag}: journal {:?} vs {:?}",
+                &warm.coordinates[..2],
+                &cold.coordinates[..2]
+            );
         }
         for k in 0..c.bearing.pads.len() {
             assert!((film_load(&c, &warm, k) - film_load(&c, &cold, k)).abs() < 1e-4 * LOAD_N, "{tag} pad {k}");

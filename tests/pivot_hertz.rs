@@ -75,7 +75,10 @@ fn hertz_pivots_carry_their_loads_and_linearise_with_the_tangent() {
     // springs'. (Synchronously reduced it need not: where the film's ωC exceeds its K, Re of the series
     // impedance Z_f k/(Z_f + k) falls as k grows, since Re Z_f² < 0.)
     let (ks, kl) = (reduce(&s.full, 0.0).k_n_per_m[1][1], reduce(&lin.full, 0.0).k_n_per_m[1][1]);
-    eprintln!("static K_yy Hertz {ks:.4e}, secant springs {kl:.4e}; synchronous {:.4e} {:.4e}", s.reduced.k_n_per_m[1][1], lin.reduced.k_n_per_m[1][1]);
+    eprintln!(
+        "static K_yy Hertz {ks:.4e}, secant springs {kl:.4e}; synchronous {:.4e} {:.4e}",
+        s.reduced.k_n_per_m[1][1], lin.reduced.k_n_per_m[1][1]
+    );
     assert!(ks > kl);
 }
 
@@ -87,7 +90,10 @@ fn softer_pivots_soften_the_bearing() {
         let set = [PREVIEW, "bearing.pads.pivot_contact=\"ball\"", r, seat];
         solve_case(&case(CASE, &set)).expect("ball")
     };
-    let ball = [ball("bearing.pads.pivot_radius_mm=12.7", "bearing.pads.pivot_seat_radius_mm=13"), ball("bearing.pads.pivot_radius_mm=5", "bearing.pads.pivot_seat_radius_mm=6")];
+    let ball = [
+        ball("bearing.pads.pivot_radius_mm=12.7", "bearing.pads.pivot_seat_radius_mm=13"),
+        ball("bearing.pads.pivot_radius_mm=5", "bearing.pads.pivot_seat_radius_mm=6"),
+    ];
     let kyy = |s: &tiltpad::bearing::Solution| s.reduced.k_n_per_m[1][1];
     let all = [&rigid, &rocker, &ball[0], &ball[1]];
     eprintln!("K_yy rigid, rocker, ball 12.7/13, ball 5/6: {:?}", all.map(kyy));
@@ -117,15 +123,27 @@ fn hertz_pivots_converge_inside_the_thd_loop() {
         let e_p = [pad.pivot_rad.cos(), pad.pivot_rad.sin()];
         let load = -(res.force_n[0] * e_p[0] + res.force_n[1] * e_p[1]);
         let iso_load = iso.pads[k].pivot_contact.expect("isothermal state").load_n;
-        eprintln!("pad {k}: THD load {load:.2} N (isothermal {iso_load:.2}), state {:.2} N, ξ {:.4} µm, floats {}", state.load_n, 1e6 * xi, res.unloaded);
+        eprintln!(
+            "pad {k}: THD load {load:.2} N (isothermal {iso_load:.2}), state {:.2} N, ξ {:.4} µm, floats {}",
+            state.load_n,
+            1e6 * xi,
+            res.unloaded
+        );
         if res.unloaded {
             // A floating pad's pivot takes the floor load's stiffness (its ξ is held, not balanced by a film):
             // its film carries less than the floor load (here 1.14e-3 N of the 1.918 N floor: the THD film of
             // the floating pad keeps a trace of pressure).
-            assert!(load.abs() < FLOOR * LOAD_N && (state.load_n / (FLOOR * LOAD_N) - 1.0).abs() < 1e-12, "pad {k}: load {load:.3e} N");
+            assert!(
+                load.abs() < FLOOR * LOAD_N && (state.load_n / (FLOOR * LOAD_N) - 1.0).abs() < 1e-12,
+                "pad {k}: load {load:.3e} N"
+            );
         } else {
             let hertz = contact.state(load).expect("in Hertz range");
-            assert!((xi - hertz.approach_m).abs() < 1e-4 * hertz.approach_m, "pad {k}: ξ {xi} vs δ {}", hertz.approach_m);
+            assert!(
+                (xi - hertz.approach_m).abs() < 1e-4 * hertz.approach_m,
+                "pad {k}: ξ {xi} vs δ {}",
+                hertz.approach_m
+            );
             assert!((state.load_n / load - 1.0).abs() < 1e-4, "pad {k}: state at {} N, film {load} N", state.load_n);
         }
         springs.bearing.pads[k].pivot_contact = None;
@@ -133,7 +151,10 @@ fn hertz_pivots_converge_inside_the_thd_loop() {
     }
     let lin = solve_case(&springs).expect("THD on linear springs");
     let tl = lin.thermal.as_ref().expect("thermal result");
-    eprintln!("T_max {:.4} vs {:.4} °C; coordinates {:?} vs {:?}", t.t_max_film_c, tl.t_max_film_c, s.coordinates, lin.coordinates);
+    eprintln!(
+        "T_max {:.4} vs {:.4} °C; coordinates {:?} vs {:?}",
+        t.t_max_film_c, tl.t_max_film_c, s.coordinates, lin.coordinates
+    );
     // The journal, and each pad's load (the tilts differ by up to 3e-4 of their size: two loops stopped at
     // the same viscosity tolerance from different paths).
     let scale = s.coordinates[0].hypot(s.coordinates[1]);

@@ -34,7 +34,12 @@ use tiltpad::model::Case;
 fn one_pad(pivot_stiffness_n_per_m: Option<f64>) -> Case {
     let mut c = case(
         "compressor-bearing.toml",
-        &["mesh.fidelity=preview", "bearing.pads.count=1", "bearing.pads.pivot_deg=270", "operating.load_angle_deg=270"],
+        &[
+            "mesh.fidelity=preview",
+            "bearing.pads.count=1",
+            "bearing.pads.pivot_deg=270",
+            "operating.load_angle_deg=270",
+        ],
     );
     for p in &mut c.bearing.pads {
         p.massless = true;

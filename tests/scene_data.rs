@@ -15,10 +15,16 @@ fn compressor_bearing_scene() {
     let (j, p, h) = o.pads[3].h_min.unwrap();
     assert!((h - s.h_min_m).abs() < 1e-15, "pad 3 carries the load: {h} vs {}", s.h_min_m);
     let drawn_gap = (p[0] - j[0]).hypot(p[1] - j[1]);
-    assert!((drawn_gap - o.exaggeration * h).abs() < 1e-12 * o.exaggeration * h, "{drawn_gap} vs {}", o.exaggeration * h);
+    assert!(
+        (drawn_gap - o.exaggeration * h).abs() < 1e-12 * o.exaggeration * h,
+        "{drawn_gap} vs {}",
+        o.exaggeration * h
+    );
     assert!(!o.pads[3].pressure.is_empty());
     // Journal displaced downwards, drawn exaggerated.
-    assert!(o.journal_centre[1] < 0.0 && (o.journal_centre[1] - o.exaggeration * s.journal_position_m[1]).abs() < 1e-15);
+    assert!(
+        o.journal_centre[1] < 0.0 && (o.journal_centre[1] - o.exaggeration * s.journal_position_m[1]).abs() < 1e-15
+    );
 
     // Field maps: half model mirrored to the full length; pressure between 0 and p_max; h ≥ h_min.
     let maps = PadMap::all(&s, FieldKind::Pressure);
@@ -51,7 +57,10 @@ fn compressor_bearing_scene() {
         })
         .count();
     assert!(drained >= 2, "the central leading-edge oil drains towards the hole: {drained}");
-    assert!(lines.iter().filter(|l| l.seed == Seed::LeadingEdge).any(|l| l.end == End::LeftPad && l.points.last().unwrap()[0] > 0.9 * m.arc_length_m()));
+    assert!(lines
+        .iter()
+        .filter(|l| l.seed == Seed::LeadingEdge)
+        .any(|l| l.end == End::LeftPad && l.points.last().unwrap()[0] > 0.9 * m.arc_length_m()));
 
     // Summary and exports.
     let sum = summary::summary(&s);
@@ -69,7 +78,8 @@ fn compressor_bearing_scene() {
 /// Publication 4, Fig. 6: at 17 bar on the lower pad the film flow reverses upstream of the orifice.
 #[test]
 fn injection_reverses_the_flow_upstream_of_the_orifice() {
-    let s = common::solve("test-rig.toml", &["operating.injection_pressure_bar=[17.0, 0.0]", "mesh.fidelity=\"preview\""]);
+    let s =
+        common::solve("test-rig.toml", &["operating.injection_pressure_bar=[17.0, 0.0]", "mesh.fidelity=\"preview\""]);
     let site = orifice_sites(&s, 0)[0];
     assert!(site.flow_m3_per_s > 0.0, "the lower pad injects");
     let lines = pad_flowlines(&s, 0, FlowlineParams::default());
@@ -79,10 +89,12 @@ fn injection_reverses_the_flow_upstream_of_the_orifice() {
     // diameter: the reversal. (With 17 bar on its soft pivot the lower pad lifts the journal ~0.44 Cb; the
     // load curve is monotonic, so this equilibrium is the only one. Counts are the same on the preview,
     // standard and reference meshes: 6 of 16 lines pass one radius upstream, 4 two, 2 three.)
-    let upstream = |k: f64| from_hole.iter().filter(|l| l.points.iter().any(|p| p[0] < site.s_m - k * site.radius_m)).count();
+    let upstream =
+        |k: f64| from_hole.iter().filter(|l| l.points.iter().any(|p| p[0] < site.s_m - k * site.radius_m)).count();
     assert!(upstream(3.0) >= 1 && upstream(1.0) >= 4, "{} {}", upstream(3.0), upstream(1.0));
     // Without injection the same orifice is a sink and no line runs upstream from it.
-    let s0 = common::solve("test-rig.toml", &["operating.injection_pressure_bar=[0.0, 0.0]", "mesh.fidelity=\"preview\""]);
+    let s0 =
+        common::solve("test-rig.toml", &["operating.injection_pressure_bar=[0.0, 0.0]", "mesh.fidelity=\"preview\""]);
     assert!(orifice_sites(&s0, 0)[0].flow_m3_per_s < 0.0);
     let lines0 = pad_flowlines(&s0, 0, FlowlineParams::default());
     for l in lines0.iter().filter(|l| l.seed == Seed::Orifice(0)) {

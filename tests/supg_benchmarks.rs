@@ -83,7 +83,13 @@ fn boundary_edges(m: &Mesh) -> Vec<BoundaryEdge> {
 }
 
 /// Solves `−ε Δu + b·∇u = 0` with Dirichlet values `bc(k, x, y)` (where `Some`).
-fn solve(m: &Mesh, eps: f64, b: [f64; 2], stab: Stabilisation, bc: &dyn Fn(usize, f64, f64) -> Option<f64>) -> PicardSolution {
+fn solve(
+    m: &Mesh,
+    eps: f64,
+    b: [f64; 2],
+    stab: Stabilisation,
+    bc: &dyn Fn(usize, f64, f64) -> Option<f64>,
+) -> PicardSolution {
     let n = m.xy.len();
     let pattern = GeneralPattern::from_groups(n, m.elements.iter().map(|e| &e[..]));
     let diameters: Vec<f64> = m
@@ -125,7 +131,11 @@ fn skew_advection_supg_with_crosswind_capturing_has_no_wiggles() {
     for &eps in &[1e-8, 1e-4] {
         for &n in &[16, 32, 64] {
             let (over, under, it) = skew(n, 0.15, eps, Stabilisation::SupgCrosswind);
-            println!("SUPG+crosswind ε = {eps:.0e}, {n}×{n}: overshoot {:.3} %, undershoot {:.3} % ({it} iterations)", 100.0 * over, 100.0 * under);
+            println!(
+                "SUPG+crosswind ε = {eps:.0e}, {n}×{n}: overshoot {:.3} %, undershoot {:.3} % ({it} iterations)",
+                100.0 * over,
+                100.0 * under
+            );
             assert!(over < 0.01 && under < 0.01, "ε = {eps}, n = {n}: over {over:.4}, under {under:.4}");
         }
     }
@@ -138,7 +148,11 @@ fn skew_advection_strongly_distorted_mesh_reported() {
     for &d in &[0.25, 0.3] {
         for &n in &[16, 32, 64] {
             let (over, under, it) = skew(n, d, 1e-8, Stabilisation::SupgCrosswind);
-            println!("SUPG+crosswind distortion {d}, {n}×{n}: overshoot {:.2} %, undershoot {:.2} % ({it} iterations)", 100.0 * over, 100.0 * under);
+            println!(
+                "SUPG+crosswind distortion {d}, {n}×{n}: overshoot {:.2} %, undershoot {:.2} % ({it} iterations)",
+                100.0 * over,
+                100.0 * under
+            );
             assert!(over < 0.03 && under < 0.03);
         }
     }
@@ -150,10 +164,18 @@ fn skew_advection_plain_supg_and_galerkin_wiggle() {
     // in the outflow layers and undershoots across the internal layer by several per cent.
     for &eps in &[1e-8, 1e-4] {
         let (over, under, _) = skew(32, 0.15, eps, Stabilisation::Galerkin);
-        println!("Galerkin       ε = {eps:.0e}, 32×32: overshoot {:.1} %, undershoot {:.1} %", 100.0 * over, 100.0 * under);
+        println!(
+            "Galerkin       ε = {eps:.0e}, 32×32: overshoot {:.1} %, undershoot {:.1} %",
+            100.0 * over,
+            100.0 * under
+        );
         assert!(over.max(under) > 0.5, "Galerkin ε = {eps}: over {over:.4}, under {under:.4}");
         let (over, under, _) = skew(32, 0.15, eps, Stabilisation::Supg);
-        println!("plain SUPG     ε = {eps:.0e}, 32×32: overshoot {:.1} %, undershoot {:.1} %", 100.0 * over, 100.0 * under);
+        println!(
+            "plain SUPG     ε = {eps:.0e}, 32×32: overshoot {:.1} %, undershoot {:.1} %",
+            100.0 * over,
+            100.0 * under
+        );
         assert!(over.max(under) > 0.03, "plain SUPG ε = {eps}: over {over:.4}, under {under:.4}");
     }
 }
@@ -172,7 +194,13 @@ fn one_dimensional_supg_is_nodally_exact() {
             // (e^{Pe x} − 1)/(e^{Pe} − 1), written without overflow.
             let exact = |x: f64| (pe * (x - 1.0)).exp() * (-(-pe * x).exp_m1()) / (-(-pe).exp_m1());
             for (k, p) in m.xy.iter().enumerate() {
-                assert!((sol.u[k] - exact(p[0])).abs() < 1e-10, "{stab:?} Pe = {pe}, x = {}: {} vs {}", p[0], sol.u[k], exact(p[0]));
+                assert!(
+                    (sol.u[k] - exact(p[0])).abs() < 1e-10,
+                    "{stab:?} Pe = {pe}, x = {}: {} vs {}",
+                    p[0],
+                    sol.u[k],
+                    exact(p[0])
+                );
             }
         }
     }

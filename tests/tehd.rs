@@ -11,7 +11,11 @@ mod common;
 use tiltpad::bearing::Solution;
 
 const PREVIEW: &str = "mesh.fidelity=preview";
-const STEEL: [&str; 3] = ["thermal.pad_expansion_ppm_per_k=12", "thermal.journal_expansion_ppm_per_k=11", "thermal.reference_temperature_c=20"];
+const STEEL: [&str; 3] = [
+    "thermal.pad_expansion_ppm_per_k=12",
+    "thermal.journal_expansion_ppm_per_k=11",
+    "thermal.reference_temperature_c=20",
+];
 
 fn pad_max(s: &Solution) -> f64 {
     s.thermal.as_ref().and_then(|t| t.t_max_pad_c).expect("pad temperatures")
@@ -20,7 +24,10 @@ fn pad_max(s: &Solution) -> f64 {
 #[test]
 fn zero_expansion_is_the_thd_solve() {
     let thd = common::solve("fillon-a.toml", &[PREVIEW]);
-    let zero = common::solve("fillon-a.toml", &[PREVIEW, "thermal.pad_expansion_ppm_per_k=0", "thermal.journal_expansion_ppm_per_k=0"]);
+    let zero = common::solve(
+        "fillon-a.toml",
+        &[PREVIEW, "thermal.pad_expansion_ppm_per_k=0", "thermal.journal_expansion_ppm_per_k=0"],
+    );
     assert_eq!(thd.eccentricity_ratio.to_bits(), zero.eccentricity_ratio.to_bits());
     assert_eq!(pad_max(&thd).to_bits(), pad_max(&zero).to_bits());
     assert!(zero.thermal.as_ref().unwrap().report.growth_change_m.is_empty());
@@ -70,7 +77,12 @@ fn growth_converges_closes_the_film_and_keeps_the_energy_balance() {
 fn housing_growth_is_a_larger_assembled_clearance() {
     let grown = common::solve(
         "fillon-a.toml",
-        &[PREVIEW, "thermal.housing_expansion_ppm_per_k=12", "thermal.housing_temperature_c=40", "thermal.reference_temperature_c=20"],
+        &[
+            PREVIEW,
+            "thermal.housing_expansion_ppm_per_k=12",
+            "thermal.housing_temperature_c=40",
+            "thermal.reference_temperature_c=20",
+        ],
     );
     let b = &grown.inputs.bearing;
     let r = &grown.thermal.as_ref().unwrap().report;
@@ -89,12 +101,26 @@ fn housing_growth_is_a_larger_assembled_clearance() {
     let dh = common::rel(grown.h_min_m, wider.h_min_m);
     let dt = pad_max(&grown) - pad_max(&wider);
     let dk = common::rel(grown.reduced.k_n_per_m[1][1], wider.reduced.k_n_per_m[1][1]);
-    println!("housing growth {:.3} µm: journal {de:.2e} of e, h_min {dh:.2e}, pad max {dt:.2e} K, K_yy {dk:.2e}", delta * 1e6);
-    assert!(de.abs() < 2e-4 && dh.abs() < 2.5e-4 && dt.abs() < 2e-3 && dk.abs() < 1.5e-4, "{de:.2e} {dh:.2e} {dt:.2e} {dk:.2e}");
+    println!(
+        "housing growth {:.3} µm: journal {de:.2e} of e, h_min {dh:.2e}, pad max {dt:.2e} K, K_yy {dk:.2e}",
+        delta * 1e6
+    );
+    assert!(
+        de.abs() < 2e-4 && dh.abs() < 2.5e-4 && dt.abs() < 2e-3 && dk.abs() < 1.5e-4,
+        "{de:.2e} {dh:.2e} {dt:.2e} {dk:.2e}"
+    );
     // The preload falls from 0.47 to 0.36 and the upper pads become lightly loaded: both solves give them their
     // mean film viscosity (the housing's growth is in the films from the loop's first equilibrium, which decides).
     let light = |s: &Solution| -> Vec<String> {
-        s.thermal.as_ref().unwrap().report.warnings.iter().filter(|w| w.contains("mean film viscosity")).map(|w| w[..5].to_string()).collect()
+        s.thermal
+            .as_ref()
+            .unwrap()
+            .report
+            .warnings
+            .iter()
+            .filter(|w| w.contains("mean film viscosity"))
+            .map(|w| w[..5].to_string())
+            .collect()
     };
     assert!(!light(&wider).is_empty());
     assert_eq!(light(&grown), light(&wider));

@@ -21,7 +21,8 @@ fn injected_flow_matches_the_reynolds_orifice_flow() {
     for (k, pm) in model.pads.iter().enumerate() {
         let inp = op.film_inputs(k);
         let energy = FilmEnergy::new(&pm.film.geom);
-        let inj = Injection { pressure: op.injection_pressure[k], viscosity: op.injection_viscosity, temperature_c: 50.0 };
+        let inj =
+            Injection { pressure: op.injection_pressure[k], viscosity: op.injection_viscosity, temperature_c: 50.0 };
         let st = energy.flow_state(&pm.film, &inp, &inj, &oil, true);
         let from_flux: f64 = pm.film.geom.sym * st.outflow.iter().sum::<f64>();
         let reynolds: f64 = (0..pm.film.geom.orifices.len()).map(|o| pm.film.orifice_flow(o, &inp)).sum();
@@ -36,11 +37,21 @@ fn insulated_pad_takes_its_face_temperature() {
     let model = BearingModel::new(&case).unwrap();
     let pad = &case.bearing.pads[2];
     let film = &model.pads[2].film;
-    let mesh = PadMesh::extrude(&film.geom.grid, case.bearing.journal_radius_m, pad.leading_edge_rad, pad.bore_radius_m(case.bearing.journal_radius_m), pad.thickness_m, 4);
+    let mesh = PadMesh::extrude(
+        &film.geom.grid,
+        case.bearing.journal_radius_m,
+        pad.leading_edge_rad,
+        pad.bore_radius_m(case.bearing.journal_radius_m),
+        pad.thickness_m,
+        4,
+    );
     let mut solver = PadDirichletSolver::new(&mesh).unwrap();
     let pt = PadThermal::new(film, Some(PadConduction::new(std::sync::Arc::new(mesh)))).unwrap();
     let face = vec![63.0; film.geom.n_nodes()];
-    let t = pt.solve_pad_bc1(&mut solver, &face, &PadMaterial { conductivity: 45.0, convection: 0.0, ambient_c: 20.0 }).unwrap().unwrap();
+    let t = pt
+        .solve_pad_bc1(&mut solver, &face, &PadMaterial { conductivity: 45.0, convection: 0.0, ambient_c: 20.0 })
+        .unwrap()
+        .unwrap();
     assert!(t.iter().all(|v| (v - 63.0).abs() < 1e-9), "{:?}", t.iter().fold(f64::MAX, |m, &v| m.min(v)));
     // With convection the pad lies between the surroundings and its face, hottest on the face.
     let mat = PadMaterial { conductivity: 45.0, convection: 100.0, ambient_c: 20.0 };
@@ -60,7 +71,10 @@ fn insulated_pad_takes_its_face_temperature() {
 /// enters it (tolerance 0.2 K, the SUPG scheme's measured undershoot at the orifice is about 0.1 K).
 #[test]
 fn film_temperature_stays_above_the_coldest_inflow() {
-    let s = common::solve("compressor-bearing.toml", &["thermal.model=\"thd\"", "operating.injection_pressure_bar=40", "mesh.fidelity=\"preview\""]);
+    let s = common::solve(
+        "compressor-bearing.toml",
+        &["thermal.model=\"thd\"", "operating.injection_pressure_bar=40", "mesh.fidelity=\"preview\""],
+    );
     let t = s.thermal.as_ref().unwrap();
     let coldest = t.inlet_temperatures_c.iter().fold(s.inputs.operating.injection_temperature_c, |m, &v| m.min(v));
     for p in &s.pads {
@@ -83,7 +97,13 @@ fn thermal_loop_stops_at_its_budgets() {
     let tol = ThermalParams::default().viscosity_tol;
     let params = ThermalParams { max_iterations: 2, ..ThermalParams::default() };
     match solve_thd(&mut model, &mut thermal, &case, params, None, &NoCancel) {
-        Err(SolveError::BudgetExceeded { what: Iteration::Thermal, budget: Budget::Iterations(2), iterations: 2, residual, .. }) => {
+        Err(SolveError::BudgetExceeded {
+            what: Iteration::Thermal,
+            budget: Budget::Iterations(2),
+            iterations: 2,
+            residual,
+            ..
+        }) => {
             assert!(residual > tol && residual.is_finite(), "{residual}");
         }
         other => panic!("expected the iteration budget, got {:?}", other.map(|s| s.report.outer_iterations)),
@@ -98,7 +118,13 @@ fn thermal_loop_stops_at_its_budgets() {
     let mut run = ThdRun::new(&model, &mut thermal, &case, params, None);
     let err = run.step(&mut model, &mut thermal, &case, &NoCancel).map(|s| s.is_some()).unwrap_err();
     match err {
-        SolveError::BudgetExceeded { what: Iteration::Thermal, budget: Budget::Seconds(limit), iterations: 1, seconds, .. } => {
+        SolveError::BudgetExceeded {
+            what: Iteration::Thermal,
+            budget: Budget::Seconds(limit),
+            iterations: 1,
+            seconds,
+            ..
+        } => {
             assert!(limit == 1e-6 && seconds >= limit, "{err}");
             assert!(err.to_string().contains("time budget"), "{err}");
         }

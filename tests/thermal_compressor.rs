@@ -15,7 +15,11 @@ fn solve(set: &[&str]) -> Solution {
     let s = common::solve("compressor-bearing.toml", set);
     if let Some(t) = &s.thermal {
         assert!(t.report.converged, "{:?}", t.report);
-        assert!(t.energy_balance_closure.abs() < ENERGY_CLOSURE, "{set:?}: energy balance closure {:.2e}", t.energy_balance_closure);
+        assert!(
+            t.energy_balance_closure.abs() < ENERGY_CLOSURE,
+            "{set:?}: energy balance closure {:.2e}",
+            t.energy_balance_closure
+        );
         for (k, p) in s.pads.iter().enumerate() {
             let pt = p.thermal.as_ref().unwrap();
             let c = pt.heat.closure();
@@ -33,8 +37,20 @@ fn thd_raises_eccentricity_and_lowers_stiffness_and_damping() {
     let (ki, kt) = (iso.reduced.k_n_per_m, thd.reduced.k_n_per_m);
     let (ci, ct) = (iso.reduced.c_ns_per_m, thd.reduced.c_ns_per_m);
     println!("ε: iso {:.4}, THD {:.4}", iso.eccentricity_ratio, thd.eccentricity_ratio);
-    println!("Kxx, Kyy [MN/m]: iso {:.2}, {:.2}; THD {:.2}, {:.2}", ki[0][0] * 1e-6, ki[1][1] * 1e-6, kt[0][0] * 1e-6, kt[1][1] * 1e-6);
-    println!("Cxx, Cyy [kN s/m]: iso {:.2}, {:.2}; THD {:.2}, {:.2}", ci[0][0] * 1e-3, ci[1][1] * 1e-3, ct[0][0] * 1e-3, ct[1][1] * 1e-3);
+    println!(
+        "Kxx, Kyy [MN/m]: iso {:.2}, {:.2}; THD {:.2}, {:.2}",
+        ki[0][0] * 1e-6,
+        ki[1][1] * 1e-6,
+        kt[0][0] * 1e-6,
+        kt[1][1] * 1e-6
+    );
+    println!(
+        "Cxx, Cyy [kN s/m]: iso {:.2}, {:.2}; THD {:.2}, {:.2}",
+        ci[0][0] * 1e-3,
+        ci[1][1] * 1e-3,
+        ct[0][0] * 1e-3,
+        ct[1][1] * 1e-3
+    );
     assert!(thd.eccentricity_ratio > iso.eccentricity_ratio);
     for i in 0..2 {
         assert!(kt[i][i] < ki[i][i], "K[{i}][{i}]");
@@ -51,7 +67,12 @@ fn leading_edge_injection_lowers_the_average_film_temperature() {
     let mean = |p: &str| {
         let s = solve(&["thermal.model=\"thd\"", &format!("operating.injection_pressure_bar={p}")]);
         let t = s.thermal.as_ref().unwrap();
-        println!("{p} bar: mean film {:.2} °C, max film {:.2} °C, orifice inflow {:.2} l/min", t.t_mean_film_c, t.t_max_film_c, s.flows_m3_per_s.orifices_in * 6e4);
+        println!(
+            "{p} bar: mean film {:.2} °C, max film {:.2} °C, orifice inflow {:.2} l/min",
+            t.t_mean_film_c,
+            t.t_max_film_c,
+            s.flows_m3_per_s.orifices_in * 6e4
+        );
         t.t_mean_film_c
     };
     let none = mean("0");
@@ -71,10 +92,20 @@ fn bc2_and_bc3_close_their_balance_and_the_pad_conducts_what_it_receives() {
         }
         let s = solve(&set);
         let t = s.thermal.as_ref().unwrap();
-        println!("{bc}: pad max {:.2} °C, heat to pads {:.2} W, pads to surroundings {:.2} W, journal {:.2} °C", t.t_max_pad_c.unwrap(), t.heat.heat_to_pad_w, t.heat_pads_to_surroundings_w, t.journal_temperature_c);
+        println!(
+            "{bc}: pad max {:.2} °C, heat to pads {:.2} W, pads to surroundings {:.2} W, journal {:.2} °C",
+            t.t_max_pad_c.unwrap(),
+            t.heat.heat_to_pad_w,
+            t.heat_pads_to_surroundings_w,
+            t.journal_temperature_c
+        );
         // Steady pads: what the film gives them through the film-side face leaves through the free faces.
         let q = t.heat.heat_to_pad_w;
-        assert!((q - t.heat_pads_to_surroundings_w).abs() < 1e-6 * q.abs().max(1.0), "{q} vs {}", t.heat_pads_to_surroundings_w);
+        assert!(
+            (q - t.heat_pads_to_surroundings_w).abs() < 1e-6 * q.abs().max(1.0),
+            "{q} vs {}",
+            t.heat_pads_to_surroundings_w
+        );
         if bc.contains("bc3") {
             // Journal temperature from zero net heat flux.
             assert!(t.heat.heat_to_journal_w.abs() < 1e-6 * t.heat.power_in());

@@ -19,7 +19,10 @@ fn pad_layers_converge_at_second_order() {
     let fine = at(24);
     let e: Vec<f64> = [2, 4, 8].iter().map(|&n| (at(n) - fine).abs()).collect();
     let order = [(e[0] / e[1]).log2(), (e[1] / e[2]).log2()];
-    println!("pad max error vs 24 layers: 2 → {:.4} K, 4 → {:.4} K, 8 → {:.4} K; orders {:.2}, {:.2}", e[0], e[1], e[2], order[0], order[1]);
+    println!(
+        "pad max error vs 24 layers: 2 → {:.4} K, 4 → {:.4} K, 8 → {:.4} K; orders {:.2}, {:.2}",
+        e[0], e[1], e[2], order[0], order[1]
+    );
     assert!(order[0] > 1.5 && order[1] > 1.5, "orders {order:?}");
     assert!(e[1] < 0.02, "4 layers (the standard fidelity) within 0.02 K: {:.4}", e[1]);
 }

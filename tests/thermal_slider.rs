@@ -53,11 +53,22 @@ fn adiabatic_slider_matches_the_closed_form_and_conserves_energy() {
     let (mu, rpm_u, t_in) = (0.03, 20.0, 40.0);
     let oil = Oil { density: 860.0, specific_heat: 2000.0, conductivity: 0.13 };
     let length = 20.0 * B;
-    let grid = PadGrid { s: graded_nodes(0.0, B, 60, &[]), z: graded_nodes(0.0, 0.5 * length, 40, &[]), periodic: false, half: true };
+    let grid = PadGrid {
+        s: graded_nodes(0.0, B, 60, &[]),
+        z: graded_nodes(0.0, 0.5 * length, 40, &[]),
+        periodic: false,
+        half: true,
+    };
     let geom = FilmGeometry::new(grid, R, 0.0, &[], &Slider);
     let mut film = PadFilm::new(geom).unwrap();
     film.set_coordinates(&[]).unwrap();
-    let inp = FilmInputs { surface_speed: rpm_u, viscosity: Viscosity::Uniform(mu), injection_pressure: 0.0, injection_viscosity: mu, cavitation: Cavitation::Reynolds };
+    let inp = FilmInputs {
+        surface_speed: rpm_u,
+        viscosity: Viscosity::Uniform(mu),
+        injection_pressure: 0.0,
+        injection_viscosity: mu,
+        cavitation: Cavitation::Reynolds,
+    };
     film.solve(&inp, false).unwrap();
     assert_eq!(film.cavitated.iter().filter(|c| **c).count(), 0, "a converging slider runs full");
 
@@ -96,11 +107,20 @@ fn adiabatic_slider_matches_the_closed_form_and_conserves_energy() {
     };
     let heat = thermal.energy.heat_balance(&film, &sol.flow, &bal);
     let (_, p_reynolds) = film.friction(&inp);
-    println!("shear power {:.4} W (Reynolds module {:.4} W), carried by oil {:.4} W, closure {:.2e}", heat.shear_power_w, p_reynolds, heat.carried_by_oil(), heat.closure());
+    println!(
+        "shear power {:.4} W (Reynolds module {:.4} W), carried by oil {:.4} W, closure {:.2e}",
+        heat.shear_power_w,
+        p_reynolds,
+        heat.carried_by_oil(),
+        heat.closure()
+    );
     assert!((heat.shear_power_w / p_reynolds - 1.0).abs() < 1e-12, "full film: both friction powers agree");
     // Exact identities, so round-off (measured 5e-15 and 3.5e-16 of the shear power).
     assert!((heat.dissipation_w / heat.shear_power_w - 1.0).abs() < 1e-12, "∫Φ = U ∫ (µU/h + h/2 ∂p/∂s) exactly");
-    assert!(heat.cavitation_transport_w.abs() < 1e-12 * heat.shear_power_w, "a full film carries nothing into cavitation");
+    assert!(
+        heat.cavitation_transport_w.abs() < 1e-12 * heat.shear_power_w,
+        "a full film carries nothing into cavitation"
+    );
     // Round-off (measured 1.9e-15, docs/THERMAL.md).
     assert!(heat.closure().abs() < 1e-12, "closure {:.2e}", heat.closure());
 }

@@ -23,12 +23,19 @@ use tiltpad::scene::sweep::SweepSpec;
 const SIZE: [f32; 2] = [1400.0, 860.0];
 
 /// The app on a shipped case (the compressor bearing unless `preset_toml` is given), solved.
-fn solved_app(preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
+fn solved_app(
+    preset_toml: Option<&'static str>,
+    setup: impl FnOnce(&mut Persisted) + 'static,
+) -> Harness<'static, WorkbenchApp> {
     solved_app_at(SIZE, preset_toml, setup)
 }
 
 /// [`solved_app`] in a window of `size` points.
-fn solved_app_at(size: [f32; 2], preset_toml: Option<&'static str>, setup: impl FnOnce(&mut Persisted) + 'static) -> Harness<'static, WorkbenchApp> {
+fn solved_app_at(
+    size: [f32; 2],
+    preset_toml: Option<&'static str>,
+    setup: impl FnOnce(&mut Persisted) + 'static,
+) -> Harness<'static, WorkbenchApp> {
     let mut persisted = Persisted::default();
     if let Some(text) = preset_toml {
         persisted.case_toml = Some(text.to_string());
@@ -157,7 +164,8 @@ fn film_temperature_view_of_a_thermal_solve() {
 /// orifice. With injection off, the orifice is a sink.
 #[test]
 fn flowlines_show_the_injection_source_and_the_sink() {
-    let rig = include_str!("../cases/test-rig.toml").replace("injection_pressure_bar = [10.0, 0.0]", "injection_pressure_bar = [17.0, 0.0]");
+    let rig = include_str!("../cases/test-rig.toml")
+        .replace("injection_pressure_bar = [10.0, 0.0]", "injection_pressure_bar = [17.0, 0.0]");
     let rig: &'static str = Box::leak(rig.into_boxed_str());
     let mut h = solved_app(Some(rig), |p| {
         p.view = View::Fields;
@@ -226,7 +234,8 @@ fn frf_view_shows_the_bode_plots_of_the_rig_and_its_limitations() {
 /// line (the FRF stage reads the ports' pads, so nothing is re-solved: the FRF model stays the same object).
 #[test]
 fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
-    let mut h = solved_app_at([1400.0, 2600.0], Some(include_str!("../cases/test-rig-pub5.toml")), |p| p.view = View::Frf);
+    let mut h =
+        solved_app_at([1400.0, 2600.0], Some(include_str!("../cases/test-rig-pub5.toml")), |p| p.view = View::Frf);
     let model = h.state().shown.clone().unwrap().frf.expect("the FRF view asks for the FRF stage");
     h.get_by_label("Hydraulics (controllable bearing)").click();
     h.run_steps(2);
@@ -248,7 +257,8 @@ fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
 /// displacement map reads a value in µm within the solved field's range.
 #[test]
 fn deformation_view_shows_the_loaded_pad_and_its_modes() {
-    let text: &'static str = include_str!("../cases/compressor-bearing-flexible.toml").replace("pad_modes = 1", "pad_modes = 2").leak();
+    let text: &'static str =
+        include_str!("../cases/compressor-bearing-flexible.toml").replace("pad_modes = 1", "pad_modes = 2").leak();
     let mut h = solved_app(Some(text), |p| p.view = View::PadDeformation);
     h.run_steps(3);
     let s = h.state().shown.clone().unwrap().solution;
@@ -306,7 +316,12 @@ fn deformation_view_switches_to_the_thermal_growth_of_a_tehd_solve_at_1280x720()
     let peak = |v: &[f64]| v.iter().fold(0.0_f64, |m, x| m.max(x.abs())) * 1e6;
     let mechanical_um = peak(&pad.elastic_displacement_m);
     let thermal_um = peak(&pad.thermal_growth.as_ref().expect("TEHD pads carry their growth").film_radial_m);
-    let total: Vec<f64> = pad.elastic_displacement_m.iter().zip(&pad.thermal_growth.as_ref().unwrap().film_radial_m).map(|(a, b)| a + b).collect();
+    let total: Vec<f64> = pad
+        .elastic_displacement_m
+        .iter()
+        .zip(&pad.thermal_growth.as_ref().unwrap().film_radial_m)
+        .map(|(a, b)| a + b)
+        .collect();
     let total_um = peak(&total);
     println!("pad 3: mechanical {mechanical_um:.3} µm, thermal {thermal_um:.3} µm, total {total_um:.3} µm");
     assert!(thermal_um > 0.1 && (thermal_um - mechanical_um).abs() > 0.01 * thermal_um, "{thermal_um} {mechanical_um}");
@@ -337,7 +352,12 @@ fn editing_the_speed_resolves_and_updates_the_results() {
     let after = h.state().shown.clone().unwrap().solution;
     assert!((after.derived.speed_rpm - 6000.0).abs() < 1e-9);
     // Slower: less oil dragged into the wedge, the journal sinks.
-    assert!(after.eccentricity_ratio > before.eccentricity_ratio + 0.01, "{} → {}", before.eccentricity_ratio, after.eccentricity_ratio);
+    assert!(
+        after.eccentricity_ratio > before.eccentricity_ratio + 0.01,
+        "{} → {}",
+        before.eccentricity_ratio,
+        after.eccentricity_ratio
+    );
     assert!(after.h_min_m < before.h_min_m);
     // The results panel shows the new numbers, not the old.
     h.get_by_label(&format!("{:.4}", after.eccentricity_ratio));
@@ -358,7 +378,8 @@ fn an_invalid_value_is_flagged_in_place_and_the_last_result_stays() {
     h.run_steps(3);
     // The message sits in the editor, naming the key and the allowed range.
     // In place under the field, at the top of the editor and in the status bar.
-    let messages: Vec<String> = h.get_all_by_label_contains("`bearing.length_mm` = -5 is out of range").map(|n| text_of(&n)).collect();
+    let messages: Vec<String> =
+        h.get_all_by_label_contains("`bearing.length_mm` = -5 is out of range").map(|n| text_of(&n)).collect();
     assert_eq!(messages.len(), 3, "{messages:?}");
     let msg = &messages[0];
     assert!(msg.contains("(0, 10000]"), "{msg}");
@@ -369,7 +390,11 @@ fn an_invalid_value_is_flagged_in_place_and_the_last_result_stays() {
     assert!(std::sync::Arc::ptr_eq(&shown, &before));
     assert!(h.state().result_is_stale());
     h.get_by_label(&format!("{:.4}", before.eccentricity_ratio));
-    assert_eq!(h.get_all_by_label_contains("Showing the last valid result").count(), 2, "bearing view and results panel");
+    assert_eq!(
+        h.get_all_by_label_contains("Showing the last valid result").count(),
+        2,
+        "bearing view and results panel"
+    );
     snapshot(&mut h, "editor_invalid_value");
 }
 
@@ -484,7 +509,8 @@ fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_o
     wait_for_rotor(&mut h);
     h.get_by_label_contains("representative shaft, not the thesis' rotor");
     let full = h.state().rotor.result().unwrap().clone();
-    let onset_full = full.onset.as_ref().expect("an onset inside the view's sweep").speed_rad_s * 30.0 / std::f64::consts::PI;
+    let onset_full =
+        full.onset.as_ref().expect("an onset inside the view's sweep").speed_rad_s * 30.0 / std::f64::consts::PI;
     h.get_by_label_contains(&format!("Onset of instability: {onset_full:.0} rpm"));
     assert!(!full.critical_speeds.is_empty(), "the 1× line crosses a forward mode");
     snapshot(&mut h, "rotor_campbell");
@@ -502,8 +528,18 @@ fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_o
     snapshot(&mut h, "rotor_critical_map");
     h.get_by_label("reduced 2×2").click();
     wait_for_rotor(&mut h);
-    let reduced = h.state().rotor.result().unwrap().onset.as_ref().map_or(f64::INFINITY, |o| o.speed_rad_s * 30.0 / std::f64::consts::PI);
-    assert!(reduced > onset_full, "reduced coefficients overestimate the stable range: full {onset_full:.0}, reduced {reduced:.0} rpm");
+    let reduced = h
+        .state()
+        .rotor
+        .result()
+        .unwrap()
+        .onset
+        .as_ref()
+        .map_or(f64::INFINITY, |o| o.speed_rad_s * 30.0 / std::f64::consts::PI);
+    assert!(
+        reduced > onset_full,
+        "reduced coefficients overestimate the stable range: full {onset_full:.0}, reduced {reduced:.0} rpm"
+    );
 }
 
 /// A rotor file: a shaft 1000 mm long, Ø 50 mm, in 10 elements; a 20 kg disk at mid-span (node 5); bearings
@@ -579,7 +615,9 @@ fn a_load_sweep_plots_three_outputs_with_their_units() {
     let eps = table.series("eccentricity_ratio", false);
     assert_eq!(eps.iter().map(|p| p[0]).collect::<Vec<_>>(), [1000.0, 2000.0, 3000.0, 4000.0]);
     assert!(eps.windows(2).all(|w| w[1][1] > w[0][1]), "{eps:?}");
-    for label in ["eccentricity ratio [–]", "h min [µm]", "p max [MPa]", "4 points of operating.load_n (preview fidelity)"] {
+    for label in
+        ["eccentricity ratio [–]", "h min [µm]", "p max [MPa]", "4 points of operating.load_n (preview fidelity)"]
+    {
         h.get_by_label(label);
     }
     assert!(table.csv().lines().next().unwrap().contains("flow_sides_out_l_per_min"));
@@ -725,7 +763,8 @@ fn exports_without_a_portal_ask_for_a_name_and_never_overwrite_silently() {
     let dir = std::env::temp_dir().join(format!("tiltpad-save-as-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let written = |dir: &std::path::Path| -> Vec<String> {
-        let mut names: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        let mut names: Vec<String> =
+            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         names.sort();
         names
     };
@@ -871,7 +910,13 @@ fn a_disk_selected_on_the_rotor_sketch_made_heavier_lowers_the_first_natural_fre
     assert_eq!(h.state().rotor.edit().unwrap().file().rotor.disk[3].mass_kg, 92.0);
     let after = first_hz(&h);
     assert_eq!(after.0, before.0, "the same speed");
-    assert!(after.1 < before.1, "heavier disk: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm", before.1, after.1, after.0);
+    assert!(
+        after.1 < before.1,
+        "heavier disk: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm",
+        before.1,
+        after.1,
+        after.0
+    );
     h.get_by_label_contains(&format!("{:.3} Hz", after.1));
     assert!(h.query_by_label_contains("Invalid rotor").is_none());
     snapshot(&mut h, "rotor_edit_disk_selected_1280x720");
@@ -902,7 +947,10 @@ fn click_sketch(h: &mut Harness<'_, WorkbenchApp>, z_mm: f32, length_mm: f32, be
 fn cli_first_free_free(text: &str) -> f64 {
     let path = std::env::temp_dir().join(format!("tiltpad-ui-edited-rotor-{}.toml", std::process::id()));
     std::fs::write(&path, text).unwrap();
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_tiltpad")).args(["rotor", path.to_str().unwrap(), "--speeds", "1000:2000:2", "--json", "-"]).output().unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_tiltpad"))
+        .args(["rotor", path.to_str().unwrap(), "--speeds", "1000:2000:2", "--json", "-"])
+        .output()
+        .unwrap();
     std::fs::remove_file(&path).ok();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
@@ -935,7 +983,10 @@ fn shaft_sections_added_and_removed_on_the_sketch_change_mass_and_free_free_freq
     wait_for_rotor(&mut h);
     assert_eq!(h.state().rotor.edit().unwrap().file().rotor.section.len(), 3);
     let (split_mass, split_ff) = view(&h);
-    assert!((split_mass - longer_mass).abs() < 1e-14 * mass && (split_ff - longer_ff).abs() < 1e-9 * longer_ff, "{longer_ff} → {split_ff} rad/s");
+    assert!(
+        (split_mass - longer_mass).abs() < 1e-14 * mass && (split_ff - longer_ff).abs() < 1e-9 * longer_ff,
+        "{longer_ff} → {split_ff} rad/s"
+    );
     // Remove its first half (nodes 0–5): the bearing on the removed free end moves to the new end, and the
     // strip says so; the shaft loses 500 mm of Ø 50 mm.
     h.get_by_label("Remove section").click();
@@ -943,7 +994,10 @@ fn shaft_sections_added_and_removed_on_the_sketch_change_mass_and_free_free_freq
     h.get_by_label_contains("rotor.bearing[0] (on removed node 0) now at node 0");
     let (shorter_mass, shorter_ff) = view(&h);
     assert!((longer_mass - shorter_mass - 5.0 * section).abs() < 1e-12 * mass, "{longer_mass} → {shorter_mass} kg");
-    assert_eq!(h.state().rotor.edit().unwrap().file().rotor.bearing.iter().map(|b| b.node).collect::<Vec<_>>(), vec![0, 5]);
+    assert_eq!(
+        h.state().rotor.edit().unwrap().file().rotor.bearing.iter().map(|b| b.node).collect::<Vec<_>>(),
+        vec![0, 5]
+    );
     let cli = cli_first_free_free(&h.state().rotor.edit().unwrap().text().unwrap());
     assert!((cli - shorter_ff).abs() < 1e-9 * cli, "view {shorter_ff} vs CLI {cli} rad/s");
     assert!(shorter_ff > longer_ff, "a shorter shaft is stiffer: {longer_ff} → {shorter_ff} rad/s");
@@ -965,7 +1019,12 @@ fn a_bearing_stiffness_given_by_numbers_edited_on_the_sketch_raises_the_first_na
     spin_button(&h, "K xx [N/m]").set_value_accesskit(2e15);
     h.run_steps(3);
     let shown = text_of(&h.get_by_label_contains("Invalid rotor"));
-    assert!(shown.contains("rotor.bearing[0].k_n_per_m[0]") && shown.contains("2000000000000000") && shown.contains("[-1e15, 1e15]"), "{shown}");
+    assert!(
+        shown.contains("rotor.bearing[0].k_n_per_m[0]")
+            && shown.contains("2000000000000000")
+            && shown.contains("[-1e15, 1e15]"),
+        "{shown}"
+    );
     assert_eq!(h.state().rotor.edit().unwrap().file().rotor.bearing[0].k_n_per_m[0][0], 2e15);
     assert!(h.state().rotor.is_idle() && first_hz(&h) == before);
     // Ten times stiffer in both directions: every mode of the shaft on these bearings stiffens (Rayleigh:
@@ -978,7 +1037,13 @@ fn a_bearing_stiffness_given_by_numbers_edited_on_the_sketch_raises_the_first_na
     assert_eq!(h.state().rotor.edit().unwrap().file().rotor.bearing[0].k_n_per_m[0], [1e8, 0.0, 0.0, 1e8]);
     let after = first_hz(&h);
     assert_eq!(after.0, before.0, "the same speed");
-    assert!(after.1 > before.1, "stiffer bearing: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm", before.1, after.1, after.0);
+    assert!(
+        after.1 > before.1,
+        "stiffer bearing: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm",
+        before.1,
+        after.1,
+        after.0
+    );
     h.get_by_label_contains(&format!("{:.3} Hz", after.1));
     assert!(h.query_by_label_contains("Invalid rotor").is_none());
     snapshot(&mut h, "rotor_edit_bearing_numbers_1280x720");

@@ -4,8 +4,8 @@
 use egui::{Key, KeyboardShortcut, Modifiers};
 
 use super::files::{encode_png, FileEvent};
-use super::save_dialog::{SaveDialog, SaveOutcome};
 use super::presets::PRESETS;
+use super::save_dialog::{SaveDialog, SaveOutcome};
 use super::{Pending, WorkbenchApp};
 
 const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
@@ -75,13 +75,19 @@ impl WorkbenchApp {
 
     pub(super) fn save_case(&mut self, ask: bool) {
         let path = if ask { None } else { self.doc.path.clone() };
-        let name = if self.doc.name.ends_with(".toml") { self.doc.name.clone() } else { format!("{}.toml", self.doc.name) };
+        let name =
+            if self.doc.name.ends_with(".toml") { self.doc.name.clone() } else { format!("{}.toml", self.doc.name) };
         self.files.save_case(self.doc.text(), self.doc.file(), &name, path.as_deref());
     }
 
     pub(super) fn take_shortcuts(&mut self, ctx: &egui::Context) {
         let (undo, redo, save, open) = ctx.input_mut(|i| {
-            (i.consume_shortcut(&UNDO), i.consume_shortcut(&REDO) || i.consume_shortcut(&REDO_Y), i.consume_shortcut(&SAVE), i.consume_shortcut(&OPEN))
+            (
+                i.consume_shortcut(&UNDO),
+                i.consume_shortcut(&REDO) || i.consume_shortcut(&REDO_Y),
+                i.consume_shortcut(&SAVE),
+                i.consume_shortcut(&OPEN),
+            )
         });
         if undo {
             self.doc.undo();
@@ -112,7 +118,8 @@ impl WorkbenchApp {
                 self.notice = Some(format!("Opened rotor {}", path.display()));
             }
             FileEvent::SavedCase { name, path, saved, text } => {
-                self.notice = Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
+                self.notice =
+                    Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
                 if *saved == *self.doc.file() {
                     self.doc.mark_saved(name, path, text);
                 }
@@ -163,7 +170,8 @@ impl WorkbenchApp {
         self.screenshot = None;
         let ppp = ctx.pixels_per_point();
         #[allow(clippy::cast_precision_loss)]
-        let whole = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(image.width() as f32, image.height() as f32) / ppp);
+        let whole =
+            egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(image.width() as f32, image.height() as f32) / ppp);
         let region = self.view_rect.map_or(whole, |r| r.intersect(whole));
         let cropped = if region.is_positive() { image.region(&region, Some(ppp)) } else { (*image).clone() };
         let rgba: Vec<u8> = cropped.pixels.iter().flat_map(|c| c.to_array()).collect();

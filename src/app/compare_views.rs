@@ -52,7 +52,10 @@ impl WorkbenchApp {
                 None
             }
             Pinned::Failed(e) => {
-                ui.colored_label(Color32::from_rgb(230, 90, 80), format!("The pinned case \"{name}\" does not solve: {e}"));
+                ui.colored_label(
+                    Color32::from_rgb(230, 90, 80),
+                    format!("The pinned case \"{name}\" does not solve: {e}"),
+                );
                 None
             }
         }

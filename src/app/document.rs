@@ -84,7 +84,8 @@ impl Document {
     pub fn error_for(&self, key: &str) -> Option<&CaseError> {
         let e = self.validation.as_ref().err()?;
         let k = e.key()?;
-        let concerns = k == key || k.strip_prefix(key).is_some_and(|rest| rest.starts_with('[') || rest.starts_with('.'));
+        let concerns =
+            k == key || k.strip_prefix(key).is_some_and(|rest| rest.starts_with('[') || rest.starts_with('.'));
         concerns.then_some(e)
     }
 
@@ -218,7 +219,8 @@ mod tests {
         assert!(d.error_for("operating.speed_rpm").is_none());
         d.edit("bearing.pads.pivot_deg", false, |f| {
             f.bearing.length_mm = 44.45;
-            f.bearing.pads.pivot_deg = Some(crate::model::file::OneOrMany::Many(vec![60.0, 132.0, 204.0, 276.0, f64::NAN]));
+            f.bearing.pads.pivot_deg =
+                Some(crate::model::file::OneOrMany::Many(vec![60.0, 132.0, 204.0, 276.0, f64::NAN]));
         });
         assert!(d.error_for("bearing.pads.pivot_deg").is_some(), "{:?}", d.validation());
     }

@@ -14,13 +14,29 @@ use std::sync::mpsc::{channel, Receiver, Sender};
 #[derive(Debug)]
 pub enum FileEvent {
     /// A case file was read: display name, path (native), text.
-    Opened { name: String, path: Option<std::path::PathBuf>, text: String },
+    Opened {
+        name: String,
+        path: Option<std::path::PathBuf>,
+        text: String,
+    },
     /// A rotor file was read (native): display name, path (its bearing cases are beside it), text.
-    OpenedRotor { name: String, path: std::path::PathBuf, text: String },
+    OpenedRotor {
+        name: String,
+        path: std::path::PathBuf,
+        text: String,
+    },
     /// The case was saved under this name (and path, on native) as `text`.
-    SavedCase { name: String, path: Option<std::path::PathBuf>, saved: Box<crate::model::CaseFile>, text: String },
+    SavedCase {
+        name: String,
+        path: Option<std::path::PathBuf>,
+        saved: Box<crate::model::CaseFile>,
+        text: String,
+    },
     /// An export was written (to `path`, when known).
-    Exported { name: String, path: Option<std::path::PathBuf> },
+    Exported {
+        name: String,
+        path: Option<std::path::PathBuf>,
+    },
     /// No native dialog: the workbench asks for a name itself ([`super::save_dialog`]).
     NameNeeded(Box<super::save_dialog::PendingSave>),
     Error(String),
@@ -77,12 +93,19 @@ impl Files {
     /// Asks for a case file to open.
     pub fn open_case(&self) {
         if !dialogs_available() {
-            let _ = self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus): drop a case file on the window instead.".into()));
+            let _ = self.tx.send(FileEvent::Error(
+                "No file dialog here (no desktop portal on the session bus): drop a case file on the window instead."
+                    .into(),
+            ));
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
         spawn(async move {
-            let picked = rfd::AsyncFileDialog::new().add_filter("Case (TOML)", &["toml"]).set_title("Open a case").pick_file().await;
+            let picked = rfd::AsyncFileDialog::new()
+                .add_filter("Case (TOML)", &["toml"])
+                .set_title("Open a case")
+                .pick_file()
+                .await;
             if let Some(handle) = picked {
                 let bytes = handle.read().await;
                 let event = match String::from_utf8(bytes) {
@@ -100,12 +123,17 @@ impl Files {
     #[cfg(not(target_arch = "wasm32"))]
     pub fn open_rotor(&self) {
         if !dialogs_available() {
-            let _ = self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus).".into()));
+            let _ =
+                self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus).".into()));
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
         spawn(async move {
-            let picked = rfd::AsyncFileDialog::new().add_filter("Rotor (TOML)", &["toml"]).set_title("Open a rotor").pick_file().await;
+            let picked = rfd::AsyncFileDialog::new()
+                .add_filter("Rotor (TOML)", &["toml"])
+                .set_title("Open a rotor")
+                .pick_file()
+                .await;
             if let Some(handle) = picked {
                 let path = handle.path().to_path_buf();
                 let event = match std::fs::read_to_string(&path) {
@@ -119,7 +147,13 @@ impl Files {
     }
 
     /// Saves the case `text` (of `file`): straight to `path` when known (native), else through a save dialog.
-    pub fn save_case(&self, text: Result<String, crate::model::CaseError>, file: &crate::model::CaseFile, name: &str, path: Option<&std::path::Path>) {
+    pub fn save_case(
+        &self,
+        text: Result<String, crate::model::CaseError>,
+        file: &crate::model::CaseFile,
+        name: &str,
+        path: Option<&std::path::Path>,
+    ) {
         let text = match text {
             Ok(t) => t,
             Err(e) => {
@@ -130,7 +164,12 @@ impl Files {
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(p) = path {
             let event = match crate::io::write_file(p, text.as_bytes()) {
-                Ok(()) => FileEvent::SavedCase { name: display_name(p), path: Some(p.to_path_buf()), saved: Box::new(file.clone()), text },
+                Ok(()) => FileEvent::SavedCase {
+                    name: display_name(p),
+                    path: Some(p.to_path_buf()),
+                    saved: Box::new(file.clone()),
+                    text,
+                },
                 Err(e) => FileEvent::Error(e.to_string()),
             };
             let _ = self.tx.send(event);
@@ -139,7 +178,12 @@ impl Files {
         let _ = path;
         let saved = Box::new(file.clone());
         let bytes = text.clone().into_bytes();
-        self.save_bytes(name, "Case (TOML)", "toml", bytes, move |name, path| FileEvent::SavedCase { name, path, saved, text });
+        self.save_bytes(name, "Case (TOML)", "toml", bytes, move |name, path| FileEvent::SavedCase {
+            name,
+            path,
+            saved,
+            text,
+        });
     }
 
     /// Exports bytes under a suggested name.
@@ -147,10 +191,22 @@ impl Files {
         self.save_bytes(name, filter, extension, bytes, |name, path| FileEvent::Exported { name, path });
     }
 
-    fn save_bytes(&self, name: &str, filter: &str, extension: &str, bytes: Vec<u8>, done: impl FnOnce(String, Option<std::path::PathBuf>) -> FileEvent + Send + 'static) {
+    fn save_bytes(
+        &self,
+        name: &str,
+        filter: &str,
+        extension: &str,
+        bytes: Vec<u8>,
+        done: impl FnOnce(String, Option<std::path::PathBuf>) -> FileEvent + Send + 'static,
+    ) {
         if !self.native_dialogs {
             // Without a dialog, the workbench asks for a name: nothing is written under a name not typed.
-            let pending = super::save_dialog::PendingSave { suggested: name.to_string(), extension: extension.to_string(), bytes, done: Box::new(done) };
+            let pending = super::save_dialog::PendingSave {
+                suggested: name.to_string(),
+                extension: extension.to_string(),
+                bytes,
+                done: Box::new(done),
+            };
             let _ = self.tx.send(FileEvent::NameNeeded(Box::new(pending)));
             return;
         }
@@ -158,7 +214,9 @@ impl Files {
         let dialog = rfd::AsyncFileDialog::new().add_filter(filter, &[extension]).set_file_name(name);
         spawn(async move {
             if let Some(handle) = dialog.save_file().await {
-                let event = write_handle(&handle, &bytes).await.map_or_else(FileEvent::Error, |()| done(handle.file_name(), handle_path(&handle)));
+                let event = write_handle(&handle, &bytes)
+                    .await
+                    .map_or_else(FileEvent::Error, |()| done(handle.file_name(), handle_path(&handle)));
                 let _ = tx.send(event);
                 repaint.request_repaint();
             }

@@ -5,7 +5,10 @@ use egui::{Color32, RichText, Ui};
 use super::editor::editor_ui;
 use super::presets::PRESETS;
 use super::state::{CoefficientAxis, PadChoice, View};
-use super::views::{bearing_view, coefficients_view, compare_panel, deformation_view, field_view, frf_view, limits_view, results_panel, sweep_view};
+use super::views::{
+    bearing_view, coefficients_view, compare_panel, deformation_view, field_view, frf_view, limits_view, results_panel,
+    sweep_view,
+};
 use super::{Pending, Status, WorkbenchApp};
 use crate::scene::field::FieldKind;
 use crate::scene::{export, outline, plots, summary};
@@ -41,7 +44,11 @@ impl WorkbenchApp {
         self.dragging = edit.is_some_and(|e| e.dragging);
         let t1 = web_time::Instant::now();
         let mut results_open = self.persisted.results_open;
-        egui::Panel::right("results").resizable(true).default_size(330.0_f32.min(0.25 * width)).show_collapsible(ui, &mut results_open, |ui| self.results_ui(ui));
+        egui::Panel::right("results").resizable(true).default_size(330.0_f32.min(0.25 * width)).show_collapsible(
+            ui,
+            &mut results_open,
+            |ui| self.results_ui(ui),
+        );
         self.persisted.results_open = results_open;
         let t2 = web_time::Instant::now();
         egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
@@ -179,8 +186,15 @@ impl WorkbenchApp {
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 if !self.hide_timings {
                     let peak = self.recent_frames_s.iter().copied().fold(0.0, f64::max);
-                    ui.label(RichText::new(format!("UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)", self.frame_time_s * 1e3, peak * 1e3)).weak())
-                        .on_hover_text(FRAME_TIME_MEANING);
+                    ui.label(
+                        RichText::new(format!(
+                            "UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)",
+                            self.frame_time_s * 1e3,
+                            peak * 1e3
+                        ))
+                        .weak(),
+                    )
+                    .on_hover_text(FRAME_TIME_MEANING);
                 }
             });
         });
@@ -193,7 +207,10 @@ impl WorkbenchApp {
             return;
         };
         if self.result_is_stale() {
-            ui.label(RichText::new("Showing the last valid result: it does not match the edited case.").color(Color32::from_rgb(230, 150, 60)));
+            ui.label(
+                RichText::new("Showing the last valid result: it does not match the edited case.")
+                    .color(Color32::from_rgb(230, 150, 60)),
+            );
         }
         let fidelity = format!("{:?}", shown.solution.inputs.mesh.fidelity).to_lowercase();
         ui.label(RichText::new(format!("{} — {fidelity} mesh", shown.solution.title)).small());
@@ -210,7 +227,9 @@ impl WorkbenchApp {
             })
             .inner;
         match action {
-            Some(compare_panel::CompareAction::ExportCsv(csv)) => self.files.export(&self.export_name("pins", "csv"), "CSV", "csv", csv.into_bytes()),
+            Some(compare_panel::CompareAction::ExportCsv(csv)) => {
+                self.files.export(&self.export_name("pins", "csv"), "CSV", "csv", csv.into_bytes())
+            }
             Some(compare_panel::CompareAction::Pinned) => self.pinned_now(),
             None => {}
         }
@@ -227,17 +246,31 @@ impl WorkbenchApp {
         let stale = self.result_is_stale();
         match self.persisted.view {
             View::Bearing => {
-                let case = self.shown.as_ref().map(|s| s.solution.inputs.clone()).or_else(|| self.doc.validation().as_ref().ok().cloned());
+                let case = self
+                    .shown
+                    .as_ref()
+                    .map(|s| s.solution.inputs.clone())
+                    .or_else(|| self.doc.validation().as_ref().ok().cloned());
                 if let Some(case) = case {
                     let pinned = self.compare_with_ui(ui, crate::scene::request::SOLUTION);
                     let solution = self.shown.as_ref().map(|s| s.solution.as_ref());
                     let o = outline::bearing_outline_with(&case, solution, self.persisted.outline_lock);
                     bearing_view::lock_ui(ui, &mut self.persisted.outline_lock, o.scales());
                     let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
-                    let checks = solution.map(|s| crate::bearing::limits::check(&s.inputs.limits, s)).unwrap_or_default();
+                    let checks =
+                        solution.map(|s| crate::bearing::limits::check(&s.inputs.limits, s)).unwrap_or_default();
                     // The pinned outline at the live picture's scales, so the two overlay.
-                    let overlay = pinned.map(|(name, p)| (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales()))));
-                    bearing_view::bearing_view_ui(ui, &o, &pads, &checks, stale, overlay.as_ref().map(|(n, o)| (n.as_str(), o)));
+                    let overlay = pinned.map(|(name, p)| {
+                        (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales())))
+                    });
+                    bearing_view::bearing_view_ui(
+                        ui,
+                        &o,
+                        &pads,
+                        &checks,
+                        stale,
+                        overlay.as_ref().map(|(n, o)| (n.as_str(), o)),
+                    );
                 }
             }
             View::Fields => self.fields_ui(ui),
@@ -335,7 +368,8 @@ impl WorkbenchApp {
             ui.label("Waiting for the first result…");
             return;
         };
-        if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case, model.as_deref()) {
+        if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case, model.as_deref())
+        {
             self.files.export(&self.export_name("frf", "csv"), "CSV", "csv", csv.into_bytes());
         }
     }
@@ -343,7 +377,9 @@ impl WorkbenchApp {
     fn sweep_ui(&mut self, ui: &mut Ui) {
         let text = self.doc.validation().is_ok().then(|| self.doc.text().ok()).flatten();
         let current = self.shown.as_ref().map(|s| s.solution.clone());
-        if let Some(sweep_view::SweepAction::ExportCsv(csv)) = sweep_view::sweep_view_ui(ui, &mut self.sweep, &mut self.persisted.sweep, text, current.as_deref()) {
+        if let Some(sweep_view::SweepAction::ExportCsv(csv)) =
+            sweep_view::sweep_view_ui(ui, &mut self.sweep, &mut self.persisted.sweep, text, current.as_deref())
+        {
             self.files.export(&self.export_name("sweep", "csv"), "CSV", "csv", csv.into_bytes());
         }
     }
@@ -351,7 +387,11 @@ impl WorkbenchApp {
     fn coefficients_ui(&mut self, ui: &mut Ui) {
         ui.horizontal(|ui| {
             ui.label("Against");
-            ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::FrequencyRatio, "excitation frequency ratio ω/Ω");
+            ui.selectable_value(
+                &mut self.persisted.axis,
+                CoefficientAxis::FrequencyRatio,
+                "excitation frequency ratio ω/Ω",
+            );
             ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::Speed, "speed (background sweep)");
         });
         let Some(shown) = self.shown.clone() else {
@@ -362,11 +402,18 @@ impl WorkbenchApp {
         let plot_of = |shown: &super::Shown| {
             let sol = &shown.solution;
             match axis {
-                CoefficientAxis::FrequencyRatio => shown.frequency_sweep.as_ref().map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
-                CoefficientAxis::Speed => shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced)))),
+                CoefficientAxis::FrequencyRatio => shown
+                    .frequency_sweep
+                    .as_ref()
+                    .map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
+                CoefficientAxis::Speed => {
+                    shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced))))
+                }
             }
         };
-        let pinned = self.compare_with_ui(ui, View::Coefficients.needs(axis)).and_then(|(name, p)| plot_of(&p).map(|plot| (name, plot)));
+        let pinned = self
+            .compare_with_ui(ui, View::Coefficients.needs(axis))
+            .and_then(|(name, p)| plot_of(&p).map(|plot| (name, plot)));
         let sol = &shown.solution;
         match plot_of(&shown) {
             Some(p) => coefficients_view::coefficient_plots_ui(ui, &p, pinned.as_ref().map(|(n, p)| (n.as_str(), p))),

@@ -22,7 +22,10 @@ pub const FRAMES_PER_REPORT: usize = 60;
 pub enum Job {
     Idle,
     /// Solving the edited case: THD or isothermal, the stage under way.
-    Solve { thd: bool, stage: Option<StageId> },
+    Solve {
+        thd: bool,
+        stage: Option<StageId>,
+    },
     /// The sweep view's points.
     Sweep,
     /// Re-solving a pinned case.

@@ -130,13 +130,15 @@ impl WorkbenchApp {
         let restored = persisted.case_toml.as_deref().and_then(|t| parse_case_file(t, &[]).ok().map(|f| (f, t)));
         let doc = match restored {
             Some((file, source)) => {
-                let mut doc = Document::new(file, persisted.case_name.clone(), persisted.case_saved).with_source(source);
+                let mut doc =
+                    Document::new(file, persisted.case_name.clone(), persisted.case_saved).with_source(source);
                 doc.path.clone_from(&persisted.case_path);
                 doc
             }
             // The shipped default is compiled in and checked by a unit test: not user input.
             #[allow(clippy::expect_used)]
-            None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true).with_source(text),
+            None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true)
+                .with_source(text),
         };
         Self {
             persisted,
@@ -201,8 +203,15 @@ impl WorkbenchApp {
         if self.sweep.job.as_ref().is_some_and(|j| !j.done()) {
             Job::Sweep
         } else if self.worker.busy() {
-            let thd = self.submitted.as_ref().is_some_and(|r| r.case.thermal.model == crate::model::ThermalModelKind::Thd);
-            Job::Solve { thd, stage: match self.status { Status::Solving { stage, .. } => stage, _ => None } }
+            let thd =
+                self.submitted.as_ref().is_some_and(|r| r.case.thermal.model == crate::model::ThermalModelKind::Thd);
+            Job::Solve {
+                thd,
+                stage: match self.status {
+                    Status::Solving { stage, .. } => stage,
+                    _ => None,
+                },
+            }
         } else if self.pinned.busy() {
             Job::Pin
         } else if !self.rotor.is_idle() {
@@ -233,7 +242,9 @@ impl WorkbenchApp {
         }
         for event in self.worker.poll(WEB_SOLVE_BUDGET_S) {
             match event {
-                Event::Progress { stage, fraction, .. } => self.status = Status::Solving { stage: Some(stage), fraction },
+                Event::Progress { stage, fraction, .. } => {
+                    self.status = Status::Solving { stage: Some(stage), fraction }
+                }
                 Event::Solved { outcome, complete, .. } => {
                     self.accept(outcome);
                     if complete {
@@ -258,7 +269,12 @@ impl WorkbenchApp {
             .as_ref()
             .filter(|s| outcome.speed_sweep().is_none() && s.solution.inputs == solution.inputs)
             .and_then(|s| s.speed_sweep.clone());
-        self.shown = Some(Shown { solution, frequency_sweep: outcome.frequency_sweep(), speed_sweep: outcome.speed_sweep().or(keep_speed), frf: outcome.get(StageId::Frf) });
+        self.shown = Some(Shown {
+            solution,
+            frequency_sweep: outcome.frequency_sweep(),
+            speed_sweep: outcome.speed_sweep().or(keep_speed),
+            frf: outcome.get(StageId::Frf),
+        });
     }
 
     /// The case of the shown result differs from the edited one (invalid, solving or failed).

@@ -75,7 +75,8 @@ impl PinnedResults {
         if let Some(i) = self.failed.iter().position(|(c, _)| is_key_of(c, pin)) {
             return Pinned::Failed(&self.failed[i].1);
         }
-        if self.solving.as_ref().is_none_or(|(c, r)| !is_key_of(c, pin) || !needs.iter().all(|s| r.wanted.contains(s))) {
+        if self.solving.as_ref().is_none_or(|(c, r)| !is_key_of(c, pin) || !needs.iter().all(|s| r.wanted.contains(s)))
+        {
             match crate::model::load_case(&pin.case_toml, &[]) {
                 Ok((_, case)) => {
                     let request = crate::scene::request::request(case, [needs]);
@@ -102,7 +103,12 @@ impl PinnedResults {
                 Event::Progress { .. } => {}
                 Event::Solved { outcome, complete, .. } => {
                     if let Some(solution) = outcome.solution() {
-                        let shown = Shown { solution, frequency_sweep: outcome.frequency_sweep(), speed_sweep: outcome.speed_sweep(), frf: outcome.get(StageId::Frf) };
+                        let shown = Shown {
+                            solution,
+                            frequency_sweep: outcome.frequency_sweep(),
+                            speed_sweep: outcome.speed_sweep(),
+                            frf: outcome.get(StageId::Frf),
+                        };
                         let k = k.clone();
                         self.cache.retain(|(c, _)| *c != k);
                         self.cache.push((k, shown));

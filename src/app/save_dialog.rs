@@ -24,7 +24,10 @@ pub struct PendingSave {
 
 impl std::fmt::Debug for PendingSave {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("PendingSave").field("suggested", &self.suggested).field("bytes", &self.bytes.len()).finish_non_exhaustive()
+        f.debug_struct("PendingSave")
+            .field("suggested", &self.suggested)
+            .field("bytes", &self.bytes.len())
+            .finish_non_exhaustive()
     }
 }
 
@@ -81,10 +84,19 @@ impl SaveDialog {
             let mut edited = false;
             egui::Grid::new("save-as-grid").num_columns(2).show(ui, |ui| {
                 let label = ui.label("Directory");
-                edited |= ui.add(egui::TextEdit::singleline(&mut self.directory).desired_width(360.0)).labelled_by(label.id).changed();
+                edited |= ui
+                    .add(egui::TextEdit::singleline(&mut self.directory).desired_width(360.0))
+                    .labelled_by(label.id)
+                    .changed();
                 ui.end_row();
                 let label = ui.label("File name");
-                let field = ui.add(egui::TextEdit::singleline(&mut self.name).hint_text(self.pending.suggested.as_str()).desired_width(360.0)).labelled_by(label.id);
+                let field = ui
+                    .add(
+                        egui::TextEdit::singleline(&mut self.name)
+                            .hint_text(self.pending.suggested.as_str())
+                            .desired_width(360.0),
+                    )
+                    .labelled_by(label.id);
                 edited |= field.changed();
                 if !self.focused {
                     field.request_focus();
@@ -99,7 +111,9 @@ impl SaveDialog {
             let target = self.target();
             match &target {
                 Some(t) => ui.label(format!("Writes {}", t.display())),
-                None => ui.label(RichText::new(format!("Type a name (for example {}).", self.pending.suggested)).weak()),
+                None => {
+                    ui.label(RichText::new(format!("Type a name (for example {}).", self.pending.suggested)).weak())
+                }
             };
             if let Some(e) = &self.error {
                 ui.label(RichText::new(e).color(Color32::from_rgb(230, 90, 80)));
@@ -107,7 +121,10 @@ impl SaveDialog {
             let enter = ui.input(|i| i.key_pressed(egui::Key::Enter));
             ui.separator();
             if let Some(existing) = self.confirm.clone() {
-                ui.label(RichText::new(format!("{} exists. Replace it?", display_name(&existing))).color(Color32::from_rgb(230, 150, 60)));
+                ui.label(
+                    RichText::new(format!("{} exists. Replace it?", display_name(&existing)))
+                        .color(Color32::from_rgb(230, 150, 60)),
+                );
                 ui.horizontal(|ui| {
                     if ui.button("Replace").clicked() {
                         outcome = self.write(&existing);
@@ -118,7 +135,8 @@ impl SaveDialog {
                 });
             } else {
                 ui.horizontal(|ui| {
-                    let save = ui.add_enabled(target.is_some(), egui::Button::new("Save")).clicked() || (enter && target.is_some());
+                    let save = ui.add_enabled(target.is_some(), egui::Button::new("Save")).clicked()
+                        || (enter && target.is_some());
                     if let (true, Some(t)) = (save, &target) {
                         if t.exists() {
                             self.confirm = Some(t.clone());

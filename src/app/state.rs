@@ -22,7 +22,8 @@ pub enum View {
 }
 
 impl View {
-    pub const ALL: [Self; 7] = [Self::Bearing, Self::Fields, Self::Coefficients, Self::PadDeformation, Self::Frf, Self::Rotor, Self::Sweep];
+    pub const ALL: [Self; 7] =
+        [Self::Bearing, Self::Fields, Self::Coefficients, Self::PadDeformation, Self::Frf, Self::Rotor, Self::Sweep];
 
     #[must_use]
     pub fn label(self) -> &'static str {

@@ -28,7 +28,11 @@ pub struct SweepJob {
 }
 
 fn base_overrides(spec: &SweepSpec) -> Vec<String> {
-    if spec.preview { vec!["mesh.fidelity=\"preview\"".into()] } else { Vec::new() }
+    if spec.preview {
+        vec!["mesh.fidelity=\"preview\"".into()]
+    } else {
+        Vec::new()
+    }
 }
 
 impl SweepJob {
@@ -66,7 +70,8 @@ impl SweepJob {
         }
         #[cfg(target_arch = "wasm32")]
         {
-            let order = super::web_solver::SweepOrder { text, overrides: base_overrides(spec), key: spec.key.clone(), values };
+            let order =
+                super::web_solver::SweepOrder { text, overrides: base_overrides(spec), key: spec.key.clone(), values };
             let points = super::web_solver::SweepLink::start(order, repaint);
             Ok(Self { spec: spec.clone(), table, total, points })
         }

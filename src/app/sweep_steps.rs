@@ -58,7 +58,9 @@ impl SteppedPoints {
                 Err(e) => Some(Err(PointError::from(e))),
                 Ok(case) => match self.stages.step(&Request::solution(case), &cancel) {
                     Ok(Step::Pending { .. }) => None,
-                    Ok(Step::Done(o)) => Some(o.solution().ok_or_else(|| PointError::from(SolveError::Invalid("the stages returned no solution".into())))),
+                    Ok(Step::Done(o)) => Some(o.solution().ok_or_else(|| {
+                        PointError::from(SolveError::Invalid("the stages returned no solution".into()))
+                    })),
                     Err(e) => Some(Err(PointError::from(e))),
                 },
             };
@@ -87,7 +89,11 @@ mod tests {
     use crate::study::COLUMNS;
 
     fn runner() -> Runner {
-        Runner::new(include_str!("../../cases/compressor-bearing.toml"), vec!["mesh.fidelity=\"preview\"".into(), "thermal.model=\"isothermal\"".into()], true)
+        Runner::new(
+            include_str!("../../cases/compressor-bearing.toml"),
+            vec!["mesh.fidelity=\"preview\"".into(), "thermal.model=\"isothermal\"".into()],
+            true,
+        )
     }
 
     /// Points stepped with no budget (every solve pauses wherever it may) give the native runner's rows;

@@ -10,7 +10,9 @@ pub fn start() {
             log::error!("no document");
             return;
         };
-        let Some(canvas) = document.get_element_by_id("tiltpad").and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok()) else {
+        let Some(canvas) =
+            document.get_element_by_id("tiltpad").and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
+        else {
             log::error!("no <canvas id=\"tiltpad\"> on the page");
             return;
         };
@@ -29,7 +31,9 @@ pub fn start() {
                     // `?probe&sweep`: the sweep view opens and runs its sweep at once (measures frames while sweeping).
                     if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "sweep") {
                         app.persisted.view = super::state::View::Sweep;
-                        app.sweep.job = app.doc.text().ok().and_then(|t| super::sweep_job::SweepJob::start(t, &app.persisted.sweep, &cc.egui_ctx).ok());
+                        app.sweep.job = app.doc.text().ok().and_then(|t| {
+                            super::sweep_job::SweepJob::start(t, &app.persisted.sweep, &cc.egui_ctx).ok()
+                        });
                     }
                     // `?probe&rotor`: the rotor view opens (its analysis starts at once).
                     if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "rotor") {

@@ -69,7 +69,10 @@ pub(super) enum Report {
     /// Sweep points finished, as `(value, row)`.
     Rows(Vec<(f64, Row)>),
     /// A rotor analysis's progress, or its result.
-    RotorProgress { done: usize, of: usize },
+    RotorProgress {
+        done: usize,
+        of: usize,
+    },
     RotorDone(Result<Box<AnalysisData>, String>),
 }
 
@@ -77,7 +80,9 @@ impl Report {
     fn of_rotor(e: &RotorEvent) -> Self {
         match e {
             RotorEvent::Progress { done, of } => Self::RotorProgress { done: *done, of: *of },
-            RotorEvent::Done(r) => Self::RotorDone(r.as_ref().map(|a| Box::new(AnalysisData::from(a.as_ref()))).map_err(Clone::clone)),
+            RotorEvent::Done(r) => {
+                Self::RotorDone(r.as_ref().map(|a| Box::new(AnalysisData::from(a.as_ref()))).map_err(Clone::clone))
+            }
         }
     }
 
@@ -166,7 +171,9 @@ impl Remote {
                 let bytes = js_sys::Uint8Array::new(&e.data()).to_vec();
                 match from_bytes::<Report>(&bytes) {
                     Ok(report) => inbox.borrow_mut().push(report),
-                    Err(err) => *failed.borrow_mut() = Some(format!("a report from the solver worker does not decode: {err}")),
+                    Err(err) => {
+                        *failed.borrow_mut() = Some(format!("a report from the solver worker does not decode: {err}"))
+                    }
                 }
                 repaint.request_repaint();
             })
@@ -174,7 +181,9 @@ impl Remote {
         let on_error = {
             let (failed, repaint) = (failed.clone(), repaint.clone());
             Closure::<dyn FnMut(web_sys::Event)>::new(move |e: web_sys::Event| {
-                let what = e.dyn_ref::<web_sys::ErrorEvent>().map_or_else(|| "failed to load".to_string(), web_sys::ErrorEvent::message);
+                let what = e
+                    .dyn_ref::<web_sys::ErrorEvent>()
+                    .map_or_else(|| "failed to load".to_string(), web_sys::ErrorEvent::message);
                 *failed.borrow_mut() = Some(format!("the solver worker stopped: {what}"));
                 repaint.request_repaint();
             })
@@ -258,7 +267,9 @@ impl Link {
     pub fn poll(&mut self, budget_s: f64, latest: &Arc<AtomicU64>) -> Vec<Event> {
         let mut events = Vec::new();
         match take_reports(&mut self.remote) {
-            Ok(reports) => events.extend(reports.into_iter().filter_map(|r| if let Report::Event(e) = r { Some(e) } else { None })),
+            Ok(reports) => {
+                events.extend(reports.into_iter().filter_map(|r| if let Report::Event(e) = r { Some(e) } else { None }))
+            }
             Err(WorkerFailed) => {
                 if let Some(running) = self.current.take() {
                     self.local.start(running);
@@ -306,7 +317,11 @@ impl SweepLink {
     pub fn poll(&mut self, budget_s: f64) -> Vec<(f64, Row)> {
         let mut rows = Vec::new();
         match take_reports(&mut self.remote) {
-            Ok(reports) => rows.extend(reports.into_iter().flat_map(|r| if let Report::Rows(rows) = r { rows } else { Vec::new() })),
+            Ok(reports) => {
+                rows.extend(
+                    reports.into_iter().flat_map(|r| if let Report::Rows(rows) = r { rows } else { Vec::new() }),
+                )
+            }
             Err(WorkerFailed) => self.local = Some(self.order.stepped(self.received)),
         }
         if let Some(local) = self.local.as_mut() {
@@ -426,7 +441,9 @@ pub fn receive(bytes: &[u8]) {
                     Ok(a) => w.rotor = Some(a),
                     Err(e) => {
                         w.rotor = None;
-                        post(&Report::RotorDone(Err(e.to_string())), || Report::RotorDone(Err("the rotor analysis cannot start".into())));
+                        post(&Report::RotorDone(Err(e.to_string())), || {
+                            Report::RotorDone(Err("the rotor analysis cannot start".into()))
+                        });
                     }
                 }
             }
@@ -467,7 +484,9 @@ fn tick() {
     let last_rotor = rotor.len().checked_sub(1);
     for (i, e) in rotor.iter().enumerate() {
         if matches!(e, RotorEvent::Done(_)) || Some(i) == last_rotor {
-            post(&Report::of_rotor(e), || Report::RotorDone(Err("the solver worker cannot send the rotor result".into())));
+            post(&Report::of_rotor(e), || {
+                Report::RotorDone(Err("the solver worker cannot send the rotor result".into()))
+            });
         }
     }
     let last_progress = events.iter().rposition(|e| matches!(e, Event::Progress { .. }));
@@ -477,7 +496,9 @@ fn tick() {
         }
         let job = event_job(&event);
         // An event that cannot be encoded reaches the page as its job's failure (never a silent hang).
-        post(&Report::Event(event), || Report::Event(Event::Failed { job, error: "the solver worker cannot send its result".into() }));
+        post(&Report::Event(event), || {
+            Report::Event(Event::Failed { job, error: "the solver worker cannot send its result".into() })
+        });
     }
     if !rows.is_empty() {
         post(&Report::Rows(rows), || Report::Rows(Vec::new()));
@@ -494,7 +515,9 @@ fn post(report: &Report, instead: impl FnOnce() -> Report) {
         log::error!("solver worker: cannot encode a report: {e}");
         to_bytes(&instead())
     });
-    let posted = bytes.map_err(|e| JsValue::from_str(&e.to_string())).and_then(|bytes| scope.post_message(&js_sys::Uint8Array::from(bytes.as_slice())));
+    let posted = bytes
+        .map_err(|e| JsValue::from_str(&e.to_string()))
+        .and_then(|bytes| scope.post_message(&js_sys::Uint8Array::from(bytes.as_slice())));
     if let Err(e) = posted {
         log::error!("solver worker: cannot send a report: {e:?}");
     }

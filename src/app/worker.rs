@@ -24,10 +24,21 @@ use crate::bearing::{Cancel, SolveError};
 /// What the worker reports.
 #[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub enum Event {
-    Progress { job: u64, stage: StageId, fraction: f64 },
+    Progress {
+        job: u64,
+        stage: StageId,
+        fraction: f64,
+    },
     /// A phase finished: the outcome so far (the speed sweep only after the second phase).
-    Solved { job: u64, outcome: Outcome, complete: bool },
-    Failed { job: u64, error: String },
+    Solved {
+        job: u64,
+        outcome: Outcome,
+        complete: bool,
+    },
+    Failed {
+        job: u64,
+        error: String,
+    },
 }
 
 /// Cancels a job once a newer one has been submitted.
@@ -130,7 +141,9 @@ impl Worker {
         let latest = self.latest.load(Ordering::Relaxed);
         for e in &events {
             match e {
-                Event::Solved { job, complete: true, .. } | Event::Failed { job, .. } if *job == latest => self.busy_job = None,
+                Event::Solved { job, complete: true, .. } | Event::Failed { job, .. } if *job == latest => {
+                    self.busy_job = None
+                }
                 _ => {}
             }
         }
@@ -219,7 +232,12 @@ mod tests {
         let case = load_case(include_str!("../../cases/compressor-bearing.toml"), &set).unwrap().1;
         let mut wanted = vec![StageId::Reduction, StageId::FrequencySweep];
         wanted.extend(sweep.then_some(StageId::SpeedSweep));
-        Request { case, wanted, frequency_ratios: vec![0.5, 1.0], speeds_rpm: if sweep { vec![8000.0, 9000.0] } else { Vec::new() } }
+        Request {
+            case,
+            wanted,
+            frequency_ratios: vec![0.5, 1.0],
+            speeds_rpm: if sweep { vec![8000.0, 9000.0] } else { Vec::new() },
+        }
     }
 
     /// Polls until the latest job completes; returns every event seen.
@@ -243,7 +261,9 @@ mod tests {
         let solved: Vec<(bool, bool)> = events
             .iter()
             .filter_map(|e| match e {
-                Event::Solved { job: j, outcome, complete } if *j == job => Some((*complete, outcome.speed_sweep().is_some())),
+                Event::Solved { job: j, outcome, complete } if *j == job => {
+                    Some((*complete, outcome.speed_sweep().is_some()))
+                }
                 _ => None,
             })
             .collect();

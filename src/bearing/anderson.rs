@@ -36,7 +36,16 @@ pub struct Anderson {
 
 impl Anderson {
     pub fn new(depth: usize, beta: f64) -> Self {
-        Self { depth, beta, beta_min: beta, beta_max: beta, last_residual: None, falls: 0, x: Vec::new(), f: Vec::new() }
+        Self {
+            depth,
+            beta,
+            beta_min: beta,
+            beta_max: beta,
+            last_residual: None,
+            falls: 0,
+            x: Vec::new(),
+            f: Vec::new(),
+        }
     }
     /// With the safeguard of [`Anderson::step_safeguarded`]: β is halved down to `beta_min`.
     pub fn safeguarded(depth: usize, beta: f64, beta_min: f64) -> Self {
@@ -115,7 +124,6 @@ pub fn unflatten(flat: &[f64], like: &[Vec<f64>]) -> Vec<Vec<f64>> {
     out
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -166,7 +174,10 @@ mod tests {
         }
         let at = |falls: usize| betas[falls - 1];
         assert!((at(RECOVER_AFTER - 1) - 0.1).abs() < 1e-15 && (at(RECOVER_AFTER) - 0.2).abs() < 1e-15, "{betas:?}");
-        assert!((at(3 * RECOVER_AFTER) - 0.8).abs() < 1e-15 && (at(4 * RECOVER_AFTER) - 0.8).abs() < 1e-15, "{betas:?}");
+        assert!(
+            (at(3 * RECOVER_AFTER) - 0.8).abs() < 1e-15 && (at(4 * RECOVER_AFTER) - 0.8).abs() < 1e-15,
+            "{betas:?}"
+        );
     }
 
     #[test]

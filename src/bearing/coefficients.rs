@@ -77,8 +77,14 @@ fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
 /// coordinates of a floating pad, whose film carries nothing — are decoupled and dropped.
 pub(crate) fn active_pad_dofs(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>) -> Vec<usize> {
     let n = k.nrows();
-    let scale = [k, c, m].iter().map(|a| a.iter().fold(0.0_f64, |s, v| s.max(v.abs()))).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE);
-    let coupled = |i: usize, j: usize| [k, c, m].iter().any(|a| a[(i, j)].abs() > 1e-14 * scale || a[(j, i)].abs() > 1e-14 * scale);
+    let scale = [k, c, m]
+        .iter()
+        .map(|a| a.iter().fold(0.0_f64, |s, v| s.max(v.abs())))
+        .fold(0.0_f64, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let coupled = |i: usize, j: usize| {
+        [k, c, m].iter().any(|a| a[(i, j)].abs() > 1e-14 * scale || a[(j, i)].abs() > 1e-14 * scale)
+    };
     let mut reached = vec![false; n];
     let mut stack: Vec<usize> = (0..JOURNAL_DOFS).collect();
     for &j in &stack {
@@ -101,7 +107,9 @@ pub fn reduce(full: &FullCoefficients, omega: f64) -> ReducedCoefficients {
     let (k, c, m) = (mat(&full.k), mat(&full.c), mat(&full.m));
     let p = active_pad_dofs(&k, &c, &m);
     let np = p.len();
-    let sub = |a: &DMatrix<f64>, rows: &[usize], cols: &[usize]| DMatrix::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])]);
+    let sub = |a: &DMatrix<f64>, rows: &[usize], cols: &[usize]| {
+        DMatrix::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])])
+    };
     let j = [0usize, 1];
     let mut kr = [[k[(0, 0)], k[(0, 1)]], [k[(1, 0)], k[(1, 1)]]];
     let mut cr = [[c[(0, 0)], c[(0, 1)]], [c[(1, 0)], c[(1, 1)]]];
@@ -111,7 +119,9 @@ pub fn reduce(full: &FullCoefficients, omega: f64) -> ReducedCoefficients {
     if omega > 0.0 {
         let z = |a: &[usize], b: &[usize]| {
             let (ks, cs, ms) = (sub(&k, a, b), sub(&c, a, b), sub(&m, a, b));
-            DMatrix::from_fn(a.len(), b.len(), |i, jj| Complex::new(ks[(i, jj)] - omega * omega * ms[(i, jj)], omega * cs[(i, jj)]))
+            DMatrix::from_fn(a.len(), b.len(), |i, jj| {
+                Complex::new(ks[(i, jj)] - omega * omega * ms[(i, jj)], omega * cs[(i, jj)])
+            })
         };
         let (zjj, zjp, zpj, zpp) = (z(&j, &j), z(&j, &p), z(&p, &j), z(&p, &p));
         if let Some(x) = zpp.lu().solve(&zpj) {
@@ -130,7 +140,8 @@ pub fn reduce(full: &FullCoefficients, omega: f64) -> ReducedCoefficients {
         if let (Some(a), Some(bt)) = (lu.solve(&kpj), lu.solve(&cpj)) {
             // a = K_pp⁻¹ K_pj, bt = K_pp⁻¹ C_pj
             let kred = &kjj - &kjp * &a;
-            let cred = &cjj - &cjp * &a - &kjp * &bt + &kjp * lu.solve(&(&cpp * &a)).unwrap_or_else(|| DMatrix::zeros(np, 2));
+            let cred =
+                &cjj - &cjp * &a - &kjp * &bt + &kjp * lu.solve(&(&cpp * &a)).unwrap_or_else(|| DMatrix::zeros(np, 2));
             for x in 0..2 {
                 for y in 0..2 {
                     kr[x][y] = kred[(x, y)];

@@ -184,9 +184,13 @@ impl SectorInertia {
         let cross = |p: [f64; 2]| [-(self.centroid[1] - p[1]), self.centroid[0] - p[0]];
         let dot = |x: [f64; 2], y: [f64; 2]| x[0] * y[0] + x[1] * y[1];
         match (a, b) {
-            (RigidMotion::Translation { direction: d1 }, RigidMotion::Translation { direction: d2 }) => self.mass * dot(d1, d2),
+            (RigidMotion::Translation { direction: d1 }, RigidMotion::Translation { direction: d2 }) => {
+                self.mass * dot(d1, d2)
+            }
             (RigidMotion::Translation { direction }, RigidMotion::Rotation { about })
-            | (RigidMotion::Rotation { about }, RigidMotion::Translation { direction }) => self.mass * dot(direction, cross(about)),
+            | (RigidMotion::Rotation { about }, RigidMotion::Translation { direction }) => {
+                self.mass * dot(direction, cross(about))
+            }
             (RigidMotion::Rotation { about: p }, RigidMotion::Rotation { about: q }) => {
                 // ∫ρ (r − p)·(r − q) dV = I_O − m r_G·(p + q) + m p·q
                 self.polar_o - self.mass * dot(self.centroid, [p[0] + q[0], p[1] + q[1]]) + self.mass * dot(p, q)
@@ -484,7 +488,8 @@ mod tests {
         assert!(s.mass[(0, 1)].abs() < 1e-12 * mass);
         // … while a transverse translation couples with the tilt through the lever to the centroid:
         // m d_t·(ẑ × (r_G − P)) = −m (|P| − r_G).
-        let r_g = (2.0 / 3.0) * (r2.powi(3) - r1.powi(3)) / (r2 * r2 - r1 * r1) * (0.5 * p.arc_rad).sin() / (0.5 * p.arc_rad);
+        let r_g =
+            (2.0 / 3.0) * (r2.powi(3) - r1.powi(3)) / (r2 * r2 - r1 * r1) * (0.5 * p.arc_rad).sin() / (0.5 * p.arc_rad);
         assert!((s.mass[(0, 2)] + mass * (r2 - r_g)).abs() < 1e-12 * mass * r2, "{}", s.mass[(0, 2)]);
         // I_P = I_O − 2 m r_G |P| + m |P|² (parallel axes through O and P on the same line).
         let i_o = 0.25 * 7800.0 * l * p.arc_rad * (r2.powi(4) - r1.powi(4));

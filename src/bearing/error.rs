@@ -1,8 +1,8 @@
 //! Errors of a bearing solve. Each says what failed and where; none is ever replaced by NaN.
 
-use serde::{Deserialize, Serialize};
 use crate::model::CaseError;
 use crate::physics::reynolds::FilmError;
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 /// An iteration that runs under a budget ([`SolveError::BudgetExceeded`]).
@@ -100,7 +100,9 @@ pub enum SolveError {
     )]
     ForceGap2d { pad: usize, angle_deg: f64, before_n: f64, after_n: f64, load_n: f64 },
     /// Newton (and its fallbacks) stopped without meeting the tolerance.
-    #[error("equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})")]
+    #[error(
+        "equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})"
+    )]
     NotConverged { iterations: usize, residual: f64, reason: String },
     /// An iteration used up its iteration or time budget before converging.
     #[error(

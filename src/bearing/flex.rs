@@ -44,7 +44,11 @@ impl FlexPad {
     /// The modes' film shapes on the pad's film grid.
     #[must_use]
     pub fn film_fields(&self, grid: &PadGrid, radius: f64, theta_le: f64) -> Vec<FilmField> {
-        self.modes.modes.iter().map(|m| FilmField { grid: grid.clone(), radius, theta_le, node: m.film_shape.clone() }).collect()
+        self.modes
+            .modes
+            .iter()
+            .map(|m| FilmField { grid: grid.clone(), radius, theta_le, node: m.film_shape.clone() })
+            .collect()
     }
 }
 
@@ -60,7 +64,11 @@ pub fn modal_properties(modes: &PadModes, massless: bool) -> Vec<ModalProperties
     modes
         .modes
         .iter()
-        .map(|m| ModalProperties { mass: inertia * m.mass, stiffness: m.stiffness, momentum_pt: [inertia * m.momentum_pt[0], inertia * m.momentum_pt[1]] })
+        .map(|m| ModalProperties {
+            mass: inertia * m.mass,
+            stiffness: m.stiffness,
+            momentum_pt: [inertia * m.momentum_pt[0], inertia * m.momentum_pt[1]],
+        })
         .collect()
 }
 
@@ -74,7 +82,14 @@ fn material(case: &Case, k: usize) -> Elastic {
 ///
 /// # Errors
 /// [`SolveError::Invalid`] naming the pad if the elastic model fails.
-pub fn pad_solid_modes(case: &Case, k: usize, grid: &PadGrid, layers: usize, bending: usize, cache: &mut ModeCache) -> Result<FlexPad, SolveError> {
+pub fn pad_solid_modes(
+    case: &Case,
+    k: usize,
+    grid: &PadGrid,
+    layers: usize,
+    bending: usize,
+    cache: &mut ModeCache,
+) -> Result<FlexPad, SolveError> {
     let b = &case.bearing;
     let pad = &b.pads[k];
     let r = b.journal_radius_m;
@@ -134,7 +149,12 @@ pub struct ModeTableRow {
 ///
 /// # Errors
 /// As [`pad_solid_modes`].
-pub fn mode_table(case: &Case, k: usize, meshes: &[(usize, usize, usize)], bending: usize) -> Result<Vec<ModeTableRow>, SolveError> {
+pub fn mode_table(
+    case: &Case,
+    k: usize,
+    meshes: &[(usize, usize, usize)],
+    bending: usize,
+) -> Result<Vec<ModeTableRow>, SolveError> {
     let b = &case.bearing;
     let pad = &b.pads[k];
     let half = case.mesh.half_model;

@@ -24,8 +24,8 @@
 //! Not in the model: the extra phase lag between nozzle pressure and force the thesis measured (its §6.3);
 //! the valve's linearisation beyond ~10 % of full-scale signal.
 
-use serde::{Deserialize, Serialize};
 use nalgebra::{Complex, DMatrix, DVector};
+use serde::{Deserialize, Serialize};
 
 use crate::physics::hydraulics::pipeline::Truncation;
 use crate::physics::hydraulics::{Line, NozzleCoupling, Servovalve};
@@ -135,7 +135,12 @@ impl BearingDynamics {
     ///
     /// # Errors
     /// See [`injection_coupling`].
-    pub fn at_equilibrium(model: &mut BearingModel, op: &OperatingPoint, eq: &Equilibrium, ports: &[Vec<usize>]) -> Result<Self, SolveError> {
+    pub fn at_equilibrium(
+        model: &mut BearingModel,
+        op: &OperatingPoint,
+        eq: &Equilibrium,
+        ports: &[Vec<usize>],
+    ) -> Result<Self, SolveError> {
         let coupling = injection_coupling(model, op, &eq.u, ports)?;
         let full = full_coefficients(model, eq);
         let mat = |rows: &[Vec<f64>]| DMatrix::from_fn(rows.len(), rows.len(), |i, j| rows[i][j]);
@@ -208,7 +213,8 @@ impl BearingDynamics {
             if free.contains(&h) {
                 continue;
             }
-            *fh = (0..np).map(|k| pressure[k] * cp.force[(h, k)]).sum::<C64>() - free.iter().enumerate().map(|(fi, &g)| z[(h, g)] * x[ui(fi)]).sum::<C64>();
+            *fh = (0..np).map(|k| pressure[k] * cp.force[(h, k)]).sum::<C64>()
+                - free.iter().enumerate().map(|(fi, &g)| z[(h, g)] * x[ui(fi)]).sum::<C64>();
         }
         if let Some(fi) = free.iter().position(|&g| g == Y) {
             displacement = x[ui(fi)];
@@ -290,7 +296,13 @@ mod tests {
 
     /// Frequency [Hz] and magnitude of the largest |G2| of port `k` over `band` (1 Hz steps).
     fn line_peak(bd: &BearingDynamics, hyd: &Hydraulics, k: usize, band: std::ops::Range<u32>) -> (f64, f64) {
-        band.map(|f| (f64::from(f), bd.frf(hyd, f64::from(f)).unwrap().g2[k].norm())).fold((0.0, 0.0), |m, x| if x.1 > m.1 { x } else { m })
+        band.map(|f| (f64::from(f), bd.frf(hyd, f64::from(f)).unwrap().g2[k].norm())).fold((0.0, 0.0), |m, x| {
+            if x.1 > m.1 {
+                x
+            } else {
+                m
+            }
+        })
     }
 
     /// The first line mode seen through the coupled chain, at the unloaded pad's port (its nozzle discharges
@@ -317,7 +329,11 @@ mod tests {
         let (f_air, peak_air) = line_peak(&bd, &hyd, 1, 40..300);
         let q_air = peak_air / bd.frf(&hyd, 0.0).unwrap().g2[1].norm();
         let quarter = |l: &Line| l.mode_frequency(1) / std::f64::consts::TAU;
-        eprintln!("first mode {f_clean} Hz (quarter-wave {}), with air {f_air} Hz ({}); amplification {q_clean} → {q_air}", quarter(&clean), quarter(&airy));
+        eprintln!(
+            "first mode {f_clean} Hz (quarter-wave {}), with air {f_air} Hz ({}); amplification {q_clean} → {q_air}",
+            quarter(&clean),
+            quarter(&airy)
+        );
         assert!((f_clean / quarter(&clean) - 1.0).abs() < 0.01, "{f_clean}");
         assert!((f_air / quarter(&airy) - 1.0).abs() < 0.02, "{f_air}");
         assert!((95.0..115.0).contains(&f_air), "{f_air}");

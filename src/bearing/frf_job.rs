@@ -83,7 +83,12 @@ impl FrfModel {
     /// No `[hydraulics]`, or the equilibrium failed.
     pub fn new(case: &Case) -> Result<Self, SolveError> {
         case.hydraulics.as_ref().ok_or_else(no_hydraulics)?;
-        let req = Request { case: case.clone(), wanted: vec![StageId::Frf], frequency_ratios: Vec::new(), speeds_rpm: Vec::new() };
+        let req = Request {
+            case: case.clone(),
+            wanted: vec![StageId::Frf],
+            frequency_ratios: Vec::new(),
+            speeds_rpm: Vec::new(),
+        };
         let outcome = Stages::new().run(&req, &NoCancel)?;
         outcome.get::<Self>(StageId::Frf).map(|m| Self::clone(&m)).ok_or_else(no_hydraulics)
     }
@@ -93,13 +98,23 @@ impl FrfModel {
     ///
     /// # Errors
     /// A port feeding a pad the bearing does not have, or a film that fails at the equilibrium.
-    pub fn linearise(model: &mut BearingModel, op: &OperatingPoint, case: &Case, sol: &Solution, m: Vec<Vec<f64>>, ports: &[Vec<usize>]) -> Result<Self, SolveError> {
+    pub fn linearise(
+        model: &mut BearingModel,
+        op: &OperatingPoint,
+        case: &Case,
+        sol: &Solution,
+        m: Vec<Vec<f64>>,
+        ports: &[Vec<usize>],
+    ) -> Result<Self, SolveError> {
         let t0 = Instant::now();
         let coupling = injection_coupling(model, op, &sol.coordinates, ports)?;
         let mat = |rows: &[Vec<f64>]| DMatrix::from_fn(rows.len(), rows.len(), |i, j| rows[i][j]);
         let dynamics = BearingDynamics { k: mat(&sol.full.k), c: mat(&sol.full.c), m: mat(&m), coupling };
         #[allow(clippy::cast_precision_loss)]
-        let static_pressure = ports.iter().map(|pads| pads.iter().map(|&k| op.injection_pressure[k]).sum::<f64>() / pads.len() as f64).collect();
+        let static_pressure = ports
+            .iter()
+            .map(|pads| pads.iter().map(|&k| op.injection_pressure[k]).sum::<f64>() / pads.len() as f64)
+            .collect();
         Ok(Self {
             dynamics,
             static_pressure,
@@ -118,7 +133,13 @@ impl FrfModel {
         let valve = Servovalve {
             natural_frequency_rad_s: v.natural_frequency_rad_s,
             damping_ratio: v.damping_ratio,
-            flow_gain: flow_gain(v.rated_flow_m3_s, v.full_scale_v, v.rated_drop_pa, h.supply_pressure_pa, h.return_pressure_pa),
+            flow_gain: flow_gain(
+                v.rated_flow_m3_s,
+                v.full_scale_v,
+                v.rated_drop_pa,
+                h.supply_pressure_pa,
+                h.return_pressure_pa,
+            ),
             flow_pressure_coefficient: v.flow_pressure_coefficient,
             leakage: v.leakage_m3_s,
             full_scale_v: v.full_scale_v,
@@ -136,7 +157,12 @@ impl FrfModel {
                         length: p.line_length_m,
                         area: std::f64::consts::PI * d * d / 4.0,
                         density: self.density,
-                        bulk_modulus: effective_bulk_modulus(p.oil_bulk_modulus_pa, p.air_fraction, air, p.wall_compliance_per_pa),
+                        bulk_modulus: effective_bulk_modulus(
+                            p.oil_bulk_modulus_pa,
+                            p.air_fraction,
+                            air,
+                            p.wall_compliance_per_pa,
+                        ),
                         friction: Line::laminar_friction(self.injection_viscosity, self.density, d),
                         modes: p.modes,
                     },
@@ -154,16 +180,33 @@ impl FrfModel {
         let h = case.hydraulics.as_ref().ok_or_else(no_hydraulics)?;
         let hyd = self.hydraulics(h);
         let t0 = Instant::now();
-        let singular = |f: f64| SolveError::Invalid(format!("the coupled valve–line–bearing system is singular at {f} Hz"));
-        let points = frequencies_hz.iter().map(|&f| self.dynamics.frf(&hyd, f).ok_or_else(|| singular(f))).collect::<Result<Vec<_>, _>>()?;
+        let singular =
+            |f: f64| SolveError::Invalid(format!("the coupled valve–line–bearing system is singular at {f} Hz"));
+        let points = frequencies_hz
+            .iter()
+            .map(|&f| self.dynamics.frf(&hyd, f).ok_or_else(|| singular(f)))
+            .collect::<Result<Vec<_>, _>>()?;
         let shaker = match h.rig {
             None => None,
             Some(r) => {
-                let rig = Rig { mass: r.mass_kg, stiffness: r.support_stiffness_n_per_m, damping: r.support_damping_ns_per_m };
-                Some(frequencies_hz.iter().map(|&f| self.dynamics.shaker(&hyd, rig, f).ok_or_else(|| singular(f))).collect::<Result<Vec<_>, _>>()?)
+                let rig = Rig {
+                    mass: r.mass_kg,
+                    stiffness: r.support_stiffness_n_per_m,
+                    damping: r.support_damping_ns_per_m,
+                };
+                Some(
+                    frequencies_hz
+                        .iter()
+                        .map(|&f| self.dynamics.shaker(&hyd, rig, f).ok_or_else(|| singular(f)))
+                        .collect::<Result<Vec<_>, _>>()?,
+                )
             }
         };
-        let line_modes_hz = hyd.ports.iter().map(|p| (1..=p.line.modes).map(|i| p.line.mode_frequency(i) / std::f64::consts::TAU).collect()).collect();
+        let line_modes_hz = hyd
+            .ports
+            .iter()
+            .map(|p| (1..=p.line.modes).map(|i| p.line.mode_frequency(i) / std::f64::consts::TAU).collect())
+            .collect();
         Ok(FrfSweep { points, shaker, line_modes_hz, seconds: t0.elapsed().as_secs_f64() })
     }
 }

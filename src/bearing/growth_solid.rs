@@ -49,12 +49,20 @@ use crate::physics::pad_elastic::{ElasticError, ElasticSystem, Solid, Supports, 
 /// against); else 1.
 #[must_use]
 pub fn growth_layer_step(fidelity: Fidelity, layers: usize) -> usize {
-    if fidelity != Fidelity::Reference && layers >= 4 && layers % 2 == 0 { 2 } else { 1 }
+    if fidelity != Fidelity::Reference && layers >= 4 && layers % 2 == 0 {
+        2
+    } else {
+        1
+    }
 }
 
 /// `step` if it divides the mesh's layers, else 1.
 pub(super) fn effective_step(mesh: &PadMesh, step: usize) -> usize {
-    if step > 1 && mesh.layers % step == 0 { step } else { 1 }
+    if step > 1 && mesh.layers % step == 0 {
+        step
+    } else {
+        1
+    }
 }
 
 /// The pad mesh with every `step` element layers merged into one (`step` divides the layers): node layer l of
@@ -112,13 +120,21 @@ pub(super) struct GrowthSolver {
 }
 
 impl GrowthSolver {
-    pub(super) fn new(mesh: std::sync::Arc<PadMesh>, step: usize, pivot_rad: f64, pivot_from_le: f64, material: Elastic, half: bool) -> Result<Self, ElasticError> {
+    pub(super) fn new(
+        mesh: std::sync::Arc<PadMesh>,
+        step: usize,
+        pivot_rad: f64,
+        pivot_from_le: f64,
+        material: Elastic,
+        half: bool,
+    ) -> Result<Self, ElasticError> {
         let step = effective_step(&mesh, step);
         let coarse = merged_layers(&mesh, step);
         let solid = Solid::from_pad(&coarse);
         let (fixed, pin, anchor) = determinate_supports(&coarse, &solid, pivot_rad, half);
         let supports = Supports::new(&solid, &fixed, &[], [0.0, 0.0]);
-        let (mut system, load) = ElasticSystem::assemble_with_thermal_load(&solid, &material, Formulation::Incompatible, supports)?;
+        let (mut system, load) =
+            ElasticSystem::assemble_with_thermal_load(&solid, &material, Formulation::Incompatible, supports)?;
         system.order_as_pad(&solid);
         let mut solver = SpdSolver::new(&system.pattern).map_err(ElasticError::Factor)?;
         solver.factor(&system.pattern, &system.stiffness).map_err(ElasticError::Factor)?;
@@ -208,15 +224,23 @@ pub struct PadGrowth {
 /// Pivot line pinned in x, y; u_z on the mid-plane (half model) or at one pivot-line node; one in-plane
 /// component of the film-face node under the pivot line at the mid-plane (the rotation about the line).
 /// Returns the fixed components, the pinned line (x, y) and the film-face anchor node.
-fn determinate_supports(mesh: &PadMesh, solid: &Solid, pivot_rad: f64, half: bool) -> (Vec<(usize, usize)>, [f64; 2], usize) {
+fn determinate_supports(
+    mesh: &PadMesh,
+    solid: &Solid,
+    pivot_rad: f64,
+    half: bool,
+) -> (Vec<(usize, usize)>, [f64; 2], usize) {
     let angle = |n: usize| {
         let x = solid.nodes[n];
-        ((x[1].atan2(x[0]) - pivot_rad + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI).abs()
+        ((x[1].atan2(x[0]) - pivot_rad + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI)
+            .abs()
     };
     let back = mesh.layers * mesh.n_film..mesh.n_nodes();
     let nearest = back.clone().map(angle).fold(f64::INFINITY, f64::min);
     let line: Vec<usize> = back.filter(|&n| angle(n) <= nearest + 1e-9).collect();
-    let mid = |nodes: &mut dyn Iterator<Item = usize>| nodes.min_by(|&a, &b| solid.nodes[a][2].abs().total_cmp(&solid.nodes[b][2].abs()));
+    let mid = |nodes: &mut dyn Iterator<Item = usize>| {
+        nodes.min_by(|&a, &b| solid.nodes[a][2].abs().total_cmp(&solid.nodes[b][2].abs()))
+    };
     let mut fixed: Vec<(usize, usize)> = line.iter().flat_map(|&n| [(n, 0), (n, 1)]).collect();
     if half {
         fixed.extend((0..solid.n_nodes()).filter(|&n| solid.nodes[n][2].abs() < 1e-12).map(|n| (n, 2)));
@@ -231,4 +255,3 @@ fn determinate_supports(mesh: &PadMesh, solid: &Solid, pivot_rad: f64, half: boo
     let pin = line.first().map_or([0.0, 0.0], |&n| [solid.nodes[n][0], solid.nodes[n][1]]);
     (fixed, pin, anchor)
 }
-

@@ -41,15 +41,27 @@ type C64 = Complex<f64>;
 /// # Errors
 /// A port naming a pad the model does not have, a pad on two ports, or a film failure when re-solving a
 /// pad at the equilibrium.
-pub fn injection_coupling(model: &mut BearingModel, op: &OperatingPoint, u: &[f64], ports: &[Vec<usize>]) -> Result<NozzleCoupling, SolveError> {
+pub fn injection_coupling(
+    model: &mut BearingModel,
+    op: &OperatingPoint,
+    u: &[f64],
+    ports: &[Vec<usize>],
+) -> Result<NozzleCoupling, SolveError> {
     let n = model.n_dofs();
     let np = ports.len();
     let mut owner = vec![None; model.pads.len()];
     for (k, pads) in ports.iter().enumerate() {
         for &p in pads {
             match owner.get_mut(p) {
-                None => return Err(SolveError::Invalid(format!("port {k} feeds pad {p}, but the bearing has {} pads", model.pads.len()))),
-                Some(Some(other)) => return Err(SolveError::Invalid(format!("pad {p} is fed by ports {other} and {k}"))),
+                None => {
+                    return Err(SolveError::Invalid(format!(
+                        "port {k} feeds pad {p}, but the bearing has {} pads",
+                        model.pads.len()
+                    )))
+                }
+                Some(Some(other)) => {
+                    return Err(SolveError::Invalid(format!("pad {p} is fed by ports {other} and {k}")))
+                }
                 Some(slot) => *slot = Some(k),
             }
         }
@@ -116,7 +128,8 @@ pub(crate) mod tests {
     /// The Publication 5 rig at 40 bar on both pads, one port feeding both (the sums are what a finite
     /// difference of the common injection pressure sees).
     pub(crate) fn rig(p_bar: f64) -> Case {
-        let text = include_str!("../../cases/test-rig-pub5.toml").replace("fidelity = \"standard\"", "fidelity = \"preview\"");
+        let text =
+            include_str!("../../cases/test-rig-pub5.toml").replace("fidelity = \"standard\"", "fidelity = \"preview\"");
         let set = [format!("operating.injection_pressure_bar={p_bar}"), "operating.load_n=1500".to_string()];
         load_case(&text, &set).unwrap().1
     }
@@ -130,7 +143,11 @@ pub(crate) mod tests {
 
     #[test]
     fn condense_of_one_free_coordinate_is_the_scalar_formula() {
-        let z = DMatrix::from_row_slice(2, 2, &[C64::new(3.0, 1.0), C64::new(-1.0, 0.5), C64::new(2.0, -0.5), C64::new(4.0, 2.0)]);
+        let z = DMatrix::from_row_slice(
+            2,
+            2,
+            &[C64::new(3.0, 1.0), C64::new(-1.0, 0.5), C64::new(2.0, -0.5), C64::new(4.0, 2.0)],
+        );
         let b = DMatrix::from_row_slice(2, 1, &[C64::new(0.7, 0.0), C64::new(-0.2, 0.1)]);
         let f = condense(&z, &b, &[0], &[1]).unwrap();
         let expect = b[(0, 0)] - z[(0, 1)] * b[(1, 0)] / z[(1, 1)];
@@ -152,7 +169,10 @@ pub(crate) mod tests {
         let free: Vec<usize> = (2..model.n_dofs()).collect();
         let g3 = condense(&z, &b, &[0, 1], &free).unwrap();
         let [ex, ey] = [eq.u[0], eq.u[1]];
-        let held = LoadSpec::Position { eccentricity_ratio: ex.hypot(ey) / model.assembled_clearance, angle_rad: ey.atan2(ex) };
+        let held = LoadSpec::Position {
+            eccentricity_ratio: ex.hypot(ey) / model.assembled_clearance,
+            angle_rad: ey.atan2(ex),
+        };
         let dp_bar = 0.5;
         let force = |p: f64| {
             let mut case = rig(p);
@@ -189,14 +209,19 @@ pub(crate) mod tests {
         let (k, c, m) = (mat(&full.k), mat(&full.c), mat(&full.m));
         let b = coupling.force.map(C64::from);
         let free: Vec<usize> = (2..model.n_dofs()).collect();
-        let sub = |a: &DMatrix<f64>, rows: &[usize], cols: &[usize]| DMatrix::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])]);
+        let sub = |a: &DMatrix<f64>, rows: &[usize], cols: &[usize]| {
+            DMatrix::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])])
+        };
         let bf = sub(&coupling.force, &free, &[0]);
         let chf = sub(&c, &[0, 1], &free);
         let inertial = &chf * sub(&m, &free, &free).lu().solve(&bf).unwrap();
         let g3 = |w: f64| condense(&dynamic_stiffness(&k, &c, &m, C64::new(0.0, w)), &b, &[0, 1], &free).unwrap();
         let scale = b[(1, 0)].norm();
-        let err = |w: f64, approx: &dyn Fn(usize) -> C64| (0..2).map(|a| (g3(w)[(a, 0)] - approx(a)).norm() / scale).fold(0.0, f64::max);
-        let limit: Vec<f64> = [1e8, 1e9].iter().map(|&w| err(w, &|a| b[(a, 0)] + C64::new(0.0, inertial[(a, 0)] / w))).collect();
+        let err = |w: f64, approx: &dyn Fn(usize) -> C64| {
+            (0..2).map(|a| (g3(w)[(a, 0)] - approx(a)).norm() / scale).fold(0.0, f64::max)
+        };
+        let limit: Vec<f64> =
+            [1e8, 1e9].iter().map(|&w| err(w, &|a| b[(a, 0)] + C64::new(0.0, inertial[(a, 0)] / w))).collect();
         eprintln!("inertial limit {limit:?}");
         assert!(limit[0] < 2e-3 && limit[1] < 2e-2 * limit[0], "{limit:?}");
     }

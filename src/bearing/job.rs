@@ -10,10 +10,15 @@ use crate::model::{Case, LoadSpec, ThermalModelKind};
 
 use super::coefficients::{full_coefficients, reduce};
 use super::coordinates::PadDof;
-use super::equilibrium::{solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume};
+use super::equilibrium::{
+    solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume,
+};
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
-use super::solution::{BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalGrowth, PadThermalResult, Solution, ThermalResult};
+use super::solution::{
+    BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalGrowth, PadThermalResult, Solution,
+    ThermalResult,
+};
 use super::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
 
 /// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
@@ -39,7 +44,9 @@ pub fn solve_point(
     cancel: &dyn Cancel,
 ) -> Result<Solution, SolveError> {
     match case.thermal.model {
-        ThermalModelKind::Isothermal => solve_operating_point(model, case, &OperatingPoint::isothermal(case), start, cancel),
+        ThermalModelKind::Isothermal => {
+            solve_operating_point(model, case, &OperatingPoint::isothermal(case), start, cancel)
+        }
         ThermalModelKind::Thd => {
             if thermal.is_none() {
                 *thermal = Some(ThermalModel::new(case, model)?);
@@ -82,11 +89,14 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
     let (mut t_area, mut area) = (0.0, 0.0);
     for (k, (p, st)) in sol.pads.iter_mut().zip(&state.pads).enumerate() {
         let n_film = st.film_c.len();
-        p.thermal_growth = state.growth.as_ref().filter(|g| g.pad_nodal_m.get(k).is_some_and(|u| !u.is_empty())).map(|g| PadThermalGrowth {
-            film_radial_m: g.pad_film_m[k].clone(),
-            nodal_polar_m: g.pad_nodal_m[k].clone(),
-            radii_m: st.pad_radii_m.clone(),
-        });
+        p.thermal_growth =
+            state.growth.as_ref().filter(|g| g.pad_nodal_m.get(k).is_some_and(|u| !u.is_empty())).map(|g| {
+                PadThermalGrowth {
+                    film_radial_m: g.pad_film_m[k].clone(),
+                    nodal_polar_m: g.pad_nodal_m[k].clone(),
+                    radii_m: st.pad_radii_m.clone(),
+                }
+            });
         let surface = st.pad_c.as_ref().map(|t| t[..n_film].to_vec());
         p.field.film_temperature_c = Some(st.film_c.clone());
         p.field.pad_surface_temperature_c.clone_from(&surface);
@@ -101,10 +111,17 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
             pad_surface_t_max_c: surface.as_deref().map(max),
             heat: st.heat,
             pad_to_surroundings_w: st.pad_to_surroundings_w,
-            solid: st.pad_c.as_ref().map(|t| PadSolidField { radii_m: st.pad_radii_m.clone(), temperature_c: t.clone() }),
+            solid: st
+                .pad_c
+                .as_ref()
+                .map(|t| PadSolidField { radii_m: st.pad_radii_m.clone(), temperature_c: t.clone() }),
         });
     }
-    let pad_max = state.pads.iter().filter_map(|p| p.pad_c.as_deref().map(max)).fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
+    let pad_max = state
+        .pads
+        .iter()
+        .filter_map(|p| p.pad_c.as_deref().map(max))
+        .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |m| m.max(v))));
     sol.thermal = Some(ThermalResult {
         pad_film_bc: case.thermal.pad_film_bc,
         journal_temperature_c: state.journal_temperature_c,
@@ -170,7 +187,8 @@ pub fn step_operating_point(
 ) -> Result<Progress<Solution, Resume>, SolveError> {
     if super::pivot_contact::has_contacts(case) {
         // The contact's load iteration runs to the end (a few warm-started equilibria).
-        return super::pivot_contact::solve(model, case, op, start, params, &super::progress::NoSuspend(cancel)).map(Progress::Done);
+        return super::pivot_contact::solve(model, case, op, start, params, &super::progress::NoSuspend(cancel))
+            .map(Progress::Done);
     }
     Ok(match step_equilibrium(model, op, params, start, cancel)? {
         Progress::Done(eq) => Progress::Done(assemble_solution(model, case, op, &eq)),
@@ -215,7 +233,11 @@ fn static_stability_warning(k: &[[f64; 2]; 2]) -> Option<String> {
 
 fn wrap_deg(a: f64) -> f64 {
     let x = a.rem_euclid(360.0);
-    if x > 180.0 { x - 360.0 } else { x }
+    if x > 180.0 {
+        x - 360.0
+    } else {
+        x
+    }
 }
 
 /// Collects results from the converged films.
@@ -281,7 +303,11 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             mode_amplitudes_m: mode_amplitudes(pm, &st.q),
             elastic_displacement_m: elastic_displacement(pm, &st.q),
             thermal_growth: None,
-            flex: pm.modes.as_ref().zip(pm.solid.as_ref()).map(|(modes, solid)| PadFlex { modes: modes.clone(), radii_m: solid.radii.clone() }),
+            flex: pm
+                .modes
+                .as_ref()
+                .zip(pm.solid.as_ref())
+                .map(|(modes, solid)| PadFlex { modes: modes.clone(), radii_m: solid.radii.clone() }),
             field,
             thermal: None,
             pivot_contact: None,
@@ -290,7 +316,11 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
     let inflow = flows.leading_edges_in + flows.orifices_in;
     let outflow = flows.trailing_edges_out + flows.sides_out + flows.to_cavitation;
     // Relative to the throughput (a 360° bore has no edges: its in- and outflow are both ~0 net).
-    let scale = flows.leading_edges_in.abs() + flows.orifices_in.abs() + flows.trailing_edges_out.abs() + flows.sides_out.abs() + flows.to_cavitation.abs();
+    let scale = flows.leading_edges_in.abs()
+        + flows.orifices_in.abs()
+        + flows.trailing_edges_out.abs()
+        + flows.sides_out.abs()
+        + flows.to_cavitation.abs();
     flows.mass_balance_error = if scale > 0.0 { (inflow - outflow) / scale } else { 0.0 };
 
     let full = full_coefficients(model, eq);

@@ -28,7 +28,13 @@ pub enum LimitKind {
 }
 
 impl LimitKind {
-    pub const ALL: [Self; 5] = [Self::MinFilmThickness, Self::MaxPadTemperature, Self::MaxSpecificLoad, Self::MaxPeakPressure, Self::MaxReynolds];
+    pub const ALL: [Self; 5] = [
+        Self::MinFilmThickness,
+        Self::MaxPadTemperature,
+        Self::MaxSpecificLoad,
+        Self::MaxPeakPressure,
+        Self::MaxReynolds,
+    ];
 
     /// Short name (CSV cells, JSON keys).
     #[must_use]
@@ -104,7 +110,9 @@ pub fn value(kind: LimitKind, s: &Solution) -> Option<f64> {
         LimitKind::MaxPadTemperature => s.thermal.as_ref().map(|t| t.t_max_pad_c.unwrap_or(t.t_max_film_c)),
         LimitKind::MaxSpecificLoad => Some(s.load_magnitude_n / (b.length_m * 2.0 * b.journal_radius_m)),
         LimitKind::MaxPeakPressure => Some(s.p_max_pa),
-        LimitKind::MaxReynolds => Some(Regime::of(&s.inputs, s.derived.speed_rad_s * b.journal_radius_m, &s.pads).reynolds_max),
+        LimitKind::MaxReynolds => {
+            Some(Regime::of(&s.inputs, s.derived.speed_rad_s * b.journal_radius_m, &s.pads).reynolds_max)
+        }
     }
 }
 
@@ -175,9 +183,14 @@ mod tests {
         let re = value(LimitKind::MaxReynolds, &s).unwrap();
         // Re_max = ρ Ω R h / µ is at most ρ Ω R h_max / µ_min over the film.
         let h_max = s.pads.iter().flat_map(|p| p.field.film_thickness_m.iter().copied()).fold(0.0, f64::max);
-        let bound = s.inputs.lubricant.density_kg_per_m3 * s.derived.speed_rad_s * b.journal_radius_m * h_max / s.derived.film_viscosity_pa_s;
+        let bound = s.inputs.lubricant.density_kg_per_m3 * s.derived.speed_rad_s * b.journal_radius_m * h_max
+            / s.derived.film_viscosity_pa_s;
         assert!(re > 0.0 && re <= bound * (1.0 + 1e-12), "{re} vs {bound}");
-        let file = LimitsFile { max_specific_load_mpa: Some(0.5 * w * 1e-6), max_reynolds: Some(0.5 * re), ..LimitsFile::default() };
+        let file = LimitsFile {
+            max_specific_load_mpa: Some(0.5 * w * 1e-6),
+            max_reynolds: Some(0.5 * re),
+            ..LimitsFile::default()
+        };
         let limits = crate::model::limits::resolve_limits(&file).unwrap();
         let flagged: Vec<LimitKind> = exceeded(&limits, &s).iter().map(|c| c.kind).collect();
         assert_eq!(flagged, [LimitKind::MaxSpecificLoad, LimitKind::MaxReynolds]);

@@ -24,7 +24,11 @@ use super::thermal_pad::PadTemperatures;
 
 /// Solves the groove mixing balances and the journal condition for all inlet temperatures and the journal
 /// temperature at once (module documentation). Returns (T_in per pad, T_j).
-pub fn inlet_and_journal(case: &Case, sols: &[PadTemperatures], upstream: &[usize]) -> Result<(Vec<f64>, f64), SolveError> {
+pub fn inlet_and_journal(
+    case: &Case,
+    sols: &[PadTemperatures],
+    upstream: &[usize],
+) -> Result<(Vec<f64>, f64), SolveError> {
     let n = sols.len();
     let t = &case.thermal;
     let ts = case.operating.supply_temperature_c;
@@ -82,4 +86,3 @@ pub fn inlet_and_journal(case: &Case, sols: &[PadTemperatures], upstream: &[usiz
     })?;
     Ok(((0..n).map(|k| x[k]).collect(), x[n]))
 }
-

@@ -9,14 +9,14 @@ use std::sync::Arc;
 
 use crate::mesh::grid::{graded_nodes, PadGrid, Refinement};
 use crate::mesh::pad3d::PadMesh;
+use crate::model::Cavitation;
 use crate::model::{Case, LoadSpec};
 use crate::physics::orifice::LocalOrifice;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm, Viscosity};
-use crate::model::Cavitation;
 
 use super::coordinates::{DofMap, PadDof, PadStructure};
-use super::flex::{pad_modes, ModeCache};
 use super::error::SolveError;
+use super::flex::{pad_modes, ModeCache};
 use super::geometry::PadShape;
 
 /// One pad: its film and its structure (coordinates, structural stiffness and inertia).
@@ -73,7 +73,12 @@ impl BearingModel {
             let orifices: Vec<LocalOrifice> = pad
                 .orifices
                 .iter()
-                .map(|o| LocalOrifice { s0: (o.angle_rad - pad.leading_edge_rad) * r, z0: o.axial_m, diameter: o.diameter_m, length: o.length_m })
+                .map(|o| LocalOrifice {
+                    s0: (o.angle_rad - pad.leading_edge_rad) * r,
+                    z0: o.axial_m,
+                    diameter: o.diameter_m,
+                    length: o.length_m,
+                })
                 .collect();
             let geom = FilmGeometry::new(grid, r, pad.leading_edge_rad, &orifices, &shape);
             let film = PadFilm::new(geom).map_err(|e| SolveError::Film { pad: k, error: e })?;
@@ -91,11 +96,18 @@ impl BearingModel {
     /// If a structure's coordinates differ from the model's (they shape the films: rebuild the model).
     pub fn set_structure(&mut self, structures: Vec<PadStructure>) -> Result<(), SolveError> {
         if structures.len() != self.pads.len() {
-            return Err(SolveError::Invalid(format!("{} pad structures for a model of {} pads", structures.len(), self.pads.len())));
+            return Err(SolveError::Invalid(format!(
+                "{} pad structures for a model of {} pads",
+                structures.len(),
+                self.pads.len()
+            )));
         }
         for (k, (pm, s)) in self.pads.iter_mut().zip(structures).enumerate() {
             if s.dofs != pm.structure.dofs {
-                return Err(SolveError::Invalid(format!("pad {k}: coordinates {:?} differ from the model's {:?}", s.dofs, pm.structure.dofs)));
+                return Err(SolveError::Invalid(format!(
+                    "pad {k}: coordinates {:?} differ from the model's {:?}",
+                    s.dofs, pm.structure.dofs
+                )));
             }
             pm.structure = s;
         }
@@ -140,7 +152,11 @@ pub fn pad_grid(case: &Case, k: usize) -> PadGrid {
     let zones_z: Vec<Refinement> = pad
         .orifices
         .iter()
-        .map(|o| Refinement { centre: o.axial_m, half_width: 0.6 * o.diameter_m, fine: o.diameter_m / m.orifice_elements as f64 })
+        .map(|o| Refinement {
+            centre: o.axial_m,
+            half_width: 0.6 * o.diameter_m,
+            fine: o.diameter_m / m.orifice_elements as f64,
+        })
         .collect();
     let periodic = pad.is_full_circle();
     let s = graded_nodes(0.0, pad.arc_rad * r, m.circumferential_elements, &zones_s);

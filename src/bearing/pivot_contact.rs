@@ -52,7 +52,11 @@ fn contact_pads(model: &BearingModel, case: &Case) -> Result<Vec<ContactPad>, So
         let local = model.pads.get(pad).and_then(|pm| pm.structure.dofs.iter().position(|d| *d == PadDof::PivotRadial));
         match (global, local) {
             (Some(_), Some(local)) => out.push(ContactPad { pad, contact, local }),
-            _ => return Err(SolveError::Invalid(format!("pad {pad}: a pivot contact without the radial pivot coordinate in the model"))),
+            _ => {
+                return Err(SolveError::Invalid(format!(
+                    "pad {pad}: a pivot contact without the radial pivot coordinate in the model"
+                )))
+            }
         }
     }
     Ok(out)
@@ -136,7 +140,15 @@ impl HertzPivots {
         .max(1.0);
         let secant = pads.iter().map(|c| state(c, scale).map(|s| s.secant_n_per_m())).collect::<Result<Vec<_>, _>>()?;
         let n = pads.len();
-        Ok(Some(Self { pads, floor: FLOOR * scale, secant, previous: vec![None; n], states: Vec::new(), warnings: Vec::new(), iterations: 0 }))
+        Ok(Some(Self {
+            pads,
+            floor: FLOOR * scale,
+            secant,
+            previous: vec![None; n],
+            states: Vec::new(),
+            warnings: Vec::new(),
+            iterations: 0,
+        }))
     }
 
     /// Puts the current secant springs into the model (before each equilibrium: a stage that rebuilds the

@@ -142,7 +142,15 @@ mod tests {
     use super::*;
 
     fn regime(reynolds_max: f64, taylor_max: f64, h_min_m: f64, clearance_ratio: f64) -> Regime {
-        Regime { reynolds_max, reynolds_pad: 2, taylor_max, h_min_m, clearance_ratio, pivot_deflection_cb: 0.99, pivot_pad: 1 }
+        Regime {
+            reynolds_max,
+            reynolds_pad: 2,
+            taylor_max,
+            h_min_m,
+            clearance_ratio,
+            pivot_deflection_cb: 0.99,
+            pivot_pad: 1,
+        }
     }
 
     #[test]
@@ -160,6 +168,9 @@ mod tests {
             assert!(w.len() == 1 && w[0].starts_with("clearance ratio"), "{ratio}: {w:?}");
         }
         let deflected = Regime { pivot_deflection_cb: 1.01, ..regime(1.0, 0.1, 20e-6, 1.5e-3) }.warnings();
-        assert!(deflected.len() == 1 && deflected[0].starts_with("pad 1's pivot deflects by 1.0 times"), "{deflected:?}");
+        assert!(
+            deflected.len() == 1 && deflected[0].starts_with("pad 1's pivot deflects by 1.0 times"),
+            "{deflected:?}"
+        );
     }
 }

@@ -146,7 +146,12 @@ impl GrowthField {
     #[must_use]
     pub fn change(&self, other: &Self) -> f64 {
         let dj = (self.journal_m - other.journal_m).abs();
-        let dp = self.pad_film_m.iter().flatten().zip(other.pad_film_m.iter().flatten()).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+        let dp = self
+            .pad_film_m
+            .iter()
+            .flatten()
+            .zip(other.pad_film_m.iter().flatten())
+            .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
         dj + dp
     }
 }
@@ -157,7 +162,11 @@ impl TehdModel {
     ///
     /// # Errors
     /// [`SolveError::Invalid`] naming the pad if its elastic model fails.
-    pub fn new(case: &Case, model: &BearingModel, meshes: &[Option<std::sync::Arc<PadMesh>>]) -> Result<Option<Self>, SolveError> {
+    pub fn new(
+        case: &Case,
+        model: &BearingModel,
+        meshes: &[Option<std::sync::Arc<PadMesh>>],
+    ) -> Result<Option<Self>, SolveError> {
         Self::with_layer_step(case, model, meshes, None)
     }
 
@@ -165,7 +174,12 @@ impl TehdModel {
     ///
     /// # Errors
     /// As [`Self::new`].
-    pub fn with_layer_step(case: &Case, model: &BearingModel, meshes: &[Option<std::sync::Arc<PadMesh>>], step: Option<usize>) -> Result<Option<Self>, SolveError> {
+    pub fn with_layer_step(
+        case: &Case,
+        model: &BearingModel,
+        meshes: &[Option<std::sync::Arc<PadMesh>>],
+        step: Option<usize>,
+    ) -> Result<Option<Self>, SolveError> {
         let growth = Growth::of(case);
         if growth.is_off() {
             return Ok(None);
@@ -177,11 +191,19 @@ impl TehdModel {
                 solver_of.push(None);
                 continue;
             };
-            let material = Elastic { youngs_modulus: pad.youngs_modulus_pa, poisson_ratio: pad.poisson_ratio, density: pad.density_kg_per_m3 };
+            let material = Elastic {
+                youngs_modulus: pad.youngs_modulus_pa,
+                poisson_ratio: pad.poisson_ratio,
+                density: pad.density_kg_per_m3,
+            };
             let pivot_from_le = pad.pivot_rad - pad.leading_edge_rad;
-            let step = effective_step(&mesh, step.unwrap_or_else(|| growth_layer_step(case.mesh.fidelity, mesh.layers)));
+            let step =
+                effective_step(&mesh, step.unwrap_or_else(|| growth_layer_step(case.mesh.fidelity, mesh.layers)));
             let same = |s: &GrowthSolver| {
-                s.mesh.same_shape(&mesh) && s.step == step && (s.pivot_from_le - pivot_from_le).abs() < 1e-12 && s.material == material
+                s.mesh.same_shape(&mesh)
+                    && s.step == step
+                    && (s.pivot_from_le - pivot_from_le).abs() < 1e-12
+                    && s.material == material
             };
             let index = match solvers.iter().position(same) {
                 Some(i) => i,
@@ -211,12 +233,18 @@ impl TehdModel {
     #[must_use]
     pub fn evaluate(&mut self, pad_c: &[Option<Vec<f64>>], t_j: f64, film_nodes: &[usize]) -> GrowthField {
         let g = self.growth;
-        let mut pad_film_m: Vec<Vec<f64>> = (0..pad_c.len()).map(|k| vec![0.0; film_nodes.get(k).copied().unwrap_or(0)]).collect();
+        let mut pad_film_m: Vec<Vec<f64>> =
+            (0..pad_c.len()).map(|k| vec![0.0; film_nodes.get(k).copied().unwrap_or(0)]).collect();
         let mut pad_nodal_m = vec![Vec::new(); pad_c.len()];
         // The pads of each distinct solid, solved together.
         for (i, solver) in self.solvers.iter_mut().enumerate() {
-            let pads: Vec<(usize, &Vec<f64>)> =
-                pad_c.iter().enumerate().filter_map(|(k, t)| t.as_ref().filter(|_| self.solver_of.get(k).copied().flatten() == Some(i)).map(|t| (k, t))).collect();
+            let pads: Vec<(usize, &Vec<f64>)> = pad_c
+                .iter()
+                .enumerate()
+                .filter_map(|(k, t)| {
+                    t.as_ref().filter(|_| self.solver_of.get(k).copied().flatten() == Some(i)).map(|t| (k, t))
+                })
+                .collect();
             let loads: Vec<f64> = pads
                 .iter()
                 .flat_map(|(_, t)| {
@@ -260,7 +288,12 @@ pub fn install(model: &mut BearingModel, field: &GrowthField) {
     for (k, pm) in model.pads.iter_mut().enumerate() {
         let node = field.extra(k);
         let g = &pm.film.geom;
-        let qp = g.elements.iter().zip(&g.qp).map(|(nodes, q)| q.each_ref().map(|p| (0..4).map(|a| p.n[a] * node[nodes[a]]).sum::<f64>())).collect();
+        let qp = g
+            .elements
+            .iter()
+            .zip(&g.qp)
+            .map(|(nodes, q)| q.each_ref().map(|p| (0..4).map(|a| p.n[a] * node[nodes[a]]).sum::<f64>()))
+            .collect();
         pm.film.set_extra_thickness(Some(SampledField { qp, node }));
     }
 }
@@ -280,7 +313,8 @@ mod tests {
     use crate::physics::pad_elastic::Solid;
 
     fn fillon(sets: &[&str]) -> Case {
-        let set: Vec<String> = std::iter::once("mesh.fidelity=preview").chain(sets.iter().copied()).map(str::to_string).collect();
+        let set: Vec<String> =
+            std::iter::once("mesh.fidelity=preview").chain(sets.iter().copied()).map(str::to_string).collect();
         load_case(include_str!("../../cases/fillon-a.toml"), &set).unwrap().1
     }
 
@@ -293,7 +327,14 @@ mod tests {
                 let grid = pad_grid(case, k);
                 let r = case.bearing.journal_radius_m;
                 debug_assert_eq!(grid.n_nodes(), model.pads[k].film.geom.n_nodes());
-                Some(std::sync::Arc::new(PadMesh::extrude(&grid, r, p.leading_edge_rad, p.bore_radius_m(r), p.thickness_m, case.mesh.pad_radial_elements)))
+                Some(std::sync::Arc::new(PadMesh::extrude(
+                    &grid,
+                    r,
+                    p.leading_edge_rad,
+                    p.bore_radius_m(r),
+                    p.thickness_m,
+                    case.mesh.pad_radial_elements,
+                )))
             })
             .collect()
     }
@@ -314,7 +355,11 @@ mod tests {
         uniform_heating_similarity("mesh.pad_radial_elements=4", Some(2));
     }
 
-    const STEEL: [&str; 3] = ["thermal.pad_expansion_ppm_per_k=12", "thermal.journal_expansion_ppm_per_k=11", "thermal.reference_temperature_c=20"];
+    const STEEL: [&str; 3] = [
+        "thermal.pad_expansion_ppm_per_k=12",
+        "thermal.journal_expansion_ppm_per_k=11",
+        "thermal.reference_temperature_c=20",
+    ];
 
     fn uniform_heating_similarity(layers: &str, step: Option<usize>) {
         let case = fillon(&[STEEL[0], STEEL[1], STEEL[2], layers]);
@@ -324,7 +369,8 @@ mod tests {
         assert_eq!(tehd.distinct_solids(), 1, "four identical pads");
         assert_eq!(tehd.solvers[0].step, step.unwrap_or(1));
         let dt = 30.0;
-        let pad_c: Vec<Option<Vec<f64>>> = meshes.iter().map(|m| m.as_ref().map(|m| vec![20.0 + dt; m.n_nodes()])).collect();
+        let pad_c: Vec<Option<Vec<f64>>> =
+            meshes.iter().map(|m| m.as_ref().map(|m| vec![20.0 + dt; m.n_nodes()])).collect();
         let nodes: Vec<usize> = model.pads.iter().map(|p| p.film.geom.n_nodes()).collect();
         let g = tehd.evaluate(&pad_c, 50.0, &nodes);
         // Journal: α_j R ΔT_j.
@@ -393,7 +439,8 @@ mod tests {
                             .nodes
                             .iter()
                             .map(|x| {
-                                let arc = (x[1].atan2(x[0]) - p.leading_edge_rad).rem_euclid(std::f64::consts::TAU) / p.arc_rad;
+                                let arc = (x[1].atan2(x[0]) - p.leading_edge_rad).rem_euclid(std::f64::consts::TAU)
+                                    / p.arc_rad;
                                 let depth = x[0].hypot(x[1]) - rb;
                                 50.0 + (20.0 * arc + 5.0 * (1.0 - 2.0 * x[2] / case.bearing.length_m)) * decay(depth)
                             })
@@ -404,12 +451,26 @@ mod tests {
         };
         let conducted = field(&|d| (-std::f64::consts::PI * d / (rb * pad.arc_rad)).exp());
         let steep = field(&|d| (-d / (0.3 * t)).exp());
-        for (name, pad_c, film_bound, nodal_bound) in [("conducted", conducted, 0.075, 0.065), ("steep", steep, 0.052, 0.029)] {
+        for (name, pad_c, film_bound, nodal_bound) in
+            [("conducted", conducted, 0.075, 0.065), ("steep", steep, 0.052, 0.029)]
+        {
             let (a, b) = (all.evaluate(&pad_c, 60.0, &nodes), every_second.evaluate(&pad_c, 60.0, &nodes));
             let scale = a.pad_film_m[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-            let film = a.pad_film_m.iter().flatten().zip(b.pad_film_m.iter().flatten()).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs())) / scale;
+            let film = a
+                .pad_film_m
+                .iter()
+                .flatten()
+                .zip(b.pad_film_m.iter().flatten())
+                .fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()))
+                / scale;
             let nodal_scale = a.pad_nodal_m[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-            let nodal = a.pad_nodal_m.iter().flatten().zip(b.pad_nodal_m.iter().flatten()).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs())) / nodal_scale;
+            let nodal = a
+                .pad_nodal_m
+                .iter()
+                .flatten()
+                .zip(b.pad_nodal_m.iter().flatten())
+                .fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()))
+                / nodal_scale;
             eprintln!("{name}: every second layer moves the film-face growth by {film:.2e}, the nodal displacement by {nodal:.2e} of the largest (film {scale:.3e} m)");
             assert_eq!(b.pad_nodal_m[0].len(), a.pad_nodal_m[0].len());
             assert!(film < film_bound, "{name}: {film}");

@@ -140,7 +140,10 @@ impl PadTemperatures {
     #[must_use]
     pub fn dirichlet_reaction(&self, t_in: f64, t_j: f64) -> f64 {
         let all = self.column(t_in, t_j, 0..self.n);
-        self.dirichlet_rows.iter().map(|(row, f)| row.iter().map(|&(c, v)| v * all[c]).sum::<f64>() - (f[0] + t_in * f[1] + t_j * f[2])).sum()
+        self.dirichlet_rows
+            .iter()
+            .map(|(row, f)| row.iter().map(|&(c, v)| v * all[c]).sum::<f64>() - (f[0] + t_in * f[1] + t_j * f[2]))
+            .sum()
     }
 }
 
@@ -169,11 +172,14 @@ impl PadThermal {
             let (nf, ne) = (g.n_nodes(), g.elements.len());
             let n = nf + c.mesh.n_nodes();
             let mut groups: Vec<Vec<usize>> = g.elements.iter().map(|e| e.to_vec()).collect();
-            groups.extend(g.elements.iter().map(|e| vec![e[0], e[1], e[2], e[3], e[0] + nf, e[1] + nf, e[2] + nf, e[3] + nf]));
+            groups.extend(
+                g.elements.iter().map(|e| vec![e[0], e[1], e[2], e[3], e[0] + nf, e[1] + nf, e[2] + nf, e[3] + nf]),
+            );
             groups.extend(c.hex_groups(nf).map(|h| h.to_vec()));
             let pattern = GeneralPattern::from_groups(n, groups.iter().map(Vec::as_slice));
             let pad = PadLayout { offset: nf, hex_groups: 2 * ne, coupling_groups: ne };
-            self.coupled = Some(System::new(pattern, FilmLayout { film_groups: 0, coupling_groups: Some(ne) }, Some(pad))?);
+            self.coupled =
+                Some(System::new(pattern, FilmLayout { film_groups: 0, coupling_groups: Some(ne) }, Some(pad))?);
         }
         self.coupled.as_mut().ok_or_else(|| SolverError::Singular("no pad system".into()))
     }
@@ -183,7 +189,12 @@ impl PadThermal {
     ///
     /// # Errors
     /// A failed factorisation.
-    pub fn solve_pad_bc1(&self, solver: &mut PadDirichletSolver, film_t: &[f64], material: &PadMaterial) -> Result<Option<Vec<f64>>, SolverError> {
+    pub fn solve_pad_bc1(
+        &self,
+        solver: &mut PadDirichletSolver,
+        film_t: &[f64],
+        material: &PadMaterial,
+    ) -> Result<Option<Vec<f64>>, SolverError> {
         let Some(c) = &self.conduction else { return Ok(None) };
         c.solve_dirichlet(solver, material, film_t).map(Some)
     }
@@ -199,7 +210,12 @@ impl PadThermal {
     ///
     /// # Errors
     /// A singular system (never NaN temperatures).
-    pub fn solve(&mut self, film: &PadFilm, inp: &FilmInputs<'_>, setup: &ThermalSetup) -> Result<PadTemperatures, SolverError> {
+    pub fn solve(
+        &mut self,
+        film: &PadFilm,
+        inp: &FilmInputs<'_>,
+        setup: &ThermalSetup,
+    ) -> Result<PadTemperatures, SolverError> {
         let flow = self.energy.flow_state(film, inp, &setup.injection, &setup.oil, setup.striated);
         let coupled = self.conduction.is_some() && setup.exchange != Exchange::Adiabatic;
         let t_prev = self.t_prev.take();
@@ -214,7 +230,18 @@ impl PadThermal {
         let n = sys.pattern.n;
         sys.values.fill(0.0);
         sys.rhs.fill(0.0);
-        energy.assemble(film, &flow, &setup.oil, setup.exchange, setup.stabilisation, t_prev.as_deref(), &sys.pattern, sys.film, &mut sys.values, &mut sys.rhs);
+        energy.assemble(
+            film,
+            &flow,
+            &setup.oil,
+            setup.exchange,
+            setup.stabilisation,
+            t_prev.as_deref(),
+            &sys.pattern,
+            sys.film,
+            &mut sys.values,
+            &mut sys.rhs,
+        );
         let g = &film.geom;
         if let (Some(pl), Some(cond)) = (sys.pad.filter(|_| coupled), conduction.as_ref()) {
             cond.assemble_body(&setup.material, &sys.pattern, pl, &mut sys.values, &mut sys.rhs);
@@ -228,12 +255,15 @@ impl PadThermal {
         let mut warnings = Vec::new();
         let mut inlet_nodes = FilmEnergy::inflow_nodes(film, &flow);
         if inlet_nodes.is_empty() {
-            warnings.push("no oil flows in through the leading edge: its whole edge is held at the inlet temperature".to_string());
+            warnings.push(
+                "no oil flows in through the leading edge: its whole edge is held at the inlet temperature".to_string(),
+            );
             inlet_nodes = (0..g.n_nodes()).filter(|&k| g.sites[k] == NodeSite::Leading).collect();
         }
         let mut dirichlet_rows = Vec::with_capacity(inlet_nodes.len());
         for &k in &inlet_nodes {
-            dirichlet_rows.push((sys.pattern.row_entries(&sys.values, k), [sys.rhs[k], sys.rhs[n + k], sys.rhs[2 * n + k]]));
+            dirichlet_rows
+                .push((sys.pattern.row_entries(&sys.values, k), [sys.rhs[k], sys.rhs[n + k], sys.rhs[2 * n + k]]));
             sys.pattern.set_identity_row(&mut sys.values, k);
             sys.rhs[k] = 0.0;
             sys.rhs[n + k] = 1.0;
@@ -251,11 +281,17 @@ impl PadThermal {
         // Flows and flow-weighted temperatures.
         let weighted = |nodes: &[usize]| -> (f64, Affine) {
             let q: f64 = nodes.iter().map(|&k| flow.outflow[k]).sum();
-            let t = if q.abs() > 0.0 { Affine::of(|c| nodes.iter().map(|&k| flow.outflow[k] * col(c, k)).sum::<f64>() / q) } else { Affine::default() };
+            let t = if q.abs() > 0.0 {
+                Affine::of(|c| nodes.iter().map(|&k| flow.outflow[k] * col(c, k)).sum::<f64>() / q)
+            } else {
+                Affine::default()
+            };
             (sym * q, t)
         };
         let te: Vec<usize> = (0..nf).filter(|&k| g.sites[k] == NodeSite::Trailing && flow.outflow[k] > 0.0).collect();
-        let back: Vec<usize> = (0..nf).filter(|&k| g.sites[k] == NodeSite::Leading && flow.outflow[k] > 0.0 && !inlet_nodes.contains(&k)).collect();
+        let back: Vec<usize> = (0..nf)
+            .filter(|&k| g.sites[k] == NodeSite::Leading && flow.outflow[k] > 0.0 && !inlet_nodes.contains(&k))
+            .collect();
         let (q_te, t_te) = weighted(&te);
         let (q_back, t_back) = weighted(&back);
         let q_in = -sym * inlet_nodes.iter().map(|&k| flow.outflow[k].min(0.0)).sum::<f64>();
@@ -277,7 +313,9 @@ impl PadThermal {
         let mean_film = Affine::of(|c| (0..nf).map(|i| w_mean[i] * col(c, i)).sum::<f64>() / area);
         let journal_flux = if setup.exchange == Exchange::Parabolic {
             let mut j = Affine::of(|c| {
-                (0..nf).map(|i| w_t[i] * col(c, i) - w_p[i] * if coupled { col(c, nf + i) } else { col(c, i) }).sum::<f64>()
+                (0..nf)
+                    .map(|i| w_t[i] * col(c, i) - w_p[i] * if coupled { col(c, nf + i) } else { col(c, i) })
+                    .sum::<f64>()
             });
             j.c_j -= k_j;
             Affine { c0: sym * j.c0, c_in: sym * j.c_in, c_j: sym * j.c_j }

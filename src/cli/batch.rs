@@ -27,9 +27,11 @@ pub struct BatchArgs<'a> {
 /// # Errors
 /// Unreadable inputs, a bad designs table, an output that cannot be written, or every design failed.
 pub fn run(args: &BatchArgs<'_>) -> Result<()> {
-    let table = std::fs::read_to_string(args.designs).with_context(|| format!("cannot read designs table {}", args.designs.display()))?;
+    let table = std::fs::read_to_string(args.designs)
+        .with_context(|| format!("cannot read designs table {}", args.designs.display()))?;
     let designs = Designs::parse(&table).with_context(|| format!("in {}", args.designs.display()))?;
-    let text = std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let text =
+        std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
     let range = args.shard.range(designs.rows.len());
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
     let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "design", &designs.keys)?;
@@ -40,7 +42,11 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
         // Every key of the table is a column, in header order, empty where the design keeps the base value.
         let given = &designs.rows[i];
         let (mut row, _) = runner.row(i, given);
-        row.inputs = designs.keys.iter().map(|k| (k.clone(), given.iter().find(|(g, _)| g == k).map(|(_, v)| v.clone()).unwrap_or_default())).collect();
+        row.inputs = designs
+            .keys
+            .iter()
+            .map(|k| (k.clone(), given.iter().find(|(g, _)| g == k).map(|(_, v)| v.clone()).unwrap_or_default()))
+            .collect();
         if row.result.is_err() {
             failed += 1;
             pb.println(format!("design {i}: {}", row.error_text()));

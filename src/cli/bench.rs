@@ -58,7 +58,11 @@ fn with_mesh(text: &str, set: &[String]) -> Result<Case> {
 fn machine() -> String {
     let cpu = std::fs::read_to_string("/proc/cpuinfo")
         .ok()
-        .and_then(|t| t.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string()))
+        .and_then(|t| {
+            t.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
         .unwrap_or_else(|| "unknown CPU".into());
     let cores = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
     let mem = std::fs::read_to_string("/proc/meminfo")
@@ -134,11 +138,14 @@ fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Ve
 fn growth(text: &str, repeats: usize) -> Result<(Vec<(usize, f64)>, f64)> {
     let mut pts = Vec::new();
     for (nx, nz, no) in [(12, 4, 3), (24, 8, 4), (48, 16, 6), (96, 32, 12), (192, 64, 24)] {
-        let case = with_mesh(text, &[
-            format!("mesh.circumferential_elements={nx}"),
-            format!("mesh.axial_elements={nz}"),
-            format!("mesh.orifice_elements={no}"),
-        ])?;
+        let case = with_mesh(
+            text,
+            &[
+                format!("mesh.circumferential_elements={nx}"),
+                format!("mesh.axial_elements={nz}"),
+                format!("mesh.orifice_elements={no}"),
+            ],
+        )?;
         let (ms, s) = timed(&case, repeats)?;
         pts.push((s.derived.film_nodes, ms));
     }
@@ -161,11 +168,14 @@ fn thermal_cost(texts: &[(&str, String)], repeats: usize) -> Result<Vec<(String,
         let mut ms = [0.0; 3];
         let mut nodes = 0;
         for (i, model) in [("isothermal", "bc1"), ("thd", "bc1"), ("thd", "bc3")].iter().enumerate() {
-            let case = with_mesh(text, &[
-                "mesh.fidelity=\"standard\"".into(),
-                format!("thermal.model=\"{}\"", model.0),
-                format!("thermal.pad_film_bc=\"{}\"", model.1),
-            ])?;
+            let case = with_mesh(
+                text,
+                &[
+                    "mesh.fidelity=\"standard\"".into(),
+                    format!("thermal.model=\"{}\"", model.0),
+                    format!("thermal.pad_film_bc=\"{}\"", model.1),
+                ],
+            )?;
             let (t, s) = timed(&case, repeats)?;
             ms[i] = t;
             nodes = s.derived.film_nodes;
@@ -179,7 +189,15 @@ fn thermal_cost(texts: &[(&str, String)], repeats: usize) -> Result<Vec<(String,
 fn svg_plot(rows: &[LevelRow]) -> String {
     let (w, h, pad) = (640.0, 400.0, 60.0);
     let pts: Vec<&LevelRow> = rows.iter().filter(|r| r.err_k > 0.0).collect();
-    let err = |r: &LevelRow| r.err_eccentricity.max(r.err_k).max(r.err_c).max(r.err_p_max).max(r.err_t_max.unwrap_or(0.0)).max(r.err_flows.unwrap_or(0.0)).max(1e-6);
+    let err = |r: &LevelRow| {
+        r.err_eccentricity
+            .max(r.err_k)
+            .max(r.err_c)
+            .max(r.err_p_max)
+            .max(r.err_t_max.unwrap_or(0.0))
+            .max(r.err_flows.unwrap_or(0.0))
+            .max(1e-6)
+    };
     let (tmin, tmax) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), r| (a.min(r.median_ms), b.max(r.median_ms)));
     let (emin, emax) = pts.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), r| (a.min(err(r)), b.max(err(r))));
     let (lt0, lt1) = ((tmin * 0.5).log10().floor(), (tmax * 2.0).log10().ceil());
@@ -187,7 +205,13 @@ fn svg_plot(rows: &[LevelRow]) -> String {
     let x = |t: f64| pad + (t.log10() - lt0) / (lt1 - lt0) * (w - 1.5 * pad);
     let y = |e: f64| h - pad - (e.log10() - le0) / (le1 - le0) * (h - 1.5 * pad);
     let mut s = format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n");
-    let _ = writeln!(s, "<line x1=\"{pad}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"black\"/>", h - pad, w - 0.5 * pad, h - pad);
+    let _ = writeln!(
+        s,
+        "<line x1=\"{pad}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"black\"/>",
+        h - pad,
+        w - 0.5 * pad,
+        h - pad
+    );
     let _ = writeln!(s, "<line x1=\"{pad}\" y1=\"{}\" x2=\"{pad}\" y2=\"{}\" stroke=\"black\"/>", h - pad, 0.5 * pad);
     #[allow(clippy::cast_possible_truncation)]
     for d in lt0 as i32..=lt1 as i32 {
@@ -199,26 +223,50 @@ fn svg_plot(rows: &[LevelRow]) -> String {
         let e = 10f64.powi(d);
         let _ = writeln!(s, "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"end\">1e{d}</text>", pad - 6.0, y(e) + 4.0);
     }
-    let _ = writeln!(s, "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wall time per solve (release)</text>", w / 2.0, h - 12.0);
+    let _ = writeln!(
+        s,
+        "<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">wall time per solve (release)</text>",
+        w / 2.0,
+        h - 12.0
+    );
     let _ = writeln!(s, "<text x=\"14\" y=\"{}\" transform=\"rotate(-90 14 {})\" text-anchor=\"middle\">largest relative error (ε, K, C, p_max, T_max, flows)</text>", h / 2.0, h / 2.0);
     let colours = ["#440154", "#21918c", "#d07000", "#3b528b"];
     let mut cases: Vec<&str> = pts.iter().map(|r| r.case.as_str()).collect();
     cases.dedup();
     for (ci, c) in cases.iter().enumerate() {
         let col = colours[ci % colours.len()];
-        let line: Vec<String> = pts.iter().filter(|r| r.case == *c).map(|r| format!("{:.1},{:.1}", x(r.median_ms), y(err(r)))).collect();
-        let _ = writeln!(s, "<polyline points=\"{}\" fill=\"none\" stroke=\"{col}\" stroke-width=\"2\"/>", line.join(" "));
+        let line: Vec<String> =
+            pts.iter().filter(|r| r.case == *c).map(|r| format!("{:.1},{:.1}", x(r.median_ms), y(err(r)))).collect();
+        let _ =
+            writeln!(s, "<polyline points=\"{}\" fill=\"none\" stroke=\"{col}\" stroke-width=\"2\"/>", line.join(" "));
         for r in pts.iter().filter(|r| r.case == *c) {
-            let _ = writeln!(s, "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{col}\"/><text x=\"{:.1}\" y=\"{:.1}\">{}</text>", x(r.median_ms), y(err(r)), x(r.median_ms) + 6.0, y(err(r)) - 6.0, r.level);
+            let _ = writeln!(
+                s,
+                "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"4\" fill=\"{col}\"/><text x=\"{:.1}\" y=\"{:.1}\">{}</text>",
+                x(r.median_ms),
+                y(err(r)),
+                x(r.median_ms) + 6.0,
+                y(err(r)) - 6.0,
+                r.level
+            );
         }
-        let _ = writeln!(s, "<text x=\"{}\" y=\"{}\" fill=\"{col}\">{c}</text>", w - 200.0, 30.0 + 16.0 * f64::from(u32::try_from(ci).unwrap_or(0)));
+        let _ = writeln!(
+            s,
+            "<text x=\"{}\" y=\"{}\" fill=\"{col}\">{c}</text>",
+            w - 200.0,
+            30.0 + 16.0 * f64::from(u32::try_from(ci).unwrap_or(0))
+        );
     }
     s.push_str("</svg>\n");
     s
 }
 
 fn pct(x: f64) -> String {
-    if x == 0.0 { "—".into() } else { format!("{:.2} %", 100.0 * x) }
+    if x == 0.0 {
+        "—".into()
+    } else {
+        format!("{:.2} %", 100.0 * x)
+    }
 }
 
 /// Runs the benchmark and writes the documents under `root`.
@@ -248,7 +296,8 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     let machine = machine();
     let date = today();
     let mut md = String::new();
-    let _ = writeln!(md, "# Performance\n\nGenerated by `cargo run --release -- bench` on {date}.\nMachine: {machine}.\n");
+    let _ =
+        writeln!(md, "# Performance\n\nGenerated by `cargo run --release -- bench` on {date}.\nMachine: {machine}.\n");
     let _ = writeln!(
         md,
         "Each time is the median of {repeats} complete solves in one process (mesh build, equilibrium — with the thermal loop for \
@@ -278,12 +327,17 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     let _ = writeln!(md, "## Targets (compressor bearing, 5 pads)\n\n| target | measured | status |\n|---|---|---|");
     for (level, limit) in [("preview", 15.0), ("standard", 100.0)] {
         if let Some(r) = rows.iter().find(|r| r.case == "compressor-bearing" && r.level == level) {
-            let status = if r.median_ms <= limit { "met".to_string() } else { format!("missed by {:.1} ms", r.median_ms - limit) };
+            let status = if r.median_ms <= limit {
+                "met".to_string()
+            } else {
+                format!("missed by {:.1} ms", r.median_ms - limit)
+            };
             let _ = writeln!(md, "| isothermal {level} ≤ {limit} ms | {:.1} ms | {status} |", r.median_ms);
         }
     }
     if let Some(r) = rows.iter().find(|r| r.case == "compressor-bearing THD BC1" && r.level == "standard") {
-        let status = if r.median_ms <= 300.0 { "met".to_string() } else { format!("missed by {:.1} ms", r.median_ms - 300.0) };
+        let status =
+            if r.median_ms <= 300.0 { "met".to_string() } else { format!("missed by {:.1} ms", r.median_ms - 300.0) };
         let _ = writeln!(md, "| THD (BC1) standard ≤ 300 ms | {:.1} ms | {status} |", r.median_ms);
     }
     let _ = writeln!(
@@ -301,7 +355,10 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
             100.0 * (1.0 - ms[1] / ms[2])
         );
     }
-    let _ = writeln!(md, "\n## Cost growth\n\nCompressor bearing, uniformly refined meshes:\n\n| film nodes | time |\n|---|---|");
+    let _ = writeln!(
+        md,
+        "\n## Cost growth\n\nCompressor bearing, uniformly refined meshes:\n\n| film nodes | time |\n|---|---|"
+    );
     for (n, t) in &pts {
         let _ = writeln!(md, "| {n} | {t:.1} ms |");
     }

@@ -28,7 +28,10 @@ fn cell(row: &Row, name: &str) -> Option<f64> {
 
 /// Largest relative difference of column `name` between two runs over the designs solved in both.
 fn worst(a: &[Row], b: &[Row], name: &str) -> f64 {
-    a.iter().zip(b).filter_map(|(x, y)| Some(((cell(x, name)? - cell(y, name)?) / cell(y, name)?).abs())).fold(0.0, f64::max)
+    a.iter()
+        .zip(b)
+        .filter_map(|(x, y)| Some(((cell(x, name)? - cell(y, name)?) / cell(y, name)?).abs()))
+        .fold(0.0, f64::max)
 }
 
 /// The markdown section.
@@ -37,7 +40,8 @@ fn worst(a: &[Row], b: &[Row], name: &str) -> f64 {
 /// Missing files or a bad designs table.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let designs_path = root.join("cases").join("designs-compressor.csv");
-    let table = std::fs::read_to_string(&designs_path).with_context(|| format!("cannot read {}", designs_path.display()))?;
+    let table =
+        std::fs::read_to_string(&designs_path).with_context(|| format!("cannot read {}", designs_path.display()))?;
     let designs = Designs::parse(&table)?;
     let text = std::fs::read_to_string(root.join("cases").join("compressor-bearing.toml"))?;
     eprintln!("bench: batch cost per design");

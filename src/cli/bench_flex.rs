@@ -75,7 +75,14 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
     for (modes, layers) in [(0, 4), (1, 2), (1, 4), (1, 8), (2, 4), (3, 4)] {
         let (ms, s) = solve_level(&text, modes, layers, repeats)?;
         let e = errors(&s, &truth);
-        let _ = writeln!(md, "| {modes} | {layers} | {ms:.1} ms | {:.2} % | {:.2} % | {:.2} % | {:.2} % |", 100.0 * e[0], 100.0 * e[1], 100.0 * e[2], 100.0 * e[3]);
+        let _ = writeln!(
+            md,
+            "| {modes} | {layers} | {ms:.1} ms | {:.2} % | {:.2} % | {:.2} % | {:.2} % |",
+            100.0 * e[0],
+            100.0 * e[1],
+            100.0 * e[2],
+            100.0 * e[3]
+        );
     }
     md.push_str(&tehd_table(&text, repeats)?);
     Ok(md)
@@ -127,7 +134,9 @@ fn tehd_table(text: &str, repeats: usize) -> Result<String> {
 /// layer, the standard default, and on all) and 8 pad layers (the truth). The explicit film mesh with the
 /// reference fidelity keeps every layer in the growth solid ([`crate::bearing::tehd::growth_layer_step`]).
 fn layers_table(text: &str, repeats: usize) -> Result<String> {
-    let with = |extra: &[String]| -> Vec<String> { TEHD.iter().map(|s| (*s).to_string()).chain(extra.iter().cloned()).collect() };
+    let with = |extra: &[String]| -> Vec<String> {
+        TEHD.iter().map(|s| (*s).to_string()).chain(extra.iter().cloned()).collect()
+    };
     let standard = with(&["mesh.fidelity=\"standard\"".to_string()]);
     let m = load_case(text, &standard)?.1.mesh;
     let film = |fidelity: &str, layers: usize| -> Vec<String> {
@@ -148,7 +157,9 @@ fn layers_table(text: &str, repeats: usize) -> Result<String> {
          |---|---|---|---|---|---|---|---|---|\n",
         truth.derived.film_nodes
     );
-    for (layers, growth, set) in [(2, 2, film("standard", 2)), (4, 2, film("standard", 4)), (4, 4, film("reference", 4))] {
+    for (layers, growth, set) in
+        [(2, 2, film("standard", 2)), (4, 2, film("standard", 4)), (4, 4, film("reference", 4))]
+    {
         let (ms, s) = solve_set(text, &set, repeats)?;
         let r = s.thermal.as_ref().map(|t| t.report.clone()).context("a THD solution")?;
         let (setup, steps) = growth_ms(&r);

@@ -64,7 +64,13 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
          | level | film nodes | equilibrium | linearisation | 400 frequencies | G_y error at 20 Hz | at 200 Hz |\n|---|---|---|---|---|---|---|"
     );
     for (level, nodes, e, l, s, g) in &rows {
-        let err = |i: usize| if *level == "reference" { "—".to_string() } else { format!("{:.2} %", 100.0 * (g[i] - truth[i]).norm() / truth[i].norm()) };
+        let err = |i: usize| {
+            if *level == "reference" {
+                "—".to_string()
+            } else {
+                format!("{:.2} %", 100.0 * (g[i] - truth[i]).norm() / truth[i].norm())
+            }
+        };
         let _ = writeln!(md, "| {level} | {nodes} | {e:.1} ms | {l:.2} ms | {s:.2} ms | {} | {} |", err(0), err(1));
     }
     if let Some((_, _, _, _, s, _)) = rows.iter().find(|r| r.0 == "standard") {

@@ -13,8 +13,8 @@ use std::path::Path;
 use anyhow::Result;
 
 use crate::cli::rotor::{parse_speeds, read_rotor};
-use crate::model::rotor::{BearingSupport, Rotor, DEFAULT_SHAFT_MODES};
 use crate::model::load_case;
+use crate::model::rotor::{BearingSupport, Rotor, DEFAULT_SHAFT_MODES};
 use crate::rotor::analysis::{run, AnalysisParams, AnalysisResult};
 
 /// The target of issue 11: 50 speeds, bearings included, at preview fidelity.
@@ -114,7 +114,8 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
     for m in REDUCTIONS {
         rows.push(measure(&preview, "preview", m, &speeds, repeats)?);
     }
-    let standard = measure(&at_level(&base, &bearing_text, "standard")?, "standard", DEFAULT_SHAFT_MODES, &speeds, repeats)?;
+    let standard =
+        measure(&at_level(&base, &bearing_text, "standard")?, "standard", DEFAULT_SHAFT_MODES, &speeds, repeats)?;
     let mut md = String::new();
     let _ = writeln!(
         md,
@@ -154,7 +155,9 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
             rpm(r)
         );
     }
-    if let (Some(a), Some(b)) = (rows.iter().find(|r| r.shaft_modes == DEFAULT_SHAFT_MODES).and_then(|r| r.result.onset), standard.result.onset) {
+    if let (Some(a), Some(b)) =
+        (rows.iter().find(|r| r.shaft_modes == DEFAULT_SHAFT_MODES).and_then(|r| r.result.onset), standard.result.onset)
+    {
         let _ = writeln!(md, "\nBearing fidelity: the onset at preview differs from standard's by {:.2} % (shaft modes {DEFAULT_SHAFT_MODES}).", 100.0 * (a.speed_rad_s - b.speed_rad_s).abs() / b.speed_rad_s);
     }
     if let Some(row) = rows.iter().find(|r| r.shaft_modes == DEFAULT_SHAFT_MODES) {

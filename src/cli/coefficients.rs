@@ -35,7 +35,14 @@ fn numbers(key: &str, spec: &str) -> Result<Vec<f64>> {
 }
 
 fn empty_table(meaning: FrequencyMeaning) -> CoefficientTable {
-    CoefficientTable { meaning, frequency_rad_s: vec![], speed_rpm: vec![], excitation_rad_s: vec![], k_n_per_m: vec![], c_ns_per_m: vec![] }
+    CoefficientTable {
+        meaning,
+        frequency_rad_s: vec![],
+        speed_rpm: vec![],
+        excitation_rad_s: vec![],
+        k_n_per_m: vec![],
+        c_ns_per_m: vec![],
+    }
 }
 
 fn speed_table(runner: &mut Runner, speeds: &[f64]) -> Result<CoefficientTable> {
@@ -79,7 +86,8 @@ fn excitation_table(runner: &mut Runner, ratios: &[f64]) -> Result<CoefficientTa
 /// # Errors
 /// Bad arguments, an invalid case, every point failed, or an output that cannot be written.
 pub fn run(args: &CoefficientArgs<'_>) -> Result<()> {
-    let text = std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let text =
+        std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
     let mut runner = Runner::new(text, args.set.to_vec(), true);
     let table = match (args.speed_rpm, args.excitation_ratio) {
         (Some(spec), None) => speed_table(&mut runner, &numbers("--speed-rpm", spec)?)?,

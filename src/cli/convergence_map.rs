@@ -10,7 +10,9 @@ use std::sync::Mutex;
 use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::study::convergence::{failures_beside_converged, generated_family, map_bearing, Class, Counts, MapBearing, MapPoint, MapSpec};
+use crate::study::convergence::{
+    failures_beside_converged, generated_family, map_bearing, Class, Counts, MapBearing, MapPoint, MapSpec,
+};
 
 use super::write_atomic;
 
@@ -30,7 +32,11 @@ fn shipped(root: &Path) -> Result<Vec<MapBearing>> {
         .into_iter()
         .map(|n| {
             let text = std::fs::read_to_string(dir.join(&n)).with_context(|| format!("cannot read {n}"))?;
-            Ok(MapBearing { name: n.trim_end_matches(".toml").to_string(), text, set: vec!["mesh.fidelity=\"preview\"".into()] })
+            Ok(MapBearing {
+                name: n.trim_end_matches(".toml").to_string(),
+                text,
+                set: vec!["mesh.fidelity=\"preview\"".into()],
+            })
         })
         .collect()
 }
@@ -39,7 +45,10 @@ fn shipped(root: &Path) -> Result<Vec<MapBearing>> {
 fn run_all(bearings: &[MapBearing], spec: &MapSpec, threads: usize) -> Result<Vec<MapPoint>> {
     let per = spec.directions_deg().len() * spec.sommerfeld.len();
     let pb = ProgressBar::new((bearings.len() * per) as u64);
-    pb.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}").unwrap_or_else(|_| ProgressStyle::default_bar()));
+    pb.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
     let next = Mutex::new(0_usize);
     let out: Mutex<Vec<Result<Vec<MapPoint>>>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
@@ -111,7 +120,8 @@ fn table(shipped: &[MapBearing], family: &[MapBearing], points: &[MapPoint], spe
         row(&mut out, &format!("`cases/{}.toml`", b.name), 1, &p, spec);
     }
     for pads in [2, 3, 4, 5, 6, 8] {
-        let names: Vec<&str> = family.iter().filter(|b| b.name.starts_with(&format!("{pads} pads,"))).map(|b| b.name.as_str()).collect();
+        let names: Vec<&str> =
+            family.iter().filter(|b| b.name.starts_with(&format!("{pads} pads,"))).map(|b| b.name.as_str()).collect();
         if names.is_empty() {
             continue;
         }
@@ -185,7 +195,9 @@ pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: boo
     if update_doc {
         let path = root.join("docs/VALIDATION.md");
         let doc = std::fs::read_to_string(&path).with_context(|| format!("cannot read {}", path.display()))?;
-        let (Some(a), Some(b)) = (doc.find(BEGIN), doc.find(END)) else { bail!("{} has no convergence-map markers", path.display()) };
+        let (Some(a), Some(b)) = (doc.find(BEGIN), doc.find(END)) else {
+            bail!("{} has no convergence-map markers", path.display())
+        };
         let new = format!("{}{BEGIN}\n{text}{}", &doc[..a], &doc[b..]);
         write_atomic(&path, new.as_bytes())?;
         eprintln!("updated {}", path.display());

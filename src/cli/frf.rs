@@ -30,7 +30,9 @@ pub struct FrfArgs<'a> {
 /// Port names (`A`, `B`) of a case, in its order.
 #[must_use]
 pub fn port_names(case: &Case) -> Vec<&'static str> {
-    case.hydraulics.as_ref().map_or_else(Vec::new, |h| h.ports.iter().map(|p| if p.sign > 0.0 { "A" } else { "B" }).collect())
+    case.hydraulics
+        .as_ref()
+        .map_or_else(Vec::new, |h| h.ports.iter().map(|p| if p.sign > 0.0 { "A" } else { "B" }).collect())
 }
 
 /// Computes and writes the curves.

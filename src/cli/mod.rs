@@ -368,17 +368,21 @@ pub fn run(command: Command) -> Result<()> {
             let shard = shard.as_deref().map_or(Ok(crate::study::Shard::ALL), crate::study::Shard::parse)?;
             batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl })
         }
-        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag } => coefficients::run(&coefficients::CoefficientArgs {
-            case: &case,
-            set: &set,
-            speed_rpm: speed_rpm.as_deref(),
-            excitation_ratio: excitation_ratio.as_deref(),
-            ross,
-            csv,
-            node,
-            tag: &tag,
-        }),
-        Command::Modes { case, set, count, table, json, csv } => modes::run(&modes::ModeArgs { case: &case, set: &set, count, table, json, csv }),
+        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag } => {
+            coefficients::run(&coefficients::CoefficientArgs {
+                case: &case,
+                set: &set,
+                speed_rpm: speed_rpm.as_deref(),
+                excitation_ratio: excitation_ratio.as_deref(),
+                ross,
+                csv,
+                node,
+                tag: &tag,
+            })
+        }
+        Command::Modes { case, set, count, table, json, csv } => {
+            modes::run(&modes::ModeArgs { case: &case, set: &set, count, table, json, csv })
+        }
         Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
             frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
         }
@@ -399,7 +403,13 @@ pub fn run(command: Command) -> Result<()> {
             let args = rotor::RotorArgs {
                 rotor: &rotor,
                 speeds: &speeds,
-                coefficients: coefficients.map(|c| if c == "full" { crate::model::rotor::CoefficientModel::Full } else { crate::model::rotor::CoefficientModel::Reduced }),
+                coefficients: coefficients.map(|c| {
+                    if c == "full" {
+                        crate::model::rotor::CoefficientModel::Full
+                    } else {
+                        crate::model::rotor::CoefficientModel::Reduced
+                    }
+                }),
                 shaft_modes,
                 json,
                 csv,
@@ -410,14 +420,27 @@ pub fn run(command: Command) -> Result<()> {
                 rotor::run(&args)
             }
         }
-        Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => {
-            convergence_map::run(&root, &convergence_map::Selection { quick, step_deg, only }, csv.as_deref(), update_doc)
-        }
+        Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => convergence_map::run(
+            &root,
+            &convergence_map::Selection { quick, step_deg, only },
+            csv.as_deref(),
+            update_doc,
+        ),
         Command::Bench { repeats, root, only } => match only.as_deref() {
             None => bench::run(&root, repeats.max(1)),
-            Some("frf") => bench::replace_section(&root, "## Controllable lubrication", &bench_frf::section(&root, repeats.max(1))?),
-            Some("flex") => bench::replace_section(&root, "## Flexible pads", &bench_flex::section(&root, repeats.clamp(1, 3))?),
-            Some("rotor") => bench::replace_section(&root, "## Rotor–bearing analysis", &bench_rotor::section(&root, repeats.max(1))?),
+            Some("frf") => bench::replace_section(
+                &root,
+                "## Controllable lubrication",
+                &bench_frf::section(&root, repeats.max(1))?,
+            ),
+            Some("flex") => {
+                bench::replace_section(&root, "## Flexible pads", &bench_flex::section(&root, repeats.clamp(1, 3))?)
+            }
+            Some("rotor") => bench::replace_section(
+                &root,
+                "## Rotor–bearing analysis",
+                &bench_rotor::section(&root, repeats.max(1))?,
+            ),
             Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor"),
         },
     }

@@ -18,7 +18,8 @@ use super::{read_case, write_atomic};
 
 /// Meshes of the convergence table: (circumferential, axial over the modelled part, layers). The first six
 /// follow the thesis's progression (n × n/2 film elements, 2 layers); the last is the reference.
-pub const TABLE_MESHES: [(usize, usize, usize); 7] = [(12, 6, 2), (18, 9, 2), (24, 12, 2), (30, 15, 2), (36, 18, 2), (42, 21, 2), (84, 42, 8)];
+pub const TABLE_MESHES: [(usize, usize, usize); 7] =
+    [(12, 6, 2), (18, 9, 2), (24, 12, 2), (30, 15, 2), (36, 18, 2), (42, 21, 2), (84, 42, 8)];
 
 /// One mode of one pad.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -86,12 +87,21 @@ pub fn pad_mode_rows(case: &crate::model::Case, count: usize) -> Result<Vec<Mode
 fn text(rows: &[ModeRow], table: &[ModeTableRow]) -> String {
     let mut s = String::from("pad  mode  frequency [Hz]  modal mass [kg]  modal stiffness [N/m]  unknowns  residual\n");
     for r in rows {
-        let _ = writeln!(s, "{:>3}  {:>4}  {:>14.1}  {:>15.4e}  {:>21.4e}  {:>8}  {:>8.1e}", r.pad, r.mode, r.frequency_hz, r.modal_mass_kg, r.modal_stiffness_n_per_m, r.unknowns, r.residual);
+        let _ = writeln!(
+            s,
+            "{:>3}  {:>4}  {:>14.1}  {:>15.4e}  {:>21.4e}  {:>8}  {:>8.1e}",
+            r.pad, r.mode, r.frequency_hz, r.modal_mass_kg, r.modal_stiffness_n_per_m, r.unknowns, r.residual
+        );
     }
     if !table.is_empty() {
         s.push_str("\nmesh  film elements  solid elements  frequencies [Hz] (relative error vs the last mesh)\n");
         for (i, r) in table.iter().enumerate() {
-            let cols: Vec<String> = r.frequencies_hz.iter().zip(&r.relative_error).map(|(f, e)| format!("{f:.1} ({:.2} %)", 100.0 * e)).collect();
+            let cols: Vec<String> = r
+                .frequencies_hz
+                .iter()
+                .zip(&r.relative_error)
+                .map(|(f, e)| format!("{f:.1} ({:.2} %)", 100.0 * e))
+                .collect();
             let _ = writeln!(s, "{:>4}  {:>13}  {:>14}  {}", i + 1, r.film_elements, r.solid_elements, cols.join("  "));
         }
     }
@@ -103,13 +113,33 @@ fn csv(rows: &[ModeRow], table: &[ModeTableRow]) -> String {
     if table.is_empty() {
         s.push_str("pad,mode,frequency_hz,modal_mass_kg,modal_stiffness_n_per_m,unknowns,iterations,residual\n");
         for r in rows {
-            let _ = writeln!(s, "{},{},{},{},{},{},{},{}", r.pad, r.mode, r.frequency_hz, r.modal_mass_kg, r.modal_stiffness_n_per_m, r.unknowns, r.iterations, r.residual);
+            let _ = writeln!(
+                s,
+                "{},{},{},{},{},{},{},{}",
+                r.pad,
+                r.mode,
+                r.frequency_hz,
+                r.modal_mass_kg,
+                r.modal_stiffness_n_per_m,
+                r.unknowns,
+                r.iterations,
+                r.residual
+            );
         }
     } else {
         s.push_str("mesh,film_elements,solid_elements,layers,mode,frequency_hz,relative_error,unknowns,seconds\n");
         for (i, r) in table.iter().enumerate() {
             for (m, (f, e)) in r.frequencies_hz.iter().zip(&r.relative_error).enumerate() {
-                let _ = writeln!(s, "{},{},{},{},{m},{f},{e},{},{}", i + 1, r.film_elements, r.solid_elements, r.layers, r.unknowns, r.seconds);
+                let _ = writeln!(
+                    s,
+                    "{},{},{},{},{m},{f},{e},{},{}",
+                    i + 1,
+                    r.film_elements,
+                    r.solid_elements,
+                    r.layers,
+                    r.unknowns,
+                    r.seconds
+                );
             }
         }
     }

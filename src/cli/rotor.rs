@@ -28,7 +28,8 @@ pub fn read_rotor(path: &Path) -> Result<Rotor> {
     let text = std::fs::read_to_string(path).with_context(|| format!("cannot read rotor file {}", path.display()))?;
     let file = parse_rotor_file(&text).with_context(|| format!("invalid rotor file {}", path.display()))?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let read = |name: &str| std::fs::read_to_string(dir.join(name)).map_err(|e| format!("{}: {e}", dir.join(name).display()));
+    let read =
+        |name: &str| std::fs::read_to_string(dir.join(name)).map_err(|e| format!("{}: {e}", dir.join(name).display()));
     file.resolve(&read).with_context(|| format!("invalid rotor file {}", path.display()))
 }
 
@@ -72,7 +73,8 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
         rotor.shaft_modes = m;
     }
     let speeds = parse_speeds(args.speeds)?;
-    let result = run_analysis(&rotor, AnalysisParams::new(speeds)).with_context(|| format!("analysing {}", args.rotor.display()))?;
+    let result = run_analysis(&rotor, AnalysisParams::new(speeds))
+        .with_context(|| format!("analysing {}", args.rotor.display()))?;
     emit(args, &summary(&rotor, &result), &result, || csv_text(&result))
 }
 
@@ -81,7 +83,12 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
 ///
 /// # Errors
 /// Serialisation and I/O errors.
-pub(super) fn emit<T: serde::Serialize>(args: &RotorArgs<'_>, text: &str, json: &T, csv: impl FnOnce() -> Result<String>) -> Result<()> {
+pub(super) fn emit<T: serde::Serialize>(
+    args: &RotorArgs<'_>,
+    text: &str,
+    json: &T,
+    csv: impl FnOnce() -> Result<String>,
+) -> Result<()> {
     if is_stdout(args.json.as_ref()) || is_stdout(args.csv.as_ref()) {
         eprint!("{text}");
     } else {
@@ -111,7 +118,12 @@ fn whirl(w: Whirl) -> &'static str {
 #[must_use]
 pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
     let mut s = String::new();
-    let _ = writeln!(s, "{}{}", r.title, if r.representative { "  [REPRESENTATIVE rotor: not all data published]" } else { "" });
+    let _ = writeln!(
+        s,
+        "{}{}",
+        r.title,
+        if r.representative { "  [REPRESENTATIVE rotor: not all data published]" } else { "" }
+    );
     let _ = writeln!(
         s,
         "{} elements, {:.1} kg, {} bearing(s), coefficients {:?}; shaft {}; system {} coordinates",
@@ -119,20 +131,35 @@ pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
         rotor.mass(),
         rotor.bearings.len(),
         rotor.coefficients,
-        if r.report.shaft_modes == 0 { "full".to_string() } else { format!("reduced to {} modes per plane", r.report.shaft_modes) },
+        if r.report.shaft_modes == 0 {
+            "full".to_string()
+        } else {
+            format!("reduced to {} modes per plane", r.report.shaft_modes)
+        },
         r.report.system_dofs
     );
-    let _ = writeln!(s, "{} bearing solves, {} eigen-solutions, {:.2} s", r.report.bearing_solves, r.report.eigen_solutions, r.report.seconds);
+    let _ = writeln!(
+        s,
+        "{} bearing solves, {} eigen-solutions, {:.2} s",
+        r.report.bearing_solves, r.report.eigen_solutions, r.report.seconds
+    );
     match r.onset {
         Some(o) => {
-            let _ = writeln!(s, "instability onset: {:.0} rpm (± {:.0})", o.speed_rad_s / RPM, o.bracket_rad_s / RPM / 2.0);
+            let _ =
+                writeln!(s, "instability onset: {:.0} rpm (± {:.0})", o.speed_rad_s / RPM, o.bracket_rad_s / RPM / 2.0);
         }
         None => {
             let _ = writeln!(s, "instability onset: none in the sweep");
         }
     }
     for c in &r.critical_speeds {
-        let _ = writeln!(s, "critical speed (1×, forward mode {}): {:.0} rpm, log dec {:.3}", c.rank + 1, c.speed_rad_s / RPM, c.log_dec);
+        let _ = writeln!(
+            s,
+            "critical speed (1×, forward mode {}): {:.0} rpm, log dec {:.3}",
+            c.rank + 1,
+            c.speed_rad_s / RPM,
+            c.log_dec
+        );
     }
     for w in &r.report.warnings {
         let _ = writeln!(s, "warning: {w}");
@@ -167,7 +194,9 @@ pub fn csv_text(r: &AnalysisResult) -> Result<String> {
         let mut row = vec![format!("{}", p.point.speed_rad_s / RPM), format!("{}", p.point.min_log_dec())];
         for i in 0..MODES {
             match p.point.modes.modes.get(i) {
-                Some(m) => row.extend([format!("{}", m.frequency_hz()), format!("{}", m.log_dec), whirl(m.whirl).to_string()]),
+                Some(m) => {
+                    row.extend([format!("{}", m.frequency_hz()), format!("{}", m.log_dec), whirl(m.whirl).to_string()])
+                }
                 None => row.extend([String::new(), String::new(), String::new()]),
             }
         }

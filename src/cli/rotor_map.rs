@@ -24,7 +24,8 @@ const MODES: usize = 4;
 pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let rotor = read_rotor(args.rotor)?;
     let speeds = parse_speeds(args.speeds)?;
-    let map = critical_speed_map(&rotor, &speeds, POINTS, MODES).with_context(|| format!("critical-speed map of {}", args.rotor.display()))?;
+    let map = critical_speed_map(&rotor, &speeds, POINTS, MODES)
+        .with_context(|| format!("critical-speed map of {}", args.rotor.display()))?;
     emit(args, &summary(&map), &map, || csv_text(&map))
 }
 
@@ -41,12 +42,27 @@ fn direction(d: usize) -> &'static str {
 pub fn summary(m: &CriticalSpeedMap) -> String {
     let mut s = String::new();
     let ks = &m.map.stiffness_n_per_m;
-    let _ = writeln!(s, "undamped critical-speed map: {} stiffnesses {:.2e}–{:.2e} N/m at the bearings, {} modes", ks.len(), ks[0], ks[ks.len() - 1], MODES);
+    let _ = writeln!(
+        s,
+        "undamped critical-speed map: {} stiffnesses {:.2e}–{:.2e} N/m at the bearings, {} modes",
+        ks.len(),
+        ks[0],
+        ks[ks.len() - 1],
+        MODES
+    );
     if m.crossings.is_empty() {
         let _ = writeln!(s, "no bearing curve crosses a mode line over the speeds");
     }
     for c in &m.crossings {
-        let _ = writeln!(s, "mode {} × bearing {} {}: {:.0} rpm at {:.3e} N/m", c.mode + 1, c.bearing, direction(c.direction), c.speed_rad_s / RPM, c.stiffness_n_per_m);
+        let _ = writeln!(
+            s,
+            "mode {} × bearing {} {}: {:.0} rpm at {:.3e} N/m",
+            c.mode + 1,
+            c.bearing,
+            direction(c.direction),
+            c.speed_rad_s / RPM,
+            c.stiffness_n_per_m
+        );
     }
     s
 }
@@ -68,12 +84,20 @@ pub fn csv_text(m: &CriticalSpeedMap) -> Result<String> {
     for (b, curve) in m.bearing_curves.iter().enumerate() {
         for d in 0..2 {
             for p in curve {
-                w.write_record([format!("bearing{b}_{}", direction(d)), format!("{}", if d == 0 { p.1 } else { p.2 }), format!("{}", p.0 / RPM)])?;
+                w.write_record([
+                    format!("bearing{b}_{}", direction(d)),
+                    format!("{}", if d == 0 { p.1 } else { p.2 }),
+                    format!("{}", p.0 / RPM),
+                ])?;
             }
         }
     }
     for c in &m.crossings {
-        w.write_record(["crossing".to_string(), format!("{}", c.stiffness_n_per_m), format!("{}", c.speed_rad_s / RPM)])?;
+        w.write_record([
+            "crossing".to_string(),
+            format!("{}", c.stiffness_n_per_m),
+            format!("{}", c.speed_rad_s / RPM),
+        ])?;
     }
     Ok(String::from_utf8(w.into_inner()?)?)
 }

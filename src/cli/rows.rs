@@ -32,11 +32,17 @@ impl RowSink {
     ///
     /// # Errors
     /// A target that cannot be written.
-    pub fn open(csv_path: Option<&Path>, jsonl_path: Option<&Path>, index_name: &'static str, input_keys: &[String]) -> Result<Self> {
+    pub fn open(
+        csv_path: Option<&Path>,
+        jsonl_path: Option<&Path>,
+        index_name: &'static str,
+        input_keys: &[String],
+    ) -> Result<Self> {
         let csv = match csv_path {
             Some(p) => {
                 let mut w = csv::WriterBuilder::new().flexible(false).from_writer(open(p)?);
-                w.write_record(Row::header(index_name, input_keys)).with_context(|| format!("cannot write {}", p.display()))?;
+                w.write_record(Row::header(index_name, input_keys))
+                    .with_context(|| format!("cannot write {}", p.display()))?;
                 w.flush().with_context(|| format!("cannot write {}", p.display()))?;
                 Some(w)
             }

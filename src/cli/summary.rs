@@ -119,8 +119,22 @@ pub fn summary_text(s: &Solution) -> String {
     }
     let r = &s.reduced;
     let _ = writeln!(o, "  reduced coefficients at ω = {:.1} rad/s (x, y):", r.omega_rad_s);
-    let _ = writeln!(o, "    K [MN/m]   [{:>10.3} {:>10.3}]   C [kN·s/m] [{:>10.3} {:>10.3}]", r.k_n_per_m[0][0] * 1e-6, r.k_n_per_m[0][1] * 1e-6, r.c_ns_per_m[0][0] * 1e-3, r.c_ns_per_m[0][1] * 1e-3);
-    let _ = writeln!(o, "               [{:>10.3} {:>10.3}]              [{:>10.3} {:>10.3}]", r.k_n_per_m[1][0] * 1e-6, r.k_n_per_m[1][1] * 1e-6, r.c_ns_per_m[1][0] * 1e-3, r.c_ns_per_m[1][1] * 1e-3);
+    let _ = writeln!(
+        o,
+        "    K [MN/m]   [{:>10.3} {:>10.3}]   C [kN·s/m] [{:>10.3} {:>10.3}]",
+        r.k_n_per_m[0][0] * 1e-6,
+        r.k_n_per_m[0][1] * 1e-6,
+        r.c_ns_per_m[0][0] * 1e-3,
+        r.c_ns_per_m[0][1] * 1e-3
+    );
+    let _ = writeln!(
+        o,
+        "               [{:>10.3} {:>10.3}]              [{:>10.3} {:>10.3}]",
+        r.k_n_per_m[1][0] * 1e-6,
+        r.k_n_per_m[1][1] * 1e-6,
+        r.c_ns_per_m[1][0] * 1e-3,
+        r.c_ns_per_m[1][1] * 1e-3
+    );
     if let Some(t) = &s.thermal {
         let _ = writeln!(
             o,
@@ -154,7 +168,9 @@ pub fn summary_text(s: &Solution) -> String {
             r.thermal_seconds * 1e3
         );
         if let Some(j) = r.journal_growth_m {
-            let pads = r.pad_growth_range_m.map_or_else(String::new, |[lo, hi]| format!(", pads' film faces {:.2} … {:.2} µm", lo * 1e6, hi * 1e6));
+            let pads = r.pad_growth_range_m.map_or_else(String::new, |[lo, hi]| {
+                format!(", pads' film faces {:.2} … {:.2} µm", lo * 1e6, hi * 1e6)
+            });
             let housing = r.housing_growth_m.iter().copied().reduce(f64::max);
             let housing = housing.map_or_else(String::new, |h| format!(", housing at the pivots {:.2} µm", h * 1e6));
             let _ = writeln!(o, "    thermal growth: journal {:.2} µm{pads}{housing}", j * 1e6);

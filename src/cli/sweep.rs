@@ -23,7 +23,10 @@ pub struct SweepArgs<'a> {
 
 pub fn progress(len: usize) -> ProgressBar {
     let pb = ProgressBar::new(len as u64);
-    pb.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed_precise} eta {eta} {msg}").unwrap_or_else(|_| ProgressStyle::default_bar()));
+    pb.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed_precise} eta {eta} {msg}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
     pb
 }
 
@@ -35,7 +38,8 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     if args.axes.is_empty() {
         bail!("nothing to sweep: give --vary KEY=FROM:TO:STEPS (or --param KEY --from A --to B --steps N)");
     }
-    let text = std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let text =
+        std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
     let points = grid::points(&args.axes)?;
     let keys: Vec<String> = args.axes.iter().map(|a| a.key.clone()).collect();
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));

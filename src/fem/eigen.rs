@@ -108,7 +108,14 @@ fn projected(k: &DMatrix<f64>, m: &DMatrix<f64>) -> Option<(Vec<f64>, DMatrix<f6
 /// # Errors
 /// [`EigenError::Factor`] if `K − σM` is not positive definite (shift above λ₁, or M singular),
 /// [`EigenError::Projection`] on a degenerate subspace, [`EigenError::TooMany`] if `m` exceeds the size.
-pub fn lowest(pattern: &Pattern, k: &[f64], m: &[f64], wanted: usize, shift: f64, params: EigenParams) -> Result<EigenPairs, EigenError> {
+pub fn lowest(
+    pattern: &Pattern,
+    k: &[f64],
+    m: &[f64],
+    wanted: usize,
+    shift: f64,
+    params: EigenParams,
+) -> Result<EigenPairs, EigenError> {
     let n = pattern.n;
     if wanted == 0 || wanted > n {
         return Err(EigenError::TooMany { wanted, n });
@@ -134,7 +141,8 @@ pub fn lowest(pattern: &Pattern, k: &[f64], m: &[f64], wanted: usize, shift: f64
         // K Z = (K − σM) Z + σ M Z = M X + σ M Z: no product with K (Bathe's projection). It omits the solve's
         // round-off, which the true residuals after the loop include.
         let kz = mx_block + &mz * shift;
-        let (lambda, q) = projected(&(z.transpose() * &kz), &(z.transpose() * &mz)).ok_or(EigenError::Projection { iteration: iterations })?;
+        let (lambda, q) = projected(&(z.transpose() * &kz), &(z.transpose() * &mz))
+            .ok_or(EigenError::Projection { iteration: iterations })?;
         x = &z * &q;
         mx_block = &mz * &q;
         values = lambda;

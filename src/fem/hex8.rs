@@ -64,7 +64,11 @@ fn shape(xi: f64, eta: f64, zeta: f64) -> [f64; 8] {
 
 fn dshape(xi: f64, eta: f64, zeta: f64) -> [[f64; 3]; 8] {
     NODES.map(|(a, b, c)| {
-        [0.125 * a * (1.0 + eta * b) * (1.0 + zeta * c), 0.125 * b * (1.0 + xi * a) * (1.0 + zeta * c), 0.125 * c * (1.0 + xi * a) * (1.0 + eta * b)]
+        [
+            0.125 * a * (1.0 + eta * b) * (1.0 + zeta * c),
+            0.125 * b * (1.0 + xi * a) * (1.0 + zeta * c),
+            0.125 * c * (1.0 + xi * a) * (1.0 + eta * b),
+        ]
     })
 }
 
@@ -83,10 +87,12 @@ impl CylBox {
                     let r = self.radius(xi);
                     let d = dshape(xi, eta, zeta);
                     let w = k * r * 0.125 * self.dr * self.dtheta * self.dz;
-                    let grad: [[f64; 3]; 8] = d.map(|g| [2.0 * g[0] / self.dr, 2.0 * g[1] / (r * self.dtheta), 2.0 * g[2] / self.dz]);
+                    let grad: [[f64; 3]; 8] =
+                        d.map(|g| [2.0 * g[0] / self.dr, 2.0 * g[1] / (r * self.dtheta), 2.0 * g[2] / self.dz]);
                     for a in 0..8 {
                         for b in 0..8 {
-                            m[a][b] += w * (grad[a][0] * grad[b][0] + grad[a][1] * grad[b][1] + grad[a][2] * grad[b][2]);
+                            m[a][b] +=
+                                w * (grad[a][0] * grad[b][0] + grad[a][1] * grad[b][1] + grad[a][2] * grad[b][2]);
                         }
                     }
                 }

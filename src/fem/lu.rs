@@ -67,7 +67,17 @@ impl GeneralPattern {
                 fill[r] += 1;
             }
         }
-        Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: c.scatter, start, len: lens, row_ptr, row_pos, diag: c.diag }
+        Self {
+            n,
+            col_ptr: c.col_ptr,
+            row_idx: c.row_idx,
+            scatter: c.scatter,
+            start,
+            len: lens,
+            row_ptr,
+            row_pos,
+            diag: c.diag,
+        }
     }
 
     #[must_use]
@@ -166,7 +176,8 @@ impl LuSolver {
     /// # Errors
     /// [`SolverError::Symbolic`] if faer's analysis fails (out of memory).
     pub fn new(pattern: &GeneralPattern) -> Result<Self, SolverError> {
-        let symbolic = factorize_symbolic_lu(pattern.symbolic(), Default::default()).map_err(|e| SolverError::Symbolic(format!("{e:?}")))?;
+        let symbolic = factorize_symbolic_lu(pattern.symbolic(), Default::default())
+            .map_err(|e| SolverError::Symbolic(format!("{e:?}")))?;
         let work = MemBuffer::new(Self::scratch(&symbolic));
         Ok(Self { symbolic: std::sync::Arc::new(symbolic), numeric: NumericLu::new(), work, factored: false })
     }
@@ -200,7 +211,12 @@ impl LuSolver {
         for chunk in rhs.chunks_mut(MAX_RHS * n) {
             let k = chunk.len() / n;
             let lu = LuRef::new_unchecked(&self.symbolic, &self.numeric);
-            lu.solve_in_place_with_conj(Conj::No, MatMut::from_column_major_slice_mut(chunk, n, k), Par::Seq, MemStack::new(&mut self.work));
+            lu.solve_in_place_with_conj(
+                Conj::No,
+                MatMut::from_column_major_slice_mut(chunk, n, k),
+                Par::Seq,
+                MemStack::new(&mut self.work),
+            );
         }
         if let Some(i) = rhs.iter().position(|v| !v.is_finite()) {
             return Err(SolverError::Singular(format!("non-finite solution at unknown {}", i % n)));

@@ -16,4 +16,4 @@ pub mod supg;
 
 pub use lu::{GeneralPattern, LuSolver};
 pub use quad4::{RectElement, GAUSS_2X2};
-pub use sparse::{Pattern, SpdSolver, SolverError};
+pub use sparse::{Pattern, SolverError, SpdSolver};

@@ -86,7 +86,8 @@ impl RectElement {
     /// element, e.g. the orifice paraboloid cut at the hole's edge.
     #[must_use]
     pub fn subcell_points(&self, m: usize) -> Vec<QuadPoint> {
-        const G3: [(f64, f64); 3] = [(-0.774_596_669_241_483_4, 5.0 / 9.0), (0.0, 8.0 / 9.0), (0.774_596_669_241_483_4, 5.0 / 9.0)];
+        const G3: [(f64, f64); 3] =
+            [(-0.774_596_669_241_483_4, 5.0 / 9.0), (0.0, 8.0 / 9.0), (0.774_596_669_241_483_4, 5.0 / 9.0)];
         #[allow(clippy::cast_precision_loss)]
         let mf = m as f64;
         let mut out = Vec::with_capacity(m * m * 9);

@@ -199,7 +199,11 @@ pub fn element_matrices(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> 
 /// `G = G_c − K_ci K_ii⁻¹ G_i` (column a: the load of ΔT = N_a, `∫ Bᵀ D m N_a dV` condensed consistently with
 /// the stiffness), so the load of `α ΔT` is `α G ΔT_nodal`: one 24 × 8 product per new temperature field.
 #[must_use]
-pub fn element_matrices_and_thermal(x: &[[f64; 3]; 8], mat: &Elastic, form: Formulation) -> Option<(Matrix24, Matrix24, SMatrix<f64, 24, 8>)> {
+pub fn element_matrices_and_thermal(
+    x: &[[f64; 3]; 8],
+    mat: &Elastic,
+    form: Formulation,
+) -> Option<(Matrix24, Matrix24, SMatrix<f64, 24, 8>)> {
     let p = integrate(x, mat, form)?;
     if form == Formulation::Incompatible {
         let chol = p.kii.cholesky()?;

@@ -8,12 +8,12 @@
 //! Rows and columns can be "fixed" (Dirichlet or cavitated nodes): they are replaced by identity rows in the
 //! factorised copy, so the pattern and the symbolic factorisation never change.
 
-use serde::{Deserialize, Serialize};
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::perm::PermRef;
 use faer::sparse::linalg::cholesky::{factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering};
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par, Side};
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 /// Failure of the linear algebra.
@@ -60,7 +60,10 @@ impl Pattern {
     #[must_use]
     pub fn from_groups<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone) -> (Self, Vec<usize>) {
         let c = CscGroups::build(n, groups, |row, col| row >= col);
-        (Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: Vec::new(), diag: c.diag, ordering: None }, c.scatter)
+        (
+            Self { n, col_ptr: c.col_ptr, row_idx: c.row_idx, scatter: Vec::new(), diag: c.diag, ordering: None },
+            c.scatter,
+        )
     }
 
     #[must_use]
@@ -116,7 +119,11 @@ impl Pattern {
             for k in self.col_ptr[c]..self.col_ptr[c + 1] {
                 let r = self.row_idx[k];
                 out[k] = if fixed[r] || fixed[c] {
-                    if r == c { 1.0 } else { 0.0 }
+                    if r == c {
+                        1.0
+                    } else {
+                        0.0
+                    }
                 } else {
                     values[k]
                 };
@@ -137,7 +144,11 @@ pub(crate) struct CscGroups {
 }
 
 impl CscGroups {
-    pub(crate) fn build<'a>(n: usize, groups: impl IntoIterator<Item = &'a [usize]> + Clone, keep: impl Fn(usize, usize) -> bool) -> Self {
+    pub(crate) fn build<'a>(
+        n: usize,
+        groups: impl IntoIterator<Item = &'a [usize]> + Clone,
+        keep: impl Fn(usize, usize) -> bool,
+    ) -> Self {
         // The groups flattened, and the groups of each unknown (incidence), so that each column gathers its rows
         // once, with a marker against repeats, instead of collecting every pair and sorting the repeats away.
         let mut g_ptr = vec![0];
@@ -199,7 +210,14 @@ impl CscGroups {
                 }
             }
         }
-        let diag = (0..n).map(|i| col_ptr[i] + row_idx[col_ptr[i]..col_ptr[i + 1]].binary_search(&i).unwrap_or_else(|_| unreachable!("diagonal in pattern"))).collect();
+        let diag = (0..n)
+            .map(|i| {
+                col_ptr[i]
+                    + row_idx[col_ptr[i]..col_ptr[i + 1]]
+                        .binary_search(&i)
+                        .unwrap_or_else(|_| unreachable!("diagonal in pattern"))
+            })
+            .collect();
         Self { col_ptr, row_idx, scatter, diag }
     }
 }
@@ -256,16 +274,17 @@ impl SpdSolver {
             ..Default::default()
         };
         // A given ordering that is not a permutation of the unknowns falls back to AMD.
-        let inverse: Option<Vec<usize>> = pattern.ordering.as_ref().filter(|o| o.len() == pattern.n).and_then(|order| {
-            let mut inv = vec![usize::MAX; order.len()];
-            for (k, &i) in order.iter().enumerate() {
-                if *inv.get(i)? != usize::MAX {
-                    return None;
+        let inverse: Option<Vec<usize>> =
+            pattern.ordering.as_ref().filter(|o| o.len() == pattern.n).and_then(|order| {
+                let mut inv = vec![usize::MAX; order.len()];
+                for (k, &i) in order.iter().enumerate() {
+                    if *inv.get(i)? != usize::MAX {
+                        return None;
+                    }
+                    inv[i] = k;
                 }
-                inv[i] = k;
-            }
-            Some(inv)
-        });
+                Some(inv)
+            });
         let ordering = match (&pattern.ordering, &inverse) {
             (Some(order), Some(inv)) => SymmetricOrdering::Custom(PermRef::new_checked(order, inv, pattern.n)),
             _ => SymmetricOrdering::Amd,
@@ -304,7 +323,12 @@ impl SpdSolver {
         debug_assert!(self.factored, "solve before factor");
         let n = rhs.len();
         let llt = LltRef::new(&self.symbolic, &self.l_values);
-        llt.solve_in_place_with_conj(Conj::No, MatMut::from_column_major_slice_mut(rhs, n, 1), Par::Seq, MemStack::new(&mut self.work));
+        llt.solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(rhs, n, 1),
+            Par::Seq,
+            MemStack::new(&mut self.work),
+        );
     }
 
     /// Solves for the right-hand sides stored column-major in `rhs` (n × k), eight at a time (the work
@@ -314,7 +338,12 @@ impl SpdSolver {
         for chunk in rhs.chunks_mut(8 * n) {
             let kk = chunk.len() / n;
             let llt = LltRef::new(&self.symbolic, &self.l_values);
-            llt.solve_in_place_with_conj(Conj::No, MatMut::from_column_major_slice_mut(chunk, n, kk), Par::Seq, MemStack::new(&mut self.work));
+            llt.solve_in_place_with_conj(
+                Conj::No,
+                MatMut::from_column_major_slice_mut(chunk, n, kk),
+                Par::Seq,
+                MemStack::new(&mut self.work),
+            );
         }
     }
 }
@@ -325,7 +354,11 @@ mod tests {
 
     /// The pattern and scatter map from every pair of every group, sorted and deduplicated, each entry found
     /// by search: the straightforward construction [`CscGroups::build`] must reproduce.
-    fn build_by_pairs(n: usize, groups: &[Vec<usize>], keep: impl Fn(usize, usize) -> bool) -> (Vec<usize>, Vec<usize>, Vec<usize>, Vec<usize>) {
+    fn build_by_pairs(
+        n: usize,
+        groups: &[Vec<usize>],
+        keep: impl Fn(usize, usize) -> bool,
+    ) -> (Vec<usize>, Vec<usize>, Vec<usize>, Vec<usize>) {
         let mut cols: Vec<Vec<usize>> = (0..n).map(|i| vec![i]).collect();
         for g in groups {
             for &a in g {
@@ -344,7 +377,11 @@ mod tests {
             col_ptr.push(row_idx.len());
         }
         let find = |r: usize, c: usize| col_ptr[c] + row_idx[col_ptr[c]..col_ptr[c + 1]].binary_search(&r).unwrap();
-        let scatter = groups.iter().flat_map(|g| g.iter().flat_map(|&a| g.iter().map(move |&b| (a, b)))).map(|(a, b)| if keep(a, b) { find(a, b) } else { usize::MAX }).collect();
+        let scatter = groups
+            .iter()
+            .flat_map(|g| g.iter().flat_map(|&a| g.iter().map(move |&b| (a, b))))
+            .map(|(a, b)| if keep(a, b) { find(a, b) } else { usize::MAX })
+            .collect();
         let diag = (0..n).map(|i| find(i, i)).collect();
         (col_ptr, row_idx, scatter, diag)
     }
@@ -359,7 +396,8 @@ mod tests {
             seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
             usize::try_from(seed >> 33).unwrap()
         };
-        let mut groups: Vec<Vec<usize>> = (0..60).map(|_| (0..1 + next() % 7).map(|_| next() % (n - 1)).collect()).collect();
+        let mut groups: Vec<Vec<usize>> =
+            (0..60).map(|_| (0..1 + next() % 7).map(|_| next() % (n - 1)).collect()).collect();
         groups.push(vec![3, 3, 5]);
         for lower in [true, false] {
             let keep = move |r: usize, c: usize| !lower || r >= c;
@@ -413,7 +451,9 @@ mod tests {
     #[test]
     fn block_product_equals_single_products() {
         let node = |i: usize, j: usize| i * 4 + j;
-        let elems: Vec<[usize; 4]> = (0..3).flat_map(|i| (0..3).map(move |j| [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)])).collect();
+        let elems: Vec<[usize; 4]> = (0..3)
+            .flat_map(|i| (0..3).map(move |j| [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)]))
+            .collect();
         let p = Pattern::from_elements(16, &elems);
         #[allow(clippy::cast_precision_loss)]
         let vals: Vec<f64> = (0..p.nnz()).map(|k| 1.0 + (k % 7) as f64 - 0.3 * (k % 3) as f64).collect();

@@ -120,7 +120,11 @@ pub fn supg_tau(coef: &Adr, grad: &[[f64; 2]; 4]) -> f64 {
     let h_e = 2.0 * speed / proj;
     let xi = if coef.d > 0.0 { upwind_function(speed * h_e / (2.0 * coef.d)) } else { 1.0 };
     let tau = h_e / (2.0 * speed) * xi;
-    if coef.c > 0.0 { tau.min(1.0 / coef.c) } else { tau }
+    if coef.c > 0.0 {
+        tau.min(1.0 / coef.c)
+    } else {
+        tau
+    }
 }
 
 /// Test-function values `W_i = N_i + τ a·∇N_i` at a point.
@@ -318,7 +322,14 @@ pub fn solve_picard(
 ///
 /// with `h_e` the element diameter and `C` the method constant. The term is consistent (it vanishes with the
 /// residual) and adds no streamline smearing; it makes the scheme nonlinear (Picard iteration on `u_prev`).
-pub fn add_crosswind_point(q: &QuadPoint, coef: &Adr, u_prev: &[f64; 4], h_e: f64, constant: f64, ke: &mut [[f64; 4]; 4]) {
+pub fn add_crosswind_point(
+    q: &QuadPoint,
+    coef: &Adr,
+    u_prev: &[f64; 4],
+    h_e: f64,
+    constant: f64,
+    ke: &mut [[f64; 4]; 4],
+) {
     let speed = coef.a[0].hypot(coef.a[1]);
     let (mut gx, mut gz, mut u) = (0.0, 0.0, 0.0);
     for a in 0..4 {

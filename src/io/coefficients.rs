@@ -60,10 +60,17 @@ impl CoefficientTable {
         let _ = writeln!(s, "# SI units: k [N/m], c [N*s/m], frequency [rad/s]; x horizontal, y vertical up.");
         match self.meaning {
             FrequencyMeaning::RunningSpeed { excitation_ratio } => {
-                let _ = writeln!(s, "# frequency = running speed; each point condensed at excitation ratio {excitation_ratio}.");
+                let _ = writeln!(
+                    s,
+                    "# frequency = running speed; each point condensed at excitation ratio {excitation_ratio}."
+                );
             }
             FrequencyMeaning::Excitation => {
-                let _ = writeln!(s, "# frequency = excitation frequency at {:.1} rpm.", self.speed_rpm.first().copied().unwrap_or(0.0));
+                let _ = writeln!(
+                    s,
+                    "# frequency = excitation frequency at {:.1} rpm.",
+                    self.speed_rpm.first().copied().unwrap_or(0.0)
+                );
             }
         }
         let tag = tag.replace(['"', '\\'], "_");
@@ -102,7 +109,8 @@ impl CoefficientTable {
         for r in 0..self.frequency_rad_s.len() {
             // The speed in rpm comes from arithmetic on the swept range and is written without its round-off;
             // the rest keeps every digit (the same numbers as the ROSS file).
-            let _ = write!(s, "{:?},{},{:?}", self.frequency_rad_s[r], csv(self.speed_rpm[r]), self.excitation_rad_s[r]);
+            let _ =
+                write!(s, "{:?},{},{:?}", self.frequency_rad_s[r], csv(self.speed_rpm[r]), self.excitation_rad_s[r]);
             for (_, i, j) in TERMS {
                 let _ = write!(s, ",{:?}", self.k_n_per_m[r][i][j]);
             }
@@ -142,7 +150,10 @@ mod tests {
         // Exactly the constructor arguments ROSS's BearingElement accepts (no unknown keyword).
         let mut keys: Vec<&str> = t.keys().map(String::as_str).collect();
         keys.sort_unstable();
-        assert_eq!(keys, ["color", "cxx", "cxy", "cyx", "cyy", "frequency", "kxx", "kxy", "kyx", "kyy", "n", "scale_factor", "tag"]);
+        assert_eq!(
+            keys,
+            ["color", "cxx", "cxy", "cyx", "cyy", "frequency", "kxx", "kxy", "kyx", "kyy", "n", "scale_factor", "tag"]
+        );
         assert_eq!(t["n"].as_integer(), Some(12));
         assert_eq!(t["tag"].as_str(), Some("de bearing"));
         let list = |k: &str| -> Vec<f64> { t[k].as_array().unwrap().iter().map(|v| v.as_float().unwrap()).collect() };
@@ -165,7 +176,10 @@ mod tests {
             "frequency_rad_s,speed_rpm,excitation_rad_s,kxx_n_per_m,kxy_n_per_m,kyx_n_per_m,kyy_n_per_m,cxx_ns_per_m,cxy_ns_per_m,cyx_ns_per_m,cyy_ns_per_m"
         );
         let row: Vec<f64> = lines.next().unwrap().split(',').map(|v| v.parse().unwrap()).collect();
-        assert_eq!(row, vec![628.3185307179587, 6000.0, 628.3185307179587, 1.5e8, -2.0e6, 3.0e6, 2.5e8, 2.0e5, 0.0, 0.0, 3.0e5]);
+        assert_eq!(
+            row,
+            vec![628.3185307179587, 6000.0, 628.3185307179587, 1.5e8, -2.0e6, 3.0e6, 2.5e8, 2.0e5, 0.0, 0.0, 3.0e5]
+        );
         assert_eq!(lines.count(), 1);
     }
 }

@@ -97,7 +97,9 @@ fn special_kind(_: std::fs::FileType) -> Option<(&'static str, bool)> {
 fn examine(path: &Path) -> Result<Target, WriteError> {
     let link = match std::fs::symlink_metadata(path) {
         Ok(m) => m,
-        Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(Target::Regular { resolved: path.to_path_buf(), mode: None }),
+        Err(e) if e.kind() == io::ErrorKind::NotFound => {
+            return Ok(Target::Regular { resolved: path.to_path_buf(), mode: None })
+        }
         Err(e) => return Err(WriteError::io(path, e)),
     };
     let resolved = if link.file_type().is_symlink() {
@@ -279,7 +281,8 @@ mod tests {
     }
 
     fn names(dir: &Path) -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        let mut v: Vec<String> =
+            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
         v.sort();
         v
     }
@@ -390,7 +393,12 @@ mod tests {
         f.flush().unwrap();
         let partial = f.partial_path().unwrap().to_path_buf();
         let name = partial.file_name().unwrap().to_string_lossy().into_owned();
-        assert!(name.starts_with(".sweep.csv.") && name.ends_with(".partial") && name.len() == ".sweep.csv.".len() + 8 + ".partial".len(), "{name}");
+        assert!(
+            name.starts_with(".sweep.csv.")
+                && name.ends_with(".partial")
+                && name.len() == ".sweep.csv.".len() + 8 + ".partial".len(),
+            "{name}"
+        );
         assert_eq!(std::fs::read_to_string(&partial).unwrap(), "a,b\n1,2\n");
         assert!(!p.exists());
         f.commit().unwrap();

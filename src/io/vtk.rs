@@ -79,13 +79,19 @@ impl Grid {
         let vectors = self.arrays.iter().find(|a| a.components == 3).map_or("", |a| a.name);
         let _ = writeln!(s, "<PointData Scalars=\"{scalars}\" Vectors=\"{vectors}\">");
         for a in &self.arrays {
-            let _ = writeln!(s, "<DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">", a.name, a.components);
+            let _ = writeln!(
+                s,
+                "<DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"ascii\">",
+                a.name, a.components
+            );
             push_numbers(&mut s, a.values.iter().copied());
             s.push_str("</DataArray>\n");
         }
         s.push_str("</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
         push_numbers(&mut s, self.points.iter().flatten().copied());
-        s.push_str("</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
+        s.push_str(
+            "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n",
+        );
         push_ints(&mut s, self.connectivity.iter().copied());
         s.push_str("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
         push_ints(&mut s, self.offsets.iter().copied());
@@ -181,7 +187,9 @@ pub fn film_grid(solution: &Solution) -> Grid {
             }
         }
         let f = pg.field;
-        let scalar = |grid: &mut Grid, name: &'static str, nodal: &[f64]| grid.array_mut(name, 1).extend(full_values(f, &pg.rows, nodal));
+        let scalar = |grid: &mut Grid, name: &'static str, nodal: &[f64]| {
+            grid.array_mut(name, 1).extend(full_values(f, &pg.rows, nodal))
+        };
         scalar(&mut grid, "pressure_pa", &f.pressure_pa);
         scalar(&mut grid, "film_thickness_m", &f.film_thickness_m);
         scalar(&mut grid, "viscosity_pa_s", &f.viscosity_pa_s);
@@ -194,7 +202,11 @@ pub fn film_grid(solution: &Solution) -> Grid {
             scalar(&mut grid, "pad_surface_temperature_c", t);
         }
         if flexible {
-            let u = if pad.elastic_displacement_m.is_empty() { vec![0.0; f.pressure_pa.len()] } else { pad.elastic_displacement_m.clone() };
+            let u = if pad.elastic_displacement_m.is_empty() {
+                vec![0.0; f.pressure_pa.len()]
+            } else {
+                pad.elastic_displacement_m.clone()
+            };
             scalar(&mut grid, "elastic_radial_displacement_m", &u);
         }
         push_pad_index(&mut grid, pad.index, pg.nodes());
@@ -246,7 +258,8 @@ fn modal_displacement(pad: &PadResult, node: usize, theta: f64, mirror: bool) ->
 pub fn pad_solid_grid(solution: &Solution) -> Option<Grid> {
     let r = solution.inputs.bearing.journal_radius_m;
     let centre = solution.journal_position_m;
-    let pads: Vec<&PadResult> = solution.pads.iter().filter(|p| solid_layers(p).is_some_and(|(radii, _)| radii.len() >= 2)).collect();
+    let pads: Vec<&PadResult> =
+        solution.pads.iter().filter(|p| solid_layers(p).is_some_and(|(radii, _)| radii.len() >= 2)).collect();
     let with_temperature = !pads.is_empty() && pads.iter().all(|p| solid_layers(p).is_some_and(|(_, t)| t.is_some()));
     let flexible = pads.iter().any(|p| p.flex.is_some());
     let mut grid = Grid::default();

@@ -28,7 +28,11 @@ pub const ORIFICE_ZONE_HALF_WIDTH: f64 = 0.6;
 #[must_use]
 #[allow(clippy::cast_precision_loss)]
 pub fn orifice_zone(centre: f64, diameter: f64, elements_across: usize) -> Refinement {
-    Refinement { centre, half_width: ORIFICE_ZONE_HALF_WIDTH * diameter, fine: diameter / elements_across.max(1) as f64 }
+    Refinement {
+        centre,
+        half_width: ORIFICE_ZONE_HALF_WIDTH * diameter,
+        fine: diameter / elements_across.max(1) as f64,
+    }
 }
 
 /// The cumulative integral of 1/spacing over `[a, b]` on a fine uniform sampling, and the sample width.
@@ -123,7 +127,11 @@ impl PadGrid {
     /// Number of distinct node columns along s.
     #[must_use]
     pub fn n_cols(&self) -> usize {
-        if self.periodic { self.s.len() - 1 } else { self.s.len() }
+        if self.periodic {
+            self.s.len() - 1
+        } else {
+            self.s.len()
+        }
     }
     #[must_use]
     pub fn n_rows(&self) -> usize {

@@ -43,7 +43,14 @@ impl PadMesh {
     /// journal radius of the grid's arc-length coordinate (θ = θ_le + s/R).
     #[must_use]
     #[allow(clippy::cast_precision_loss)]
-    pub fn extrude(grid: &PadGrid, radius: f64, theta_le: f64, bore_radius: f64, thickness: f64, layers: usize) -> Self {
+    pub fn extrude(
+        grid: &PadGrid,
+        radius: f64,
+        theta_le: f64,
+        bore_radius: f64,
+        thickness: f64,
+        layers: usize,
+    ) -> Self {
         let layers = layers.max(1);
         let n_film = grid.n_nodes();
         // Graded layer thicknesses: d_k ∝ g^k, k = 0 at the film face.

@@ -73,7 +73,9 @@ pub fn film_grid_size(case: &Case, k: usize) -> (usize, usize) {
 /// The refinement zones of a pad's orifices along the arc (arc length from the leading edge) and axially.
 #[must_use]
 pub fn orifice_zones(pad: &Pad, journal_radius_m: f64, elements_across: usize) -> (Vec<Refinement>, Vec<Refinement>) {
-    let along = |o: &super::Orifice| orifice_zone((o.angle_rad - pad.leading_edge_rad) * journal_radius_m, o.diameter_m, elements_across);
+    let along = |o: &super::Orifice| {
+        orifice_zone((o.angle_rad - pad.leading_edge_rad) * journal_radius_m, o.diameter_m, elements_across)
+    };
     let axial = |o: &super::Orifice| orifice_zone(o.axial_m, o.diameter_m, elements_across);
     (pad.orifices.iter().map(along).collect(), pad.orifices.iter().map(axial).collect())
 }
@@ -90,7 +92,13 @@ pub fn count(case: &Case) -> NodeCount {
     let thd = case.thermal.model == ThermalModelKind::Thd;
     let layers = case.mesh.pad_radial_elements.max(1);
     let pad_solid = if thd {
-        case.bearing.pads.iter().zip(&film_per_pad).filter(|(p, _)| p.thickness_m > 0.0).map(|(_, &n)| n.saturating_mul(layers + 1)).sum()
+        case.bearing
+            .pads
+            .iter()
+            .zip(&film_per_pad)
+            .filter(|(p, _)| p.thickness_m > 0.0)
+            .map(|(_, &n)| n.saturating_mul(layers + 1))
+            .sum()
     } else {
         0
     };
@@ -105,7 +113,8 @@ pub fn check(case: &Case) -> Result<NodeCount, CaseError> {
     let n = count(case);
     if n.total() > case.mesh.max_nodes {
         let film = n.film();
-        let (largest_pad, largest) = n.film_per_pad.iter().copied().enumerate().max_by_key(|&(_, v)| v).unwrap_or((0, 0));
+        let (largest_pad, largest) =
+            n.film_per_pad.iter().copied().enumerate().max_by_key(|&(_, v)| v).unwrap_or((0, 0));
         return Err(CaseError::NodeBudget {
             needed: n.total(),
             budget: case.mesh.max_nodes,

@@ -257,7 +257,11 @@ impl Fidelity {
     pub fn circumferential_elements(self, arc_rad: f64) -> usize {
         let n = self.elements().0;
         let scaled = (n as f64 * arc_rad / LEVEL_ARC_RAD - 1e-9).ceil();
-        if scaled.is_finite() && scaled > n as f64 { scaled.min(1e6) as usize } else { n }
+        if scaled.is_finite() && scaled > n as f64 {
+            scaled.min(1e6) as usize
+        } else {
+            n
+        }
     }
 
     /// Default element layers through the pad thickness (pad conduction). Graded layers converge at about

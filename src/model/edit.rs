@@ -67,7 +67,9 @@ fn merge_item(item: &mut Item, new: &toml::Value) -> Result<(), CaseError> {
             let Some(old) = item.as_table_like_mut() else { return Ok(()) };
             merge_table(old, t)
         }
-        (Item::ArrayOfTables(old), toml::Value::Array(list)) if old.len() == list.len() && list.iter().all(toml::Value::is_table) => {
+        (Item::ArrayOfTables(old), toml::Value::Array(list))
+            if old.len() == list.len() && list.iter().all(toml::Value::is_table) =>
+        {
             for (o, n) in old.iter_mut().zip(list) {
                 if let toml::Value::Table(t) = n {
                     merge_table(o, t)?;
@@ -129,7 +131,9 @@ fn same(old: &Value, new: &toml::Value) -> bool {
         (Value::String(a), toml::Value::String(b)) => a.value() == b,
         (Value::Boolean(a), toml::Value::Boolean(b)) => a.value() == b,
         (Value::Array(a), toml::Value::Array(b)) => a.len() == b.len() && a.iter().zip(b).all(|(x, y)| same(x, y)),
-        (Value::InlineTable(a), toml::Value::Table(b)) => a.len() == b.len() && b.iter().all(|(k, v)| a.get(k).is_some_and(|x| same(x, v))),
+        (Value::InlineTable(a), toml::Value::Table(b)) => {
+            a.len() == b.len() && b.iter().all(|(k, v)| a.get(k).is_some_and(|x| same(x, v)))
+        }
         _ => matches!((number(old), new_number), (Some(a), Some(b)) if a == b),
     }
 }
@@ -226,7 +230,10 @@ mod tests {
         // A table the file did not have is appended; empty ones are not written.
         f.thermal.model = Some(crate::model::ThermalModelKind::Thd);
         let saved = f.to_toml_preserving(text).unwrap();
-        assert!(saved.contains("[thermal]\nmodel = \"thd\"") && !saved.contains("[physics]") && !saved.contains("[mesh]"), "{saved}");
+        assert!(
+            saved.contains("[thermal]\nmodel = \"thd\"") && !saved.contains("[physics]") && !saved.contains("[mesh]"),
+            "{saved}"
+        );
         assert_eq!(parse_case_file(&saved, &[]).unwrap(), f);
     }
 }

@@ -37,7 +37,15 @@ pub enum CaseError {
          with mesh.orifice_elements across its diameter), mesh.pad_radial_elements for the thermal model, use fewer \
          orifices, or raise mesh.max_nodes"
     )]
-    NodeBudget { needed: usize, budget: usize, film: usize, pad_solid: usize, largest_pad: usize, largest_pad_film: usize, orifices: usize },
+    NodeBudget {
+        needed: usize,
+        budget: usize,
+        film: usize,
+        pad_solid: usize,
+        largest_pad: usize,
+        largest_pad_film: usize,
+        orifices: usize,
+    },
     /// A `--set key=value` override that cannot be applied.
     #[error("override `{text}`: {message}")]
     BadOverride { text: String, message: String },
@@ -114,7 +122,11 @@ impl Range {
 
 fn fmt_bound(x: f64) -> String {
     if x.is_infinite() {
-        if x > 0.0 { "inf".into() } else { "-inf".into() }
+        if x > 0.0 {
+            "inf".into()
+        } else {
+            "-inf".into()
+        }
     } else {
         crate::number::csv(x)
     }

@@ -146,25 +146,35 @@ fn inconsistent(key: &str, message: impl Into<String>) -> CaseError {
 /// The first value out of range or inconsistent (a pad fed twice or missing, ports named twice), by key.
 pub fn resolve_hydraulics(h: &HydraulicsFile, n_pads: usize) -> Result<Hydraulics, CaseError> {
     let supply = Range::positive(1000.0).check("hydraulics.supply_pressure_bar", h.supply_pressure_bar)? * BAR;
-    let ret = Range::closed(0.0, 1000.0).check("hydraulics.return_pressure_bar", h.return_pressure_bar.unwrap_or(0.0))? * BAR;
+    let ret =
+        Range::closed(0.0, 1000.0).check("hydraulics.return_pressure_bar", h.return_pressure_bar.unwrap_or(0.0))? * BAR;
     if ret >= supply {
         return Err(inconsistent("hydraulics.return_pressure_bar", "must be below the supply pressure"));
     }
     let v = &h.valve;
     let valve = Valve {
-        natural_frequency_rad_s: Range::positive(1e5).check("hydraulics.valve.natural_frequency_hz", v.natural_frequency_hz)? * std::f64::consts::TAU,
+        natural_frequency_rad_s: Range::positive(1e5)
+            .check("hydraulics.valve.natural_frequency_hz", v.natural_frequency_hz)?
+            * std::f64::consts::TAU,
         damping_ratio: Range::positive(10.0).check("hydraulics.valve.damping_ratio", v.damping_ratio)?,
-        rated_flow_m3_s: Range::positive(1e4).check("hydraulics.valve.rated_flow_l_per_min", v.rated_flow_l_per_min)? * L_PER_MIN,
+        rated_flow_m3_s: Range::positive(1e4).check("hydraulics.valve.rated_flow_l_per_min", v.rated_flow_l_per_min)?
+            * L_PER_MIN,
         rated_drop_pa: Range::positive(1000.0).check("hydraulics.valve.rated_drop_bar", v.rated_drop_bar)? * BAR,
         full_scale_v: Range::positive(1000.0).check("hydraulics.valve.full_scale_v", v.full_scale_v.unwrap_or(10.0))?,
-        flow_pressure_coefficient: Range::closed(0.0, 1000.0)
-            .check("hydraulics.valve.flow_pressure_coefficient_l_per_min_bar", v.flow_pressure_coefficient_l_per_min_bar.unwrap_or(0.0))?
-            * L_PER_MIN
+        flow_pressure_coefficient: Range::closed(0.0, 1000.0).check(
+            "hydraulics.valve.flow_pressure_coefficient_l_per_min_bar",
+            v.flow_pressure_coefficient_l_per_min_bar.unwrap_or(0.0),
+        )? * L_PER_MIN
             / BAR,
-        leakage_m3_s: Range::closed(0.0, 1e4).check("hydraulics.valve.leakage_l_per_min", v.leakage_l_per_min.unwrap_or(0.0))? * L_PER_MIN,
+        leakage_m3_s: Range::closed(0.0, 1e4)
+            .check("hydraulics.valve.leakage_l_per_min", v.leakage_l_per_min.unwrap_or(0.0))?
+            * L_PER_MIN,
     };
     if h.port.is_empty() || h.port.len() > 2 {
-        return Err(inconsistent("hydraulics.port", format!("{} ports: a four-way valve has one or two (A, B)", h.port.len())));
+        return Err(inconsistent(
+            "hydraulics.port",
+            format!("{} ports: a four-way valve has one or two (A, B)", h.port.len()),
+        ));
     }
     let mut fed = vec![false; n_pads];
     let mut ports = Vec::with_capacity(h.port.len());
@@ -178,23 +188,36 @@ pub fn resolve_hydraulics(h: &HydraulicsFile, n_pads: usize) -> Result<Hydraulic
         }
         for &k in &p.pads {
             match fed.get_mut(k) {
-                None => return Err(inconsistent(&key("pads"), format!("pad {k} does not exist (pads 0 to {})", n_pads.saturating_sub(1)))),
+                None => {
+                    return Err(inconsistent(
+                        &key("pads"),
+                        format!("pad {k} does not exist (pads 0 to {})", n_pads.saturating_sub(1)),
+                    ))
+                }
                 Some(true) => return Err(inconsistent(&key("pads"), format!("pad {k} is fed by two ports"))),
                 Some(f) => *f = true,
             }
         }
         let modes = p.modes.unwrap_or(4);
         if !(1..=MAX_MODES).contains(&modes) {
-            return Err(CaseError::OutOfRange { key: key("modes"), value: modes as f64, allowed: format!("an integer in [1, {MAX_MODES}]") });
+            return Err(CaseError::OutOfRange {
+                key: key("modes"),
+                value: modes as f64,
+                allowed: format!("an integer in [1, {MAX_MODES}]"),
+            });
         }
         ports.push(Port {
             sign: if p.valve_port == ValvePort::A { 1.0 } else { -1.0 },
             pads: p.pads.clone(),
             line_length_m: Range::positive(1e5).check(&key("line_length_mm"), p.line_length_mm)? * 1e-3,
             line_diameter_m: Range::positive(1000.0).check(&key("line_diameter_mm"), p.line_diameter_mm)? * 1e-3,
-            oil_bulk_modulus_pa: Range::positive(100.0).check(&key("bulk_modulus_gpa"), p.bulk_modulus_gpa.unwrap_or(1.5))? * 1e9,
+            oil_bulk_modulus_pa: Range::positive(100.0)
+                .check(&key("bulk_modulus_gpa"), p.bulk_modulus_gpa.unwrap_or(1.5))?
+                * 1e9,
             air_fraction: Range::closed(0.0, 0.5).check(&key("air_fraction"), p.air_fraction.unwrap_or(0.0))?,
-            wall_compliance_per_pa: Range::closed(0.0, 1000.0).check(&key("wall_compliance_per_gpa"), p.wall_compliance_per_gpa.unwrap_or(0.0))? * 1e-9,
+            wall_compliance_per_pa: Range::closed(0.0, 1000.0)
+                .check(&key("wall_compliance_per_gpa"), p.wall_compliance_per_gpa.unwrap_or(0.0))?
+                * 1e-9,
             modes,
         });
     }
@@ -202,8 +225,10 @@ pub fn resolve_hydraulics(h: &HydraulicsFile, n_pads: usize) -> Result<Hydraulic
         None => None,
         Some(r) => Some(Rig {
             mass_kg: Range::positive(1e6).check("hydraulics.rig.mass_kg", r.mass_kg)?,
-            support_stiffness_n_per_m: Range::closed(0.0, 1e12).check("hydraulics.rig.support_stiffness_n_per_m", r.support_stiffness_n_per_m)?,
-            support_damping_ns_per_m: Range::closed(0.0, 1e9).check("hydraulics.rig.support_damping_ns_per_m", r.support_damping_ns_per_m.unwrap_or(0.0))?,
+            support_stiffness_n_per_m: Range::closed(0.0, 1e12)
+                .check("hydraulics.rig.support_stiffness_n_per_m", r.support_stiffness_n_per_m)?,
+            support_damping_ns_per_m: Range::closed(0.0, 1e9)
+                .check("hydraulics.rig.support_damping_ns_per_m", r.support_damping_ns_per_m.unwrap_or(0.0))?,
         }),
     };
     Ok(Hydraulics { supply_pressure_pa: supply, return_pressure_pa: ret, valve, ports, rig })

@@ -114,10 +114,34 @@ pub fn resolve_limits(file: &LimitsFile) -> Result<Limits, CaseError> {
         v.map_or(Ok(default), |x| Ok(range.check(key, x)? * scale))
     };
     Ok(Limits {
-        min_film_thickness_m: get(file.min_film_thickness_um, MIN_FILM_RANGE, "limits.min_film_thickness_um", d.min_film_thickness_m, 1e-6)?,
-        max_pad_temperature_c: get(file.max_pad_temperature_c, PAD_TEMPERATURE_RANGE, "limits.max_pad_temperature_c", d.max_pad_temperature_c, 1.0)?,
-        max_specific_load_pa: get(file.max_specific_load_mpa, SPECIFIC_LOAD_RANGE, "limits.max_specific_load_mpa", d.max_specific_load_pa, 1e6)?,
-        max_peak_pressure_pa: get(file.max_peak_pressure_mpa, PEAK_PRESSURE_RANGE, "limits.max_peak_pressure_mpa", d.max_peak_pressure_pa, 1e6)?,
+        min_film_thickness_m: get(
+            file.min_film_thickness_um,
+            MIN_FILM_RANGE,
+            "limits.min_film_thickness_um",
+            d.min_film_thickness_m,
+            1e-6,
+        )?,
+        max_pad_temperature_c: get(
+            file.max_pad_temperature_c,
+            PAD_TEMPERATURE_RANGE,
+            "limits.max_pad_temperature_c",
+            d.max_pad_temperature_c,
+            1.0,
+        )?,
+        max_specific_load_pa: get(
+            file.max_specific_load_mpa,
+            SPECIFIC_LOAD_RANGE,
+            "limits.max_specific_load_mpa",
+            d.max_specific_load_pa,
+            1e6,
+        )?,
+        max_peak_pressure_pa: get(
+            file.max_peak_pressure_mpa,
+            PEAK_PRESSURE_RANGE,
+            "limits.max_peak_pressure_mpa",
+            d.max_peak_pressure_pa,
+            1e6,
+        )?,
         max_reynolds: get(file.max_reynolds, REYNOLDS_RANGE, "limits.max_reynolds", d.max_reynolds, 1.0)?,
     })
 }

@@ -24,7 +24,8 @@ pub fn load_case(text: &str, overrides: &[String]) -> Result<(CaseFile, Case), C
 /// # Errors
 /// Syntax errors, unknown keys, wrong types and bad overrides.
 pub fn parse_case_file(text: &str, overrides: &[String]) -> Result<CaseFile, CaseError> {
-    let mut table: toml::Table = text.parse().map_err(|e: toml::de::Error| CaseError::Syntax { message: e.to_string() })?;
+    let mut table: toml::Table =
+        text.parse().map_err(|e: toml::de::Error| CaseError::Syntax { message: e.to_string() })?;
     for o in overrides {
         apply_override(&mut table, o)?;
     }
@@ -92,14 +93,22 @@ fn apply_override(table: &mut toml::Table, text: &str) -> Result<(), CaseError> 
         // Next segment may index an array of tables (`bearing.pad.2.offset`).
         let next_is_index = parts[i + 1].parse::<usize>().is_ok();
         let entry = node.entry((*part).to_string()).or_insert_with(|| {
-            if next_is_index { toml::Value::Array(Vec::new()) } else { toml::Value::Table(toml::Table::new()) }
+            if next_is_index {
+                toml::Value::Array(Vec::new())
+            } else {
+                toml::Value::Table(toml::Table::new())
+            }
         });
         match entry {
             toml::Value::Table(t) => node = t,
             toml::Value::Array(a) if next_is_index => {
                 let idx: usize = parts[i + 1].parse().map_err(|_| bad("bad index"))?;
                 if idx >= a.len() {
-                    return Err(bad(&format!("`{}` has {} entries; index {idx} is out of range", parts[..=i].join("."), a.len())));
+                    return Err(bad(&format!(
+                        "`{}` has {} entries; index {idx} is out of range",
+                        parts[..=i].join("."),
+                        a.len()
+                    )));
                 }
                 let rest = &parts[i + 2..];
                 let toml::Value::Table(t) = &mut a[idx] else {

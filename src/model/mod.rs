@@ -21,8 +21,8 @@ pub mod rotor_sections;
 pub mod schema;
 
 pub use case::{
-    Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics,
-    Thermal, ThermalModelKind, ViscosityLaw,
+    Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad,
+    PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, ViscosityLaw,
 };
 pub use error::CaseError;
 pub use file::CaseFile;

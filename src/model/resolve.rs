@@ -7,9 +7,7 @@
 use std::f64::consts::{PI, TAU};
 
 use super::budget::{DEFAULT_MAX_NODES, MAX_NODES_RANGE};
-use super::case::{
-    Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal,
-};
+use super::case::{Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal};
 use super::error::{CaseError, Range};
 use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
 
@@ -43,15 +41,34 @@ impl CaseFile {
             Some(v) if v > MAX_PAD_MODES => {
                 #[allow(clippy::cast_precision_loss)]
                 let value = v as f64;
-                return Err(CaseError::OutOfRange { key: "physics.pad_modes".into(), value, allowed: format!("an integer in [0, {MAX_PAD_MODES}]") });
+                return Err(CaseError::OutOfRange {
+                    key: "physics.pad_modes".into(),
+                    value,
+                    allowed: format!("an integer in [0, {MAX_PAD_MODES}]"),
+                });
             }
             v => v.unwrap_or(0),
         };
-        let physics = Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
+        let physics =
+            Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
         let thermal = resolve_thermal(self, &operating)?;
-        let hydraulics = self.hydraulics.as_ref().map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len())).transpose()?;
+        let hydraulics = self
+            .hydraulics
+            .as_ref()
+            .map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len()))
+            .transpose()?;
         let limits = super::limits::resolve_limits(&self.limits)?;
-        let case = Case { title: self.title.clone().unwrap_or_default(), bearing, lubricant, operating, mesh, physics, thermal, hydraulics, limits };
+        let case = Case {
+            title: self.title.clone().unwrap_or_default(),
+            bearing,
+            lubricant,
+            operating,
+            mesh,
+            physics,
+            thermal,
+            hydraulics,
+            limits,
+        };
         super::budget::check(&case)?;
         Ok(case)
     }
@@ -158,8 +175,12 @@ fn pivot_angles(common: &PadFile, per_pad: &[PadFile], n: usize) -> Result<Vec<f
                 })
             }
             (None, Some(OneOrMany::Many(v))) => (v[i], format!("bearing.pads.pivot_deg[{i}]")),
-            (None, Some(OneOrMany::One(first))) => (first + 360.0 * i as f64 / n as f64, "bearing.pads.pivot_deg".into()),
-            (None, None) => return Err(missing("bearing.pads.pivot_deg", "pivot angle(s), degrees from +x counter-clockwise")),
+            (None, Some(OneOrMany::One(first))) => {
+                (first + 360.0 * i as f64 / n as f64, "bearing.pads.pivot_deg".into())
+            }
+            (None, None) => {
+                return Err(missing("bearing.pads.pivot_deg", "pivot angle(s), degrees from +x counter-clockwise"))
+            }
         };
         out.push(Range::closed(-3600.0, 3600.0).check(&key, deg)?);
     }
@@ -167,13 +188,21 @@ fn pivot_angles(common: &PadFile, per_pad: &[PadFile], n: usize) -> Result<Vec<f
 }
 
 #[allow(clippy::too_many_lines)]
-fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb: f64, n: usize) -> Result<Pad, CaseError> {
+fn resolve_pad(
+    src: &PadSource<'_>,
+    pivot_deg: f64,
+    radius: f64,
+    length: f64,
+    cb: f64,
+    n: usize,
+) -> Result<Pad, CaseError> {
     let kind = match src.get("kind", |p| p.kind).map(|(k, _)| k).unwrap_or_default() {
         PadKindFile::Tilting => PadKind::Tilting,
         PadKindFile::Fixed => PadKind::Fixed,
     };
-    let (arc_deg, arc_key) =
-        src.get("arc_deg", |p| p.arc_deg).ok_or_else(|| missing(&PadSource::common_key("arc_deg"), "pad arc, degrees"))?;
+    let (arc_deg, arc_key) = src
+        .get("arc_deg", |p| p.arc_deg)
+        .ok_or_else(|| missing(&PadSource::common_key("arc_deg"), "pad arc, degrees"))?;
     let arc_max = if kind == PadKind::Fixed && n == 1 { 360.0 } else { 360.0 / n as f64 };
     let arc_deg = Range::open_lo(0.0, arc_max).check(&arc_key, arc_deg)?;
     let arc = arc_deg.to_radians();
@@ -184,7 +213,12 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
             if kind == PadKind::Tilting { Range::open(0.0, 1.0) } else { Range::closed(0.0, 1.0) }.check(&key, v)?
         }
         None if kind == PadKind::Fixed => 0.5,
-        None => return Err(missing(&PadSource::common_key("offset"), "pivot offset, fraction of the arc from the leading edge")),
+        None => {
+            return Err(missing(
+                &PadSource::common_key("offset"),
+                "pivot offset, fraction of the arc from the leading edge",
+            ))
+        }
     };
 
     // Exactly one of preload, clearance, bore radius (per pad, else common).
@@ -205,14 +239,18 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         }
     };
     let pivot_stiffness = pivot_spring("pivot_stiffness_n_per_m", |p| p.pivot_stiffness_n_per_m)?;
-    let pivot_transverse_stiffness = pivot_spring("pivot_transverse_stiffness_n_per_m", |p| p.pivot_transverse_stiffness_n_per_m)?;
+    let pivot_transverse_stiffness =
+        pivot_spring("pivot_transverse_stiffness_n_per_m", |p| p.pivot_transverse_stiffness_n_per_m)?;
     let massless = src.get("massless", |p| p.massless).is_some_and(|(m, _)| m);
     let density = match src.get("density_kg_per_m3", |p| p.density_kg_per_m3) {
-        Some((_, key)) if massless => return Err(inconsistent(&key, "massless pads have no density: remove it, or set massless = false")),
+        Some((_, key)) if massless => {
+            return Err(inconsistent(&key, "massless pads have no density: remove it, or set massless = false"))
+        }
         Some((v, key)) => Range::positive(3e4).check(&key, v)?,
         None => 7800.0,
     };
-    let (youngs, poisson) = material(src, ("youngs_modulus_gpa", |p| p.youngs_modulus_gpa), ("poisson_ratio", |p| p.poisson_ratio))?;
+    let (youngs, poisson) =
+        material(src, ("youngs_modulus_gpa", |p| p.youngs_modulus_gpa), ("poisson_ratio", |p| p.poisson_ratio))?;
     let pivot_contact = contact::resolve_contact(src, kind, pivot_stiffness.is_some(), (youngs, poisson), length)?;
 
     let pivot = pivot_deg.to_radians();
@@ -250,7 +288,10 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
         if z0.abs() + r >= 0.5 * length {
             return Err(inconsistent(
                 &key("axial_frac"),
-                format!("orifice outside its pad: a {:.3} mm orifice at axial_frac {afrac} crosses the pad's axial end", d / MM),
+                format!(
+                    "orifice outside its pad: a {:.3} mm orifice at axial_frac {afrac} crosses the pad's axial end",
+                    d / MM
+                ),
             ));
         }
         orifices.push(Orifice { angle_rad: leading_edge + frac * arc, axial_m: z0, diameter_m: d, length_m: l0 });
@@ -262,7 +303,10 @@ fn resolve_pad(src: &PadSource<'_>, pivot_deg: f64, radius: f64, length: f64, cb
             let ds = (oa.angle_rad - ob.angle_rad) * radius;
             let dz = oa.axial_m - ob.axial_m;
             if ds.hypot(dz) < 0.5 * (oa.diameter_m + ob.diameter_m) {
-                return Err(inconsistent(&format!("{okey}[{b}]"), format!("orifice overlaps orifice {a} of the same pad")));
+                return Err(inconsistent(
+                    &format!("{okey}[{b}]"),
+                    format!("orifice overlaps orifice {a} of the same pad"),
+                ));
             }
         }
     }
@@ -384,7 +428,9 @@ fn check_overlap(pads: &[Pad]) -> Result<(), CaseError> {
         return Ok(());
     }
     let mut order: Vec<usize> = (0..pads.len()).collect();
-    order.sort_by(|&a, &b| pads[a].leading_edge_rad.rem_euclid(TAU).total_cmp(&pads[b].leading_edge_rad.rem_euclid(TAU)));
+    order.sort_by(|&a, &b| {
+        pads[a].leading_edge_rad.rem_euclid(TAU).total_cmp(&pads[b].leading_edge_rad.rem_euclid(TAU))
+    });
     for w in 0..order.len() {
         let (ia, ib) = (order[w], order[(w + 1) % order.len()]);
         let (a, b) = (&pads[ia], &pads[ib]);
@@ -424,14 +470,19 @@ fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseEr
         },
         (None, Some(e)) => {
             if o.load_angle_deg.is_some() {
-                return Err(inconsistent("operating.load_angle_deg", "with a prescribed eccentricity use eccentricity_angle_deg"));
+                return Err(inconsistent(
+                    "operating.load_angle_deg",
+                    "with a prescribed eccentricity use eccentricity_angle_deg",
+                ));
             }
             LoadSpec::Position {
                 eccentricity_ratio: Range::closed(0.0, 10.0).check("operating.eccentricity_ratio", e)?,
                 angle_rad: angle("operating.eccentricity_angle_deg", o.eccentricity_angle_deg)?,
             }
         }
-        (None, None) => return Err(missing("operating.load_n", "static load on the journal, N (or eccentricity_ratio)")),
+        (None, None) => {
+            return Err(missing("operating.load_n", "static load on the journal, N (or eccentricity_ratio)"))
+        }
     };
     if o.eccentricity_angle_deg.is_some() && o.eccentricity_ratio.is_none() {
         return Err(inconsistent("operating.eccentricity_angle_deg", "only meaningful with eccentricity_ratio"));
@@ -483,7 +534,11 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     let count = |key: &str, v: Option<usize>, default: usize, lo: usize, hi: usize| -> Result<usize, CaseError> {
         let v = v.unwrap_or(default);
         if v < lo || v > hi {
-            return Err(CaseError::OutOfRange { key: key.into(), value: v as f64, allowed: format!("an integer in [{lo}, {hi}]") });
+            return Err(CaseError::OutOfRange {
+                key: key.into(),
+                value: v as f64,
+                allowed: format!("an integer in [{lo}, {hi}]"),
+            });
         }
         Ok(v)
     };
@@ -496,7 +551,10 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     let all_mid = bearing.pads.iter().flat_map(|p| &p.orifices).all(|o| o.axial_m.abs() < 1e-12);
     let half = match m.half_model {
         Some(true) if !all_mid => {
-            return Err(inconsistent("mesh.half_model", "the half model needs every orifice on the mid-plane (axial_frac = 0.5)"))
+            return Err(inconsistent(
+                "mesh.half_model",
+                "the half model needs every orifice on the mid-plane (axial_frac = 0.5)",
+            ))
         }
         Some(h) => h,
         None => all_mid,
@@ -530,29 +588,45 @@ fn resolve_thermal(file: &CaseFile, operating: &Operating) -> Result<Thermal, Ca
     let t_range = Range::closed(-60.0, 400.0);
     let bc = t.pad_film_bc.unwrap_or_default();
     let pad_film_bc = match (bc, t.h_oil_pad_w_per_m2_k) {
-        (PadFilmBcFile::Bc2, Some(h)) => PadFilmBc::Bc2 { h_w_per_m2_k: Range::positive(1e8).check("thermal.h_oil_pad_w_per_m2_k", h)? },
-        (PadFilmBcFile::Bc2, None) => {
-            return Err(missing("thermal.h_oil_pad_w_per_m2_k", "film–pad exchange coefficient for pad_film_bc = \"bc2\", W/(m² K)"))
+        (PadFilmBcFile::Bc2, Some(h)) => {
+            PadFilmBc::Bc2 { h_w_per_m2_k: Range::positive(1e8).check("thermal.h_oil_pad_w_per_m2_k", h)? }
         }
-        (_, Some(_)) => return Err(inconsistent("thermal.h_oil_pad_w_per_m2_k", "only used with pad_film_bc = \"bc2\"")),
+        (PadFilmBcFile::Bc2, None) => {
+            return Err(missing(
+                "thermal.h_oil_pad_w_per_m2_k",
+                "film–pad exchange coefficient for pad_film_bc = \"bc2\", W/(m² K)",
+            ))
+        }
+        (_, Some(_)) => {
+            return Err(inconsistent("thermal.h_oil_pad_w_per_m2_k", "only used with pad_film_bc = \"bc2\""))
+        }
         (PadFilmBcFile::Bc1, None) => PadFilmBc::Bc1,
         (PadFilmBcFile::Bc3, None) => PadFilmBc::Bc3,
     };
-    let opt_t = |key: &str, v: Option<f64>| -> Result<Option<f64>, CaseError> { v.map(|x| t_range.check(key, x)).transpose() };
+    let opt_t =
+        |key: &str, v: Option<f64>| -> Result<Option<f64>, CaseError> { v.map(|x| t_range.check(key, x)).transpose() };
     Ok(Thermal {
         model: t.model.unwrap_or_default(),
         pad_film_bc,
-        convection_w_per_m2_k: Range::closed(0.0, 1e6).check("thermal.convection_w_per_m2_k", t.convection_w_per_m2_k.unwrap_or(100.0))?,
-        ambient_temperature_c: opt_t("thermal.ambient_temperature_c", t.ambient_temperature_c)?.unwrap_or(operating.supply_temperature_c),
-        pad_conductivity_w_per_m_k: Range::positive(1e4).check("thermal.pad_conductivity_w_per_m_k", t.pad_conductivity_w_per_m_k.unwrap_or(45.0))?,
+        convection_w_per_m2_k: Range::closed(0.0, 1e6)
+            .check("thermal.convection_w_per_m2_k", t.convection_w_per_m2_k.unwrap_or(100.0))?,
+        ambient_temperature_c: opt_t("thermal.ambient_temperature_c", t.ambient_temperature_c)?
+            .unwrap_or(operating.supply_temperature_c),
+        pad_conductivity_w_per_m_k: Range::positive(1e4)
+            .check("thermal.pad_conductivity_w_per_m_k", t.pad_conductivity_w_per_m_k.unwrap_or(45.0))?,
         carry_over: Range::closed(0.0, 1.0).check("thermal.carry_over", t.carry_over.unwrap_or(0.8))?,
         inlet_temperature_c: opt_t("thermal.inlet_temperature_c", t.inlet_temperature_c)?,
         journal_temperature_c: opt_t("thermal.journal_temperature_c", t.journal_temperature_c)?,
         cavitated_film: t.cavitated_film.unwrap_or_default(),
-        pad_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.pad_expansion_ppm_per_k", t.pad_expansion_ppm_per_k.unwrap_or(0.0))?,
-        journal_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.journal_expansion_ppm_per_k", t.journal_expansion_ppm_per_k.unwrap_or(0.0))?,
+        pad_expansion_per_k: 1e-6
+            * EXPANSION_PPM.check("thermal.pad_expansion_ppm_per_k", t.pad_expansion_ppm_per_k.unwrap_or(0.0))?,
+        journal_expansion_per_k: 1e-6
+            * EXPANSION_PPM
+                .check("thermal.journal_expansion_ppm_per_k", t.journal_expansion_ppm_per_k.unwrap_or(0.0))?,
         reference_temperature_c: opt_t("thermal.reference_temperature_c", t.reference_temperature_c)?,
-        housing_expansion_per_k: 1e-6 * EXPANSION_PPM.check("thermal.housing_expansion_ppm_per_k", t.housing_expansion_ppm_per_k.unwrap_or(0.0))?,
+        housing_expansion_per_k: 1e-6
+            * EXPANSION_PPM
+                .check("thermal.housing_expansion_ppm_per_k", t.housing_expansion_ppm_per_k.unwrap_or(0.0))?,
         housing_temperature_c: opt_t("thermal.housing_temperature_c", t.housing_temperature_c)?,
     })
 }

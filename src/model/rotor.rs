@@ -339,7 +339,11 @@ fn check_node(key: &str, node: usize, n_nodes: usize) -> Result<usize, CaseError
         Ok(node)
     } else {
         #[allow(clippy::cast_precision_loss)]
-        Err(CaseError::OutOfRange { key: key.into(), value: node as f64, allowed: format!("integer in [0, {}]", n_nodes - 1) })
+        Err(CaseError::OutOfRange {
+            key: key.into(),
+            value: node as f64,
+            allowed: format!("integer in [0, {}]", n_nodes - 1),
+        })
     }
 }
 
@@ -367,57 +371,102 @@ impl RotorFile {
         let youngs = check("rotor.youngs_modulus_gpa", r.youngs_modulus_gpa, Range::positive(1e4))? * 1e9;
         let nu = check("rotor.poisson_ratio", r.poisson_ratio, Range::closed(0.0, 0.5))?;
         if r.section.is_empty() {
-            return Err(CaseError::MissingKey { key: "rotor.section".into(), meaning: "at least one shaft section".into() });
+            return Err(CaseError::MissingKey {
+                key: "rotor.section".into(),
+                meaning: "at least one shaft section".into(),
+            });
         }
         let mut elements = Vec::new();
         for (i, s) in r.section.iter().enumerate() {
             let key = |k: &str| format!("rotor.section[{i}].{k}");
             let l = check(&key("length_mm"), s.length_mm, Range::positive(1e5))? * 1e-3;
             let od = check(&key("outer_diameter_mm"), s.outer_diameter_mm, Range::positive(1e4))? * 1e-3;
-            let id = check(&key("inner_diameter_mm"), s.inner_diameter_mm, Range { lo: 0.0, hi: s.outer_diameter_mm, open_lo: false, open_hi: true })? * 1e-3;
+            let id = check(
+                &key("inner_diameter_mm"),
+                s.inner_diameter_mm,
+                Range { lo: 0.0, hi: s.outer_diameter_mm, open_lo: false, open_hi: true },
+            )? * 1e-3;
             if s.elements == 0 || s.elements > 200 {
                 #[allow(clippy::cast_precision_loss)]
-                return Err(CaseError::OutOfRange { key: key("elements"), value: s.elements as f64, allowed: "integer in [1, 200]".into() });
+                return Err(CaseError::OutOfRange {
+                    key: key("elements"),
+                    value: s.elements as f64,
+                    allowed: "integer in [1, 200]".into(),
+                });
             }
             #[allow(clippy::cast_precision_loss)]
             let le = l / s.elements as f64;
             for _ in 0..s.elements {
-                elements.push(BeamSection { length_m: le, outer_diameter_m: od, inner_diameter_m: id, density_kg_per_m3: density, youngs_modulus_pa: youngs, poisson_ratio: nu });
+                elements.push(BeamSection {
+                    length_m: le,
+                    outer_diameter_m: od,
+                    inner_diameter_m: id,
+                    density_kg_per_m3: density,
+                    youngs_modulus_pa: youngs,
+                    poisson_ratio: nu,
+                });
             }
         }
         let n_nodes = elements.len() + 1;
-        let disks = r.disk.iter().enumerate().map(|(i, d)| {
-            let key = |k: &str| format!("rotor.disk[{i}].{k}");
-            Ok(Disk {
-                node: check_node(&key("node"), d.node, n_nodes)?,
-                mass: check(&key("mass_kg"), d.mass_kg, Range::closed(0.0, 1e6))?,
-                polar: check(&key("polar_inertia_kg_m2"), d.polar_inertia_kg_m2, Range::closed(0.0, 1e6))?,
-                transverse: check(&key("transverse_inertia_kg_m2"), d.transverse_inertia_kg_m2, Range::closed(0.0, 1e6))?,
+        let disks = r
+            .disk
+            .iter()
+            .enumerate()
+            .map(|(i, d)| {
+                let key = |k: &str| format!("rotor.disk[{i}].{k}");
+                Ok(Disk {
+                    node: check_node(&key("node"), d.node, n_nodes)?,
+                    mass: check(&key("mass_kg"), d.mass_kg, Range::closed(0.0, 1e6))?,
+                    polar: check(&key("polar_inertia_kg_m2"), d.polar_inertia_kg_m2, Range::closed(0.0, 1e6))?,
+                    transverse: check(
+                        &key("transverse_inertia_kg_m2"),
+                        d.transverse_inertia_kg_m2,
+                        Range::closed(0.0, 1e6),
+                    )?,
+                })
             })
-        }).collect::<Result<Vec<_>, CaseError>>()?;
-        let unbalances = r.unbalance.iter().enumerate().map(|(i, u)| {
-            let key = |k: &str| format!("rotor.unbalance[{i}].{k}");
-            Ok(Unbalance {
-                node: check_node(&key("node"), u.node, n_nodes)?,
-                amount: check(&key("amount_g_mm"), u.amount_g_mm, Range::closed(0.0, 1e9))? * 1e-6,
-                phase: check(&key("phase_deg"), u.phase_deg, Range::closed(-360.0, 360.0))?.to_radians(),
+            .collect::<Result<Vec<_>, CaseError>>()?;
+        let unbalances = r
+            .unbalance
+            .iter()
+            .enumerate()
+            .map(|(i, u)| {
+                let key = |k: &str| format!("rotor.unbalance[{i}].{k}");
+                Ok(Unbalance {
+                    node: check_node(&key("node"), u.node, n_nodes)?,
+                    amount: check(&key("amount_g_mm"), u.amount_g_mm, Range::closed(0.0, 1e9))? * 1e-6,
+                    phase: check(&key("phase_deg"), u.phase_deg, Range::closed(-360.0, 360.0))?.to_radians(),
+                })
             })
-        }).collect::<Result<Vec<_>, CaseError>>()?;
-        let bearings = r.bearing.iter().enumerate().map(|(i, b)| resolve_bearing(i, b, n_nodes, read_case)).collect::<Result<Vec<_>, CaseError>>()?;
-        let supports = r.support.iter().enumerate().map(|(i, s)| {
-            let key = |k: &str| format!("rotor.support[{i}].{k}");
-            Ok(Support {
-                node: check_node(&key("node"), s.node, n_nodes)?,
-                stiffness: check(&key("stiffness_n_per_m"), s.stiffness_n_per_m, Range::closed(0.0, 1e15))?,
-                damping: check(&key("damping_ns_per_m"), s.damping_ns_per_m, Range::closed(0.0, 1e12))?,
+            .collect::<Result<Vec<_>, CaseError>>()?;
+        let bearings = r
+            .bearing
+            .iter()
+            .enumerate()
+            .map(|(i, b)| resolve_bearing(i, b, n_nodes, read_case))
+            .collect::<Result<Vec<_>, CaseError>>()?;
+        let supports = r
+            .support
+            .iter()
+            .enumerate()
+            .map(|(i, s)| {
+                let key = |k: &str| format!("rotor.support[{i}].{k}");
+                Ok(Support {
+                    node: check_node(&key("node"), s.node, n_nodes)?,
+                    stiffness: check(&key("stiffness_n_per_m"), s.stiffness_n_per_m, Range::closed(0.0, 1e15))?,
+                    damping: check(&key("damping_ns_per_m"), s.damping_ns_per_m, Range::closed(0.0, 1e12))?,
+                })
             })
-        }).collect::<Result<Vec<_>, CaseError>>()?;
+            .collect::<Result<Vec<_>, CaseError>>()?;
         let damping = match &r.damping {
             None => None,
             Some(d) => {
                 let ratio = check("rotor.damping.ratio", d.ratio, Range::closed(0.0, 0.5))?;
                 if d.modes[0] == 0 || d.modes[1] <= d.modes[0] || d.modes[1] > 20 {
-                    return Err(CaseError::Inconsistent { key: "rotor.damping.modes".into(), message: format!("{:?}: two increasing flexible-mode numbers in [1, 20]", d.modes) });
+                    return Err(CaseError::Inconsistent {
+                        key: "rotor.damping.modes".into(),
+                        message: format!("{:?}: two increasing flexible-mode numbers in [1, 20]", d.modes),
+                    });
                 }
                 Some(ModalDamping { ratio, modes: d.modes })
             }
@@ -425,7 +474,11 @@ impl RotorFile {
         let shaft_modes = r.shaft_modes;
         if shaft_modes > MAX_SHAFT_MODES {
             #[allow(clippy::cast_precision_loss)]
-            return Err(CaseError::OutOfRange { key: "rotor.shaft_modes".into(), value: shaft_modes as f64, allowed: format!("integer in [0, {MAX_SHAFT_MODES}] (0: full shaft)") });
+            return Err(CaseError::OutOfRange {
+                key: "rotor.shaft_modes".into(),
+                value: shaft_modes as f64,
+                allowed: format!("integer in [0, {MAX_SHAFT_MODES}] (0: full shaft)"),
+            });
         }
         let operating_range = match (r.min_speed_rpm, r.max_speed_rpm) {
             (Some(lo), Some(hi)) => {
@@ -434,7 +487,12 @@ impl RotorFile {
                 Some([lo * RPM, hi * RPM])
             }
             (None, None) => None,
-            _ => return Err(CaseError::Inconsistent { key: "rotor.max_speed_rpm".into(), message: "give both rotor.min_speed_rpm and rotor.max_speed_rpm, or neither".into() }),
+            _ => {
+                return Err(CaseError::Inconsistent {
+                    key: "rotor.max_speed_rpm".into(),
+                    message: "give both rotor.min_speed_rpm and rotor.max_speed_rpm, or neither".into(),
+                })
+            }
         };
         Ok(Rotor {
             title: self.title.clone().unwrap_or_default(),
@@ -453,14 +511,23 @@ impl RotorFile {
     }
 }
 
-fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn Fn(&str) -> Result<String, String>) -> Result<BearingPosition, CaseError> {
+fn resolve_bearing(
+    i: usize,
+    b: &BearingTable,
+    n_nodes: usize,
+    read_case: &dyn Fn(&str) -> Result<String, String>,
+) -> Result<BearingPosition, CaseError> {
     let key = |k: &str| format!("rotor.bearing[{i}].{k}");
     let node = check_node(&key("node"), b.node, n_nodes)?;
     let numbers = !b.k_n_per_m.is_empty() || !b.c_ns_per_m.is_empty();
     let support = match (&b.case, numbers) {
         (Some(name), false) => {
-            let text = read_case(name).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("cannot read `{name}`: {e}") })?;
-            let (_, case) = super::load_case(&text, &b.set).map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("`{name}`: {e}") })?;
+            let text = read_case(name).map_err(|e| CaseError::Inconsistent {
+                key: key("case"),
+                message: format!("cannot read `{name}`: {e}"),
+            })?;
+            let (_, case) = super::load_case(&text, &b.set)
+                .map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("`{name}`: {e}") })?;
             let name = if b.set.is_empty() { name.clone() } else { format!("{name} [{}]", b.set.join(", ")) };
             BearingSupport::Case { name, case: Box::new(case) }
         }
@@ -469,7 +536,12 @@ fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn F
             let expected = if b.speeds_rpm.is_empty() { 1 } else { b.speeds_rpm.len() };
             for (k, n) in [("k_n_per_m", rows), ("c_ns_per_m", b.c_ns_per_m.len())] {
                 if n != expected {
-                    return Err(CaseError::Inconsistent { key: key(k), message: format!("{n} rows; needs {expected} (one per entry of speeds_rpm, or one row without speeds_rpm)") });
+                    return Err(CaseError::Inconsistent {
+                        key: key(k),
+                        message: format!(
+                            "{n} rows; needs {expected} (one per entry of speeds_rpm, or one row without speeds_rpm)"
+                        ),
+                    });
                 }
             }
             let mut speeds = Vec::new();
@@ -483,11 +555,18 @@ fn resolve_bearing(i: usize, b: &BearingTable, n_nodes: usize, read_case: &dyn F
                 }
                 Ok([[row[0], row[1]], [row[2], row[3]]])
             };
-            let k = b.k_n_per_m.iter().enumerate().map(|(j, r)| mat(r, "k_n_per_m", j)).collect::<Result<Vec<_>, _>>()?;
-            let c = b.c_ns_per_m.iter().enumerate().map(|(j, r)| mat(r, "c_ns_per_m", j)).collect::<Result<Vec<_>, _>>()?;
+            let k =
+                b.k_n_per_m.iter().enumerate().map(|(j, r)| mat(r, "k_n_per_m", j)).collect::<Result<Vec<_>, _>>()?;
+            let c =
+                b.c_ns_per_m.iter().enumerate().map(|(j, r)| mat(r, "c_ns_per_m", j)).collect::<Result<Vec<_>, _>>()?;
             BearingSupport::Numbers(CoefficientTable { speeds, k, c })
         }
-        _ => return Err(CaseError::Inconsistent { key: key("case"), message: "give either `case` or `k_n_per_m` and `c_ns_per_m`".into() }),
+        _ => {
+            return Err(CaseError::Inconsistent {
+                key: key("case"),
+                message: "give either `case` or `k_n_per_m` and `c_ns_per_m`".into(),
+            })
+        }
     };
     Ok(BearingPosition { node, support })
 }
@@ -523,16 +602,26 @@ mod tests {
         let typo = MINIMAL.replace("length_mm", "length");
         assert!(matches!(resolve(&typo), Err(CaseError::UnknownKey { key, .. }) if key.contains("rotor.section")));
         let rows = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\nk_n_per_m = [[1.0, 0.0, 0.0, 1.0]]\nc_ns_per_m = [[1.0, 0.0, 0.0, 1.0], [1.0, 0.0, 0.0, 1.0]]\n");
-        assert!(matches!(resolve(&rows), Err(CaseError::Inconsistent { key, .. }) if key == "rotor.bearing[0].c_ns_per_m"));
+        assert!(
+            matches!(resolve(&rows), Err(CaseError::Inconsistent { key, .. }) if key == "rotor.bearing[0].c_ns_per_m")
+        );
         let missing = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\ncase = \"b.toml\"\n");
-        assert!(matches!(resolve(&missing), Err(CaseError::Inconsistent { key, message }) if key == "rotor.bearing[0].case" && message.contains("no file b.toml")));
+        assert!(
+            matches!(resolve(&missing), Err(CaseError::Inconsistent { key, message }) if key == "rotor.bearing[0].case" && message.contains("no file b.toml"))
+        );
         let id = MINIMAL.replace("elements = 4", "elements = 4\ninner_diameter_mm = 50.0");
-        assert!(matches!(resolve(&id), Err(CaseError::OutOfRange { key, .. }) if key == "rotor.section[0].inner_diameter_mm"));
+        assert!(
+            matches!(resolve(&id), Err(CaseError::OutOfRange { key, .. }) if key == "rotor.section[0].inner_diameter_mm")
+        );
     }
 
     #[test]
     fn tabulated_coefficients_interpolate_and_hold() {
-        let t = CoefficientTable { speeds: vec![100.0, 200.0], k: vec![[[1.0, 2.0], [3.0, 4.0]], [[3.0, 2.0], [3.0, 8.0]]], c: vec![[[0.0; 2]; 2], [[2.0, 0.0], [0.0, 2.0]]] };
+        let t = CoefficientTable {
+            speeds: vec![100.0, 200.0],
+            k: vec![[[1.0, 2.0], [3.0, 4.0]], [[3.0, 2.0], [3.0, 8.0]]],
+            c: vec![[[0.0; 2]; 2], [[2.0, 0.0], [0.0, 2.0]]],
+        };
         let (k, c) = t.at(150.0);
         assert_eq!((k, c), ([[2.0, 2.0], [3.0, 6.0]], [[1.0, 0.0], [0.0, 1.0]]));
         assert_eq!(t.at(50.0).0, t.k[0]);

@@ -6,11 +6,24 @@
 use super::error::Range;
 use super::schema::{Allowed, KeySpec};
 
-const fn num(key: &'static str, unit: &'static str, range: Range, typical: (f64, f64), default: &'static str, meaning: &'static str) -> KeySpec {
+const fn num(
+    key: &'static str,
+    unit: &'static str,
+    range: Range,
+    typical: (f64, f64),
+    default: &'static str,
+    meaning: &'static str,
+) -> KeySpec {
     KeySpec { key, unit, allowed: Allowed::Number(range), typical: Some(typical), default, meaning }
 }
 
-const fn other(key: &'static str, unit: &'static str, allowed: Allowed, default: &'static str, meaning: &'static str) -> KeySpec {
+const fn other(
+    key: &'static str,
+    unit: &'static str,
+    allowed: Allowed,
+    default: &'static str,
+    meaning: &'static str,
+) -> KeySpec {
     KeySpec { key, unit, allowed, typical: None, default, meaning }
 }
 
@@ -107,7 +120,12 @@ stiffness_n_per_m = 1e7
         let mut table = &mut doc;
         for part in &parts[..parts.len() - 1] {
             table = match part.strip_suffix("[]") {
-                Some(array) => table.get_mut(array).and_then(toml::Value::as_array_mut).and_then(|a| a.first_mut()).and_then(toml::Value::as_table_mut).unwrap(),
+                Some(array) => table
+                    .get_mut(array)
+                    .and_then(toml::Value::as_array_mut)
+                    .and_then(|a| a.first_mut())
+                    .and_then(toml::Value::as_table_mut)
+                    .unwrap(),
                 None => table.get_mut(*part).and_then(toml::Value::as_table_mut).unwrap(),
             };
         }
@@ -130,7 +148,11 @@ stiffness_n_per_m = 1e7
                     Err(CaseError::OutOfRange { key, value, allowed }) => {
                         assert_eq!(key.replace("[0]", "[]"), k.key);
                         assert_eq!(value, v, "{key}");
-                        assert!(allowed.contains(&range.describe()), "{key}: validation allows {allowed}, the table says {}", range.describe());
+                        assert!(
+                            allowed.contains(&range.describe()),
+                            "{key}: validation allows {allowed}, the table says {}",
+                            range.describe()
+                        );
                         checked += 1;
                     }
                     other => panic!("{} = {v}: expected an out-of-range error, got {other:?}", k.key),
@@ -141,7 +163,10 @@ stiffness_n_per_m = 1e7
         // whole-number keys: the error names the key, the value and the interval
         let too_many = BASE.replace("[rotor]\n", "[rotor]\nshaft_modes = 401\n");
         match parse_rotor_file(&too_many).unwrap().resolve(&|_| Err("no cases".into())) {
-            Err(CaseError::OutOfRange { key, value, allowed }) => assert_eq!((key.as_str(), value, allowed.as_str()), ("rotor.shaft_modes", 401.0, "integer in [0, 400] (0: full shaft)")),
+            Err(CaseError::OutOfRange { key, value, allowed }) => assert_eq!(
+                (key.as_str(), value, allowed.as_str()),
+                ("rotor.shaft_modes", 401.0, "integer in [0, 400] (0: full shaft)")
+            ),
             other => panic!("{other:?}"),
         }
     }
@@ -162,7 +187,9 @@ stiffness_n_per_m = 1e7
         let join = |k: &str| if prefix.is_empty() { k.to_string() } else { format!("{prefix}.{k}") };
         match v {
             toml::Value::Table(t) => t.iter().for_each(|(k, v)| leaf_keys(v, &join(k), out)),
-            toml::Value::Array(a) if !a.is_empty() && a.iter().all(toml::Value::is_table) => a.iter().for_each(|v| leaf_keys(v, &format!("{prefix}[]"), out)),
+            toml::Value::Array(a) if !a.is_empty() && a.iter().all(toml::Value::is_table) => {
+                a.iter().for_each(|v| leaf_keys(v, &format!("{prefix}[]"), out))
+            }
             _ => out.push(prefix.to_string()),
         }
     }

@@ -113,11 +113,20 @@ pub fn append_section(r: &mut RotorTable, end: ShaftEnd) -> usize {
         ShaftEnd::Start => r.section.first(),
         ShaftEnd::End => r.section.last(),
     };
-    let mut s = neighbour.cloned().unwrap_or(super::rotor::SectionTable { length_mm: 1.0, outer_diameter_mm: 50.0, inner_diameter_mm: 0.0, elements: 1 });
+    let mut s = neighbour.cloned().unwrap_or(super::rotor::SectionTable {
+        length_mm: 1.0,
+        outer_diameter_mm: 50.0,
+        inner_diameter_mm: 0.0,
+        elements: 1,
+    });
     #[allow(clippy::cast_precision_loss)]
     let element_mm = s.length_mm / s.elements.max(1) as f64;
     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    let elements = if element_mm > 0.0 && element_mm.is_finite() { (APPENDED_LENGTH_MM / element_mm).round().clamp(1.0, 200.0) as usize } else { 1 };
+    let elements = if element_mm > 0.0 && element_mm.is_finite() {
+        (APPENDED_LENGTH_MM / element_mm).round().clamp(1.0, 200.0) as usize
+    } else {
+        1
+    };
     s.length_mm = APPENDED_LENGTH_MM;
     s.elements = elements;
     match end {
@@ -188,7 +197,13 @@ mod tests {
 
     fn nodes(f: &RotorFile) -> Vec<usize> {
         let r = &f.rotor;
-        r.disk.iter().map(|d| d.node).chain(r.unbalance.iter().map(|u| u.node)).chain(r.bearing.iter().map(|b| b.node)).chain(r.support.iter().map(|s| s.node)).collect()
+        r.disk
+            .iter()
+            .map(|d| d.node)
+            .chain(r.unbalance.iter().map(|u| u.node))
+            .chain(r.bearing.iter().map(|b| b.node))
+            .chain(r.support.iter().map(|s| s.node))
+            .collect()
     }
 
     fn resolve(f: &RotorFile) -> crate::model::rotor::Rotor {
@@ -217,7 +232,10 @@ mod tests {
         let mut f = file();
         let mass = resolve(&f).mass();
         split_section(&mut f.rotor, 2).unwrap();
-        assert_eq!(f.rotor.section[2..].iter().map(|s| (s.length_mm, s.elements)).collect::<Vec<_>>(), vec![(50.0, 1), (50.0, 1)]);
+        assert_eq!(
+            f.rotor.section[2..].iter().map(|s| (s.length_mm, s.elements)).collect::<Vec<_>>(),
+            vec![(50.0, 1), (50.0, 1)]
+        );
         // Section 2 starts at node 5: the bearing at the shaft end (6) becomes 7, node 5 stays.
         assert_eq!(nodes(&f), vec![0, 3, 4, 2, 7, 5]);
         assert!((resolve(&f).mass() - mass).abs() < 1e-12 * mass);
@@ -228,7 +246,10 @@ mod tests {
         let mut f = file();
         let mass = resolve(&f).mass();
         assert_eq!(append_section(&mut f.rotor, ShaftEnd::Start), 0);
-        assert_eq!((f.rotor.section[0].length_mm, f.rotor.section[0].outer_diameter_mm, f.rotor.section[0].elements), (100.0, 50.0, 1));
+        assert_eq!(
+            (f.rotor.section[0].length_mm, f.rotor.section[0].outer_diameter_mm, f.rotor.section[0].elements),
+            (100.0, 50.0, 1)
+        );
         assert_eq!(nodes(&f), vec![1, 4, 5, 3, 7, 6]);
         let added = 7850.0 * std::f64::consts::PI / 4.0 * 0.05_f64.powi(2) * 0.1;
         assert!((resolve(&f).mass() - mass - added).abs() < 1e-12 * mass);
@@ -243,7 +264,13 @@ mod tests {
         let mut f = file();
         let moved = remove_section(&mut f.rotor, 1).unwrap();
         let shown: Vec<String> = moved.iter().map(ToString::to_string).collect();
-        assert_eq!(shown, vec!["rotor.disk[1] (on removed node 3) now at node 2", "rotor.unbalance[0] (on removed node 4) now at node 2"]);
+        assert_eq!(
+            shown,
+            vec![
+                "rotor.disk[1] (on removed node 3) now at node 2",
+                "rotor.unbalance[0] (on removed node 4) now at node 2"
+            ]
+        );
         assert_eq!(nodes(&f), vec![0, 2, 2, 2, 3, 2]);
         assert_eq!(resolve(&f).n_nodes(), 4);
         // The last section (now nodes 2–3): the bearing at its free end moves to the new end, node 2.

@@ -19,7 +19,10 @@ pub enum Allowed {
     /// A number in an interval, or a list of them with one entry per pad.
     NumberPerPad(Range),
     /// A whole number in `[lo, hi]`.
-    Integer { lo: usize, hi: usize },
+    Integer {
+        lo: usize,
+        hi: usize,
+    },
     /// One of these words (TOML strings).
     Choice(&'static [&'static str]),
     Bool,
@@ -63,15 +66,35 @@ pub struct KeySpec {
 const TEMP: Range = Range::closed(-60.0, 400.0);
 const ANGLE: Range = Range::closed(-3600.0, 3600.0);
 
-const fn num(key: &'static str, unit: &'static str, range: Range, typical: (f64, f64), default: &'static str, meaning: &'static str) -> KeySpec {
+const fn num(
+    key: &'static str,
+    unit: &'static str,
+    range: Range,
+    typical: (f64, f64),
+    default: &'static str,
+    meaning: &'static str,
+) -> KeySpec {
     KeySpec { key, unit, allowed: Allowed::Number(range), typical: Some(typical), default, meaning }
 }
 
-const fn rule(key: &'static str, unit: &'static str, text: &'static str, typical: (f64, f64), default: &'static str, meaning: &'static str) -> KeySpec {
+const fn rule(
+    key: &'static str,
+    unit: &'static str,
+    text: &'static str,
+    typical: (f64, f64),
+    default: &'static str,
+    meaning: &'static str,
+) -> KeySpec {
     KeySpec { key, unit, allowed: Allowed::Rule(text), typical: Some(typical), default, meaning }
 }
 
-const fn other(key: &'static str, unit: &'static str, allowed: Allowed, default: &'static str, meaning: &'static str) -> KeySpec {
+const fn other(
+    key: &'static str,
+    unit: &'static str,
+    allowed: Allowed,
+    default: &'static str,
+    meaning: &'static str,
+) -> KeySpec {
     KeySpec { key, unit, allowed, typical: None, default, meaning }
 }
 

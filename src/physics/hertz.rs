@@ -98,7 +98,8 @@ impl PivotContact {
     /// Contact modulus E* [Pa].
     #[must_use]
     pub fn contact_modulus_pa(&self) -> f64 {
-        1.0 / (Self::compliance(self.pivot_youngs_modulus_pa, self.pivot_poisson_ratio) + Self::compliance(self.seat_youngs_modulus_pa, self.seat_poisson_ratio))
+        1.0 / (Self::compliance(self.pivot_youngs_modulus_pa, self.pivot_poisson_ratio)
+            + Self::compliance(self.seat_youngs_modulus_pa, self.seat_poisson_ratio))
     }
 
     /// Relative radius of the conformal contact R = R₁R₂/(R₂ − R₁) [m].
@@ -132,11 +133,20 @@ impl PivotContact {
                 let sum = |shift: f64| c.iter().map(|&(ci, ri)| ci * (2.0 * (4.0 * ri / a).ln() - shift)).sum::<f64>();
                 let approach = p / std::f64::consts::PI * sum(1.0);
                 let d_approach_dp = sum(2.0) / std::f64::consts::PI;
-                ContactState { load_n, approach_m: approach, tangent_n_per_m: self.length_m / d_approach_dp, half_width_m: a }
+                ContactState {
+                    load_n,
+                    approach_m: approach,
+                    tangent_n_per_m: self.length_m / d_approach_dp,
+                    half_width_m: a,
+                }
             }
         };
         if state.half_width_m > 0.2 * self.pivot_radius_m {
-            return Err(HertzError::ContactTooWide { half_width_m: state.half_width_m, pivot_radius_m: self.pivot_radius_m, load_n });
+            return Err(HertzError::ContactTooWide {
+                half_width_m: state.half_width_m,
+                pivot_radius_m: self.pivot_radius_m,
+                load_n,
+            });
         }
         Ok(state)
     }

@@ -50,7 +50,10 @@ impl FilmField {
         let ts = ((s - g.s[i]) / (g.s[i + 1] - g.s[i])).clamp(0.0, 1.0);
         let tz = ((z - g.z[j]) / (g.z[j + 1] - g.z[j])).clamp(0.0, 1.0);
         let v = |a: usize, b: usize| self.node[g.node(a, b)];
-        (1.0 - ts) * (1.0 - tz) * v(i, j) + ts * (1.0 - tz) * v(i + 1, j) + ts * tz * v(i + 1, j + 1) + (1.0 - ts) * tz * v(i, j + 1)
+        (1.0 - ts) * (1.0 - tz) * v(i, j)
+            + ts * (1.0 - tz) * v(i + 1, j)
+            + ts * tz * v(i + 1, j + 1)
+            + (1.0 - ts) * tz * v(i, j + 1)
     }
 }
 
@@ -121,7 +124,10 @@ impl ModeKey {
             && self.layers == other.layers
             && self.bending == other.bending
             && self.material == other.material
-            && all(&[self.radius, self.bore, self.thickness, self.pivot_from_le], &[other.radius, other.bore, other.thickness, other.pivot_from_le])
+            && all(
+                &[self.radius, self.bore, self.thickness, self.pivot_from_le],
+                &[other.radius, other.bore, other.thickness, other.pivot_from_le],
+            )
     }
 }
 
@@ -163,18 +169,30 @@ impl PadModes {
     ///
     /// # Errors
     /// [`ElasticError`] from assembly or the eigen-solution.
-    pub fn compute(mesh: &PadMesh, pivot: PivotSupport, material: &Elastic, bending: usize, half: bool) -> Result<Self, ElasticError> {
+    pub fn compute(
+        mesh: &PadMesh,
+        pivot: PivotSupport,
+        material: &Elastic,
+        bending: usize,
+        half: bool,
+    ) -> Result<Self, ElasticError> {
         let start = web_time::Instant::now();
         let solid = Solid::from_pad(mesh);
         let patch = pivot_patch(mesh, &solid, pivot.pivot_rad, pivot.arc_rad);
-        let fixed: Vec<(usize, usize)> = if half { (0..solid.n_nodes()).filter(|&n| solid.nodes[n][2].abs() < 1e-12).map(|n| (n, 2)).collect() } else { Vec::new() };
+        let fixed: Vec<(usize, usize)> = if half {
+            (0..solid.n_nodes()).filter(|&n| solid.nodes[n][2].abs() < 1e-12).map(|n| (n, 2)).collect()
+        } else {
+            Vec::new()
+        };
         let p = [pivot.lever * pivot.pivot_rad.cos(), pivot.lever * pivot.pivot_rad.sin()];
         let supports = Supports::new(&solid, &fixed, &patch, p);
         let mut sys = ElasticSystem::assemble(&solid, material, Formulation::Incompatible, supports)?;
         sys.order_as_pad(&solid);
         let pairs = sys.modes(bending + 1)?;
         let sym = if half { 2.0 } else { 1.0 };
-        let modes = (1..=bending).map(|i| mode_from_pair(&pairs, i, &sys, &solid, mesh, material, pivot.pivot_rad, sym)).collect();
+        let modes = (1..=bending)
+            .map(|i| mode_from_pair(&pairs, i, &sys, &solid, mesh, material, pivot.pivot_rad, sym))
+            .collect();
         let tilt_ratio = if bending > 0 { pairs.values[0].abs() / pairs.values[1] } else { 0.0 };
         let report = ModeReport {
             unknowns: sys.supports.len(),
@@ -191,7 +209,11 @@ impl PadModes {
     ///
     /// # Errors
     /// As [`PadModes::compute`].
-    pub fn cached(cache: &mut Vec<(ModeKey, Arc<Self>)>, key: ModeKey, compute: impl FnOnce() -> Result<Self, ElasticError>) -> Result<Arc<Self>, ElasticError> {
+    pub fn cached(
+        cache: &mut Vec<(ModeKey, Arc<Self>)>,
+        key: ModeKey,
+        compute: impl FnOnce() -> Result<Self, ElasticError>,
+    ) -> Result<Arc<Self>, ElasticError> {
         if let Some((_, m)) = cache.iter().find(|(k, _)| k.matches(&key)) {
             return Ok(m.clone());
         }
@@ -202,7 +224,16 @@ impl PadModes {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn mode_from_pair(pairs: &EigenPairs, i: usize, sys: &ElasticSystem, solid: &Solid, mesh: &PadMesh, material: &Elastic, pivot_rad: f64, sym: f64) -> PadMode {
+fn mode_from_pair(
+    pairs: &EigenPairs,
+    i: usize,
+    sys: &ElasticSystem,
+    solid: &Solid,
+    mesh: &PadMesh,
+    material: &Elastic,
+    pivot_rad: f64,
+    sym: f64,
+) -> PadMode {
     let q: Vec<f64> = pairs.vectors.column(i).iter().copied().collect();
     let nodal = sys.supports.expand(&q);
     let radial: Vec<f64> = (0..mesh.n_film)
@@ -263,7 +294,8 @@ mod tests {
         let grid = PadGrid { s, z, periodic: false, half: true };
         let mesh = PadMesh::extrude(&grid, r, le, bore, t, layers);
         let steel = Elastic { youngs_modulus: 200e9, poisson_ratio: 0.3, density: 7800.0 };
-        PadModes::compute(&mesh, PivotSupport { pivot_rad: pivot, lever: bore + t, arc_rad: arc }, &steel, 2, true).unwrap()
+        PadModes::compute(&mesh, PivotSupport { pivot_rad: pivot, lever: bore + t, arc_rad: arc }, &steel, 2, true)
+            .unwrap()
     }
 
     #[test]
@@ -277,12 +309,22 @@ mod tests {
                 let peak = mode.film_shape.iter().copied().fold(f64::NEG_INFINITY, f64::max);
                 assert!((peak - 1.0).abs() < 1e-12 && mode.film_shape.iter().all(|v| v.abs() <= 1.0 + 1e-12));
                 let f = (mode.stiffness / mode.mass).sqrt() / std::f64::consts::TAU;
-                assert!((f - mode.frequency_hz).abs() < 1e-9 * mode.frequency_hz, "{f} {} {} {} {:?}", mode.frequency_hz, mode.mass, mode.stiffness, m.report);
+                assert!(
+                    (f - mode.frequency_hz).abs() < 1e-9 * mode.frequency_hz,
+                    "{f} {} {} {} {:?}",
+                    mode.frequency_hz,
+                    mode.mass,
+                    mode.stiffness,
+                    m.report
+                );
             }
         }
         let f: Vec<f64> = runs.iter().map(|m| m.modes[0].frequency_hz).collect();
         let order = ((f[1] - f[0]) / (f[2] - f[1])).abs().log2();
-        eprintln!("compressor pad first bending mode: {f:?} Hz, observed order {order:.2}; second {:?}", runs.iter().map(|m| m.modes[1].frequency_hz).collect::<Vec<_>>());
+        eprintln!(
+            "compressor pad first bending mode: {f:?} Hz, observed order {order:.2}; second {:?}",
+            runs.iter().map(|m| m.modes[1].frequency_hz).collect::<Vec<_>>()
+        );
         // Measured 1.19: the edges of the rigid contact patch are stress singularities, so the pad modes
         // converge at about first order (the smooth beam and ring problems of pad_elastic show second order).
         assert!(order > 1.0 && order < 1.4, "order {order}");
@@ -293,10 +335,12 @@ mod tests {
     #[test]
     fn film_field_interpolates_bilinearly_and_hits_the_nodes() {
         let grid = PadGrid { s: vec![0.0, 0.01, 0.03], z: vec![0.0, 0.02], periodic: false, half: true };
-        let node: Vec<f64> = (0..grid.n_nodes()).map(|n| {
-            let (i, j) = grid.col_row(n);
-            2.0 * grid.s[i] + 3.0 * grid.z[j] + 5.0 * grid.s[i] * grid.z[j]
-        }).collect();
+        let node: Vec<f64> = (0..grid.n_nodes())
+            .map(|n| {
+                let (i, j) = grid.col_row(n);
+                2.0 * grid.s[i] + 3.0 * grid.z[j] + 5.0 * grid.s[i] * grid.z[j]
+            })
+            .collect();
         let f = FilmField { grid, radius: 0.05, theta_le: 0.4, node };
         let at = |s: f64, z: f64| f.at(0.4 + s / 0.05, z);
         assert!((at(0.01, 0.02) - (0.02 + 0.06 + 0.001)).abs() < 1e-15);

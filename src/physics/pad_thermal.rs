@@ -80,7 +80,14 @@ impl PadConduction {
 
     /// Adds the conduction and convection rows of every pad node (film-face condition not included) to
     /// `values` and right-hand-side column 0 (`rhs[..]`, the first `pattern.n` entries).
-    pub fn assemble_body(&self, mat: &PadMaterial, pattern: &GeneralPattern, layout: PadLayout, values: &mut [f64], rhs: &mut [f64]) {
+    pub fn assemble_body(
+        &self,
+        mat: &PadMaterial,
+        pattern: &GeneralPattern,
+        layout: PadLayout,
+        values: &mut [f64],
+        rhs: &mut [f64],
+    ) {
         for (h, k) in self.conduction.iter().enumerate() {
             let pos = pattern.group_positions(layout.hex_groups + h);
             for a in 0..8 {
@@ -105,7 +112,14 @@ impl PadConduction {
 
     /// BC1: the film-face rows become `T_pad,i − T_film,i = 0` (replacing what [`Self::assemble_body`] put
     /// there).
-    pub fn film_face_dirichlet(&self, pattern: &GeneralPattern, layout: PadLayout, values: &mut [f64], rhs: &mut [f64], columns: usize) {
+    pub fn film_face_dirichlet(
+        &self,
+        pattern: &GeneralPattern,
+        layout: PadLayout,
+        values: &mut [f64],
+        rhs: &mut [f64],
+        columns: usize,
+    ) {
         for i in 0..self.mesh.n_film {
             let r = layout.offset + i;
             pattern.set_identity_row(values, r);
@@ -227,7 +241,15 @@ impl PadDirichletSolver {
         let hex_pos = flat.chunks_exact(64).map(|c| std::array::from_fn(|k| c[k])).collect();
         let nnz = pattern.nnz();
         let solver = SpdSolver::new(&pattern)?;
-        Ok(Self { pattern, solver, hex_pos, values: vec![0.0; nnz], work: vec![0.0; nnz], factored: None, factorizations: 0 })
+        Ok(Self {
+            pattern,
+            solver,
+            hex_pos,
+            values: vec![0.0; nnz],
+            work: vec![0.0; nnz],
+            factored: None,
+            factorizations: 0,
+        })
     }
 }
 
@@ -241,7 +263,13 @@ impl PadMesh {
             && self.hexes == o.hexes
             && self.free_faces == o.free_faces
             && self.radii.iter().zip(&o.radii).all(|(&a, &b)| close(a, b))
-            && self.boxes.iter().zip(&o.boxes).all(|(a, b)| close(a.r0, b.r0) && close(a.dr, b.dr) && close(a.dtheta, b.dtheta) && close(a.z0, b.z0) && close(a.dz, b.dz))
+            && self.boxes.iter().zip(&o.boxes).all(|(a, b)| {
+                close(a.r0, b.r0)
+                    && close(a.dr, b.dr)
+                    && close(a.dtheta, b.dtheta)
+                    && close(a.z0, b.z0)
+                    && close(a.dz, b.dz)
+            })
     }
 }
 
@@ -250,7 +278,12 @@ impl PadConduction {
     ///
     /// # Errors
     /// A failed factorisation (never NaN temperatures).
-    pub fn solve_dirichlet(&self, s: &mut PadDirichletSolver, mat: &PadMaterial, face: &[f64]) -> Result<Vec<f64>, SolverError> {
+    pub fn solve_dirichlet(
+        &self,
+        s: &mut PadDirichletSolver,
+        mat: &PadMaterial,
+        face: &[f64],
+    ) -> Result<Vec<f64>, SolverError> {
         let n = s.pattern.n;
         let refactor = s.factored != Some(*mat);
         if refactor {
@@ -304,4 +337,3 @@ impl PadConduction {
         Ok(rhs)
     }
 }
-

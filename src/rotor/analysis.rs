@@ -113,10 +113,21 @@ impl Analysis {
         let mut report = AnalysisReport::default();
         let bearings = BearingSet::new(rotor);
         let shaft = shaft_model(rotor, &bearings.nodes, &mut report)?;
-        let mut nodes: Vec<usize> = bearings.nodes.iter().copied().chain(rotor.unbalances.iter().map(|u| u.node)).collect();
+        let mut nodes: Vec<usize> =
+            bearings.nodes.iter().copied().chain(rotor.unbalances.iter().map(|u| u.node)).collect();
         nodes.sort_unstable();
         nodes.dedup();
-        Ok(Self { rotor: rotor.clone(), shaft, bearings, params, nodes, done: Vec::new(), stiffness: vec![Vec::new(); rotor.bearings.len()], report, started: Instant::now() })
+        Ok(Self {
+            rotor: rotor.clone(),
+            shaft,
+            bearings,
+            params,
+            nodes,
+            done: Vec::new(),
+            stiffness: vec![Vec::new(); rotor.bearings.len()],
+            report,
+            started: Instant::now(),
+        })
     }
 
     /// Does the next speed.
@@ -143,9 +154,17 @@ impl Analysis {
         self.report.eigen_seconds += t1.elapsed().as_secs_f64();
         self.report.eigen_solutions += 1;
         // the response uses the synchronously reduced bearings (identical to the full system at Ω)
-        let orbits = if self.rotor.unbalances.is_empty() || omega == 0.0 { Vec::new() } else { response(&sys, &self.shaft, &self.rotor.unbalances, omega, &self.nodes)? };
+        let orbits = if self.rotor.unbalances.is_empty() || omega == 0.0 {
+            Vec::new()
+        } else {
+            response(&sys, &self.shaft, &self.rotor.unbalances, omega, &self.nodes)?
+        };
         let rpm = omega * 30.0 / std::f64::consts::PI;
-        self.done.push(SpeedResult { point: SpeedPoint { speed_rad_s: omega, modes }, orbits, api617_limit_um: if rpm > 0.0 { api617_limit_um(rpm) } else { f64::INFINITY } });
+        self.done.push(SpeedResult {
+            point: SpeedPoint { speed_rad_s: omega, modes },
+            orbits,
+            api617_limit_um: if rpm > 0.0 { api617_limit_um(rpm) } else { f64::INFINITY },
+        });
         Ok(if self.done.len() == of { Step::Finished } else { Step::More { done: self.done.len(), of } })
     }
 
@@ -197,7 +216,12 @@ fn shaft_model(rotor: &Rotor, bearing_nodes: &[usize], report: &mut AnalysisRepo
     if rotor.shaft_modes == 0 {
         return Ok(full);
     }
-    let attached: Vec<usize> = bearing_nodes.iter().copied().chain(rotor.supports.iter().map(|s| s.node)).chain(rotor.unbalances.iter().map(|u| u.node)).collect();
+    let attached: Vec<usize> = bearing_nodes
+        .iter()
+        .copied()
+        .chain(rotor.supports.iter().map(|s| s.node))
+        .chain(rotor.unbalances.iter().map(|u| u.node))
+        .collect();
     match reduce(&full, &attached, rotor.shaft_modes) {
         Ok(r) => {
             report.shaft_modes = rotor.shaft_modes;

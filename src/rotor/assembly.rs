@@ -83,7 +83,8 @@ impl ShaftModel {
     pub fn new(rotor: &Rotor) -> Result<Self, RotorError> {
         let n_nodes = rotor.n_nodes();
         let n = n_nodes * NODE_DOFS;
-        let (mut mass, mut stiffness, mut gyroscopic) = (DMatrix::zeros(n, n), DMatrix::zeros(n, n), DMatrix::zeros(n, n));
+        let (mut mass, mut stiffness, mut gyroscopic) =
+            (DMatrix::zeros(n, n), DMatrix::zeros(n, n), DMatrix::zeros(n, n));
         for (e, section) in rotor.elements.iter().enumerate() {
             let em = element_matrices(section, rotor.theory);
             let base = e * NODE_DOFS;
@@ -96,7 +97,9 @@ impl ShaftModel {
             }
         }
         for d in &rotor.disks {
-            for (dof, v) in [(NodeDof::X, d.mass), (NodeDof::Y, d.mass), (NodeDof::A, d.transverse), (NodeDof::B, d.transverse)] {
+            for (dof, v) in
+                [(NodeDof::X, d.mass), (NodeDof::Y, d.mass), (NodeDof::A, d.transverse), (NodeDof::B, d.transverse)]
+            {
                 let i = shaft_index(d.node, dof);
                 mass[(i, i)] += v;
             }
@@ -108,7 +111,12 @@ impl ShaftModel {
         let mut damping = match rotor.damping {
             None => DMatrix::zeros(n, n),
             Some(d) => {
-                let pick = |m: usize| free_free_rad_s.get(m - 1).copied().ok_or(RotorError::DampingMode { mode: m, available: free_free_rad_s.len() });
+                let pick = |m: usize| {
+                    free_free_rad_s
+                        .get(m - 1)
+                        .copied()
+                        .ok_or(RotorError::DampingMode { mode: m, available: free_free_rad_s.len() })
+                };
                 let (w1, w2) = (pick(d.modes[0])?, pick(d.modes[1])?);
                 let alpha = 2.0 * d.ratio * w1 * w2 / (w1 + w2);
                 let beta = 2.0 * d.ratio / (w1 + w2);
@@ -122,7 +130,16 @@ impl ShaftModel {
                 damping[(i, i)] += s.damping;
             }
         }
-        Ok(Self { n_nodes, z_m: rotor.node_positions(), mass, stiffness, gyroscopic, damping, free_free_rad_s, basis: None })
+        Ok(Self {
+            n_nodes,
+            z_m: rotor.node_positions(),
+            mass,
+            stiffness,
+            gyroscopic,
+            damping,
+            free_free_rad_s,
+            basis: None,
+        })
     }
 }
 

@@ -55,14 +55,26 @@ impl BearingSet {
                 BearingSupport::Numbers(t) => Source::Numbers(t.clone()),
                 BearingSupport::Case { name, case } => {
                     let i = entries.iter().position(|e| e.name == *name).unwrap_or_else(|| {
-                        entries.push(CaseEntry { name: name.clone(), case: (**case).clone(), model: None, thermal: None, cache: BTreeMap::new() });
+                        entries.push(CaseEntry {
+                            name: name.clone(),
+                            case: (**case).clone(),
+                            model: None,
+                            thermal: None,
+                            cache: BTreeMap::new(),
+                        });
                         entries.len() - 1
                     });
                     Source::Case(i)
                 }
             });
         }
-        Self { entries, sources, nodes: rotor.bearings.iter().map(|b| b.node).collect(), model: rotor.coefficients, solves: 0 }
+        Self {
+            entries,
+            sources,
+            nodes: rotor.bearings.iter().map(|b| b.node).collect(),
+            model: rotor.coefficients,
+            solves: 0,
+        }
     }
 
     /// Full coefficients of distinct case `i` at `omega` [rad/s] (solved, or from the cache).
@@ -126,5 +138,8 @@ impl BearingSet {
 }
 
 fn nearest(cache: &BTreeMap<u64, (FullCoefficients, Vec<f64>)>, omega: f64) -> Option<&(FullCoefficients, Vec<f64>)> {
-    cache.iter().min_by(|a, b| (f64::from_bits(*a.0) - omega).abs().total_cmp(&(f64::from_bits(*b.0) - omega).abs())).map(|(_, v)| v)
+    cache
+        .iter()
+        .min_by(|a, b| (f64::from_bits(*a.0) - omega).abs().total_cmp(&(f64::from_bits(*b.0) - omega).abs()))
+        .map(|(_, v)| v)
 }

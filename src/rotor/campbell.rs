@@ -110,7 +110,11 @@ pub fn track_modes(sweep: &[&SpeedPoint], count: usize) -> Vec<Track> {
     let mut tracks: Vec<Track> = index
         .into_iter()
         .map(|index| {
-            let forward = index.iter().zip(sweep).filter(|(k, p)| k.and_then(|k| p.modes.modes.get(k)).is_some_and(|m| m.whirl == Whirl::Forward)).count();
+            let forward = index
+                .iter()
+                .zip(sweep)
+                .filter(|(k, p)| k.and_then(|k| p.modes.modes.get(k)).is_some_and(|m| m.whirl == Whirl::Forward))
+                .count();
             let found = index.iter().filter(|k| k.is_some()).count();
             Track { whirl: if 2 * forward >= found { Whirl::Forward } else { Whirl::Backward }, rank: 0, index }
         })
@@ -140,7 +144,13 @@ pub fn critical_speeds(sweep: &[SpeedPoint], order: f64, ranks: usize) -> Vec<Cr
             let (g0, g1) = (a.imag_rad_s - order * s0, b.imag_rad_s - order * s1);
             if g0 > 0.0 && g1 <= 0.0 {
                 let t = g0 / (g0 - g1);
-                out.push(CriticalSpeed { order, whirl: Whirl::Forward, rank: track.rank, speed_rad_s: s0 + t * (s1 - s0), log_dec: a.log_dec + t * (b.log_dec - a.log_dec) });
+                out.push(CriticalSpeed {
+                    order,
+                    whirl: Whirl::Forward,
+                    rank: track.rank,
+                    speed_rad_s: s0 + t * (s1 - s0),
+                    log_dec: a.log_dec + t * (b.log_dec - a.log_dec),
+                });
             }
         }
     }
@@ -170,7 +180,8 @@ mod tests {
         let shaft = ShaftModel::new(&rotor).unwrap();
         let b = BearingCoefficients::Reduced { k: [[1e6, 0.0], [0.0, 1e6]], c: [[100.0, 0.0], [0.0, 100.0]] };
         let mut provider = |_w: f64| Ok(vec![b.clone(), b.clone()]);
-        let sweep: Vec<SpeedPoint> = (1..=30).map(|i| modes_at(&shaft, &[0, n], &mut provider, 20.0 * f64::from(i)).unwrap()).collect();
+        let sweep: Vec<SpeedPoint> =
+            (1..=30).map(|i| modes_at(&shaft, &[0, n], &mut provider, 20.0 * f64::from(i)).unwrap()).collect();
         let refs: Vec<&SpeedPoint> = sweep.iter().collect();
         // parity of a shape: x at the two ends, relative to the larger
         let odd = |m: &Mode| {
@@ -187,7 +198,10 @@ mod tests {
             assert!(m.imag_rad_s > previous, "speed {i}: forward pitching rises with speed");
             previous = m.imag_rad_s;
         }
-        eprintln!("pitching {:.1} → {previous:.1} rad/s, bouncing {bounce_hz:.1} rad/s", pitch.mode(&refs, 0).unwrap().imag_rad_s);
+        eprintln!(
+            "pitching {:.1} → {previous:.1} rad/s, bouncing {bounce_hz:.1} rad/s",
+            pitch.mode(&refs, 0).unwrap().imag_rad_s
+        );
         assert!(pitch.mode(&refs, 0).unwrap().imag_rad_s < bounce_hz && previous > 1.2 * bounce_hz, "the modes cross");
         // ranked by frequency, the lowest forward mode at the last speed is a bouncing one: a rank line swaps
         let last = refs.last().unwrap();

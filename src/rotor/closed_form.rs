@@ -26,7 +26,14 @@ use crate::model::rotor::{CoefficientModel, Disk, Rotor};
 pub(super) fn uniform(l: f64, d: f64, n: usize, density: f64, youngs: f64, theory: BeamTheory) -> Rotor {
     #[allow(clippy::cast_precision_loss)]
     let le = l / n as f64;
-    let s = BeamSection { length_m: le, outer_diameter_m: d, inner_diameter_m: 0.0, density_kg_per_m3: density, youngs_modulus_pa: youngs, poisson_ratio: 0.3 };
+    let s = BeamSection {
+        length_m: le,
+        outer_diameter_m: d,
+        inner_diameter_m: 0.0,
+        density_kg_per_m3: density,
+        youngs_modulus_pa: youngs,
+        poisson_ratio: 0.3,
+    };
     Rotor {
         title: String::new(),
         representative: false,
@@ -60,13 +67,27 @@ const E: f64 = 2.0e11;
 const LIGHT: f64 = 0.1;
 
 fn exact_euler(d: f64, beta_l: &[f64]) -> Vec<f64> {
-    let s = BeamSection { length_m: L, outer_diameter_m: d, inner_diameter_m: 0.0, density_kg_per_m3: RHO, youngs_modulus_pa: E, poisson_ratio: 0.3 };
+    let s = BeamSection {
+        length_m: L,
+        outer_diameter_m: d,
+        inner_diameter_m: 0.0,
+        density_kg_per_m3: RHO,
+        youngs_modulus_pa: E,
+        poisson_ratio: 0.3,
+    };
     let c = (E * s.second_moment() / (RHO * s.area() * L.powi(4))).sqrt();
     beta_l.iter().map(|b| b * b * c).collect()
 }
 
 fn exact_timoshenko_pinned(d: f64, n_modes: usize) -> Vec<f64> {
-    let s = BeamSection { length_m: L, outer_diameter_m: d, inner_diameter_m: 0.0, density_kg_per_m3: RHO, youngs_modulus_pa: E, poisson_ratio: 0.3 };
+    let s = BeamSection {
+        length_m: L,
+        outer_diameter_m: d,
+        inner_diameter_m: 0.0,
+        density_kg_per_m3: RHO,
+        youngs_modulus_pa: E,
+        poisson_ratio: 0.3,
+    };
     let (a, i) = (s.area(), s.second_moment());
     let kga = s.shear_coefficient() * E / 2.6 * a;
     (1..=n_modes)
@@ -89,7 +110,11 @@ fn study(theory: BeamTheory, d: f64, pinned: bool, exact: &[f64]) -> (Vec<f64>, 
         .iter()
         .map(|&n| {
             let shaft = ShaftModel::new(&uniform(L, d, n, RHO, E, theory)).unwrap();
-            let f = if pinned { plane_frequencies(&shaft, &[0, n]) } else { plane_frequencies(&shaft, &[]).into_iter().skip(2).collect() };
+            let f = if pinned {
+                plane_frequencies(&shaft, &[0, n])
+            } else {
+                plane_frequencies(&shaft, &[]).into_iter().skip(2).collect()
+            };
             (0..4).map(|m| ((f[m] - exact[m]) / exact[m]).abs()).fold(0.0, f64::max)
         })
         .collect();
@@ -212,8 +237,10 @@ fn overhung_disk_whirl_split() {
             assert!(((fwd[0] - bwd[0]) / fwd[0]).abs() < 1e-12);
             continue;
         }
-        let fe_f: Vec<f64> = p.modes.modes.iter().filter(|m| m.whirl == Whirl::Forward).map(|m| m.imag_rad_s).take(2).collect();
-        let fe_b: Vec<f64> = p.modes.modes.iter().filter(|m| m.whirl == Whirl::Backward).map(|m| m.imag_rad_s).take(2).collect();
+        let fe_f: Vec<f64> =
+            p.modes.modes.iter().filter(|m| m.whirl == Whirl::Forward).map(|m| m.imag_rad_s).take(2).collect();
+        let fe_b: Vec<f64> =
+            p.modes.modes.iter().filter(|m| m.whirl == Whirl::Backward).map(|m| m.imag_rad_s).take(2).collect();
         eprintln!("Ω {spin}: forward {fe_f:?} vs {fwd:?}; backward {fe_b:?} vs {bwd:?}");
         for (fe, cf) in fe_f.iter().zip(&fwd).chain(fe_b.iter().zip(&bwd)) {
             assert!(((fe - cf) / cf).abs() < 1e-5, "Ω {spin}: {fe} vs {cf}");
@@ -243,4 +270,3 @@ fn cross_coupling_onset() {
     eprintln!("onset {} vs {exact} ({:.2e}), {} probes", o.speed_rad_s, (o.speed_rad_s - exact) / exact, o.probes);
     assert!(((o.speed_rad_s - exact) / exact).abs() < 1e-6, "{} vs {exact}", o.speed_rad_s);
 }
-

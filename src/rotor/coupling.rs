@@ -128,7 +128,8 @@ pub fn assemble(shaft: &ShaftModel, nodes: &[usize], bearings: &[BearingCoeffici
             BearingCoefficients::Full(f) => {
                 // local index in f → working coordinates of the system
                 let local: Vec<usize> = (0..JOURNAL_DOFS).chain(act.iter().copied()).collect();
-                let rows: Vec<Weights> = journal.iter().cloned().chain((next..next + act.len()).map(|g| vec![(g, 1.0)])).collect();
+                let rows: Vec<Weights> =
+                    journal.iter().cloned().chain((next..next + act.len()).map(|g| vec![(g, 1.0)])).collect();
                 scatter(&mut stiffness, &rows, &local, &f.k);
                 scatter(&mut damping, &rows, &local, &f.c);
                 scatter(&mut mass, &rows, &local, &f.m);

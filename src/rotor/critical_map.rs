@@ -31,14 +31,25 @@ pub struct CriticalMap {
 ///
 /// # Errors
 /// [`RotorError::Speeds`] for a bad range; [`RotorError::SingularMass`].
-pub fn critical_map(shaft: &ShaftModel, bearing_nodes: &[usize], k_min: f64, k_max: f64, n: usize, modes: usize) -> Result<CriticalMap, RotorError> {
+pub fn critical_map(
+    shaft: &ShaftModel,
+    bearing_nodes: &[usize],
+    k_min: f64,
+    k_max: f64,
+    n: usize,
+    modes: usize,
+) -> Result<CriticalMap, RotorError> {
     if !(k_min > 0.0 && k_max > k_min && k_max.is_finite() && n >= 2) {
-        return Err(RotorError::Speeds(format!("critical-speed map: needs 0 < k_min < k_max and n ≥ 2 (got {k_min:e}, {k_max:e}, {n})")));
+        return Err(RotorError::Speeds(format!(
+            "critical-speed map: needs 0 < k_min < k_max and n ≥ 2 (got {k_min:e}, {k_max:e}, {n})"
+        )));
     }
-    let idx: Vec<usize> = (0..shaft.n_nodes).flat_map(|node| [shaft_index(node, NodeDof::X), shaft_index(node, NodeDof::A)]).collect();
+    let idx: Vec<usize> =
+        (0..shaft.n_nodes).flat_map(|node| [shaft_index(node, NodeDof::X), shaft_index(node, NodeDof::A)]).collect();
     let sub = |a: &DMatrix<f64>| DMatrix::from_fn(idx.len(), idx.len(), |i, j| a[(idx[i], idx[j])]);
     let (k0, m) = (sub(&shaft.stiffness), sub(&shaft.mass));
-    let slots: Vec<usize> = bearing_nodes.iter().filter_map(|&b| idx.iter().position(|&i| i == shaft_index(b, NodeDof::X))).collect();
+    let slots: Vec<usize> =
+        bearing_nodes.iter().filter_map(|&b| idx.iter().position(|&i| i == shaft_index(b, NodeDof::X))).collect();
     let mut out = CriticalMap { stiffness_n_per_m: Vec::with_capacity(n), frequencies_rad_s: Vec::with_capacity(n) };
     for i in 0..n {
         #[allow(clippy::cast_precision_loss)]
@@ -93,11 +104,20 @@ pub fn crossings(map: &CriticalMap, curves: &[StiffnessCurve]) -> Vec<Crossing> 
             let k = |p: &(f64, f64, f64)| if direction == 0 { p.1 } else { p.2 };
             for mode in 0..modes {
                 for w in curve.windows(2) {
-                    let (Some(f0), Some(f1)) = (frequency_at(map, mode, k(&w[0])), frequency_at(map, mode, k(&w[1]))) else { continue };
+                    let (Some(f0), Some(f1)) = (frequency_at(map, mode, k(&w[0])), frequency_at(map, mode, k(&w[1])))
+                    else {
+                        continue;
+                    };
                     let (g0, g1) = (f0 - w[0].0, f1 - w[1].0);
                     if g0 * g1 <= 0.0 && g0 != g1 {
                         let t = g0 / (g0 - g1);
-                        out.push(Crossing { mode, bearing, direction, speed_rad_s: w[0].0 + t * (w[1].0 - w[0].0), stiffness_n_per_m: k(&w[0]) + t * (k(&w[1]) - k(&w[0])) });
+                        out.push(Crossing {
+                            mode,
+                            bearing,
+                            direction,
+                            speed_rad_s: w[0].0 + t * (w[1].0 - w[0].0),
+                            stiffness_n_per_m: k(&w[0]) + t * (k(&w[1]) - k(&w[0])),
+                        });
                     }
                 }
             }
@@ -155,7 +175,12 @@ fn map_range(curves: &[StiffnessCurve]) -> (f64, f64) {
 ///
 /// # Errors
 /// Assembly, bearing solves, the map's eigen-solutions.
-pub fn critical_speed_map(rotor: &Rotor, speeds: &[f64], points: usize, modes: usize) -> Result<CriticalSpeedMap, RotorError> {
+pub fn critical_speed_map(
+    rotor: &Rotor,
+    speeds: &[f64],
+    points: usize,
+    modes: usize,
+) -> Result<CriticalSpeedMap, RotorError> {
     let mut bearings = BearingSet::new(rotor);
     let bearing_curves = bearing_stiffness_curves(&mut bearings, speeds)?;
     map_over_curves(rotor, bearing_curves, points, modes)
@@ -166,12 +191,23 @@ pub fn critical_speed_map(rotor: &Rotor, speeds: &[f64], points: usize, modes: u
 ///
 /// # Errors
 /// Assembly and the map's eigen-solutions.
-pub fn map_over_curves(rotor: &Rotor, bearing_curves: Vec<StiffnessCurve>, points: usize, modes: usize) -> Result<CriticalSpeedMap, RotorError> {
+pub fn map_over_curves(
+    rotor: &Rotor,
+    bearing_curves: Vec<StiffnessCurve>,
+    points: usize,
+    modes: usize,
+) -> Result<CriticalSpeedMap, RotorError> {
     let shaft = ShaftModel::new(rotor)?;
     let (k_min, k_max) = map_range(&bearing_curves);
     // the swept support sits where a bearing carries direct stiffness (not at pure cross-coupling, e.g. seals
     // or aerodynamic excitation given by numbers with zero direct terms)
-    let nodes: Vec<usize> = rotor.bearings.iter().zip(&bearing_curves).filter(|(_, c)| c.iter().any(|p| p.1 > 0.0 || p.2 > 0.0)).map(|(b, _)| b.node).collect();
+    let nodes: Vec<usize> = rotor
+        .bearings
+        .iter()
+        .zip(&bearing_curves)
+        .filter(|(_, c)| c.iter().any(|p| p.1 > 0.0 || p.2 > 0.0))
+        .map(|(b, _)| b.node)
+        .collect();
     let map = critical_map(&shaft, &nodes, k_min, k_max, points, modes)?;
     let crossings = crossings(&map, &bearing_curves);
     Ok(CriticalSpeedMap { map, bearing_curves, crossings })

@@ -93,7 +93,8 @@ pub fn damped_modes(sys: &System, shaft: &ShaftModel) -> Result<Modes, RotorErro
     let n2 = a.nrows();
     let n = sys.n_dofs();
     let ns = sys.n_shaft;
-    let nodal: Vec<[Weights; 2]> = (0..shaft.n_nodes).map(|node| [shaft.weights(node, NodeDof::X), shaft.weights(node, NodeDof::Y)]).collect();
+    let nodal: Vec<[Weights; 2]> =
+        (0..shaft.n_nodes).map(|node| [shaft.weights(node, NodeDof::X), shaft.weights(node, NodeDof::Y)]).collect();
     let fa = faer::Mat::<f64>::from_fn(n2, n2, |i, j| a[(i, j)]);
     let evd = fa.eigen().map_err(|_| RotorError::Eigen { size: n2 })?;
     let (s, u) = (evd.S(), evd.U());
@@ -115,7 +116,8 @@ pub fn damped_modes(sys: &System, shaft: &ShaftModel) -> Result<Modes, RotorErro
         }
         let p: Vec<Complex<f64>> = (0..n).map(|i| Complex::new(u[(i, k)].re, u[(i, k)].im)).collect();
         // shaft coordinates u = L⁻ᵀ p (upper triangular), then the nodal x, y through the shaft's weights
-        let q: Vec<Complex<f64>> = (0..ns).map(|row| (row..n).fold(Complex::new(0.0, 0.0), |acc, j| acc + p[j] * back[(row, j)])).collect();
+        let q: Vec<Complex<f64>> =
+            (0..ns).map(|row| (row..n).fold(Complex::new(0.0, 0.0), |acc, j| acc + p[j] * back[(row, j)])).collect();
         let at = |w: &Weights| w.iter().fold(Complex::new(0.0, 0.0), |acc, &(j, c)| acc + q[j] * c);
         let mut shape: Vec<[Complex<f64>; 2]> = nodal.iter().map(|[x, y]| [at(x), at(y)]).collect();
         let (mut fwd, mut bwd) = (0.0, 0.0);
@@ -124,7 +126,11 @@ pub fn damped_modes(sys: &System, shaft: &ShaftModel) -> Result<Modes, RotorErro
             fwd += (x + iy).norm_sqr();
             bwd += (x - iy).norm_sqr();
         }
-        let biggest = shape.iter().flat_map(|p| p.iter()).fold(Complex::new(0.0, 0.0), |m: Complex<f64>, z| if z.norm() > m.norm() { *z } else { m });
+        let biggest =
+            shape
+                .iter()
+                .flat_map(|p| p.iter())
+                .fold(Complex::new(0.0, 0.0), |m: Complex<f64>, z| if z.norm() > m.norm() { *z } else { m });
         if biggest.norm() > 0.0 {
             let scale = Complex::new(1.0, 0.0) / biggest;
             for p in &mut shape {

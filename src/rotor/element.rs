@@ -96,7 +96,8 @@ impl BeamSection {
             BeamTheory::EulerBernoulli => 0.0,
             BeamTheory::Timoshenko => {
                 let g = self.youngs_modulus_pa / (2.0 * (1.0 + self.poisson_ratio));
-                12.0 * self.youngs_modulus_pa * self.second_moment() / (self.shear_coefficient() * g * self.area() * self.length_m.powi(2))
+                12.0 * self.youngs_modulus_pa * self.second_moment()
+                    / (self.shear_coefficient() * g * self.area() * self.length_m.powi(2))
             }
         }
     }
@@ -114,10 +115,27 @@ pub struct ElementMatrices {
 fn shapes(xi: f64, l: f64, phi: f64) -> [Vec4; 4] {
     let d = 1.0 + phi;
     let (x2, x3) = (xi * xi, xi * xi * xi);
-    let nw = Vec4::new(1.0 - 3.0 * x2 + 2.0 * x3 + phi * (1.0 - xi), l * (xi - 2.0 * x2 + x3 + phi * (xi - x2) / 2.0), 3.0 * x2 - 2.0 * x3 + phi * xi, l * (-x2 + x3 - phi * (xi - x2) / 2.0)) / d;
-    let nt = Vec4::new(6.0 * (x2 - xi) / l, 1.0 - 4.0 * xi + 3.0 * x2 + phi * (1.0 - xi), 6.0 * (xi - x2) / l, -2.0 * xi + 3.0 * x2 + phi * xi) / d;
-    let dnt = Vec4::new(6.0 * (2.0 * xi - 1.0) / l, -4.0 + 6.0 * xi - phi, 6.0 * (1.0 - 2.0 * xi) / l, -2.0 + 6.0 * xi + phi) / (d * l);
-    let dnw = Vec4::new((-6.0 * xi + 6.0 * x2 - phi) / l, 1.0 - 4.0 * xi + 3.0 * x2 + phi * (1.0 - 2.0 * xi) / 2.0, (6.0 * xi - 6.0 * x2 + phi) / l, -2.0 * xi + 3.0 * x2 - phi * (1.0 - 2.0 * xi) / 2.0) / d;
+    let nw = Vec4::new(
+        1.0 - 3.0 * x2 + 2.0 * x3 + phi * (1.0 - xi),
+        l * (xi - 2.0 * x2 + x3 + phi * (xi - x2) / 2.0),
+        3.0 * x2 - 2.0 * x3 + phi * xi,
+        l * (-x2 + x3 - phi * (xi - x2) / 2.0),
+    ) / d;
+    let nt = Vec4::new(
+        6.0 * (x2 - xi) / l,
+        1.0 - 4.0 * xi + 3.0 * x2 + phi * (1.0 - xi),
+        6.0 * (xi - x2) / l,
+        -2.0 * xi + 3.0 * x2 + phi * xi,
+    ) / d;
+    let dnt =
+        Vec4::new(6.0 * (2.0 * xi - 1.0) / l, -4.0 + 6.0 * xi - phi, 6.0 * (1.0 - 2.0 * xi) / l, -2.0 + 6.0 * xi + phi)
+            / (d * l);
+    let dnw = Vec4::new(
+        (-6.0 * xi + 6.0 * x2 - phi) / l,
+        1.0 - 4.0 * xi + 3.0 * x2 + phi * (1.0 - 2.0 * xi) / 2.0,
+        (6.0 * xi - 6.0 * x2 + phi) / l,
+        -2.0 * xi + 3.0 * x2 - phi * (1.0 - 2.0 * xi) / 2.0,
+    ) / d;
     [nw, nt, dnt, dnw - nt]
 }
 
@@ -133,7 +151,11 @@ const GAUSS4: [(f64, f64); 4] = [
 fn plane_matrices(s: &BeamSection, theory: BeamTheory) -> (Mat4, Mat4, Mat4) {
     let l = s.length_m;
     let phi = s.shear_parameter(theory);
-    let (ei, rho_a, rho_i) = (s.youngs_modulus_pa * s.second_moment(), s.density_kg_per_m3 * s.area(), s.density_kg_per_m3 * s.second_moment());
+    let (ei, rho_a, rho_i) = (
+        s.youngs_modulus_pa * s.second_moment(),
+        s.density_kg_per_m3 * s.area(),
+        s.density_kg_per_m3 * s.second_moment(),
+    );
     let kga = if phi > 0.0 { 12.0 * ei / (phi * l * l) } else { 0.0 };
     let rotary = if theory == BeamTheory::Timoshenko { rho_i } else { 0.0 };
     let (mut m, mut k, mut r) = (Mat4::zeros(), Mat4::zeros(), Mat4::zeros());
@@ -175,7 +197,14 @@ mod tests {
     use super::*;
 
     fn steel(l: f64, d: f64) -> BeamSection {
-        BeamSection { length_m: l, outer_diameter_m: d, inner_diameter_m: 0.0, density_kg_per_m3: 7800.0, youngs_modulus_pa: 2.0e11, poisson_ratio: 0.3 }
+        BeamSection {
+            length_m: l,
+            outer_diameter_m: d,
+            inner_diameter_m: 0.0,
+            density_kg_per_m3: 7800.0,
+            youngs_modulus_pa: 2.0e11,
+            poisson_ratio: 0.3,
+        }
     }
 
     /// The quadrature reproduces the closed-form Timoshenko stiffness
@@ -184,14 +213,27 @@ mod tests {
     fn stiffness_matches_closed_form() {
         let s = steel(0.1, 0.08);
         let (_, k, _) = plane_matrices(&s, BeamTheory::Timoshenko);
-        let (l, phi, ei) = (s.length_m, s.shear_parameter(BeamTheory::Timoshenko), s.youngs_modulus_pa * s.second_moment());
+        let (l, phi, ei) =
+            (s.length_m, s.shear_parameter(BeamTheory::Timoshenko), s.youngs_modulus_pa * s.second_moment());
         assert!(phi > 0.5, "a thick element should have a large Φ, got {phi}");
         let c = ei / ((1.0 + phi) * l.powi(3));
         let exact = Mat4::new(
-            12.0, 6.0 * l, -12.0, 6.0 * l,
-            6.0 * l, (4.0 + phi) * l * l, -6.0 * l, (2.0 - phi) * l * l,
-            -12.0, -6.0 * l, 12.0, -6.0 * l,
-            6.0 * l, (2.0 - phi) * l * l, -6.0 * l, (4.0 + phi) * l * l,
+            12.0,
+            6.0 * l,
+            -12.0,
+            6.0 * l,
+            6.0 * l,
+            (4.0 + phi) * l * l,
+            -6.0 * l,
+            (2.0 - phi) * l * l,
+            -12.0,
+            -6.0 * l,
+            12.0,
+            -6.0 * l,
+            6.0 * l,
+            (2.0 - phi) * l * l,
+            -6.0 * l,
+            (4.0 + phi) * l * l,
         ) * c;
         assert!((k - exact).norm() <= 1e-12 * exact.norm(), "{k} vs {exact}");
     }

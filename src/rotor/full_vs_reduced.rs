@@ -25,7 +25,14 @@ fn bearing(kf: f64, cf: f64, kp: f64, mp: f64) -> FullCoefficients {
 /// Relative difference of the first mode's eigenvalue (full vs reduced) for a pivot stiffness `kp`.
 fn difference(kp: f64) -> f64 {
     let n = 4;
-    let s = BeamSection { length_m: 0.25, outer_diameter_m: 0.05, inner_diameter_m: 0.0, density_kg_per_m3: 7800.0, youngs_modulus_pa: 2e11, poisson_ratio: 0.3 };
+    let s = BeamSection {
+        length_m: 0.25,
+        outer_diameter_m: 0.05,
+        inner_diameter_m: 0.0,
+        density_kg_per_m3: 7800.0,
+        youngs_modulus_pa: 2e11,
+        poisson_ratio: 0.3,
+    };
     let rotor = Rotor {
         title: String::new(),
         representative: false,

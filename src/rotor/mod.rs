@@ -17,18 +17,18 @@ pub mod analysis;
 pub mod assembly;
 pub mod bearings;
 pub mod campbell;
+#[cfg(test)]
+mod closed_form;
 pub mod coupling;
 pub mod critical_map;
 pub mod eigen;
 pub mod element;
 pub mod error;
+#[cfg(test)]
+mod full_vs_reduced;
 pub mod reduction;
 pub mod stability;
 pub mod unbalance;
 pub mod wire;
-#[cfg(test)]
-mod closed_form;
-#[cfg(test)]
-mod full_vs_reduced;
 
 pub use error::RotorError;

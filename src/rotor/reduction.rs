@@ -78,7 +78,8 @@ pub fn reduce(shaft: &ShaftModel, attached: &[usize], modes_per_plane: usize) ->
         message: format!("the shaft is free with only nodes {attached:?} held (interior stiffness singular); use shaft_modes = 0 (the full model)"),
     })?;
     let psi = -chol.solve(&pick(&shaft.stiffness, &interior, &boundary));
-    let (phi, modal_rad_s) = lowest_modes(&k_ii, &pick(&shaft.mass, &interior, &interior), (2 * modes_per_plane).min(ni))?;
+    let (phi, modal_rad_s) =
+        lowest_modes(&k_ii, &pick(&shaft.mass, &interior, &interior), (2 * modes_per_plane).min(ni))?;
     let nm = phi.ncols();
     let mut t = DMatrix::zeros(n, nb + nm);
     for (j, &b) in boundary.iter().enumerate() {

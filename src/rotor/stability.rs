@@ -38,7 +38,12 @@ impl SpeedPoint {
 ///
 /// # Errors
 /// The provider's errors and the eigen-solution's.
-pub fn modes_at(shaft: &ShaftModel, nodes: &[usize], provider: &mut Provider<'_>, omega: f64) -> Result<SpeedPoint, RotorError> {
+pub fn modes_at(
+    shaft: &ShaftModel,
+    nodes: &[usize],
+    provider: &mut Provider<'_>,
+    omega: f64,
+) -> Result<SpeedPoint, RotorError> {
     let coeffs = provider(omega)?;
     let sys = assemble(shaft, nodes, &coeffs, omega);
     Ok(SpeedPoint { speed_rad_s: omega, modes: damped_modes(&sys, shaft)? })
@@ -59,7 +64,13 @@ pub struct Onset {
 ///
 /// # Errors
 /// The provider's errors and the eigen-solution's.
-pub fn onset(shaft: &ShaftModel, nodes: &[usize], provider: &mut Provider<'_>, sweep: &[SpeedPoint], tol: f64) -> Result<Option<Onset>, RotorError> {
+pub fn onset(
+    shaft: &ShaftModel,
+    nodes: &[usize],
+    provider: &mut Provider<'_>,
+    sweep: &[SpeedPoint],
+    tol: f64,
+) -> Result<Option<Onset>, RotorError> {
     let Some(i) = sweep.windows(2).position(|w| w[0].min_log_dec() > 0.0 && w[1].min_log_dec() <= 0.0) else {
         return Ok(None);
     };

@@ -58,10 +58,18 @@ impl Orbit {
 ///
 /// # Errors
 /// [`RotorError::SingularResponse`] when the dynamic stiffness is singular.
-pub fn response(sys: &System, shaft: &ShaftModel, unbalances: &[Unbalance], omega: f64, nodes: &[usize]) -> Result<Vec<Orbit>, RotorError> {
+pub fn response(
+    sys: &System,
+    shaft: &ShaftModel,
+    unbalances: &[Unbalance],
+    omega: f64,
+    nodes: &[usize],
+) -> Result<Vec<Orbit>, RotorError> {
     let n = sys.n_dofs();
     let w2 = omega * omega;
-    let z = DMatrix::from_fn(n, n, |i, j| Complex::new(sys.stiffness[(i, j)] - w2 * sys.mass[(i, j)], omega * sys.damping[(i, j)]));
+    let z = DMatrix::from_fn(n, n, |i, j| {
+        Complex::new(sys.stiffness[(i, j)] - w2 * sys.mass[(i, j)], omega * sys.damping[(i, j)])
+    });
     let mut f = DVector::from_element(n, Complex::new(0.0, 0.0));
     for u in unbalances {
         let a = Complex::from_polar(u.amount * w2, u.phase);

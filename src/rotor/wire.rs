@@ -20,7 +20,11 @@ pub struct AnalysisData {
 impl From<&AnalysisResult> for AnalysisData {
     fn from(r: &AnalysisResult) -> Self {
         let mut result = r.clone();
-        let shapes = result.speeds.iter_mut().map(|s| s.point.modes.modes.iter_mut().map(|m| std::mem::take(&mut m.shape)).collect()).collect();
+        let shapes = result
+            .speeds
+            .iter_mut()
+            .map(|s| s.point.modes.modes.iter_mut().map(|m| std::mem::take(&mut m.shape)).collect())
+            .collect();
         Self { result, shapes }
     }
 }
@@ -49,7 +53,8 @@ mod tests {
     #[test]
     fn a_rotor_analysis_round_trips_with_its_mode_shapes() {
         let text = include_str!("../../cases/rotors/compressor-rotor.toml");
-        let bearing = include_str!("../../cases/compressor-bearing.toml").replace("fidelity = \"standard\"", "fidelity = \"preview\"");
+        let bearing = include_str!("../../cases/compressor-bearing.toml")
+            .replace("fidelity = \"standard\"", "fidelity = \"preview\"");
         let rotor: Rotor = parse_rotor_file(text).unwrap().resolve(&|_| Ok(bearing.clone())).unwrap();
         let result = run(&rotor, AnalysisParams::new(vec![800.0, 1000.0])).unwrap();
         assert!(result.speeds.iter().all(|s| s.point.modes.modes.iter().all(|m| !m.shape.is_empty())));

@@ -85,7 +85,9 @@ pub const LIVE_ROW: &str = "live";
 /// A pin name that would make the export or the views ambiguous.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum PinNameError {
-    #[error("the pin name \"{0}\" is refused: the exported CSV names the live result's row \"live\"; choose another name")]
+    #[error(
+        "the pin name \"{0}\" is refused: the exported CSV names the live result's row \"live\"; choose another name"
+    )]
     Reserved(String),
     #[error("a pin named \"{0}\" exists already: choose another name, or remove that pin first")]
     Taken(String),
@@ -119,13 +121,23 @@ pub fn pins_csv(pins: &[Pin], live: Option<&Solution>) -> String {
     let mut ok = w.write_record(std::iter::once("name").chain(COLUMNS.iter().map(|c| c.name))).is_ok();
     let cell = |v: Option<f64>| v.map_or_else(String::new, |x| format!("{x:?}"));
     for p in pins {
-        ok &= w.write_record(std::iter::once(p.name.clone()).chain(COLUMNS.iter().map(|c| cell(p.value(c.name))))).is_ok();
+        ok &= w
+            .write_record(std::iter::once(p.name.clone()).chain(COLUMNS.iter().map(|c| cell(p.value(c.name)))))
+            .is_ok();
     }
     if let Some(s) = live {
-        ok &= w.write_record(std::iter::once(LIVE_ROW.to_string()).chain(crate::study::columns::outputs(s).into_iter().map(cell))).is_ok();
+        ok &= w
+            .write_record(
+                std::iter::once(LIVE_ROW.to_string()).chain(crate::study::columns::outputs(s).into_iter().map(cell)),
+            )
+            .is_ok();
     }
     let bytes = w.into_inner().unwrap_or_default();
-    if ok { String::from_utf8_lossy(&bytes).into_owned() } else { String::new() }
+    if ok {
+        String::from_utf8_lossy(&bytes).into_owned()
+    } else {
+        String::new()
+    }
 }
 
 #[cfg(test)]
@@ -159,7 +171,9 @@ mod tests {
         }
         let csv = pins_csv(&[pin], Some(&slow));
         assert_eq!(csv.lines().count(), 3);
-        assert!(csv.lines().nth(1).unwrap().starts_with("9000 rpm,") && csv.lines().nth(2).unwrap().starts_with("live,"));
+        assert!(
+            csv.lines().nth(1).unwrap().starts_with("9000 rpm,") && csv.lines().nth(2).unwrap().starts_with("live,")
+        );
     }
 
     /// "live" names the live row of the export: refused, as is a second pin of one name; nothing typed

@@ -165,7 +165,8 @@ impl PadDeformation {
         let cut = SectionCut::new(field, radii, pivot_rad)?;
         let [wm, wt] = shown.weights();
         let modes = result.flex.as_ref().map_or(&[][..], |f| f.modes.modes.as_slice());
-        let mut parts: Parts<'_> = modes.iter().zip(&result.mode_amplitudes_m).map(|(m, &q)| (m.nodal.as_slice(), wm * q)).collect();
+        let mut parts: Parts<'_> =
+            modes.iter().zip(&result.mode_amplitudes_m).map(|(m, &q)| (m.nodal.as_slice(), wm * q)).collect();
         parts.extend(growth.map(|g| (g.nodal_polar_m.as_slice(), wt)));
         if parts.iter().any(|(nodal, _)| nodal.len() != 3 * cut.n_nodes) {
             return None;
@@ -227,7 +228,9 @@ impl SectionCut {
         }
         // The row nearest the axial mid-plane.
         let row = (0..field.z_m.len()).min_by(|&a, &b| field.z_m[a].abs().total_cmp(&field.z_m[b].abs()))?;
-        let vertex = |layer: usize, col: usize| (layer * n_film + field.index(col, row), field.theta_rad[col] - pivot_rad, radii[layer]);
+        let vertex = |layer: usize, col: usize| {
+            (layer * n_film + field.index(col, row), field.theta_rad[col] - pivot_rad, radii[layer])
+        };
         let mut vertices: Vec<_> = (0..cols).map(|i| vertex(0, i)).collect();
         vertices.extend((1..=layers).map(|l| vertex(l, cols - 1)));
         vertices.extend((0..cols - 1).rev().map(|i| vertex(layers, i)));
@@ -242,7 +245,10 @@ impl SectionCut {
 
     /// Largest in-plane displacement on the outline for `parts` [m].
     fn peak(&self, parts: &Parts<'_>) -> f64 {
-        self.vertices.iter().map(|&(n, _, _)| Self::displacement(parts, n)).fold(0.0_f64, |p, [ur, ut]| p.max(ur.hypot(ut)))
+        self.vertices
+            .iter()
+            .map(|&(n, _, _)| Self::displacement(parts, n))
+            .fold(0.0_f64, |p, [ur, ut]| p.max(ur.hypot(ut)))
     }
 
     fn section(&self, parts: &Parts<'_>, exaggeration: f64) -> Section {
@@ -272,7 +278,8 @@ mod tests {
     use crate::model::load_case;
 
     fn flexible(sets: &[&str]) -> Solution {
-        let all: Vec<String> = std::iter::once("mesh.fidelity=preview").chain(sets.iter().copied()).map(str::to_string).collect();
+        let all: Vec<String> =
+            std::iter::once("mesh.fidelity=preview").chain(sets.iter().copied()).map(str::to_string).collect();
         let case = load_case(include_str!("../../cases/compressor-bearing-flexible.toml"), &all).unwrap().1;
         solve_case(&case).unwrap()
     }
@@ -291,7 +298,11 @@ mod tests {
         assert!(scale > 1e-8, "the loaded pad bends: {scale}");
         for i in 0..d.section.film_face {
             let expected = p.elastic_displacement_m[field.index(i, row)];
-            assert!((d.section.radial_m[i] - expected).abs() <= 1e-9 * scale, "column {i}: {} vs {expected}", d.section.radial_m[i]);
+            assert!(
+                (d.section.radial_m[i] - expected).abs() <= 1e-9 * scale,
+                "column {i}: {} vs {expected}",
+                d.section.radial_m[i]
+            );
         }
         // Flexible − rigid film = displacement, everywhere.
         for ((hf, hr), u) in d.film_flexible.values.iter().zip(&d.film_rigid.values).zip(&d.displacement.values) {
@@ -308,7 +319,12 @@ mod tests {
             }
         }
         // Auto exaggeration: the largest drawn offset is between AUTO_FRACTION/2 and 2·AUTO_FRACTION of t.
-        let drawn = d.section.deformed.iter().zip(&d.section.rigid).fold(0.0_f64, |m, (a, r)| m.max((a[0] - r[0]).hypot(a[1] - r[1])));
+        let drawn = d
+            .section
+            .deformed
+            .iter()
+            .zip(&d.section.rigid)
+            .fold(0.0_f64, |m, (a, r)| m.max((a[0] - r[0]).hypot(a[1] - r[1])));
         let f = drawn / d.thickness_m;
         assert!((0.5 * AUTO_FRACTION..=2.0 * AUTO_FRACTION).contains(&f), "{f}");
         // Gallery: the retained modes in ascending frequency, each with the solved amplitude.
@@ -324,12 +340,22 @@ mod tests {
     /// growth from the result, the total is the sum of the two parts, and h − u removes the shown part.
     #[test]
     fn thermal_and_total_displacements_are_the_growth_and_the_sum() {
-        let s = flexible(&["physics.pad_modes=1", "thermal.model=thd", "thermal.pad_expansion_ppm_per_k=12", "thermal.journal_expansion_ppm_per_k=11", "thermal.reference_temperature_c=20"]);
+        let s = flexible(&[
+            "physics.pad_modes=1",
+            "thermal.model=thd",
+            "thermal.pad_expansion_ppm_per_k=12",
+            "thermal.journal_expansion_ppm_per_k=11",
+            "thermal.reference_temperature_c=20",
+        ]);
         let loaded = 3;
         let p = &s.pads[loaded];
         let growth = p.thermal_growth.as_ref().expect("TEHD pads carry their growth");
         let scale = growth.film_radial_m.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-        eprintln!("thermal film-face growth of pad {loaded}: peak {:.3} µm; mechanical peak {:.3} µm", scale * 1e6, p.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs())) * 1e6);
+        eprintln!(
+            "thermal film-face growth of pad {loaded}: peak {:.3} µm; mechanical peak {:.3} µm",
+            scale * 1e6,
+            p.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs())) * 1e6
+        );
         assert!(scale > 1e-7, "the heated pad grows: {scale}");
         let [m, t, total] = Displacement::ALL.map(|d| PadDeformation::new(&s, loaded, None, d).unwrap());
         assert!(m.thermal && t.shown == Displacement::Thermal && total.shown == Displacement::Total);
@@ -342,8 +368,14 @@ mod tests {
             assert!((total.section.radial_m[i] - sum).abs() <= 1e-12 * scale, "column {i}");
         }
         // The thermal map's range is the growth's, and the maps of the parts add up to the total's.
-        let (lo, hi) = growth.film_radial_m.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)));
-        assert!((t.displacement.min - lo).abs() <= 1e-12 * scale && (t.displacement.max - hi).abs() <= 1e-12 * scale, "{} {} vs {lo} {hi}", t.displacement.min, t.displacement.max);
+        let (lo, hi) =
+            growth.film_radial_m.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+        assert!(
+            (t.displacement.min - lo).abs() <= 1e-12 * scale && (t.displacement.max - hi).abs() <= 1e-12 * scale,
+            "{} {} vs {lo} {hi}",
+            t.displacement.min,
+            t.displacement.max
+        );
         for ((a, b), c) in m.displacement.values.iter().zip(&t.displacement.values).zip(&total.displacement.values) {
             assert!((a + b - c).abs() <= 1e-12 * scale, "{a} + {b} vs {c}");
         }

@@ -49,8 +49,10 @@ pub fn results_json(solution: &Solution, pins: &[Pin]) -> String {
     let pins: Vec<Value> = pins
         .iter()
         .map(|p| {
-            let values: Map<String, Value> = p.columns.iter().zip(&p.cells).map(|(c, v)| (c.clone(), json!(v))).collect();
-            let difference: Map<String, Value> = compare(solution, p).into_iter().map(|r| (r.column.to_string(), json!(r.difference))).collect();
+            let values: Map<String, Value> =
+                p.columns.iter().zip(&p.cells).map(|(c, v)| (c.clone(), json!(v))).collect();
+            let difference: Map<String, Value> =
+                compare(solution, p).into_iter().map(|r| (r.column.to_string(), json!(r.difference))).collect();
             json!({ "name": p.name, "case_toml": p.case_toml, "values": values, "difference": difference })
         })
         .collect();
@@ -88,14 +90,20 @@ mod tests {
         assert_eq!(doc["eccentricity_ratio"].as_f64(), Some(slow.eccentricity_ratio));
         let pins = doc["pins"].as_array().unwrap();
         assert_eq!(pins.len(), 1);
-        assert_eq!((pins[0]["name"].as_str(), pins[0]["case_toml"].as_str()), (Some("9000 rpm"), Some("title = \"pinned\"")));
+        assert_eq!(
+            (pins[0]["name"].as_str(), pins[0]["case_toml"].as_str()),
+            (Some("9000 rpm"), Some("title = \"pinned\""))
+        );
         let eps = pins[0]["values"]["eccentricity_ratio"].as_f64().unwrap();
         assert!((eps - fast.eccentricity_ratio).abs() <= 1e-15 * eps, "{eps}");
         let d = pins[0]["difference"]["eccentricity_ratio"].as_f64().unwrap();
         assert!((d - (slow.eccentricity_ratio - fast.eccentricity_ratio)).abs() <= 1e-15, "{d}");
         assert!(pins[0]["values"]["t_max_film_c"].is_null(), "isothermal: no temperature");
         assert!(doc["pins"].as_array().is_some_and(|a| a.len() == 1));
-        assert_eq!(serde_json::from_str::<Value>(&results_json(&slow, &[])).unwrap()["pins"].as_array().map(Vec::len), Some(0));
+        assert_eq!(
+            serde_json::from_str::<Value>(&results_json(&slow, &[])).unwrap()["pins"].as_array().map(Vec::len),
+            Some(0)
+        );
 
         let csv = results_csv(&slow, &[pin]);
         let mut r = csv::Reader::from_reader(csv.as_bytes());

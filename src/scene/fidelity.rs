@@ -30,10 +30,15 @@ pub struct LevelCost {
 /// 1 % of the throughput (smaller ones are round-off of a balance); `None` when no flow does.
 #[must_use]
 pub fn flow_error(flows: &BearingFlows, truth: &BearingFlows) -> Option<f64> {
-    let parts = |f: &BearingFlows| [f.leading_edges_in, f.trailing_edges_out, f.sides_out, f.orifices_in, f.to_cavitation];
+    let parts =
+        |f: &BearingFlows| [f.leading_edges_in, f.trailing_edges_out, f.sides_out, f.orifices_in, f.to_cavitation];
     let (a, t) = (parts(flows), parts(truth));
     let throughput: f64 = t.iter().map(|v| v.abs()).sum();
-    a.iter().zip(&t).filter(|(_, t)| t.abs() >= 0.01 * throughput && throughput > 0.0).map(|(a, t)| ((a - t) / t).abs()).reduce(f64::max)
+    a.iter()
+        .zip(&t)
+        .filter(|(_, t)| t.abs() >= 0.01 * throughput && throughput > 0.0)
+        .map(|(a, t)| ((a - t) / t).abs())
+        .reduce(f64::max)
 }
 
 /// The measured table.
@@ -83,7 +88,9 @@ mod tests {
     #[test]
     fn shipped_table_covers_every_level_and_errors_fall_with_fidelity() {
         let t = shipped().expect("assets/fidelity.json parses");
-        let err = |level: &str| t.rows.iter().find(|r| r.level == level && !r.case.contains("THD")).map(|r| (r.err_k, r.median_ms));
+        let err = |level: &str| {
+            t.rows.iter().find(|r| r.level == level && !r.case.contains("THD")).map(|r| (r.err_k, r.median_ms))
+        };
         let (p, s, r) = (err("preview").unwrap(), err("standard").unwrap(), err("reference").unwrap());
         assert!(p.0 > s.0 && s.0 > r.0, "errors fall with fidelity: {p:?} {s:?} {r:?}");
         assert!(p.1 < s.1 && s.1 < r.1, "time rises with fidelity");
@@ -92,7 +99,14 @@ mod tests {
 
     #[test]
     fn flow_error_is_the_worst_flow_that_matters() {
-        let truth = BearingFlows { leading_edges_in: 10.0, trailing_edges_out: 6.0, sides_out: 3.0, orifices_in: 1.0, to_cavitation: 0.1, mass_balance_error: 0.0 };
+        let truth = BearingFlows {
+            leading_edges_in: 10.0,
+            trailing_edges_out: 6.0,
+            sides_out: 3.0,
+            orifices_in: 1.0,
+            to_cavitation: 0.1,
+            mass_balance_error: 0.0,
+        };
         // The orifice flow 30 % off dominates; the flow into cavitation (0.5 % of the throughput) is left out.
         let coarse = BearingFlows { leading_edges_in: 10.1, orifices_in: 1.3, to_cavitation: 0.2, ..truth };
         let e = flow_error(&coarse, &truth).unwrap();
@@ -101,7 +115,12 @@ mod tests {
         assert_eq!(flow_error(&truth, &BearingFlows::default()), None);
         let mut row = shipped().unwrap().rows[0].clone();
         row.err_flows = Some(0.3);
-        let table = FidelityTable { generated: String::new(), machine: String::new(), case: String::new(), rows: vec![row.clone()] };
+        let table = FidelityTable {
+            generated: String::new(),
+            machine: String::new(),
+            case: String::new(),
+            rows: vec![row.clone()],
+        };
         assert!(table.describe(&row.level)[0].ends_with(", flows ±30.0 %"), "{:?}", table.describe(&row.level));
     }
 }

@@ -228,7 +228,11 @@ impl PadMap {
             for col in 0..width {
                 let s = s_end * (col as f64 + 0.5) / width as f64;
                 let v = self.sample(s, z).unwrap_or(lo);
-                let [r, g, b] = if (row + col) % HATCH_PERIOD == 0 && self.cavitated_at(s, z) { HATCH } else { map.rgb_in(v, lo, hi) };
+                let [r, g, b] = if (row + col) % HATCH_PERIOD == 0 && self.cavitated_at(s, z) {
+                    HATCH
+                } else {
+                    map.rgb_in(v, lo, hi)
+                };
                 rgba.extend_from_slice(&[r, g, b, 255]);
             }
         }
@@ -247,7 +251,9 @@ pub(crate) fn bilinear(s: &[f64], z: &[f64], f: impl Fn(usize) -> f64, x: f64, y
     let (j, fz) = locate(z, y)?;
     let n = z.len();
     let v = |a: usize, b: usize| f(a * n + b);
-    Some((1.0 - fs) * ((1.0 - fz) * v(i, j) + fz * v(i, j + 1)) + fs * ((1.0 - fz) * v(i + 1, j) + fz * v(i + 1, j + 1)))
+    Some(
+        (1.0 - fs) * ((1.0 - fz) * v(i, j) + fz * v(i, j + 1)) + fs * ((1.0 - fz) * v(i + 1, j) + fz * v(i + 1, j + 1)),
+    )
 }
 
 /// Cell index and fraction of `x` on ascending nodes (the last cell includes its right end).
@@ -274,7 +280,11 @@ pub struct Raster {
 pub fn common_range(maps: &[PadMap]) -> (f64, f64) {
     let lo = maps.iter().map(|m| m.min).fold(f64::INFINITY, f64::min);
     let hi = maps.iter().map(|m| m.max).fold(f64::NEG_INFINITY, f64::max);
-    if lo.is_finite() && hi.is_finite() { (lo, hi) } else { (0.0, 1.0) }
+    if lo.is_finite() && hi.is_finite() {
+        (lo, hi)
+    } else {
+        (0.0, 1.0)
+    }
 }
 
 /// Round tick values (1, 2 or 5 × 10ⁿ apart) inside `[lo, hi]`, about `target` of them.
@@ -366,8 +376,15 @@ pub(crate) mod tests {
         let m = PadMap::from_field(&f, 0, FieldKind::Pressure, 0.05).unwrap();
         assert!(m.cavitated_at(0.029, 0.0) && !m.cavitated_at(0.015, 0.0));
         let r = m.raster(30, 12, m.min, m.max);
-        let px = |row: usize, col: usize| [r.rgba[4 * (row * 30 + col)], r.rgba[4 * (row * 30 + col) + 1], r.rgba[4 * (row * 30 + col) + 2]];
-        let hatched = |c0: usize, c1: usize| (0..12).flat_map(|row| (c0..c1).map(move |col| (row, col))).filter(|&(row, col)| px(row, col) == HATCH).count();
+        let px = |row: usize, col: usize| {
+            [r.rgba[4 * (row * 30 + col)], r.rgba[4 * (row * 30 + col) + 1], r.rgba[4 * (row * 30 + col) + 2]]
+        };
+        let hatched = |c0: usize, c1: usize| {
+            (0..12)
+                .flat_map(|row| (c0..c1).map(move |col| (row, col)))
+                .filter(|&(row, col)| px(row, col) == HATCH)
+                .count()
+        };
         assert!(hatched(27, 30) > 0, "the cavitated strip has hatch lines");
         assert_eq!(hatched(0, 15), 0, "the full film has none");
     }

@@ -139,9 +139,21 @@ mod tests {
     #[test]
     fn meshes_of_different_fidelity_subtract_by_interpolation() {
         let map = |s_m: Vec<f64>, z_m: Vec<f64>, offset: f64| {
-            let values: Vec<f64> = s_m.iter().flat_map(|&s| z_m.iter().map(move |&z| 2.0 * s + 3.0 * z + offset)).collect();
+            let values: Vec<f64> =
+                s_m.iter().flat_map(|&s| z_m.iter().map(move |&z| 2.0 * s + 3.0 * z + offset)).collect();
             let n = values.len();
-            PadMap { pad: 0, kind: FieldKind::Pressure, s_m, z_m, radius_m: 0.05, theta_le_rad: 0.0, values, cavitated: vec![false; n], min: 0.0, max: 1.0 }
+            PadMap {
+                pad: 0,
+                kind: FieldKind::Pressure,
+                s_m,
+                z_m,
+                radius_m: 0.05,
+                theta_le_rad: 0.0,
+                values,
+                cavitated: vec![false; n],
+                min: 0.0,
+                max: 1.0,
+            }
         };
         let live = map(vec![0.0, 0.01, 0.03], vec![-0.02, 0.0, 0.01, 0.02], 0.0);
         let pinned = map(vec![0.0, 0.015, 0.03], vec![-0.02, 0.02], 1.0);

@@ -164,7 +164,9 @@ impl VelocityField {
 /// The orifices of pad `pad` of a solution, in pad coordinates, with their flows.
 #[must_use]
 pub fn orifice_sites(solution: &Solution, pad: usize) -> Vec<OrificeSite> {
-    let (Some(p), Some(res)) = (solution.inputs.bearing.pads.get(pad), solution.pads.get(pad)) else { return Vec::new() };
+    let (Some(p), Some(res)) = (solution.inputs.bearing.pads.get(pad), solution.pads.get(pad)) else {
+        return Vec::new();
+    };
     let r = solution.inputs.bearing.journal_radius_m;
     p.orifices
         .iter()
@@ -224,7 +226,13 @@ pub fn flowlines(field: &VelocityField, orifices: &[OrificeSite], params: Flowli
 }
 
 /// Integrates from `start` along `direction · v̄/|v̄|` (direction ±1) until a stop condition.
-fn trace(field: &VelocityField, start: [f64; 2], direction: f64, orifices: &[OrificeSite], params: FlowlineParams) -> (Vec<[f64; 2]>, End) {
+fn trace(
+    field: &VelocityField,
+    start: [f64; 2],
+    direction: f64,
+    orifices: &[OrificeSite],
+    params: FlowlineParams,
+) -> (Vec<[f64; 2]>, End) {
     let speed_floor = 1e-6 * field.surface_speed_m_s.abs().max(1e-9);
     let unit = |p: [f64; 2]| -> Option<[f64; 2]> {
         let v = field.velocity(p[0], p[1])?;
@@ -373,7 +381,10 @@ mod tests {
         let from_hole: Vec<&Flowline> = lines.iter().filter(|l| l.seed == Seed::Orifice(0)).collect();
         assert_eq!(from_hole.len(), 16);
         // Reversal: lines that first run upstream, well ahead of the hole, before the Couette flow turns them.
-        let upstream = from_hole.iter().filter(|l| l.points.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min) < s0 - 3.0 * r0).count();
+        let upstream = from_hole
+            .iter()
+            .filter(|l| l.points.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min) < s0 - 3.0 * r0)
+            .count();
         assert!(upstream >= 2, "some lines leave against the rotation: {upstream}");
         // Lines from the leading edge are pushed aside by the source, none enters it.
         assert!(lines.iter().filter(|l| l.seed == Seed::LeadingEdge).all(|l| l.end != End::Orifice));

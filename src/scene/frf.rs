@@ -56,7 +56,13 @@ pub fn unwrapped_phase_deg(values: &[C64]) -> Vec<f64> {
 }
 
 fn curve(name: String, unit: &'static str, group: &'static str, scale: f64, values: &[C64]) -> Curve {
-    Curve { name, unit, group, magnitude: values.iter().map(|v| v.norm() * scale).collect(), phase_deg: unwrapped_phase_deg(values) }
+    Curve {
+        name,
+        unit,
+        group,
+        magnitude: values.iter().map(|v| v.norm() * scale).collect(),
+        phase_deg: unwrapped_phase_deg(values),
+    }
 }
 
 const PORTS: [&str; 2] = ["A", "B"];

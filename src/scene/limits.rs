@@ -8,7 +8,11 @@ use super::summary::sig4;
 fn display(kind: LimitKind, x: f64) -> String {
     let (unit, scale) = kind.unit();
     let v = sig4(x * scale);
-    if unit.is_empty() { v } else { format!("{v} {unit}") }
+    if unit.is_empty() {
+        v
+    } else {
+        format!("{v} {unit}")
+    }
 }
 
 /// The checked value in display units (`—` when the solution does not have it).

@@ -97,7 +97,15 @@ pub fn round_factor(raw: f64) -> f64 {
     }
     let decade = 10f64.powf(raw.log10().floor());
     let m = raw / decade;
-    let nice = if m < 1.5 { 1.0 } else if m < 3.5 { 2.0 } else if m < 7.5 { 5.0 } else { 10.0 };
+    let nice = if m < 1.5 {
+        1.0
+    } else if m < 3.5 {
+        2.0
+    } else if m < 7.5 {
+        5.0
+    } else {
+        10.0
+    };
     nice * decade
 }
 
@@ -138,19 +146,24 @@ pub fn bearing_outline_with(case: &Case, solution: Option<&Solution>, lock: Opti
         // Local coordinates [e_x, e_y, pad coordinates…], looked up by their typed ids in the solution.
         let mut q = vec![e[0], e[1]];
         q.extend(dofs.iter().map(|&dof| {
-            solution.and_then(|s| s.full.index(Coord::Pad { pad: idx, dof }).and_then(|i| s.coordinates.get(i)).copied()).unwrap_or(0.0)
+            solution
+                .and_then(|s| s.full.index(Coord::Pad { pad: idx, dof }).and_then(|i| s.coordinates.get(i)).copied())
+                .unwrap_or(0.0)
         }));
-        let h = |theta: f64| shape.base(theta, 0.0) + (0..q.len()).map(|d| q[d] * shape.dof(d, theta, 0.0)).sum::<f64>();
+        let h =
+            |theta: f64| shape.base(theta, 0.0) + (0..q.len()).map(|d| q[d] * shape.dof(d, theta, 0.0)).sum::<f64>();
         let rho_p = |theta: f64| rho_j(theta) + k * h(theta);
         let n = 48;
-        let thetas: Vec<f64> = (0..=n).map(|i| pad.leading_edge_rad + pad.arc_rad * f64::from(i) / f64::from(n)).collect();
+        let thetas: Vec<f64> =
+            (0..=n).map(|i| pad.leading_edge_rad + pad.arc_rad * f64::from(i) / f64::from(n)).collect();
         let film_surface: Vec<Point> = thetas.iter().map(|&t| polar(rho_p(t), t)).collect();
         let back: Vec<Point> = thetas.iter().map(|&t| polar(rho_p(t) + pad.thickness_m, t)).collect();
         let tp = pad.pivot_rad;
         let contact = rho_p(tp) + pad.thickness_m;
         let base = 0.1 * r;
         let half_angle = 0.6 * base / (contact + base);
-        let pivot = [polar(contact, tp), polar(contact + base, tp - half_angle), polar(contact + base, tp + half_angle)];
+        let pivot =
+            [polar(contact, tp), polar(contact + base, tp - half_angle), polar(contact + base, tp + half_angle)];
         extent = extent.max(contact + base);
         let orifices = pad
             .orifices
@@ -161,7 +174,8 @@ pub fn bearing_outline_with(case: &Case, solution: Option<&Solution>, lock: Opti
                 [wall(o.angle_rad - half), wall(o.angle_rad + half)]
             })
             .collect();
-        let injecting = !pad.orifices.is_empty() && case.operating.injection_pressure_pa.get(idx).is_some_and(|&p| p > 0.0);
+        let injecting =
+            !pad.orifices.is_empty() && case.operating.injection_pressure_pa.get(idx).is_some_and(|&p| p > 0.0);
         let h_min = result.map(|p| {
             let t = p.h_min_angle_deg.to_radians();
             (polar(rho_j(t), t), polar(rho_p(t), t), p.h_min_m)
@@ -250,7 +264,8 @@ mod tests {
         let mid = outline.film_surface.len() / 2;
         let drawn = outline.film_surface[mid][0].hypot(outline.film_surface[mid][1]);
         let theta = (outline.film_surface[mid][1]).atan2(outline.film_surface[mid][0]);
-        let h_expected = pad.clearance_m - (pad.clearance_m - case.bearing.assembled_clearance_m) * (theta - pad.pivot_rad).cos();
+        let h_expected =
+            pad.clearance_m - (pad.clearance_m - case.bearing.assembled_clearance_m) * (theta - pad.pivot_rad).cos();
         assert!((drawn - (r + k * h_expected)).abs() < 1e-12);
         // Leading-edge gap is larger than at the pivot (preload).
         let le = outline.film_surface[0][0].hypot(outline.film_surface[0][1]);
@@ -269,7 +284,12 @@ mod tests {
         let lock = bearing_outline(&case, None).scales();
         assert_eq!(lock.exaggeration, 50.0);
         // Half the clearances: 50.8/6/0.0605 ≈ 140 → 100 when free.
-        let tight = load_case(include_str!("../../cases/compressor-bearing.toml"), &["bearing.assembled_clearance_um=51".into(), "bearing.pads.bore_radius_mm=50.8605".into()]).unwrap().1;
+        let tight = load_case(
+            include_str!("../../cases/compressor-bearing.toml"),
+            &["bearing.assembled_clearance_um=51".into(), "bearing.pads.bore_radius_mm=50.8605".into()],
+        )
+        .unwrap()
+        .1;
         assert_eq!(bearing_outline(&tight, None).exaggeration, 100.0);
         let locked = bearing_outline_with(&tight, None, Some(lock));
         assert_eq!(locked.scales(), lock);

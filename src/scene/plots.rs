@@ -40,10 +40,18 @@ fn entries(m: [[f64; 2]; 2], scale: f64) -> [f64; 4] {
     [m[0][0] * scale, m[0][1] * scale, m[1][0] * scale, m[1][1] * scale]
 }
 
-fn build(x_label: &'static str, points: &[(f64, ReducedCoefficients)], current: Option<(f64, ReducedCoefficients)>, failures: Vec<(f64, String)>) -> CoefficientPlot {
+fn build(
+    x_label: &'static str,
+    points: &[(f64, ReducedCoefficients)],
+    current: Option<(f64, ReducedCoefficients)>,
+    failures: Vec<(f64, String)>,
+) -> CoefficientPlot {
     let series = |prefix: &str, pick: &dyn Fn(&ReducedCoefficients) -> [f64; 4]| -> Vec<Series> {
         (0..4)
-            .map(|e| Series { name: format!("{prefix}{}", ENTRIES[e]), points: points.iter().map(|(x, c)| [*x, pick(c)[e]]).collect() })
+            .map(|e| Series {
+                name: format!("{prefix}{}", ENTRIES[e]),
+                points: points.iter().map(|(x, c)| [*x, pick(c)[e]]).collect(),
+            })
             .collect()
     };
     let k = |c: &ReducedCoefficients| entries(c.k_n_per_m, STIFFNESS_MN_PER_M);
@@ -59,14 +67,18 @@ fn build(x_label: &'static str, points: &[(f64, ReducedCoefficients)], current: 
 
 /// Reduced coefficients against ω/Ω from a frequency sweep; `current` is the case's ratio and values.
 #[must_use]
-pub fn frequency_plot(sweep: &[(f64, ReducedCoefficients)], current: Option<(f64, ReducedCoefficients)>) -> CoefficientPlot {
+pub fn frequency_plot(
+    sweep: &[(f64, ReducedCoefficients)],
+    current: Option<(f64, ReducedCoefficients)>,
+) -> CoefficientPlot {
     build("excitation frequency ratio ω/Ω", sweep, current, Vec::new())
 }
 
 /// Reduced coefficients against speed [rpm] from a speed sweep.
 #[must_use]
 pub fn speed_plot(sweep: &[SpeedPoint], current: Option<(f64, ReducedCoefficients)>) -> CoefficientPlot {
-    let ok: Vec<(f64, ReducedCoefficients)> = sweep.iter().filter_map(|p| p.result.as_ref().ok().map(|v| (p.speed_rpm, v.reduced))).collect();
+    let ok: Vec<(f64, ReducedCoefficients)> =
+        sweep.iter().filter_map(|p| p.result.as_ref().ok().map(|v| (p.speed_rpm, v.reduced))).collect();
     let failures = sweep.iter().filter_map(|p| p.result.as_ref().err().map(|e| (p.speed_rpm, e.clone()))).collect();
     build("speed [rpm]", &ok, current, failures)
 }
@@ -116,7 +128,11 @@ mod tests {
     use crate::bearing::stages::SweepValues;
 
     fn rc(k: f64, c: f64) -> ReducedCoefficients {
-        ReducedCoefficients { omega_rad_s: 1.0, k_n_per_m: [[k, 2.0 * k], [3.0 * k, 4.0 * k]], c_ns_per_m: [[c, 0.0], [0.0, c]] }
+        ReducedCoefficients {
+            omega_rad_s: 1.0,
+            k_n_per_m: [[k, 2.0 * k], [3.0 * k, 4.0 * k]],
+            c_ns_per_m: [[c, 0.0], [0.0, c]],
+        }
     }
 
     #[test]
@@ -130,7 +146,16 @@ mod tests {
 
     #[test]
     fn failed_speed_points_are_kept_apart() {
-        let v = |k| Ok(SweepValues { eccentricity_ratio: 0.1, attitude_angle_deg: 0.0, h_min_m: 1e-5, p_max_pa: 1e6, friction_power_w: 1.0, reduced: rc(k, 1e4) });
+        let v = |k| {
+            Ok(SweepValues {
+                eccentricity_ratio: 0.1,
+                attitude_angle_deg: 0.0,
+                h_min_m: 1e-5,
+                p_max_pa: 1e6,
+                friction_power_w: 1.0,
+                reduced: rc(k, 1e4),
+            })
+        };
         let sweep = vec![
             SpeedPoint { speed_rpm: 1000.0, result: Err("touchdown".into()) },
             SpeedPoint { speed_rpm: 2000.0, result: v(1e8) },

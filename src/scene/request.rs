@@ -32,8 +32,11 @@ pub fn request<'a>(case: Case, needs: impl IntoIterator<Item = &'a [StageId]>) -
     let mut wanted: Vec<StageId> = needs.into_iter().flatten().copied().collect();
     wanted.sort_unstable();
     wanted.dedup();
-    let frequency_ratios =
-        if wanted.contains(&StageId::FrequencySweep) { frequency_ratios(RATIOS.0, RATIOS.1, RATIOS.2) } else { Vec::new() };
+    let frequency_ratios = if wanted.contains(&StageId::FrequencySweep) {
+        frequency_ratios(RATIOS.0, RATIOS.1, RATIOS.2)
+    } else {
+        Vec::new()
+    };
     let speeds_rpm = if wanted.contains(&StageId::SpeedSweep) {
         sweep_speeds(case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU, SPEED_POINTS)
     } else {
@@ -58,6 +61,10 @@ mod tests {
         assert_eq!(r.frequency_ratios.len(), RATIOS.2);
         assert_eq!(r.speeds_rpm.len(), SPEED_POINTS);
         // 4000 rpm: from 2000 to 6000 rpm.
-        assert!((r.speeds_rpm[0] - 2000.0).abs() < 1e-9 && (r.speeds_rpm[SPEED_POINTS - 1] - 6000.0).abs() < 1e-9, "{:?}", r.speeds_rpm);
+        assert!(
+            (r.speeds_rpm[0] - 2000.0).abs() < 1e-9 && (r.speeds_rpm[SPEED_POINTS - 1] - 6000.0).abs() < 1e-9,
+            "{:?}",
+            r.speeds_rpm
+        );
     }
 }

@@ -20,8 +20,8 @@ use crate::model::rotor::{BearingSupport, Rotor};
 use crate::rotor::analysis::AnalysisResult;
 use crate::rotor::campbell::track_modes;
 use crate::rotor::critical_map::CriticalSpeedMap;
-use crate::rotor::stability::SpeedPoint;
 use crate::rotor::eigen::Whirl;
+use crate::rotor::stability::SpeedPoint;
 
 const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
 
@@ -79,7 +79,11 @@ pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> Mode
         frequency_hz,
         log_dec,
         one_x: [[first, first / 60.0], [last, last / 60.0]],
-        critical: result.critical_speeds.iter().map(|c| [c.speed_rad_s * RPM_PER_RAD_S, c.order * c.speed_rad_s / std::f64::consts::TAU]).collect(),
+        critical: result
+            .critical_speeds
+            .iter()
+            .map(|c| [c.speed_rad_s * RPM_PER_RAD_S, c.order * c.speed_rad_s / std::f64::consts::TAU])
+            .collect(),
         onset_rpm: result.onset.as_ref().map(|o| o.speed_rad_s * RPM_PER_RAD_S),
         operating_rpm: rotor.operating_range.map(|[a, b]| [a * RPM_PER_RAD_S, b * RPM_PER_RAD_S]),
     }
@@ -151,7 +155,12 @@ pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
             NodeResponse { node, amplitude_um: a, phase_deg: p }
         })
         .collect();
-    let api617_um = result.speeds.iter().filter(|s| s.api617_limit_um.is_finite()).map(|s| [s.point.speed_rad_s * RPM_PER_RAD_S, s.api617_limit_um]).collect();
+    let api617_um = result
+        .speeds
+        .iter()
+        .filter(|s| s.api617_limit_um.is_finite())
+        .map(|s| [s.point.speed_rad_s * RPM_PER_RAD_S, s.api617_limit_um])
+        .collect();
     UnbalanceBode { nodes, api617_um }
 }
 
@@ -169,12 +178,24 @@ pub struct MapDrawing {
 #[must_use]
 pub fn map_drawing(m: &CriticalSpeedMap, rotor: &Rotor) -> MapDrawing {
     let modes = (0..m.map.frequencies_rad_s.first().map_or(0, Vec::len))
-        .map(|mode| m.map.stiffness_n_per_m.iter().zip(&m.map.frequencies_rad_s).filter_map(|(k, f)| f.get(mode).map(|w| [k.log10(), w * RPM_PER_RAD_S])).collect())
+        .map(|mode| {
+            m.map
+                .stiffness_n_per_m
+                .iter()
+                .zip(&m.map.frequencies_rad_s)
+                .filter_map(|(k, f)| f.get(mode).map(|w| [k.log10(), w * RPM_PER_RAD_S]))
+                .collect()
+        })
         .collect();
     let mut bearings = Vec::new();
     for (b, curve) in m.bearing_curves.iter().enumerate() {
         for (d, tag) in ["k_xx", "k_yy"].iter().enumerate() {
-            let points: Vec<[f64; 2]> = curve.iter().map(|p| (p.0, if d == 0 { p.1 } else { p.2 })).filter(|(_, k)| *k > 0.0).map(|(w, k)| [k.log10(), w * RPM_PER_RAD_S]).collect();
+            let points: Vec<[f64; 2]> = curve
+                .iter()
+                .map(|p| (p.0, if d == 0 { p.1 } else { p.2 }))
+                .filter(|(_, k)| *k > 0.0)
+                .map(|(w, k)| [k.log10(), w * RPM_PER_RAD_S])
+                .collect();
             if !points.is_empty() {
                 let node = rotor.bearings.get(b).map_or(0, |p| p.node);
                 bearings.push((format!("bearing at node {node}: {tag}"), points));
@@ -214,8 +235,14 @@ pub struct RotorSketch {
 #[must_use]
 pub fn sketch(rotor: &Rotor) -> RotorSketch {
     let z: Vec<f64> = rotor.node_positions().iter().map(|z| z * 1e3).collect();
-    let sections: Vec<[f64; 4]> = rotor.elements.iter().enumerate().map(|(i, e)| [z[i], z[i + 1], e.outer_diameter_m * 1e3, e.inner_diameter_m * 1e3]).collect();
-    let mut items: Vec<(f64, SketchItem, usize)> = rotor.disks.iter().map(|d| (z[d.node], SketchItem::Disk, d.node)).collect();
+    let sections: Vec<[f64; 4]> = rotor
+        .elements
+        .iter()
+        .enumerate()
+        .map(|(i, e)| [z[i], z[i + 1], e.outer_diameter_m * 1e3, e.inner_diameter_m * 1e3])
+        .collect();
+    let mut items: Vec<(f64, SketchItem, usize)> =
+        rotor.disks.iter().map(|d| (z[d.node], SketchItem::Disk, d.node)).collect();
     for b in &rotor.bearings {
         let kind = match b.support {
             BearingSupport::Case { .. } => SketchItem::Bearing,
@@ -225,7 +252,12 @@ pub fn sketch(rotor: &Rotor) -> RotorSketch {
     }
     items.extend(rotor.supports.iter().map(|s| (z[s.node], SketchItem::Support, s.node)));
     items.extend(rotor.unbalances.iter().map(|u| (z[u.node], SketchItem::Unbalance, u.node)));
-    RotorSketch { max_diameter_mm: sections.iter().map(|s| s[2]).fold(0.0, f64::max), length_mm: z.last().copied().unwrap_or(0.0), sections, items }
+    RotorSketch {
+        max_diameter_mm: sections.iter().map(|s| s[2]).fold(0.0, f64::max),
+        length_mm: z.last().copied().unwrap_or(0.0),
+        sections,
+        items,
+    }
 }
 
 #[cfg(test)]
@@ -319,8 +351,14 @@ c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
         let s = sketch(&rotor);
         assert_eq!(s.sections.len(), 10);
         assert!((s.length_mm - 1000.0).abs() < 1e-9);
-        assert!(s.items.iter().any(|&(z, item, node)| item == SketchItem::Disk && node == 5 && (z - 500.0).abs() < 1e-9));
+        assert!(s
+            .items
+            .iter()
+            .any(|&(z, item, node)| item == SketchItem::Disk && node == 5 && (z - 500.0).abs() < 1e-9));
         assert_eq!(s.items.iter().filter(|i| i.1 == SketchItem::Numbers).count(), 2);
-        assert!(s.items.iter().any(|&(z, item, node)| item == SketchItem::Unbalance && node == 5 && (z - 500.0).abs() < 1e-9));
+        assert!(s
+            .items
+            .iter()
+            .any(|&(z, item, node)| item == SketchItem::Unbalance && node == 5 && (z - 500.0).abs() < 1e-9));
     }
 }

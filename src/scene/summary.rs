@@ -54,7 +54,11 @@ fn row(label: &'static str, value: String, unit: &'static str, meaning: &'static
 /// A relative residual or balance: round-off (below 1e-12) is shown as such, not as its noise digits.
 #[must_use]
 pub fn small(x: f64) -> String {
-    if x.abs() < 1e-12 { "< 1e-12".into() } else { format!("{x:.1e}") }
+    if x.abs() < 1e-12 {
+        "< 1e-12".into()
+    } else {
+        format!("{x:.1e}")
+    }
 }
 
 /// Four significant figures ([`crate::number::sig`]).
@@ -128,11 +132,36 @@ pub fn summary(s: &Solution) -> Summary {
     let coeffs = Group {
         title: "Reduced coefficients",
         rows: vec![
-            row("ω/Ω", sig4(s.inputs.operating.excitation_ratio), "–", "Excitation frequency ratio used for the reduction of the pad coordinates."),
-            row("Kxx, Kxy", format!("{}, {}", sig4(k[0][0] * 1e-6), sig4(k[0][1] * 1e-6)), "MN/m", "Stiffness: force in x per displacement in x, y."),
-            row("Kyx, Kyy", format!("{}, {}", sig4(k[1][0] * 1e-6), sig4(k[1][1] * 1e-6)), "MN/m", "Stiffness: force in y per displacement in x, y."),
-            row("Cxx, Cxy", format!("{}, {}", sig4(c[0][0] * 1e-3), sig4(c[0][1] * 1e-3)), "kN·s/m", "Damping: force in x per velocity in x, y."),
-            row("Cyx, Cyy", format!("{}, {}", sig4(c[1][0] * 1e-3), sig4(c[1][1] * 1e-3)), "kN·s/m", "Damping: force in y per velocity in x, y."),
+            row(
+                "ω/Ω",
+                sig4(s.inputs.operating.excitation_ratio),
+                "–",
+                "Excitation frequency ratio used for the reduction of the pad coordinates.",
+            ),
+            row(
+                "Kxx, Kxy",
+                format!("{}, {}", sig4(k[0][0] * 1e-6), sig4(k[0][1] * 1e-6)),
+                "MN/m",
+                "Stiffness: force in x per displacement in x, y.",
+            ),
+            row(
+                "Kyx, Kyy",
+                format!("{}, {}", sig4(k[1][0] * 1e-6), sig4(k[1][1] * 1e-6)),
+                "MN/m",
+                "Stiffness: force in y per displacement in x, y.",
+            ),
+            row(
+                "Cxx, Cxy",
+                format!("{}, {}", sig4(c[0][0] * 1e-3), sig4(c[0][1] * 1e-3)),
+                "kN·s/m",
+                "Damping: force in x per velocity in x, y.",
+            ),
+            row(
+                "Cyx, Cyy",
+                format!("{}, {}", sig4(c[1][0] * 1e-3), sig4(c[1][1] * 1e-3)),
+                "kN·s/m",
+                "Damping: force in y per velocity in x, y.",
+            ),
         ],
     };
     let solver = Group {
@@ -155,7 +184,8 @@ pub fn summary(s: &Solution) -> Summary {
             h_min_um: p.h_min_m * 1e6,
             p_max_mpa: p.p_max_pa * 1e-6,
             load_n: p.force_n[0].hypot(p.force_n[1]),
-            orifice_flow_l_min: (!p.orifice_flows_m3_per_s.is_empty()).then(|| p.orifice_flows_m3_per_s.iter().sum::<f64>() * M3S_TO_L_MIN),
+            orifice_flow_l_min: (!p.orifice_flows_m3_per_s.is_empty())
+                .then(|| p.orifice_flows_m3_per_s.iter().sum::<f64>() * M3S_TO_L_MIN),
             cavitated_percent: 100.0 * p.cavitated_fraction,
             unloaded: p.unloaded,
         })

@@ -90,7 +90,9 @@ impl SweepSpec {
 /// every pad at once).
 #[must_use]
 pub fn sweepable_keys() -> Vec<&'static KeySpec> {
-    KEYS.iter().filter(|k| matches!(k.allowed, Allowed::Number(_) | Allowed::NumberPerPad(_)) && !k.key.contains("[]")).collect()
+    KEYS.iter()
+        .filter(|k| matches!(k.allowed, Allowed::Number(_) | Allowed::NumberPerPad(_)) && !k.key.contains("[]"))
+        .collect()
 }
 
 /// The override of one point: the key and its value as TOML reads it.
@@ -178,7 +180,11 @@ impl SweepTable {
     /// The points where a design limit is exceeded, with the limits' names.
     #[must_use]
     pub fn limit_marks(&self) -> Vec<(f64, String)> {
-        self.points.iter().filter(|(_, r)| !r.limits_exceeded.is_empty()).map(|(x, r)| (*x, r.limits_exceeded.join(", "))).collect()
+        self.points
+            .iter()
+            .filter(|(_, r)| !r.limits_exceeded.is_empty())
+            .map(|(x, r)| (*x, r.limits_exceeded.join(", ")))
+            .collect()
     }
 
     /// CSV: point index, the key, every output column, the exceeded limits, seconds, error.
@@ -190,7 +196,11 @@ impl SweepTable {
             out &= w.write_record(row.record()).is_ok();
         }
         let bytes = w.into_inner().unwrap_or_default();
-        if out { String::from_utf8_lossy(&bytes).into_owned() } else { String::new() }
+        if out {
+            String::from_utf8_lossy(&bytes).into_owned()
+        } else {
+            String::new()
+        }
     }
 }
 
@@ -200,7 +210,8 @@ mod tests {
 
     #[test]
     fn spec_values_and_its_errors() {
-        let s = SweepSpec { key: "operating.load_n".into(), from: 1000.0, to: 4000.0, count: 4, ..SweepSpec::default() };
+        let s =
+            SweepSpec { key: "operating.load_n".into(), from: 1000.0, to: 4000.0, count: 4, ..SweepSpec::default() };
         assert_eq!(s.values().unwrap(), [1000.0, 2000.0, 3000.0, 4000.0]);
         assert_eq!(s.unit(), "N");
         let bad = SweepSpec { key: "thermal.model".into(), ..s.clone() };
@@ -208,7 +219,13 @@ mod tests {
         assert_eq!(SweepSpec { count: 1, ..s.clone() }.values(), Err(SweepSpecError::Count(1)));
         assert!(SweepSpec { to: 1000.0, ..s }.values().is_err());
         let keys: Vec<&str> = sweepable_keys().iter().map(|k| k.key).collect();
-        for k in ["operating.speed_rpm", "bearing.pads.preload", "operating.injection_pressure_bar", "operating.supply_temperature_c", "limits.min_film_thickness_um"] {
+        for k in [
+            "operating.speed_rpm",
+            "bearing.pads.preload",
+            "operating.injection_pressure_bar",
+            "operating.supply_temperature_c",
+            "limits.min_film_thickness_um",
+        ] {
             assert!(keys.contains(&k), "{k}");
         }
         assert!(!keys.iter().any(|k| k.contains("[]")));
@@ -230,7 +247,8 @@ mod tests {
     fn a_load_sweep_gives_series_and_csv() {
         let text = include_str!("../../cases/compressor-bearing.toml");
         let mut runner = crate::study::Runner::new(text, vec!["mesh.fidelity=\"preview\"".into()], true);
-        let spec = SweepSpec { key: "operating.load_n".into(), from: 1000.0, to: 4000.0, count: 3, ..SweepSpec::default() };
+        let spec =
+            SweepSpec { key: "operating.load_n".into(), from: 1000.0, to: 4000.0, count: 3, ..SweepSpec::default() };
         let mut table = SweepTable::new(&spec.key);
         for (i, x) in spec.values().unwrap().into_iter().enumerate() {
             let (row, _) = runner.row(i, &point_override(&spec.key, x));

@@ -37,7 +37,10 @@ pub const COLUMNS: &[Column] = &[
     Column { name: "t_journal_c", value: |s| s.thermal.as_ref().map(|t| t.journal_temperature_c) },
     Column { name: "friction_power_w", value: |s| Some(s.friction_power_w) },
     Column { name: "flow_leading_edges_in_l_per_min", value: |s| Some(s.flows_m3_per_s.leading_edges_in * L_PER_MIN) },
-    Column { name: "flow_trailing_edges_out_l_per_min", value: |s| Some(s.flows_m3_per_s.trailing_edges_out * L_PER_MIN) },
+    Column {
+        name: "flow_trailing_edges_out_l_per_min",
+        value: |s| Some(s.flows_m3_per_s.trailing_edges_out * L_PER_MIN),
+    },
     Column { name: "flow_sides_out_l_per_min", value: |s| Some(s.flows_m3_per_s.sides_out * L_PER_MIN) },
     Column { name: "flow_orifices_in_l_per_min", value: |s| Some(s.flows_m3_per_s.orifices_in * L_PER_MIN) },
     Column { name: "kxx_n_per_m", value: |s| Some(s.reduced.k_n_per_m[0][0]) },

@@ -18,7 +18,7 @@
 use serde::Serialize;
 use web_time::Instant;
 
-use crate::bearing::{solve_point, BearingModel, EquilibriumParams, NoCancel, SolveError, Solution};
+use crate::bearing::{solve_point, BearingModel, EquilibriumParams, NoCancel, Solution, SolveError};
 use crate::model::{load_case, Case, CaseError, LoadSpec};
 
 /// A bearing of the map: a case text and overrides.
@@ -109,7 +109,9 @@ pub fn classify(result: &Result<Solution, SolveError>) -> (Class, String) {
                 (Class::Converged, String::new())
             }
         }
-        Err(SolveError::Touchdown { .. }) => (Class::Touchdown, result.as_ref().err().map(ToString::to_string).unwrap_or_default()),
+        Err(SolveError::Touchdown { .. }) => {
+            (Class::Touchdown, result.as_ref().err().map(ToString::to_string).unwrap_or_default())
+        }
         Err(e @ SolveError::NoStiffness { .. }) => (Class::NoStiffness, e.to_string()),
         Err(e @ (SolveError::ForceGap { .. } | SolveError::ForceGap2d { .. })) => (Class::ForceGap, e.to_string()),
         Err(e) => (Class::Failure, e.to_string()),
@@ -132,7 +134,8 @@ pub fn load_for_sommerfeld(case: &Case, s: f64) -> f64 {
 /// The bearing's case is invalid.
 pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>, CaseError> {
     let (_, base) = load_case(&bearing.text, &bearing.set)?;
-    let mut model = BearingModel::new(&base).map_err(|e| CaseError::Inconsistent { key: "bearing".into(), message: e.to_string() })?;
+    let mut model = BearingModel::new(&base)
+        .map_err(|e| CaseError::Inconsistent { key: "bearing".into(), message: e.to_string() })?;
     let mut thermal = None;
     let mut points = Vec::new();
     for &s in &spec.sommerfeld {
@@ -144,8 +147,19 @@ pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>
             let result = solve_point(&mut model, &mut thermal, &case, None, &NoCancel);
             let seconds = t0.elapsed().as_secs_f64();
             let (class, detail) = classify(&result);
-            let film_solves = result.as_ref().map_or(0, |s| s.thermal.as_ref().map_or(s.report.film_solves, |t| t.report.film_solves));
-            points.push(MapPoint { bearing: bearing.name.clone(), direction_deg, sommerfeld: s, load_n, class, detail, film_solves, seconds });
+            let film_solves = result
+                .as_ref()
+                .map_or(0, |s| s.thermal.as_ref().map_or(s.report.film_solves, |t| t.report.film_solves));
+            points.push(MapPoint {
+                bearing: bearing.name.clone(),
+                direction_deg,
+                sommerfeld: s,
+                load_n,
+                class,
+                detail,
+                film_solves,
+                seconds,
+            });
         }
     }
     Ok(points)
@@ -257,7 +271,12 @@ pub fn failures_beside_converged<'a>(points: &'a [MapPoint], spec: &MapSpec) -> 
     let step = spec.direction_step_deg;
     let neighbours = |p: &MapPoint, q: &MapPoint| {
         let d = (q.direction_deg - p.direction_deg).rem_euclid(360.0);
-        q.bearing == p.bearing && q.sommerfeld == p.sommerfeld && ((d - step).abs() < 1e-9 || (d - (360.0 - step)).abs() < 1e-9)
+        q.bearing == p.bearing
+            && q.sommerfeld == p.sommerfeld
+            && ((d - step).abs() < 1e-9 || (d - (360.0 - step)).abs() < 1e-9)
     };
-    points.iter().filter(|p| p.class == Class::Failure && points.iter().any(|q| q.class == Class::Converged && neighbours(p, q))).collect()
+    points
+        .iter()
+        .filter(|p| p.class == Class::Failure && points.iter().any(|q| q.class == Class::Converged && neighbours(p, q)))
+        .collect()
 }

@@ -26,7 +26,11 @@ impl Designs {
     /// # Errors
     /// A missing or empty header, a duplicated key, or a row with the wrong number of cells.
     pub fn parse(text: &str) -> Result<Self, StudyError> {
-        let mut reader = csv::ReaderBuilder::new().comment(Some(b'#')).trim(csv::Trim::All).flexible(false).from_reader(text.as_bytes());
+        let mut reader = csv::ReaderBuilder::new()
+            .comment(Some(b'#'))
+            .trim(csv::Trim::All)
+            .flexible(false)
+            .from_reader(text.as_bytes());
         let bad = |line: usize, message: String| StudyError::BadDesigns { line, message };
         let headers = reader.headers().map_err(|e| bad(1, e.to_string()))?.clone();
         let keys: Vec<String> = headers.iter().map(str::to_string).collect();
@@ -44,7 +48,13 @@ impl Designs {
                 let line = e.position().map_or(0, |p| usize::try_from(p.line()).unwrap_or(0));
                 bad(line, e.to_string())
             })?;
-            rows.push(keys.iter().zip(record.iter()).filter(|(_, v)| !v.is_empty()).map(|(k, v)| (k.clone(), v.to_string())).collect());
+            rows.push(
+                keys.iter()
+                    .zip(record.iter())
+                    .filter(|(_, v)| !v.is_empty())
+                    .map(|(k, v)| (k.clone(), v.to_string()))
+                    .collect(),
+            );
         }
         Ok(Self { keys, rows })
     }
@@ -89,7 +99,8 @@ mod tests {
 
     #[test]
     fn designs_read_keys_values_comments_and_quoted_lists() {
-        let text = "# preload study\nbearing.pads.preload, operating.injection_pressure_bar\n0.2,\"[0,0,0,20,0]\"\n0.3,\n";
+        let text =
+            "# preload study\nbearing.pads.preload, operating.injection_pressure_bar\n0.2,\"[0,0,0,20,0]\"\n0.3,\n";
         let d = Designs::parse(text).unwrap();
         assert_eq!(d.keys, ["bearing.pads.preload", "operating.injection_pressure_bar"]);
         assert_eq!(d.rows.len(), 2);

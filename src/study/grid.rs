@@ -109,7 +109,9 @@ mod tests {
         let c = Axis::parse("operating.injection_pressure_bar=[0,0,0,20,0];[0,0,0,40,0]").unwrap();
         assert_eq!(c.values, ["[0,0,0,20,0]", "[0,0,0,40,0]"]);
         assert_eq!(Axis::parse("bearing.pads.preload=0.2").unwrap().values, ["0.2"]);
-        for bad in ["speed", "=1,2", "operating.speed_rpm=1:2:0", "operating.speed_rpm=a:2:3", "operating.speed_rpm=1,,2"] {
+        for bad in
+            ["speed", "=1,2", "operating.speed_rpm=1:2:0", "operating.speed_rpm=a:2:3", "operating.speed_rpm=1,,2"]
+        {
             let e = Axis::parse(bad).unwrap_err().to_string();
             assert!(e.contains(bad), "{e}");
         }

@@ -10,7 +10,7 @@
 use web_time::Instant;
 
 use crate::bearing::limits::LimitKind;
-use crate::bearing::{solve_point, BearingModel, NoCancel, SolveError, Solution, ThermalModel};
+use crate::bearing::{solve_point, BearingModel, NoCancel, Solution, SolveError, ThermalModel};
 use crate::model::{load_case, Case, CaseError};
 
 use super::columns::{outputs, COLUMNS};
@@ -45,7 +45,13 @@ fn limit_names<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Vec<&'static st
     let names: Vec<String> = serde::Deserialize::deserialize(d)?;
     names
         .iter()
-        .map(|n| LimitKind::ALL.iter().map(|k| k.name()).find(|k| k == n).ok_or_else(|| serde::de::Error::custom(format!("no design limit named {n:?}"))))
+        .map(|n| {
+            LimitKind::ALL
+                .iter()
+                .map(|k| k.name())
+                .find(|k| k == n)
+                .ok_or_else(|| serde::de::Error::custom(format!("no design limit named {n:?}")))
+        })
         .collect()
 }
 
@@ -99,9 +105,14 @@ impl Row {
     /// The row as one JSON object (a JSON-lines record): index, inputs, outputs, seconds, error.
     #[must_use]
     pub fn json(&self, index_name: &str) -> serde_json::Value {
-        let inputs: serde_json::Map<String, serde_json::Value> = self.inputs.iter().map(|(k, v)| (k.clone(), json_value(v))).collect();
+        let inputs: serde_json::Map<String, serde_json::Value> =
+            self.inputs.iter().map(|(k, v)| (k.clone(), json_value(v))).collect();
         let outputs: serde_json::Map<String, serde_json::Value> = match &self.result {
-            Ok(cells) => COLUMNS.iter().zip(cells).map(|(c, v)| (c.name.to_string(), v.map_or(serde_json::Value::Null, serde_json::Value::from))).collect(),
+            Ok(cells) => COLUMNS
+                .iter()
+                .zip(cells)
+                .map(|(c, v)| (c.name.to_string(), v.map_or(serde_json::Value::Null, serde_json::Value::from)))
+                .collect(),
             Err(_) => serde_json::Map::new(),
         };
         let error = self.result.as_ref().err().map(ToString::to_string);
@@ -195,10 +206,16 @@ impl Runner {
 impl Row {
     /// The row of point `index` (`overrides`), solved or failed in `seconds`.
     #[must_use]
-    pub fn of(index: usize, overrides: &[(String, String)], result: Result<&Solution, PointError>, seconds: f64) -> Self {
-        let limits_exceeded = result.as_ref().map_or_else(|_| Vec::new(), |s| {
-            crate::bearing::limits::exceeded(&s.inputs.limits, s).iter().map(|c| c.kind.name()).collect()
-        });
+    pub fn of(
+        index: usize,
+        overrides: &[(String, String)],
+        result: Result<&Solution, PointError>,
+        seconds: f64,
+    ) -> Self {
+        let limits_exceeded = result.as_ref().map_or_else(
+            |_| Vec::new(),
+            |s| crate::bearing::limits::exceeded(&s.inputs.limits, s).iter().map(|c| c.kind.name()).collect(),
+        );
         Self { index, inputs: overrides.to_vec(), result: result.map(outputs), limits_exceeded, seconds }
     }
 }
@@ -240,7 +257,12 @@ mod tests {
 
     #[test]
     fn cold_rows_do_not_depend_on_the_rows_before_them() {
-        let p = |v: &str| vec![("bearing.pads.preload".to_string(), v.to_string()), ("bearing.pads.bore_radius_mm".to_string(), String::new())];
+        let p = |v: &str| {
+            vec![
+                ("bearing.pads.preload".to_string(), v.to_string()),
+                ("bearing.pads.bore_radius_mm".to_string(), String::new()),
+            ]
+        };
         let mut alone = runner(false);
         let (x, _) = alone.row(0, &p("0.3"));
         let mut after = runner(false);
@@ -262,7 +284,13 @@ mod tests {
         for row in [hot, bad] {
             assert_eq!(from_bytes::<Row>(&to_bytes(&row).unwrap()).unwrap(), row);
         }
-        let unknown = Row { index: 0, inputs: Vec::new(), result: Ok(Vec::new()), limits_exceeded: vec!["no_such_limit"], seconds: 0.0 };
+        let unknown = Row {
+            index: 0,
+            inputs: Vec::new(),
+            result: Ok(Vec::new()),
+            limits_exceeded: vec!["no_such_limit"],
+            seconds: 0.0,
+        };
         assert!(from_bytes::<Row>(&to_bytes(&unknown).unwrap()).is_err_and(|e| e.to_string().contains("no_such_limit")));
     }
 }

@@ -2,7 +2,10 @@
 
 use egui::Ui;
 
-use super::widgets::{choice_ui, Pick, count_ui, error_row_ui, fields_ui, number_ui, opt_fields_ui, per_pad_ui, EditOutput, Field, Num, OptField};
+use super::widgets::{
+    choice_ui, count_ui, error_row_ui, fields_ui, number_ui, opt_fields_ui, per_pad_ui, EditOutput, Field, Num,
+    OptField, Pick,
+};
 use crate::app::document::Document;
 use crate::model::file::{ContactKindFile, OneOrMany, OrificeFile, PadKindFile};
 use crate::model::CaseFile;
@@ -114,7 +117,11 @@ const PAD_MATERIAL: [OptField; 5] = [
         set: |f, v| f.bearing.pads.pivot_stiffness_n_per_m = v,
     },
     OptField {
-        num: Num { key: "bearing.pads.pivot_transverse_stiffness_n_per_m", label: "Pivot transverse stiffness", decimals: 0 },
+        num: Num {
+            key: "bearing.pads.pivot_transverse_stiffness_n_per_m",
+            label: "Pivot transverse stiffness",
+            decimals: 0,
+        },
         default: 1e8,
         get: |f| f.bearing.pads.pivot_transverse_stiffness_n_per_m,
         set: |f, v| f.bearing.pads.pivot_transverse_stiffness_n_per_m = v,
@@ -232,7 +239,14 @@ pub fn pads_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     out.merge(pivot_contact_ui(ui, doc, contact));
     if !doc.file().bearing.pad.is_empty() {
         ui.label("");
-        ui.label(egui::RichText::new(format!("{} per-pad override table(s) from the file apply ([[bearing.pad]]); edit them in the TOML.", doc.file().bearing.pad.len())).weak().small());
+        ui.label(
+            egui::RichText::new(format!(
+                "{} per-pad override table(s) from the file apply ([[bearing.pad]]); edit them in the TOML.",
+                doc.file().bearing.pad.len()
+            ))
+            .weak()
+            .small(),
+        );
         ui.end_row();
     }
     out
@@ -280,7 +294,11 @@ fn pivot_contact_ui(ui: &mut Ui, doc: &mut Document, contact: Option<ContactKind
         doc,
         Pick { key: "bearing.pads.pivot_contact", label: "Pivot contact", tip: None },
         contact,
-        &[(None, "stiffness given (or rigid)"), (Some(ContactKindFile::Rocker), "Hertz rocker"), (Some(ContactKindFile::Ball), "Hertz ball in socket")],
+        &[
+            (None, "stiffness given (or rigid)"),
+            (Some(ContactKindFile::Rocker), "Hertz rocker"),
+            (Some(ContactKindFile::Ball), "Hertz ball in socket"),
+        ],
         |f, c| {
             let p = &mut f.bearing.pads;
             p.pivot_contact = c;
@@ -295,7 +313,10 @@ fn pivot_contact_ui(ui: &mut Ui, doc: &mut Document, contact: Option<ContactKind
         },
     );
     if contact.is_some() {
-        let rows: Vec<OptField> = PIVOT_CONTACT.into_iter().filter(|f| contact == Some(ContactKindFile::Rocker) || f.num.key != "bearing.pads.pivot_length_mm").collect();
+        let rows: Vec<OptField> = PIVOT_CONTACT
+            .into_iter()
+            .filter(|f| contact == Some(ContactKindFile::Rocker) || f.num.key != "bearing.pads.pivot_length_mm")
+            .collect();
         out.merge(opt_fields_ui(ui, doc, &rows));
     }
     out
@@ -323,18 +344,8 @@ const ORIFICE_ROWS: [OrificeRow; 4] = [
         get: |o| o.axial_frac.unwrap_or(0.5),
         set: |o, v| o.axial_frac = Some(v),
     },
-    OrificeRow {
-        field: "diameter_mm",
-        label: "Diameter d0",
-        get: |o| o.diameter_mm,
-        set: |o, v| o.diameter_mm = v,
-    },
-    OrificeRow {
-        field: "length_mm",
-        label: "Capillary length l0",
-        get: |o| o.length_mm,
-        set: |o, v| o.length_mm = v,
-    },
+    OrificeRow { field: "diameter_mm", label: "Diameter d0", get: |o| o.diameter_mm, set: |o, v| o.diameter_mm = v },
+    OrificeRow { field: "length_mm", label: "Capillary length l0", get: |o| o.length_mm, set: |o, v| o.length_mm = v },
 ];
 
 pub fn orifices_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
@@ -367,9 +378,18 @@ pub fn orifices_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         }
     }
     ui.label("");
-    if ui.button("Add orifice").on_hover_text("Add an injection orifice (at mid-arc, on the mid-plane) to every pad").clicked() {
+    if ui
+        .button("Add orifice")
+        .on_hover_text("Add an injection orifice (at mid-arc, on the mid-plane) to every pad")
+        .clicked()
+    {
         doc.edit("bearing.pads.orifice", false, |f| {
-            f.bearing.pads.orifice.get_or_insert_with(Vec::new).push(OrificeFile { position_frac: 0.5, axial_frac: None, diameter_mm: 5.0, length_mm: 5.0 });
+            f.bearing.pads.orifice.get_or_insert_with(Vec::new).push(OrificeFile {
+                position_frac: 0.5,
+                axial_frac: None,
+                diameter_mm: 5.0,
+                length_mm: 5.0,
+            });
         });
         out.changed = true;
     }

@@ -6,7 +6,8 @@ use egui::Ui;
 use super::widgets::{opt_fields_ui, EditOutput, Num, OptField};
 use crate::app::document::Document;
 use crate::model::limits::{
-    DEFAULT_MAX_PAD_TEMPERATURE_C, DEFAULT_MAX_PEAK_PRESSURE_MPA, DEFAULT_MAX_REYNOLDS, DEFAULT_MAX_SPECIFIC_LOAD_MPA, DEFAULT_MIN_FILM_UM,
+    DEFAULT_MAX_PAD_TEMPERATURE_C, DEFAULT_MAX_PEAK_PRESSURE_MPA, DEFAULT_MAX_REYNOLDS, DEFAULT_MAX_SPECIFIC_LOAD_MPA,
+    DEFAULT_MIN_FILM_UM,
 };
 
 const FIELDS: [OptField; 5] = [

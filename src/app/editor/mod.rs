@@ -54,7 +54,13 @@ mod tests {
     /// there); only the editor's own choices (how a value is given) have none.
     #[test]
     fn every_editor_key_has_a_schema_row() {
-        let sources = [include_str!("bearing.rs"), include_str!("operation.rs"), include_str!("thermal.rs"), include_str!("hydraulics.rs"), include_str!("limits.rs")];
+        let sources = [
+            include_str!("bearing.rs"),
+            include_str!("operation.rs"),
+            include_str!("thermal.rs"),
+            include_str!("hydraulics.rs"),
+            include_str!("limits.rs"),
+        ];
         let mut keys = 0;
         for src in sources {
             for part in src.split("key: \"").skip(1) {
@@ -66,7 +72,14 @@ mod tests {
                 keys += 1;
             }
         }
-        for key in ["hydraulics.port[1].air_fraction", "mesh.circumferential_elements", "bearing.pads.orifice[0].diameter_mm", "title", "lubricant.name", "bearing.pads.count"] {
+        for key in [
+            "hydraulics.port[1].air_fraction",
+            "mesh.circumferential_elements",
+            "bearing.pads.orifice[0].diameter_mm",
+            "title",
+            "lubricant.name",
+            "bearing.pads.count",
+        ] {
             assert!(crate::model::schema::spec(key).is_some(), "{key}");
         }
         assert!(keys > 40, "found only {keys} editor keys");

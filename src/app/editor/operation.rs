@@ -4,7 +4,9 @@
 use egui::Ui;
 
 use super::bearing::{pads_with_injection, per_pad_count};
-use super::widgets::{choice_ui, Pick, fields_ui, number_ui, opt_fields_ui, optional_ui, per_pad_ui, EditOutput, Field, Num, OptField};
+use super::widgets::{
+    choice_ui, fields_ui, number_ui, opt_fields_ui, optional_ui, per_pad_ui, EditOutput, Field, Num, OptField, Pick,
+};
 use crate::app::document::Document;
 use crate::model::file::{Cavitation, Fidelity, OneOrMany};
 use crate::model::CaseFile;
@@ -60,11 +62,22 @@ const OIL_PROPERTIES: [Field; 3] = [
 ];
 
 /// A free-text row (names and titles); an empty text removes the key.
-pub fn text_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, label: &str, get: fn(&CaseFile) -> Option<String>, set: fn(&mut CaseFile, Option<String>)) -> EditOutput {
+pub fn text_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    key: &'static str,
+    label: &str,
+    get: fn(&CaseFile) -> Option<String>,
+    set: fn(&mut CaseFile, Option<String>),
+) -> EditOutput {
     let tip = super::widgets::key_tooltip(key);
     let label = ui.label(label).on_hover_text(&tip);
     let mut text = get(doc.file()).unwrap_or_default();
-    let changed = ui.add_sized([200.0, 20.0], egui::TextEdit::singleline(&mut text)).labelled_by(label.id).on_hover_text(&tip).changed();
+    let changed = ui
+        .add_sized([200.0, 20.0], egui::TextEdit::singleline(&mut text))
+        .labelled_by(label.id)
+        .on_hover_text(&tip)
+        .changed();
     if changed {
         doc.edit(key, true, |f| set(f, (!text.is_empty()).then(|| text.clone())));
     }
@@ -199,12 +212,17 @@ fn injection_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let n = Num { key: "operating.injection_pressure_bar", label: "Injection pressure", decimals: 1 };
     let mut separate = matches!(doc.file().operating.injection_pressure_bar, Some(OneOrMany::Many(_)));
     ui.label("");
-    if ui.checkbox(&mut separate, "Injection pressure per pad").on_hover_text("Give each pad its own injection pressure (e.g. only the loaded pad injects).").changed() {
+    if ui
+        .checkbox(&mut separate, "Injection pressure per pad")
+        .on_hover_text("Give each pad its own injection pressure (e.g. only the loaded pad injects).")
+        .changed()
+    {
         let count = per_pad_count(doc.file());
         doc.edit(n.key, false, |f| {
             let mut all = pads_with_injection(f);
             all.resize(count, 0.0);
-            f.operating.injection_pressure_bar = Some(if separate { OneOrMany::Many(all) } else { OneOrMany::One(all.first().copied().unwrap_or(0.0)) });
+            f.operating.injection_pressure_bar =
+                Some(if separate { OneOrMany::Many(all) } else { OneOrMany::One(all.first().copied().unwrap_or(0.0)) });
         });
         out.changed = true;
     }
@@ -240,10 +258,24 @@ pub fn physics_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     );
     let touchdown = Num { key: "physics.touchdown_film_um", label: "Touchdown film", decimals: 2 };
     let cb = doc.file().bearing.assembled_clearance_um;
-    out.merge(optional_ui(ui, doc, &touchdown, 0.01 * cb, |f| f.physics.touchdown_film_um, |f, v| f.physics.touchdown_film_um = v));
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &touchdown,
+        0.01 * cb,
+        |f| f.physics.touchdown_film_um,
+        |f, v| f.physics.touchdown_film_um = v,
+    ));
     let modes = Num { key: "physics.pad_modes", label: "Pad bending modes", decimals: 0 };
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
-    out.merge(optional_ui(ui, doc, &modes, 0.0, |f| f.physics.pad_modes.map(|v| v as f64), |f, v| f.physics.pad_modes = v.map(|x| x.round().max(0.0) as usize)));
+    out.merge(optional_ui(
+        ui,
+        doc,
+        &modes,
+        0.0,
+        |f| f.physics.pad_modes.map(|v| v as f64),
+        |f, v| f.physics.pad_modes = v.map(|x| x.round().max(0.0) as usize),
+    ));
     out
 }
 
@@ -256,12 +288,42 @@ enum Half {
 }
 
 /// Explicit element counts, overriding the fidelity level: key, label, the level's count, accessors.
-type CountRow = (&'static str, &'static str, fn(Fidelity) -> usize, fn(&CaseFile) -> Option<usize>, fn(&mut CaseFile, Option<usize>));
+type CountRow = (
+    &'static str,
+    &'static str,
+    fn(Fidelity) -> usize,
+    fn(&CaseFile) -> Option<usize>,
+    fn(&mut CaseFile, Option<usize>),
+);
 const COUNTS: [CountRow; 4] = [
-    ("mesh.circumferential_elements", "Circumferential elements", |l| l.elements().0, |f| f.mesh.circumferential_elements, |f, v| f.mesh.circumferential_elements = v),
-    ("mesh.axial_elements", "Axial elements", |l| l.elements().1, |f| f.mesh.axial_elements, |f, v| f.mesh.axial_elements = v),
-    ("mesh.orifice_elements", "Elements across an orifice", |l| l.elements().2, |f| f.mesh.orifice_elements, |f, v| f.mesh.orifice_elements = v),
-    ("mesh.pad_radial_elements", "Pad layers (thermal)", Fidelity::pad_radial_elements, |f| f.mesh.pad_radial_elements, |f, v| f.mesh.pad_radial_elements = v),
+    (
+        "mesh.circumferential_elements",
+        "Circumferential elements",
+        |l| l.elements().0,
+        |f| f.mesh.circumferential_elements,
+        |f, v| f.mesh.circumferential_elements = v,
+    ),
+    (
+        "mesh.axial_elements",
+        "Axial elements",
+        |l| l.elements().1,
+        |f| f.mesh.axial_elements,
+        |f, v| f.mesh.axial_elements = v,
+    ),
+    (
+        "mesh.orifice_elements",
+        "Elements across an orifice",
+        |l| l.elements().2,
+        |f| f.mesh.orifice_elements,
+        |f, v| f.mesh.orifice_elements = v,
+    ),
+    (
+        "mesh.pad_radial_elements",
+        "Pad layers (thermal)",
+        Fidelity::pad_radial_elements,
+        |f| f.mesh.pad_radial_elements,
+        |f, v| f.mesh.pad_radial_elements = v,
+    ),
 ];
 
 pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
@@ -309,8 +371,16 @@ pub fn fidelity_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     for (key, label, level, get, set) in COUNTS {
         let num = Num { key, label, decimals: 0 };
-        let default = if key == "mesh.circumferential_elements" { fid.circumferential_elements(longest_arc) } else { level(fid) };
-        out.merge(optional_ui(ui, doc, &num, default as f64, |f| get(f).map(|v| v as f64), |f, v| set(f, v.map(|x| x.round().max(0.0) as usize))));
+        let default =
+            if key == "mesh.circumferential_elements" { fid.circumferential_elements(longest_arc) } else { level(fid) };
+        out.merge(optional_ui(
+            ui,
+            doc,
+            &num,
+            default as f64,
+            |f| get(f).map(|v| v as f64),
+            |f, v| set(f, v.map(|x| x.round().max(0.0) as usize)),
+        ));
     }
     let budget = Num { key: "mesh.max_nodes", label: "Node budget", decimals: 0 };
     #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation, clippy::cast_sign_loss)]

@@ -64,7 +64,9 @@ const ROWS: [OptionalRow; 12] = [
         set: |f, v| f.thermal.pad_expansion_ppm_per_k = v,
     },
     OptionalRow {
-        num: Num { key: "thermal.journal_expansion_ppm_per_k", label: "Journal expansion α [10⁻⁶/K]", decimals: 1 },
+        num: Num {
+            key: "thermal.journal_expansion_ppm_per_k", label: "Journal expansion α [10⁻⁶/K]", decimals: 1
+        },
         default: |_| 0.0,
         get: |f| f.thermal.journal_expansion_ppm_per_k,
         set: |f, v| f.thermal.journal_expansion_ppm_per_k = v,
@@ -76,7 +78,9 @@ const ROWS: [OptionalRow; 12] = [
         set: |f, v| f.thermal.reference_temperature_c = v,
     },
     OptionalRow {
-        num: Num { key: "thermal.housing_expansion_ppm_per_k", label: "Housing expansion α [10⁻⁶/K]", decimals: 1 },
+        num: Num {
+            key: "thermal.housing_expansion_ppm_per_k", label: "Housing expansion α [10⁻⁶/K]", decimals: 1
+        },
         default: |_| 0.0,
         get: |f| f.thermal.housing_expansion_ppm_per_k,
         set: |f, v| f.thermal.housing_expansion_ppm_per_k = v,
@@ -91,7 +95,8 @@ const ROWS: [OptionalRow; 12] = [
 
 pub fn thermal_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let t = &doc.file().thermal;
-    let (model, bc, cav) = (t.model.unwrap_or_default(), t.pad_film_bc.unwrap_or_default(), t.cavitated_film.unwrap_or_default());
+    let (model, bc, cav) =
+        (t.model.unwrap_or_default(), t.pad_film_bc.unwrap_or_default(), t.cavitated_film.unwrap_or_default());
     let mut out = choice_ui(
         ui,
         doc,
@@ -108,7 +113,11 @@ pub fn thermal_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         doc,
         Pick { key: "thermal.pad_film_bc", label: "Film–pad condition", tip: None },
         bc,
-        &[(PadFilmBcFile::Bc1, "BC1 — adiabatic film"), (PadFilmBcFile::Bc2, "BC2 — exchange coefficient"), (PadFilmBcFile::Bc3, "BC3 — Knight & Barrett parabola")],
+        &[
+            (PadFilmBcFile::Bc1, "BC1 — adiabatic film"),
+            (PadFilmBcFile::Bc2, "BC2 — exchange coefficient"),
+            (PadFilmBcFile::Bc3, "BC3 — Knight & Barrett parabola"),
+        ],
         |f, b| f.thermal.pad_film_bc = Some(b),
     ));
     out.merge(choice_ui(

@@ -37,7 +37,9 @@ pub fn key_tooltip(key: &str) -> String {
     match schema_row(key) {
         Some(s) => {
             let unit = if s.unit.is_empty() { String::new() } else { format!(" {}", s.unit) };
-            let typical = s.typical.map_or_else(String::new, |(lo, hi)| format!("Typical: {} – {}{unit}\n", sig(lo, 6), sig(hi, 6)));
+            let typical = s
+                .typical
+                .map_or_else(String::new, |(lo, hi)| format!("Typical: {} – {}{unit}\n", sig(lo, 6), sig(hi, 6)));
             format!("{}\n\n{typical}Allowed: {}\nCase key: {key}", s.meaning, s.allowed.describe())
         }
         None => format!("Case key: {key}"),
@@ -145,13 +147,26 @@ pub fn flag_invalid_ui(ui: &mut Ui, invalid: bool) {
 }
 
 /// A drag value for `value`, labelled by `label`; returns what happened.
-fn drag_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, label: egui::Response, value: f64, set: impl FnOnce(&mut CaseFile, f64)) -> EditOutput {
+fn drag_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    n: &Num<'_>,
+    label: egui::Response,
+    value: f64,
+    set: impl FnOnce(&mut CaseFile, f64),
+) -> EditOutput {
     let mut v = value;
     let invalid = doc.error_for(n.key).is_some();
     let r = ui
         .scope(|ui| {
             flag_invalid_ui(ui, invalid);
-            ui.add(DragValue::new(&mut v).speed(n.speed()).max_decimals(n.decimals).min_decimals(0).update_while_editing(false))
+            ui.add(
+                DragValue::new(&mut v)
+                    .speed(n.speed())
+                    .max_decimals(n.decimals)
+                    .min_decimals(0)
+                    .update_while_editing(false),
+            )
         })
         .inner
         .labelled_by(label.id)
@@ -169,7 +184,13 @@ fn drag_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, label: egui::Response, 
 }
 
 /// A required number: label, value, unit, and the error in place.
-pub fn number_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, get: impl Fn(&CaseFile) -> f64, set: impl FnOnce(&mut CaseFile, f64)) -> EditOutput {
+pub fn number_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    n: &Num<'_>,
+    get: impl Fn(&CaseFile) -> f64,
+    set: impl FnOnce(&mut CaseFile, f64),
+) -> EditOutput {
     let label = label_ui(ui, n.label, &n.tooltip());
     let value = get(doc.file());
     let out = drag_ui(ui, doc, n, label, value, set);
@@ -193,7 +214,11 @@ pub fn optional_ui(
     let mut out = EditOutput::default();
     let label = ui
         .horizontal(|ui| {
-            if ui.checkbox(&mut on, "").on_hover_text(format!("Give {} explicitly (unchecked: {} {})", n.label, sig(default, 6), n.unit())).changed() {
+            if ui
+                .checkbox(&mut on, "")
+                .on_hover_text(format!("Give {} explicitly (unchecked: {} {})", n.label, sig(default, 6), n.unit()))
+                .changed()
+            {
                 let value = on.then(|| current.unwrap_or(default));
                 doc.edit(n.key, false, |f| set(f, value));
                 out.changed = true;
@@ -204,7 +229,8 @@ pub fn optional_ui(
     match get(doc.file()) {
         Some(v) => out.merge(drag_ui(ui, doc, n, label, v, |f, x| set(f, Some(x)))),
         None => {
-            let text = absent_meaning(n.key).map_or_else(|| format!("{} (default)", sig(default, 6)), |m| format!("{m} (default)"));
+            let text = absent_meaning(n.key)
+                .map_or_else(|| format!("{} (default)", sig(default, 6)), |m| format!("{m} (default)"));
             ui.label(RichText::new(text).weak()).labelled_by(label.id);
         }
     }
@@ -226,7 +252,15 @@ fn absent_meaning(key: &str) -> Option<&'static str> {
 }
 
 /// An integer count (pads, elements); `note` adds what the editor does on a change to the schema's tooltip.
-pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, note: &str, value: usize, set: impl FnOnce(&mut CaseFile, usize)) -> EditOutput {
+pub fn count_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    key: &'static str,
+    text: &str,
+    note: &str,
+    value: usize,
+    set: impl FnOnce(&mut CaseFile, usize),
+) -> EditOutput {
     let tip = format!("{}\n\n{note}", key_tooltip(key));
     let label = label_ui(ui, text, &tip);
     let mut v = value;
@@ -251,7 +285,13 @@ pub fn count_ui(ui: &mut Ui, doc: &mut Document, key: &'static str, text: &str, 
 }
 
 /// A list of one number per pad, in a wrapping row of small fields named "pad k".
-pub fn per_pad_ui(ui: &mut Ui, doc: &mut Document, n: &Num<'_>, values: &[f64], set: impl Fn(&mut CaseFile, usize, f64)) -> EditOutput {
+pub fn per_pad_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    n: &Num<'_>,
+    values: &[f64],
+    set: impl Fn(&mut CaseFile, usize, f64),
+) -> EditOutput {
     let mut out = EditOutput::default();
     label_ui(ui, n.label, &n.tooltip());
     ui.horizontal_wrapped(|ui| {
@@ -276,20 +316,29 @@ pub struct Pick {
 }
 
 /// A choice among named options.
-pub fn choice_ui<T: PartialEq + Copy>(ui: &mut Ui, doc: &mut Document, pick: Pick, current: T, options: &[(T, &str)], set: impl FnOnce(&mut CaseFile, T)) -> EditOutput {
+pub fn choice_ui<T: PartialEq + Copy>(
+    ui: &mut Ui,
+    doc: &mut Document,
+    pick: Pick,
+    current: T,
+    options: &[(T, &str)],
+    set: impl FnOnce(&mut CaseFile, T),
+) -> EditOutput {
     let Pick { key, label: text, tip } = pick;
     let tip = tip.map_or_else(|| key_tooltip(key), str::to_string);
     let label = label_ui(ui, text, &tip);
     let mut chosen = current;
     let name = options.iter().find(|o| o.0 == current).map_or("?", |o| o.1);
-    egui::ComboBox::from_id_salt(key).selected_text(name).show_ui(ui, |ui| {
-        for (value, name) in options {
-            ui.selectable_value(&mut chosen, *value, *name);
-        }
-    })
-    .response
-    .labelled_by(label.id)
-    .on_hover_text(&tip);
+    egui::ComboBox::from_id_salt(key)
+        .selected_text(name)
+        .show_ui(ui, |ui| {
+            for (value, name) in options {
+                ui.selectable_value(&mut chosen, *value, *name);
+            }
+        })
+        .response
+        .labelled_by(label.id)
+        .on_hover_text(&tip);
     let mut out = EditOutput::default();
     if chosen != current {
         doc.edit(key, false, |f| set(f, chosen));

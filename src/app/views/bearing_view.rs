@@ -60,7 +60,11 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
     let dir = (to - from).normalized();
     let n = Vec2::new(-dir.y, dir.x);
     let head = 10.0;
-    painter.add(Shape::convex_polygon(vec![to, to - dir * head + n * head * 0.45, to - dir * head - n * head * 0.45], stroke.color, Stroke::NONE));
+    painter.add(Shape::convex_polygon(
+        vec![to, to - dir * head + n * head * 0.45, to - dir * head - n * head * 0.45],
+        stroke.color,
+        Stroke::NONE,
+    ));
 }
 
 /// The "Lock scales" toggle: locked, the film exaggeration and the pressure scale stay those of the
@@ -71,7 +75,11 @@ pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineSc
         Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, l.pressure_scale_pa * 1e-6),
         None => "Lock scales".to_string(),
     };
-    if ui.checkbox(&mut locked, text).on_hover_text("Keep the film exaggeration and the pressure scale fixed across edits, so two pictures compare.").changed() {
+    if ui
+        .checkbox(&mut locked, text)
+        .on_hover_text("Keep the film exaggeration and the pressure scale fixed across edits, so two pictures compare.")
+        .changed()
+    {
         *lock = locked.then_some(current);
     }
 }
@@ -80,12 +88,25 @@ pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineSc
 /// `checks`: the solution's design-limit checks (exceeded ones are listed, h_min below its limit marked).
 /// `pinned`: a pinned result's name and outline (at the same scales), drawn dashed over the live one.
 #[allow(clippy::too_many_lines)]
-pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], checks: &[Check], stale: bool, pinned: Option<(&str, &BearingOutline)>) {
+pub fn bearing_view_ui(
+    ui: &mut Ui,
+    outline: &BearingOutline,
+    pads: &[PadRow],
+    checks: &[Check],
+    stale: bool,
+    pinned: Option<(&str, &BearingOutline)>,
+) {
     // Scale and colour notes, as text a screen reader finds.
     ui.label(format!("To scale, except film thickness and journal displacement × {}", outline.exaggeration));
     ui.horizontal_wrapped(|ui| {
         if outline.pressure_scale_pa > 0.0 {
-            ui.colored_label(Color32::from_rgb(255, 160, 60), format!("Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)", outline.pressure_scale_pa * 1e-6));
+            ui.colored_label(
+                Color32::from_rgb(255, 160, 60),
+                format!(
+                    "Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)",
+                    outline.pressure_scale_pa * 1e-6
+                ),
+            );
         }
         ui.colored_label(H_MIN, "Minimum film thickness of each pad");
         ui.colored_label(LOAD, "Static load W");
@@ -100,7 +121,10 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
         }
     });
     for c in checks.iter().filter(|c| c.exceeded) {
-        ui.colored_label(super::limits_view::EXCEEDED, format!("Exceeds design limit: {}", crate::scene::limits::text(c)));
+        ui.colored_label(
+            super::limits_view::EXCEEDED,
+            format!("Exceeds design limit: {}", crate::scene::limits::text(c)),
+        );
     }
     let film_limit = checks.iter().find(|c| c.kind == LimitKind::MinFilmThickness).map_or(0.0, |c| c.limit);
     let size = ui.available_size();
@@ -124,10 +148,12 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
     // Screen points: f32 precision is what the painter draws with.
     #[allow(clippy::cast_possible_truncation)]
     let r_rot = 0.22 * to_screen.points_per_m * outline.journal_radius_m as f32;
-    let arc: Vec<Pos2> = (0..=24).map(|i| {
-        let a = 0.35 + 1.1 * std::f32::consts::PI * i as f32 / 24.0;
-        jc + Vec2::new(a.cos(), -a.sin()) * r_rot
-    }).collect();
+    let arc: Vec<Pos2> = (0..=24)
+        .map(|i| {
+            let a = 0.35 + 1.1 * std::f32::consts::PI * i as f32 / 24.0;
+            jc + Vec2::new(a.cos(), -a.sin()) * r_rot
+        })
+        .collect();
     painter.add(Shape::line(arc.clone(), Stroke::new(1.5, Color32::from_gray(220))));
     if let [.., a, b] = arc.as_slice() {
         arrow(&painter, *a, *b + (*b - *a) * 0.01, Stroke::new(1.5, Color32::from_gray(220)));
@@ -159,14 +185,26 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
             let tri = map(&pad.pivot);
             painter.add(Shape::convex_polygon(tri, Color32::from_gray(70), Stroke::new(1.0, Color32::from_gray(20))));
         }
-        painter.text(to_screen.map(pad.label_at), Align2::CENTER_CENTER, pad.index.to_string(), font.clone(), Color32::BLACK);
+        painter.text(
+            to_screen.map(pad.label_at),
+            Align2::CENTER_CENTER,
+            pad.index.to_string(),
+            font.clone(),
+            Color32::BLACK,
+        );
         if let Some((j, p, h)) = pad.h_min {
             let (a, b) = (to_screen.map(j), to_screen.map(p));
             painter.line_segment([a, b], Stroke::new(2.5, H_MIN));
             painter.circle_filled(a, 2.5, H_MIN);
             let away = (b - jc).normalized();
             let below = if h < film_limit { " < limit" } else { "" };
-            painter.text(b + away * 30.0, Align2::CENTER_CENTER, format!("{:.1} µm{below}", h * 1e6), FontId::proportional(11.0), H_MIN);
+            painter.text(
+                b + away * 30.0,
+                Align2::CENTER_CENTER,
+                format!("{:.1} µm{below}", h * 1e6),
+                FontId::proportional(11.0),
+                H_MIN,
+            );
         }
     }
     if let Some((_, p)) = pinned {
@@ -174,7 +212,11 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
     }
     // Hovering a pad shows its results.
     if let Some(pos) = response.hover_pos() {
-        let near = outline.pads.iter().map(|p| (p.index, to_screen.map(p.label_at).distance(pos))).min_by(|a, b| a.1.total_cmp(&b.1));
+        let near = outline
+            .pads
+            .iter()
+            .map(|p| (p.index, to_screen.map(p.label_at).distance(pos)))
+            .min_by(|a, b| a.1.total_cmp(&b.1));
         if let Some((k, _)) = near.filter(|n| n.1 < 40.0) {
             if let Some(row) = pads.iter().find(|r| r.index == k) {
                 let tilt = row.tilt_mrad.map_or("fixed sector".into(), |t| format!("tilt {t:.4} mrad"));
@@ -195,7 +237,6 @@ pub fn bearing_view_ui(ui: &mut Ui, outline: &BearingOutline, pads: &[PadRow], c
         arrow(&painter, a, b, Stroke::new(3.0, LOAD));
         load_label(&painter, (a, b), &format!("W = {w:.0} N"), font.clone());
     }
-
 }
 
 /// The load's label beside the middle of its arrow `a → b` (at the tip it lay on the pressure fill), on a

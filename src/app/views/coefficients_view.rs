@@ -33,7 +33,14 @@ struct PlotSpec<'a> {
 }
 
 /// `pinned`: a pinned result's name and series, drawn thin and faint in the same colours.
-fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Series], current: Option<(f64, [f64; 4])>, pinned: Option<(&str, &[crate::scene::plots::Series])>, height: f32) {
+fn plot_ui(
+    ui: &mut Ui,
+    spec: &PlotSpec<'_>,
+    series: &[crate::scene::plots::Series],
+    current: Option<(f64, [f64; 4])>,
+    pinned: Option<(&str, &[crate::scene::plots::Series])>,
+    height: f32,
+) {
     let PlotSpec { id, title, unit, x_label } = *spec;
     ui.label(RichText::new(format!("{title} [{unit}]")).strong());
     Plot::new(id)
@@ -56,13 +63,20 @@ fn plot_ui(ui: &mut Ui, spec: &PlotSpec<'_>, series: &[crate::scene::plots::Seri
             if let Some((name, pinned)) = pinned {
                 for (s, color) in pinned.iter().zip(COLORS) {
                     let faint = color.gamma_multiply(0.55);
-                    p.line(Line::new(format!("{} (pinned \"{name}\")", s.name), s.points.clone()).color(faint).width(3.0).style(LineStyle::Dashed { length: 12.0 }));
+                    p.line(
+                        Line::new(format!("{} (pinned \"{name}\")", s.name), s.points.clone())
+                            .color(faint)
+                            .width(3.0)
+                            .style(LineStyle::Dashed { length: 12.0 }),
+                    );
                 }
             }
             if let Some((x, values)) = current {
                 p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
                 for (v, color) in values.iter().zip(COLORS) {
-                    p.points(Points::new("this case", vec![[x, *v]]).color(color).shape(MarkerShape::Diamond).radius(6.0));
+                    p.points(
+                        Points::new("this case", vec![[x, *v]]).color(color).shape(MarkerShape::Diamond).radius(6.0),
+                    );
                 }
             }
         });
@@ -81,7 +95,11 @@ fn round_grid(input: GridInput) -> Vec<GridMark> {
     let minor = step / 5.0;
     let (first, last) = ((lo / minor).ceil() as i64, (hi / minor).floor() as i64);
     let minors = (first..=last).map(|k| k as f64 * minor).filter(|v| ((v / step) - (v / step).round()).abs() > 1e-6);
-    ticks.iter().map(|&value| GridMark { value, step_size: step }).chain(minors.map(|value| GridMark { value, step_size: minor })).collect()
+    ticks
+        .iter()
+        .map(|&value| GridMark { value, step_size: step })
+        .chain(minors.map(|value| GridMark { value, step_size: minor }))
+        .collect()
 }
 
 /// The two plots.
@@ -91,8 +109,22 @@ pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot, pinned: Option<
     let spec = |id, title, unit| PlotSpec { id, title, unit, x_label: plot.x_label };
     let stiffness = pinned.map(|(n, p)| (n, p.stiffness.as_slice()));
     let damping = pinned.map(|(n, p)| (n, p.damping.as_slice()));
-    plot_ui(ui, &spec("stiffness", "Reduced stiffness K", "MN/m"), &plot.stiffness, plot.current.map(|c| (c.0, c.1)), stiffness, h);
-    plot_ui(ui, &spec("damping", "Reduced damping C", "kN·s/m"), &plot.damping, plot.current.map(|c| (c.0, c.2)), damping, h);
+    plot_ui(
+        ui,
+        &spec("stiffness", "Reduced stiffness K", "MN/m"),
+        &plot.stiffness,
+        plot.current.map(|c| (c.0, c.1)),
+        stiffness,
+        h,
+    );
+    plot_ui(
+        ui,
+        &spec("damping", "Reduced damping C", "kN·s/m"),
+        &plot.damping,
+        plot.current.map(|c| (c.0, c.2)),
+        damping,
+        h,
+    );
     if let Some((name, _)) = pinned {
         ui.label(RichText::new(format!("Wide faint dashed curves: pinned \"{name}\".")).small());
     }

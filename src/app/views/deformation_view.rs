@@ -9,7 +9,10 @@
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use egui::{Align2, Color32, ColorImage, FontId, Pos2, Rect, RichText, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
+use egui::{
+    Align2, Color32, ColorImage, FontId, Pos2, Rect, RichText, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui,
+    Vec2,
+};
 
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
@@ -64,7 +67,8 @@ impl DeformationView {
         let thermal = solution.pads.get(pad).is_some_and(|p| p.thermal_growth.is_some());
         let same = |d: &PadDeformation| d.shown == shown || (!thermal && d.shown == Displacement::Mechanical);
         if !self.scene.as_ref().is_some_and(|(p, e, d)| *p == pad && *e == self.exaggeration && same(d)) {
-            self.scene = PadDeformation::new(solution, pad, self.exaggeration, shown).map(|d| (pad, self.exaggeration, d));
+            self.scene =
+                PadDeformation::new(solution, pad, self.exaggeration, shown).map(|d| (pad, self.exaggeration, d));
             // The maps' textures hold the previous displacement.
             self.textures.clear();
         }
@@ -109,9 +113,16 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
         ui.label(format!("Pad {pad}: its deformation cannot be drawn (the mode shapes do not match the pad's grid)."));
         return;
     };
-    let modes: Vec<String> =
-        scene.modes.iter().map(|m| format!("mode {} at {} Hz ({} µm)", m.mode + 1, sig4(m.frequency_hz), sig4(m.amplitude_m * MICRONS))).collect();
-    let retained = if modes.is_empty() { "no bending modes (rigid pads)".to_string() } else { format!("retained {}", modes.join(", ")) };
+    let modes: Vec<String> = scene
+        .modes
+        .iter()
+        .map(|m| format!("mode {} at {} Hz ({} µm)", m.mode + 1, sig4(m.frequency_hz), sig4(m.amplitude_m * MICRONS)))
+        .collect();
+    let retained = if modes.is_empty() {
+        "no bending modes (rigid pads)".to_string()
+    } else {
+        format!("retained {}", modes.join(", "))
+    };
     ui.label(format!("Pad {pad}: mid-plane section drawn ×{}; {retained}", sig4(scene.exaggeration)));
     let full = ui.available_rect_before_wrap();
     let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, 44.0));
@@ -120,14 +131,18 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     let hover_pos = response.hover_pos();
     let top_h = avail.height() * 0.62;
     let section_rect = Rect::from_min_size(avail.min, Vec2::new(avail.width() * 0.42, top_h));
-    let maps_rect = Rect::from_min_max(Pos2::new(section_rect.right() + 12.0, avail.top()), Pos2::new(avail.right(), avail.top() + top_h));
+    let maps_rect = Rect::from_min_max(
+        Pos2::new(section_rect.right() + 12.0, avail.top()),
+        Pos2::new(avail.right(), avail.top() + top_h),
+    );
     let gallery_rect = Rect::from_min_max(Pos2::new(avail.left(), avail.top() + top_h + 8.0), avail.max);
 
     let u = &scene.displacement;
     let range = symmetric(u.min, u.max);
     let kind = scene.shown.label().to_lowercase();
     let title = format!("Pad {pad} at mid-plane — {kind} deformation ×{}", sig4(scene.exaggeration));
-    let mut hover = section_ui(&painter, section_rect, &scene.section, range, hover_pos, &title, ui.visuals().text_color());
+    let mut hover =
+        section_ui(&painter, section_rect, &scene.section, range, hover_pos, &title, ui.visuals().text_color());
     hover = hover.or(maps_ui(ui, view, &painter, maps_rect, &scene, range, hover_pos));
     hover = hover.or(gallery_ui(ui, view, &painter, gallery_rect, &scene, hover_pos));
     let line = match hover {
@@ -227,12 +242,21 @@ impl ScreenFromSection {
 
     #[allow(clippy::cast_possible_truncation)]
     fn map(&self, p: [f64; 2]) -> Pos2 {
-        self.origin + Vec2::new(((p[0] - self.centre[0]) * self.scale) as f32, (-(p[1] - self.centre[1]) * self.scale) as f32)
+        self.origin
+            + Vec2::new(((p[0] - self.centre[0]) * self.scale) as f32, (-(p[1] - self.centre[1]) * self.scale) as f32)
     }
 }
 
 /// Paints a section (grey undeformed outline, deformed outline coloured by u_r); the hover under `hover_pos`.
-fn section_ui(painter: &egui::Painter, rect: Rect, section: &Section, range: (f64, f64), hover_pos: Option<Pos2>, title: &str, text: Color32) -> Option<Hover> {
+fn section_ui(
+    painter: &egui::Painter,
+    rect: Rect,
+    section: &Section,
+    range: (f64, f64),
+    hover_pos: Option<Pos2>,
+    title: &str,
+    text: Color32,
+) -> Option<Hover> {
     painter.text(rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text);
     let inner = rect.shrink2(Vec2::new(10.0, 22.0));
     let all: Vec<[f64; 2]> = section.rigid.iter().chain(&section.deformed).copied().collect();
@@ -248,7 +272,11 @@ fn section_ui(painter: &egui::Painter, rect: Rect, section: &Section, range: (f6
     }
     // The pivot: a wedge on the back of the pad.
     let pivot = frame.map(section.pivot);
-    painter.add(Shape::convex_polygon(vec![pivot, pivot + Vec2::new(7.0, -12.0), pivot + Vec2::new(-7.0, -12.0)], Color32::from_gray(120), Stroke::NONE));
+    painter.add(Shape::convex_polygon(
+        vec![pivot, pivot + Vec2::new(7.0, -12.0), pivot + Vec2::new(-7.0, -12.0)],
+        Color32::from_gray(120),
+        Stroke::NONE,
+    ));
     if let (Some(first), Some(last)) = (deformed.first(), deformed.get(section.film_face.saturating_sub(1))) {
         let small = FontId::proportional(11.0);
         painter.text(*first + Vec2::new(-4.0, 4.0), Align2::RIGHT_TOP, "LE", small.clone(), text);
@@ -264,7 +292,13 @@ fn section_ui(painter: &egui::Painter, rect: Rect, section: &Section, range: (f6
 }
 
 /// Rasterises `map` on `range` once per pad and name.
-fn texture(ui: &Ui, view: &mut DeformationView, name: &'static str, map: &PadMap, range: (f64, f64)) -> egui::TextureId {
+fn texture(
+    ui: &Ui,
+    view: &mut DeformationView,
+    name: &'static str,
+    map: &PadMap,
+    range: (f64, f64),
+) -> egui::TextureId {
     view.textures
         .entry((map.pad, name))
         .or_insert_with(|| {
@@ -285,7 +319,14 @@ struct MapSpec<'a> {
 
 /// Paints an unwrapped map into `rect` (to scale, centred) with its title; the value under the cursor.
 #[allow(clippy::cast_possible_truncation)]
-fn map_ui(ui: &Ui, view: &mut DeformationView, painter: &egui::Painter, rect: Rect, spec: &MapSpec<'_>, hover_pos: Option<Pos2>) -> Option<Hover> {
+fn map_ui(
+    ui: &Ui,
+    view: &mut DeformationView,
+    painter: &egui::Painter,
+    rect: Rect,
+    spec: &MapSpec<'_>,
+    hover_pos: Option<Pos2>,
+) -> Option<Hover> {
     let MapSpec { map, name, title, range } = *spec;
     let text = ui.visuals().text_color();
     painter.text(rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text);
@@ -302,25 +343,42 @@ fn map_ui(ui: &Ui, view: &mut DeformationView, painter: &egui::Painter, rect: Re
     let pos = hover_pos.filter(|p| r.contains(*p))?;
     let s = f64::from((pos.x - r.left()) / r.width()) * arc;
     let z = map.z_m[0] + f64::from((r.bottom() - pos.y) / r.height()) * len;
-    map.sample(s, z).map(|v| Hover { what: format!("{title} at θ = {:.1}°, z = {:+.1} mm", map.theta_deg(s).rem_euclid(360.0), z * 1e3), value_m: v })
+    map.sample(s, z).map(|v| Hover {
+        what: format!("{title} at θ = {:.1}°, z = {:+.1} mm", map.theta_deg(s).rem_euclid(360.0), z * 1e3),
+        value_m: v,
+    })
 }
 
 /// The displacement map and the film maps with their colour bars.
-fn maps_ui(ui: &Ui, view: &mut DeformationView, painter: &egui::Painter, rect: Rect, scene: &PadDeformation, range: (f64, f64), hover_pos: Option<Pos2>) -> Option<Hover> {
+fn maps_ui(
+    ui: &Ui,
+    view: &mut DeformationView,
+    painter: &egui::Painter,
+    rect: Rect,
+    scene: &PadDeformation,
+    range: (f64, f64),
+    hover_pos: Option<Pos2>,
+) -> Option<Hover> {
     let text = ui.visuals().text_color();
     let bar_w = 70.0;
     let body = Rect::from_min_max(rect.min, rect.max - Vec2::new(bar_w, 0.0));
     let half = body.height() * 0.5;
     let upper = Rect::from_min_size(body.min, Vec2::new(body.width(), half));
     let lower = Rect::from_min_max(Pos2::new(body.left(), body.top() + half), body.max);
-    let bar = |r: Rect| Rect::from_min_max(Pos2::new(rect.right() - bar_w + 8.0, r.top() + 24.0), Pos2::new(rect.right() - bar_w + 22.0, r.bottom() - 10.0));
+    let bar = |r: Rect| {
+        Rect::from_min_max(
+            Pos2::new(rect.right() - bar_w + 8.0, r.top() + 24.0),
+            Pos2::new(rect.right() - bar_w + 22.0, r.bottom() - 10.0),
+        )
+    };
     let u_title = format!("Film-face radial displacement u ({})", scene.shown.label().to_lowercase());
     let u = MapSpec { map: &scene.displacement, name: "u", title: &u_title, range };
     let mut hover = map_ui(ui, view, painter, upper, &u, hover_pos);
     colour_bar(painter, bar(upper), ColorMap::Viridis, "u [µm]", MICRONS, range, text);
     match view.films {
         FilmMaps::SideBySide => {
-            let h = (scene.film_flexible.min.min(scene.film_rigid.min), scene.film_flexible.max.max(scene.film_rigid.max));
+            let h =
+                (scene.film_flexible.min.min(scene.film_rigid.min), scene.film_flexible.max.max(scene.film_rigid.max));
             let w = lower.width() * 0.5;
             let left = Rect::from_min_size(lower.min, Vec2::new(w, lower.height()));
             let right = Rect::from_min_max(Pos2::new(lower.left() + w, lower.top()), lower.max);
@@ -344,22 +402,46 @@ const MODE_NAMES: [&str; 6] = ["mode-1", "mode-2", "mode-3", "mode-4", "mode-5",
 
 /// One tile per retained mode: its section (own exaggeration), frequency and film-face shape.
 #[allow(clippy::cast_precision_loss)]
-fn gallery_ui(ui: &Ui, view: &mut DeformationView, painter: &egui::Painter, rect: Rect, scene: &PadDeformation, hover_pos: Option<Pos2>) -> Option<Hover> {
+fn gallery_ui(
+    ui: &Ui,
+    view: &mut DeformationView,
+    painter: &egui::Painter,
+    rect: Rect,
+    scene: &PadDeformation,
+    hover_pos: Option<Pos2>,
+) -> Option<Hover> {
     let text = ui.visuals().text_color();
-    painter.text(rect.left_top(), Align2::LEFT_TOP, "Retained bending modes (on the pivot; each shape drawn with its peak at 15 % of the thickness)", FontId::proportional(12.0), text);
+    painter.text(
+        rect.left_top(),
+        Align2::LEFT_TOP,
+        "Retained bending modes (on the pivot; each shape drawn with its peak at 15 % of the thickness)",
+        FontId::proportional(12.0),
+        text,
+    );
     let body = Rect::from_min_max(rect.min + Vec2::new(0.0, 18.0), rect.max);
     let w = body.width() / scene.modes.len().max(1) as f32;
     let mut hover = None;
     for (k, tile) in scene.modes.iter().enumerate() {
         let r = Rect::from_min_size(body.min + Vec2::new(w * k as f32, 0.0), Vec2::new(w - 8.0, body.height()));
         painter.rect_stroke(r, 4.0, Stroke::new(1.0, Color32::from_gray(90)), egui::StrokeKind::Inside);
-        let title = format!("Mode {}: {} Hz, amplitude {} µm", tile.mode + 1, sig4(tile.frequency_hz), sig4(tile.amplitude_m * MICRONS));
+        let title = format!(
+            "Mode {}: {} Hz, amplitude {} µm",
+            tile.mode + 1,
+            sig4(tile.frequency_hz),
+            sig4(tile.amplitude_m * MICRONS)
+        );
         let range = symmetric(tile.shape.min, tile.shape.max);
         let upper = Rect::from_min_max(r.min, Pos2::new(r.right(), r.top() + r.height() * 0.6));
         let lower = Rect::from_min_max(Pos2::new(r.left(), upper.bottom()), r.max);
         // Shapes are per unit amplitude: hover reads the mode's part of the deformation at its solved amplitude.
-        let at_amplitude = |h: Hover| Hover { what: format!("{} (mode {} at its solved amplitude)", h.what, tile.mode + 1), value_m: h.value_m * tile.amplitude_m };
-        hover = hover.or(section_ui(painter, upper.shrink(4.0), &tile.section, range, hover_pos, &title, text).map(at_amplitude));
+        let at_amplitude = |h: Hover| Hover {
+            what: format!("{} (mode {} at its solved amplitude)", h.what, tile.mode + 1),
+            value_m: h.value_m * tile.amplitude_m,
+        };
+        hover =
+            hover
+                .or(section_ui(painter, upper.shrink(4.0), &tile.section, range, hover_pos, &title, text)
+                    .map(at_amplitude));
         let shape_title = format!("Mode {} film-face shape", tile.mode + 1);
         let name = MODE_NAMES.get(tile.mode).copied().unwrap_or("mode-n");
         let spec = MapSpec { map: &tile.shape, name, title: &shape_title, range };

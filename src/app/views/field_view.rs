@@ -11,13 +11,18 @@
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use egui::{Align2, Color32, RichText, ColorImage, FontId, Pos2, Rect, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui, Vec2};
+use egui::{
+    Align2, Color32, ColorImage, FontId, Pos2, Rect, RichText, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui,
+    Vec2,
+};
 
 use crate::app::state::PadChoice;
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
 use crate::scene::field::{common_range, nice_ticks, FieldKind, PadMap};
-use crate::scene::field_compare::{difference_maps, drawn_range, lock_for, set_lock, shared_range, FieldScaleLock, Mismatch};
+use crate::scene::field_compare::{
+    difference_maps, drawn_range, lock_for, set_lock, shared_range, FieldScaleLock, Mismatch,
+};
 use crate::scene::flowlines::{arrow_phase, arrowheads, orifice_sites, pad_flowlines, Flowline, FlowlineParams};
 use crate::scene::summary::sig4;
 
@@ -81,7 +86,12 @@ impl FieldCache {
     }
 
     /// The difference maps of `kind` (computed once per pair of results).
-    fn difference(&mut self, live: &Solution, pinned: &Solution, kind: FieldKind) -> Result<(Vec<PadMap>, (f64, f64)), Mismatch> {
+    fn difference(
+        &mut self,
+        live: &Solution,
+        pinned: &Solution,
+        kind: FieldKind,
+    ) -> Result<(Vec<PadMap>, (f64, f64)), Mismatch> {
         if let Some(m) = self.mismatch.get(&kind) {
             return Err(m.clone());
         }
@@ -176,7 +186,11 @@ impl ScreenFromPad {
 
 /// The panels to draw, the colour map and its automatic range, and a note when the comparison asked for
 /// cannot be drawn.
-fn panels<'a>(cache: &mut FieldCache, solution: &'a Solution, opts: &FieldOptions<'a>) -> (Vec<Panel<'a>>, ColorMap, (f64, f64), Option<String>) {
+fn panels<'a>(
+    cache: &mut FieldCache,
+    solution: &'a Solution,
+    opts: &FieldOptions<'a>,
+) -> (Vec<Panel<'a>>, ColorMap, (f64, f64), Option<String>) {
     let kind = opts.kind;
     let select = |maps: &[PadMap]| -> Vec<PadMap> {
         match opts.pads {
@@ -198,19 +212,31 @@ fn panels<'a>(cache: &mut FieldCache, solution: &'a Solution, opts: &FieldOption
             let (pinned, pinned_range) = cache.pinned.maps(pin, kind).clone();
             let pinned = select(&pinned);
             if pinned.is_empty() {
-                return alone(Some(format!("The pinned result \"{name}\" has no {}.", kind.label().to_lowercase())), live);
+                return alone(
+                    Some(format!("The pinned result \"{name}\" has no {}.", kind.label().to_lowercase())),
+                    live,
+                );
             }
             let range = shared_range(own(&live, live_range), own(&pinned, pinned_range));
             let panels = vec![
                 Panel { source: Source::Live, title: Some("Live".into()), maps: live, solution },
-                Panel { source: Source::Pinned, title: Some(format!("Pinned \"{name}\"")), maps: pinned, solution: pin },
+                Panel {
+                    source: Source::Pinned,
+                    title: Some(format!("Pinned \"{name}\"")),
+                    maps: pinned,
+                    solution: pin,
+                },
             ];
             (panels, kind.colormap(), range, None)
         }
         Some((name, pin, FieldCompare::Difference)) => match cache.difference(solution, pin, kind) {
             Ok((d, range)) => {
                 let d = select(&d);
-                let range = if d.len() == 1 { (-d[0].min.abs().max(d[0].max.abs()), d[0].min.abs().max(d[0].max.abs())) } else { range };
+                let range = if d.len() == 1 {
+                    (-d[0].min.abs().max(d[0].max.abs()), d[0].min.abs().max(d[0].max.abs()))
+                } else {
+                    range
+                };
                 let title = Some(format!("Live − pinned \"{name}\""));
                 (vec![Panel { source: Source::Difference, title, maps: d, solution }], ColorMap::Diverging, range, None)
             }
@@ -235,7 +261,12 @@ fn lock_ui(ui: &mut Ui, locks: &mut Vec<FieldScaleLock>, kind: FieldKind, range:
 }
 
 /// Draws the field view; returns the hover readout, if any.
-pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solution>, opts: FieldOptions<'_>) -> Option<Readout> {
+pub fn field_view_ui(
+    ui: &mut Ui,
+    cache: &mut FieldCache,
+    solution: &Arc<Solution>,
+    opts: FieldOptions<'_>,
+) -> Option<Readout> {
     cache.sync(solution, opts.pinned.map(|p| p.1));
     let kind = opts.kind;
     let (panels, colormap, auto, note) = panels(cache, solution, &opts);
@@ -255,7 +286,10 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         ui.colored_label(Color32::from_rgb(230, 150, 60), n);
     }
     let (unit, scale) = kind.unit();
-    ui.label(RichText::new("Rotation: left to right (s along the arc from the leading edge; z axial, +L/2 at the top)").small());
+    ui.label(
+        RichText::new("Rotation: left to right (s along the arc from the leading edge; z axial, +L/2 at the top)")
+            .small(),
+    );
     let full = ui.available_rect_before_wrap();
     // The painted area; the readout is a real label below it (readable by screen readers and tests).
     let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, 48.0));
@@ -277,20 +311,46 @@ pub fn field_view_ui(ui: &mut Ui, cache: &mut FieldCache, solution: &Arc<Solutio
         let left = area.left() + k as f32 * (width + gap);
         let rect = Rect::from_min_max(Pos2::new(left, area.top() + title_h), Pos2::new(left + width, area.bottom()));
         if let Some(t) = &panel.title {
-            painter.text(Pos2::new(rect.center().x, area.top() - 4.0), Align2::CENTER_TOP, t, FontId::proportional(14.0), text);
+            painter.text(
+                Pos2::new(rect.center().x, area.top() - 4.0),
+                Align2::CENTER_TOP,
+                t,
+                FontId::proportional(14.0),
+                text,
+            );
         }
         let layer = match panel.source {
             Source::Live => &mut cache.live,
             Source::Pinned => &mut cache.pinned,
             Source::Difference => &mut cache.difference,
         };
-        let drawn = PanelDraw { painter: &painter, hover: response.hover_pos(), ctx: ui.ctx(), kind, colormap, range, flowlines: opts.flowlines && !difference, text };
+        let drawn = PanelDraw {
+            painter: &painter,
+            hover: response.hover_pos(),
+            ctx: ui.ctx(),
+            kind,
+            colormap,
+            range,
+            flowlines: opts.flowlines && !difference,
+            text,
+        };
         let (r, b) = drawn.panel(layer, rect, panel);
         readout = readout.or(r);
         bottom = bottom.max(b);
     }
     let title = if difference { format!("Δ {} [{unit}]", kind.label()) } else { format!("{} [{unit}]", kind.label()) };
-    colour_bar(&painter, Rect::from_min_max(Pos2::new(avail.right() - legend_w + 12.0, area.top() + title_h), Pos2::new(avail.right() - legend_w + 30.0, bottom)), colormap, &title, scale, range, text);
+    colour_bar(
+        &painter,
+        Rect::from_min_max(
+            Pos2::new(avail.right() - legend_w + 12.0, area.top() + title_h),
+            Pos2::new(avail.right() - legend_w + 30.0, bottom),
+        ),
+        colormap,
+        &title,
+        scale,
+        range,
+        text,
+    );
     let line = match &readout {
         Some(r) => format!(
             "{}Pad {}  θ = {:.1}°  z = {:+.1} mm   {} = {:.4} {unit}{}",
@@ -361,14 +421,39 @@ impl PanelDraw<'_> {
                     draw_flowline(painter, &frame, line, arrow_phase(k));
                 }
             }
-            painter.text(rect.center_top() - Vec2::new(0.0, 2.0), Align2::CENTER_BOTTOM, format!("Pad {}", map.pad), FontId::proportional(13.0), text);
-            painter.text(rect.left_bottom() + Vec2::new(0.0, 3.0), Align2::LEFT_TOP, format!("{:.0}°", map.theta_deg(0.0).rem_euclid(360.0)), small.clone(), text);
-            painter.text(rect.right_bottom() + Vec2::new(0.0, 3.0), Align2::RIGHT_TOP, format!("{:.0}°", map.theta_deg(map.arc_length_m()).rem_euclid(360.0)), small.clone(), text);
+            painter.text(
+                rect.center_top() - Vec2::new(0.0, 2.0),
+                Align2::CENTER_BOTTOM,
+                format!("Pad {}", map.pad),
+                FontId::proportional(13.0),
+                text,
+            );
+            painter.text(
+                rect.left_bottom() + Vec2::new(0.0, 3.0),
+                Align2::LEFT_TOP,
+                format!("{:.0}°", map.theta_deg(0.0).rem_euclid(360.0)),
+                small.clone(),
+                text,
+            );
+            painter.text(
+                rect.right_bottom() + Vec2::new(0.0, 3.0),
+                Align2::RIGHT_TOP,
+                format!("{:.0}°", map.theta_deg(map.arc_length_m()).rem_euclid(360.0)),
+                small.clone(),
+                text,
+            );
             if let Some(pos) = self.hover.filter(|p| rect.contains(*p)) {
                 let [s, z] = frame.unmap(pos);
                 if let Some(v) = map.sample(s, z) {
                     let theta_deg = map.theta_deg(s).rem_euclid(360.0);
-                    readout = Some(Readout { of, pad: map.pad, theta_deg, z_mm: z * 1e3, value: v * kind.unit().1, cavitated: map.cavitated_at(s, z) });
+                    readout = Some(Readout {
+                        of,
+                        pad: map.pad,
+                        theta_deg,
+                        z_mm: z * 1e3,
+                        value: v * kind.unit().1,
+                        cavitated: map.cavitated_at(s, z),
+                    });
                     painter.circle_stroke(pos, 4.0, Stroke::new(1.0, Color32::WHITE));
                 }
             }
@@ -415,20 +500,35 @@ fn draw_flowline(painter: &egui::Painter, frame: &ScreenFromPad, line: &Flowline
     for (tip, d) in arrowheads(&screen, 70.0, phase) {
         let (tip, d) = (Pos2::new(tip[0] as f32, tip[1] as f32), Vec2::new(d[0] as f32, d[1] as f32));
         let n = Vec2::new(-d.y, d.x);
-        painter.add(Shape::convex_polygon(vec![tip, tip - d * 6.0 + n * 3.0, tip - d * 6.0 - n * 3.0], stroke.color, Stroke::NONE));
+        painter.add(Shape::convex_polygon(
+            vec![tip, tip - d * 6.0 + n * 3.0, tip - d * 6.0 - n * 3.0],
+            stroke.color,
+            Stroke::NONE,
+        ));
     }
 }
 
 /// A vertical colour bar of `map` over the SI range `(lo, hi)`, ticks in display units (SI × `scale`),
 /// titled `title`.
 #[allow(clippy::cast_possible_truncation)]
-pub(crate) fn colour_bar(painter: &egui::Painter, rect: Rect, map: ColorMap, title: &str, scale: f64, (lo, hi): (f64, f64), text_color: Color32) {
+pub(crate) fn colour_bar(
+    painter: &egui::Painter,
+    rect: Rect,
+    map: ColorMap,
+    title: &str,
+    scale: f64,
+    (lo, hi): (f64, f64),
+    text_color: Color32,
+) {
     let steps = 64;
     for i in 0..steps {
         let t0 = i as f32 / steps as f32;
         let t1 = (i + 1) as f32 / steps as f32;
         let [r, g, b] = map.rgb(f64::from(0.5 * (t0 + t1)));
-        let band = Rect::from_min_max(Pos2::new(rect.left(), rect.bottom() - t1 * rect.height()), Pos2::new(rect.right(), rect.bottom() - t0 * rect.height() + 0.5));
+        let band = Rect::from_min_max(
+            Pos2::new(rect.left(), rect.bottom() - t1 * rect.height()),
+            Pos2::new(rect.right(), rect.bottom() - t0 * rect.height() + 0.5),
+        );
         painter.rect_filled(band, 0.0, Color32::from_rgb(r, g, b));
     }
     painter.rect_stroke(rect, 0.0, Stroke::new(1.0, Color32::from_gray(160)), egui::StrokeKind::Outside);
@@ -441,5 +541,11 @@ pub(crate) fn colour_bar(painter: &egui::Painter, rect: Rect, map: ColorMap, tit
         painter.line_segment([Pos2::new(rect.right(), y), Pos2::new(rect.right() + 4.0, y)], Stroke::new(1.0, color));
         painter.text(Pos2::new(rect.right() + 6.0, y), Align2::LEFT_CENTER, label, FontId::proportional(11.0), color);
     }
-    painter.text(rect.center_top() - Vec2::new(0.0, 6.0), Align2::CENTER_BOTTOM, title, FontId::proportional(11.0), color);
+    painter.text(
+        rect.center_top() - Vec2::new(0.0, 6.0),
+        Align2::CENTER_BOTTOM,
+        title,
+        FontId::proportional(11.0),
+        color,
+    );
 }

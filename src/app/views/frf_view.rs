@@ -77,7 +77,11 @@ fn adjusted(case: &Case, air: f64, length_mm: f64, valve_hz: f64) -> Case {
 
 fn log_ticks(value: f64) -> String {
     let v = 10f64.powf(value);
-    if v >= 1.0 { format!("{v:.0}") } else { format!("{v:.2}") }
+    if v >= 1.0 {
+        format!("{v:.0}")
+    } else {
+        format!("{v:.2}")
+    }
 }
 
 /// Draws the view for `case` (the shown solution's inputs) and its linearised bearing `model` (the FRF
@@ -94,7 +98,11 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case, model: Option<&FrfMo
         return None;
     };
     view.follow(case);
-    let (air0, len0, hz0) = (h.ports[0].air_fraction, h.ports[0].line_length_m * 1e3, h.valve.natural_frequency_rad_s / std::f64::consts::TAU);
+    let (air0, len0, hz0) = (
+        h.ports[0].air_fraction,
+        h.ports[0].line_length_m * 1e3,
+        h.valve.natural_frequency_rad_s / std::f64::consts::TAU,
+    );
     let mut air = view.air_fraction.unwrap_or(air0);
     let mut len = view.line_length_mm.unwrap_or(len0);
     let mut hz = view.valve_hz.unwrap_or(hz0);
@@ -105,7 +113,8 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case, model: Option<&FrfMo
         changed |= ui.add(egui::Slider::new(&mut len, 100.0..=3000.0).text("line length [mm]")).changed();
     });
     ui.horizontal(|ui| {
-        changed |= ui.add(egui::Slider::new(&mut hz, 20.0..=500.0).logarithmic(true).text("valve ω_V/2π [Hz]")).changed();
+        changed |=
+            ui.add(egui::Slider::new(&mut hz, 20.0..=500.0).logarithmic(true).text("valve ω_V/2π [Hz]")).changed();
         ui.add(egui::Slider::new(&mut view.amplitude_v, 0.0..=h.valve.full_scale_v).text("signal [V]"));
     });
     if changed {
@@ -164,10 +173,13 @@ fn bode_ui(ui: &mut Ui, curves: &FrfCurves, hidden: &[bool; 5], db: bool) {
     let height = ((ui.available_height() - 60.0) / 2.0).max(140.0);
     // The central area can be wider than what is visible beside the results panel: keep to the visible part.
     let width = ui.available_width().min(ui.clip_rect().width());
-    let modes: Vec<f64> = curves.line_modes_hz.iter().flatten().copied().filter(|f| (1.0..=1000.0).contains(f)).collect();
+    let modes: Vec<f64> =
+        curves.line_modes_hz.iter().flatten().copied().filter(|f| (1.0..=1000.0).contains(f)).collect();
     let hover = |p: &HoverPosition<'_>, unit: &str| -> Option<String> {
         match p {
-            HoverPosition::NearDataPoint { plot_name, position, .. } => Some(format!("{plot_name}\n{:.1} Hz\n{:.3} {unit}", 10f64.powf(position.x), position.y)),
+            HoverPosition::NearDataPoint { plot_name, position, .. } => {
+                Some(format!("{plot_name}\n{:.1} Hz\n{:.3} {unit}", 10f64.powf(position.x), position.y))
+            }
             HoverPosition::Elsewhere { .. } => None,
         }
     };
@@ -178,8 +190,7 @@ fn bode_ui(ui: &mut Ui, curves: &FrfCurves, hidden: &[bool; 5], db: bool) {
         if id == "frf_magnitude" {
             plot = plot.legend(Legend::default().position(egui_plot::Corner::LeftBottom));
         }
-        plot
-            .x_axis_label("frequency [Hz]")
+        plot.x_axis_label("frequency [Hz]")
             .y_axis_label(unit)
             .x_axis_formatter(|m, _| log_ticks(m.value))
             .label_formatter(move |p| hover(p, unit))
@@ -198,7 +209,11 @@ fn bode_ui(ui: &mut Ui, curves: &FrfCurves, hidden: &[bool; 5], db: bool) {
                     p.line(Line::new(format!("{} [{}]", c.name, c.unit), pts).color(*color).width(1.6));
                 }
                 for f in &modes {
-                    p.vline(VLine::new("line modes", f.log10()).color(Color32::from_gray(140)).style(egui_plot::LineStyle::dashed_loose()));
+                    p.vline(
+                        VLine::new("line modes", f.log10())
+                            .color(Color32::from_gray(140))
+                            .style(egui_plot::LineStyle::dashed_loose()),
+                    );
                 }
             });
     }

@@ -79,7 +79,11 @@ fn resolve_preview(file: &RotorFile, path: Option<&Path>) -> Result<Rotor, CaseE
         }
         let _ = &dir;
         let base = name.rsplit('/').next().unwrap_or(name);
-        PRESETS.iter().find(|(n, _)| *n == base).map(|(_, t)| (*t).to_string()).ok_or_else(|| format!("{name}: not a shipped case"))
+        PRESETS
+            .iter()
+            .find(|(n, _)| *n == base)
+            .map(|(_, t)| (*t).to_string())
+            .ok_or_else(|| format!("{name}: not a shipped case"))
     };
     file.resolve(&read)
 }
@@ -95,7 +99,9 @@ fn schema(key: &str) -> (&'static str, String) {
         Some(a) if generic.ends_with(']') && a + 2 < generic.len() => generic[..a].to_string(),
         _ => generic,
     };
-    ROTOR_KEYS.iter().find(|s| s.key == generic).map_or(("", format!("Rotor key: {key}")), |s| (s.unit, format!("{}\n\nAllowed: {}\nRotor key: {key}", s.meaning, s.allowed.describe())))
+    ROTOR_KEYS.iter().find(|s| s.key == generic).map_or(("", format!("Rotor key: {key}")), |s| {
+        (s.unit, format!("{}\n\nAllowed: {}\nRotor key: {key}", s.meaning, s.allowed.describe()))
+    })
 }
 
 impl RotorEdit {
@@ -106,7 +112,17 @@ impl RotorEdit {
     pub fn open(name: &str, path: Option<&Path>, text: &str) -> Result<Self, String> {
         let file = parse_rotor_file(text).map_err(|e| e.to_string())?;
         let valid = resolve_preview(&file, path).map_err(|e| e.to_string())?;
-        Ok(Self { name: name.to_string(), path: path.map(Path::to_path_buf), source: text.to_string(), file, selected: None, error: None, valid, revision: 0, notice: None })
+        Ok(Self {
+            name: name.to_string(),
+            path: path.map(Path::to_path_buf),
+            source: text.to_string(),
+            file,
+            selected: None,
+            error: None,
+            valid,
+            revision: 0,
+            notice: None,
+        })
     }
 
     /// The last valid rotor.
@@ -217,7 +233,14 @@ pub enum SectionChange {
 }
 
 /// A number of the rotor file: label with its unit, value; the edit is applied when it changed.
-fn number_ui(ui: &mut Ui, edit: &mut RotorEdit, key: &str, label: &str, value: f64, set: impl FnOnce(&mut RotorFile, f64)) {
+fn number_ui(
+    ui: &mut Ui,
+    edit: &mut RotorEdit,
+    key: &str,
+    label: &str,
+    value: f64,
+    set: impl FnOnce(&mut RotorFile, f64),
+) {
     let (unit, tip) = schema(key);
     let text = if unit.is_empty() || unit == "–" { label.to_string() } else { format!("{label} [{unit}]") };
     let l = ui.add(egui::Label::new(text).extend()).on_hover_text(&tip);
@@ -237,7 +260,14 @@ fn number_ui(ui: &mut Ui, edit: &mut RotorEdit, key: &str, label: &str, value: f
 }
 
 /// An integer of the rotor file (a node, a number of elements).
-fn integer_ui(ui: &mut Ui, edit: &mut RotorEdit, key: &str, label: &str, value: usize, set: impl FnOnce(&mut RotorFile, usize)) {
+fn integer_ui(
+    ui: &mut Ui,
+    edit: &mut RotorEdit,
+    key: &str,
+    label: &str,
+    value: usize,
+    set: impl FnOnce(&mut RotorFile, usize),
+) {
     let (_, tip) = schema(key);
     let l = ui.add(egui::Label::new(label).extend()).on_hover_text(&tip);
     let mut v = value;
@@ -263,8 +293,12 @@ fn selected_ui(ui: &mut Ui, edit: &mut RotorEdit, selected: Selected) {
             ui.label(RichText::new(format!("Shaft section {}", i + 1)).strong());
             let k = |name: &str| format!("rotor.section[{i}].{name}");
             number_ui(ui, edit, &k("length_mm"), "length", s.length_mm, move |f, v| f.rotor.section[i].length_mm = v);
-            number_ui(ui, edit, &k("outer_diameter_mm"), "outer diameter", s.outer_diameter_mm, move |f, v| f.rotor.section[i].outer_diameter_mm = v);
-            number_ui(ui, edit, &k("inner_diameter_mm"), "inner diameter", s.inner_diameter_mm, move |f, v| f.rotor.section[i].inner_diameter_mm = v);
+            number_ui(ui, edit, &k("outer_diameter_mm"), "outer diameter", s.outer_diameter_mm, move |f, v| {
+                f.rotor.section[i].outer_diameter_mm = v
+            });
+            number_ui(ui, edit, &k("inner_diameter_mm"), "inner diameter", s.inner_diameter_mm, move |f, v| {
+                f.rotor.section[i].inner_diameter_mm = v
+            });
             integer_ui(ui, edit, &k("elements"), "elements", s.elements, move |f, v| f.rotor.section[i].elements = v);
         }
         Selected::Disk(i) => {
@@ -273,13 +307,24 @@ fn selected_ui(ui: &mut Ui, edit: &mut RotorEdit, selected: Selected) {
             let k = |name: &str| format!("rotor.disk[{i}].{name}");
             integer_ui(ui, edit, &k("node"), "node", d.node, move |f, v| f.rotor.disk[i].node = v);
             number_ui(ui, edit, &k("mass_kg"), "mass", d.mass_kg, move |f, v| f.rotor.disk[i].mass_kg = v);
-            number_ui(ui, edit, &k("polar_inertia_kg_m2"), "polar inertia", d.polar_inertia_kg_m2, move |f, v| f.rotor.disk[i].polar_inertia_kg_m2 = v);
-            number_ui(ui, edit, &k("transverse_inertia_kg_m2"), "transverse inertia", d.transverse_inertia_kg_m2, move |f, v| f.rotor.disk[i].transverse_inertia_kg_m2 = v);
+            number_ui(ui, edit, &k("polar_inertia_kg_m2"), "polar inertia", d.polar_inertia_kg_m2, move |f, v| {
+                f.rotor.disk[i].polar_inertia_kg_m2 = v
+            });
+            number_ui(
+                ui,
+                edit,
+                &k("transverse_inertia_kg_m2"),
+                "transverse inertia",
+                d.transverse_inertia_kg_m2,
+                move |f, v| f.rotor.disk[i].transverse_inertia_kg_m2 = v,
+            );
         }
         Selected::Bearing(i) => {
             let Some(b) = r.bearing.get(i) else { return };
             ui.label(RichText::new(format!("Bearing {}", i + 1)).strong());
-            integer_ui(ui, edit, &format!("rotor.bearing[{i}].node"), "node", b.node, move |f, v| f.rotor.bearing[i].node = v);
+            integer_ui(ui, edit, &format!("rotor.bearing[{i}].node"), "node", b.node, move |f, v| {
+                f.rotor.bearing[i].node = v
+            });
             match &b.case {
                 Some(c) => {
                     ui.label(RichText::new(format!("bearing case {c} (edit it in the bearing editor)")).weak());
@@ -292,7 +337,9 @@ fn selected_ui(ui: &mut Ui, edit: &mut RotorEdit, selected: Selected) {
             ui.label(RichText::new(format!("Unbalance {}", i + 1)).strong());
             let k = |name: &str| format!("rotor.unbalance[{i}].{name}");
             integer_ui(ui, edit, &k("node"), "node", u.node, move |f, v| f.rotor.unbalance[i].node = v);
-            number_ui(ui, edit, &k("amount_g_mm"), "amount", u.amount_g_mm, move |f, v| f.rotor.unbalance[i].amount_g_mm = v);
+            number_ui(ui, edit, &k("amount_g_mm"), "amount", u.amount_g_mm, move |f, v| {
+                f.rotor.unbalance[i].amount_g_mm = v
+            });
             number_ui(ui, edit, &k("phase_deg"), "phase", u.phase_deg, move |f, v| f.rotor.unbalance[i].phase_deg = v);
         }
     }
@@ -304,19 +351,36 @@ fn numbers_ui(ui: &mut Ui, edit: &mut RotorEdit, i: usize, b: &crate::model::rot
     const ENTRIES: [&str; 4] = ["xx", "xy", "yx", "yy"];
     let rows = b.k_n_per_m.len().max(b.c_ns_per_m.len());
     for j in 0..rows {
-        let row = |name: &str| if b.speeds_rpm.is_empty() { name.to_string() } else { format!("{name} (row {})", j + 1) };
+        let row =
+            |name: &str| if b.speeds_rpm.is_empty() { name.to_string() } else { format!("{name} (row {})", j + 1) };
         ui.end_row();
         if let Some(&s) = b.speeds_rpm.get(j) {
-            number_ui(ui, edit, &format!("rotor.bearing[{i}].speeds_rpm[{j}]"), &row("speed"), s, move |f, v| f.rotor.bearing[i].speeds_rpm[j] = v);
+            number_ui(ui, edit, &format!("rotor.bearing[{i}].speeds_rpm[{j}]"), &row("speed"), s, move |f, v| {
+                f.rotor.bearing[i].speeds_rpm[j] = v
+            });
         }
         for (e, name) in ENTRIES.iter().enumerate() {
             if let Some(k) = b.k_n_per_m.get(j) {
-                number_ui(ui, edit, &format!("rotor.bearing[{i}].k_n_per_m[{j}]"), &row(&format!("K {name}")), k[e], move |f, v| f.rotor.bearing[i].k_n_per_m[j][e] = v);
+                number_ui(
+                    ui,
+                    edit,
+                    &format!("rotor.bearing[{i}].k_n_per_m[{j}]"),
+                    &row(&format!("K {name}")),
+                    k[e],
+                    move |f, v| f.rotor.bearing[i].k_n_per_m[j][e] = v,
+                );
             }
         }
         for (e, name) in ENTRIES.iter().enumerate() {
             if let Some(c) = b.c_ns_per_m.get(j) {
-                number_ui(ui, edit, &format!("rotor.bearing[{i}].c_ns_per_m[{j}]"), &row(&format!("C {name}")), c[e], move |f, v| f.rotor.bearing[i].c_ns_per_m[j][e] = v);
+                number_ui(
+                    ui,
+                    edit,
+                    &format!("rotor.bearing[{i}].c_ns_per_m[{j}]"),
+                    &row(&format!("C {name}")),
+                    c[e],
+                    move |f, v| f.rotor.bearing[i].c_ns_per_m[j][e] = v,
+                );
             }
         }
     }
@@ -325,15 +389,31 @@ fn numbers_ui(ui: &mut Ui, edit: &mut RotorEdit, i: usize, b: &crate::model::rot
 /// Buttons that change the shaft sections: split and remove the selected one, append at either end.
 fn sections_ui(ui: &mut Ui, edit: &mut RotorEdit) {
     if let Some(Selected::Section(i)) = edit.selected {
-        if ui.button("Split section").on_hover_text("Two sections in its place, the elements shared between them (one element: two of half the length)").clicked() {
+        if ui
+            .button("Split section")
+            .on_hover_text(
+                "Two sections in its place, the elements shared between them (one element: two of half the length)",
+            )
+            .clicked()
+        {
             edit.change_sections(SectionChange::Split(i));
         }
         let tip = "Removes the section; disks, unbalances, bearings and supports on its nodes move to the nearest remaining node (listed under the strip)";
-        if ui.add_enabled(edit.file.rotor.section.len() > 1, egui::Button::new("Remove section")).on_hover_text(tip).on_disabled_hover_text("The only shaft section").clicked() {
+        if ui
+            .add_enabled(edit.file.rotor.section.len() > 1, egui::Button::new("Remove section"))
+            .on_hover_text(tip)
+            .on_disabled_hover_text("The only shaft section")
+            .clicked()
+        {
             edit.change_sections(SectionChange::Remove(i));
         }
     }
-    let tip = |end: &str| format!("A {} mm section with the diameters of the {end} section", crate::model::rotor_sections::APPENDED_LENGTH_MM);
+    let tip = |end: &str| {
+        format!(
+            "A {} mm section with the diameters of the {end} section",
+            crate::model::rotor_sections::APPENDED_LENGTH_MM
+        )
+    };
     if ui.button("Add section at start").on_hover_text(tip("first")).clicked() {
         edit.change_sections(SectionChange::Append(ShaftEnd::Start));
     }
@@ -390,7 +470,10 @@ pub fn edit_ui(ui: &mut Ui, edit: &mut RotorEdit) -> Option<SaveRequest> {
         ui.label(RichText::new(n).weak());
     }
     if let Some(e) = &edit.error {
-        ui.label(RichText::new(format!("Invalid rotor: {e}. The sketch and results are of the last valid rotor.")).color(ERROR_COLOR));
+        ui.label(
+            RichText::new(format!("Invalid rotor: {e}. The sketch and results are of the last valid rotor."))
+                .color(ERROR_COLOR),
+        );
     }
     save
 }

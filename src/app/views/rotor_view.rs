@@ -18,14 +18,17 @@ use egui_plot::{HLine, Legend, Line, LineStyle, Plot, Points, VLine};
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
 use crate::model::rotor::{CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
-use crate::rotor::eigen::Whirl;
 use crate::rotor::critical_map::map_over_curves;
-use crate::scene::rotor::{map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem};
+use crate::rotor::eigen::Whirl;
+use crate::scene::rotor::{
+    map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem,
+};
 
 use super::rotor_edit::{edit_ui, RotorEdit, SaveRequest, Selected};
 
 /// Shipped rotors: file name and text (bearing cases are the shipped presets named by file name).
-pub const ROTOR_PRESETS: [(&str, &str); 1] = [("compressor-rotor.toml", include_str!("../../../cases/rotors/compressor-rotor.toml"))];
+pub const ROTOR_PRESETS: [(&str, &str); 1] =
+    [("compressor-rotor.toml", include_str!("../../../cases/rotors/compressor-rotor.toml"))];
 
 /// Speeds analysed [rpm]: from `FIRST_RPM` to `MAX_FACTOR` × the top of the operating range.
 const FIRST_RPM: f64 = 1000.0;
@@ -92,7 +95,21 @@ pub struct RotorView {
 
 impl Default for RotorView {
     fn default() -> Self {
-        Self { preset: 0, edits: (0..=ROTOR_PRESETS.len()).map(|_| None).collect(), generation: 0, coefficients: CoefficientModel::Full, tab: RotorTab::Campbell, speed_index: 0, mode_index: 0, runner: None, submitted: None, rotor: None, result: None, progress: None, map: None }
+        Self {
+            preset: 0,
+            edits: (0..=ROTOR_PRESETS.len()).map(|_| None).collect(),
+            generation: 0,
+            coefficients: CoefficientModel::Full,
+            tab: RotorTab::Campbell,
+            speed_index: 0,
+            mode_index: 0,
+            runner: None,
+            submitted: None,
+            rotor: None,
+            result: None,
+            progress: None,
+            map: None,
+        }
     }
 }
 
@@ -100,7 +117,9 @@ impl Default for RotorView {
 fn speeds(rotor: &Rotor) -> Vec<f64> {
     let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| b * 30.0 / std::f64::consts::PI) * MAX_FACTOR;
     #[allow(clippy::cast_precision_loss)]
-    (0..SPEEDS).map(|i| (FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64) * std::f64::consts::PI / 30.0).collect()
+    (0..SPEEDS)
+        .map(|i| (FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64) * std::f64::consts::PI / 30.0)
+        .collect()
 }
 
 impl RotorView {
@@ -152,11 +171,15 @@ impl RotorView {
         if self.submitted != Some(wanted) {
             self.submitted = Some(wanted);
             let coefficients = self.coefficients;
-            let rotor = self.edit_mut().as_ref().map(|e| {
-                let mut r = e.rotor().clone();
-                r.coefficients = coefficients;
-                r
-            }).map_err(Clone::clone);
+            let rotor = self
+                .edit_mut()
+                .as_ref()
+                .map(|e| {
+                    let mut r = e.rotor().clone();
+                    r.coefficients = coefficients;
+                    r
+                })
+                .map_err(Clone::clone);
             let runner = self.runner.get_or_insert_with(|| RotorRunner::new(ctx.clone()));
             if let Ok(r) = &rotor {
                 runner.start(r, AnalysisParams::new(speeds(r)));
@@ -181,8 +204,11 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     // panels and clip it.
     ui.horizontal_wrapped(|ui| {
         let label = ui.label("Rotor");
-        let opened = view.edits[ROTOR_PRESETS.len()].as_ref().map(|e| e.as_ref().map_or_else(|_| "opened file".to_string(), |e| e.name.clone()));
-        let shown = ROTOR_PRESETS.get(view.preset).map_or_else(|| opened.clone().unwrap_or_default(), |p| p.0.to_string());
+        let opened = view.edits[ROTOR_PRESETS.len()]
+            .as_ref()
+            .map(|e| e.as_ref().map_or_else(|_| "opened file".to_string(), |e| e.name.clone()));
+        let shown =
+            ROTOR_PRESETS.get(view.preset).map_or_else(|| opened.clone().unwrap_or_default(), |p| p.0.to_string());
         egui::ComboBox::from_id_salt("rotor-preset")
             .selected_text(shown)
             .show_ui(ui, |ui| {
@@ -197,8 +223,10 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
             .labelled_by(label.id);
         ui.separator();
         ui.label("Bearings");
-        ui.selectable_value(&mut view.coefficients, CoefficientModel::Full, "full coefficients").on_hover_text("Journal and pad coordinates with the pads' inertia (no reduction).");
-        ui.selectable_value(&mut view.coefficients, CoefficientModel::Reduced, "reduced 2×2").on_hover_text("Synchronously reduced (ω = Ω): overestimates the stable range.");
+        ui.selectable_value(&mut view.coefficients, CoefficientModel::Full, "full coefficients")
+            .on_hover_text("Journal and pad coordinates with the pads' inertia (no reduction).");
+        ui.selectable_value(&mut view.coefficients, CoefficientModel::Reduced, "reduced 2×2")
+            .on_hover_text("Synchronously reduced (ω = Ω): overestimates the stable range.");
     });
     let rotor = match &view.rotor {
         Some(Ok(r)) => r.clone(),
@@ -211,7 +239,11 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     let save = match view.edit_mut() {
         Ok(edit) => {
             let shown = edit.rotor();
-            let title = if shown.representative { format!("{} — representative shaft, not the thesis' rotor", shown.title) } else { shown.title.clone() };
+            let title = if shown.representative {
+                format!("{} — representative shaft, not the thesis' rotor", shown.title)
+            } else {
+                shown.title.clone()
+            };
             ui.label(RichText::new(format!("{title} — {:.0} kg", shown.mass())).strong());
             if let Some(picked) = sketch_ui(ui, &sketch(shown), &edit.section_of_elements(), edit.selected) {
                 edit.selected = Some(picked);
@@ -247,7 +279,11 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
         RotorTab::ModeShape => mode_shape_ui(ui, view, &result, &rotor),
         RotorTab::Unbalance => unbalance_ui(ui, &result),
         RotorTab::CriticalMap => {
-            let map = view.map.get_or_insert_with(|| map_over_curves(&rotor, result.bearing_stiffness.clone(), MAP_POINTS, MAP_MODES).map(|m| map_drawing(&m, &rotor)).map_err(|e| e.to_string()));
+            let map = view.map.get_or_insert_with(|| {
+                map_over_curves(&rotor, result.bearing_stiffness.clone(), MAP_POINTS, MAP_MODES)
+                    .map(|m| map_drawing(&m, &rotor))
+                    .map_err(|e| e.to_string())
+            });
             match map {
                 Ok(m) => critical_map_ui(ui, m),
                 Err(e) => {
@@ -265,15 +301,21 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
 #[must_use]
 pub fn first_mode_at_top_speed(r: &AnalysisResult, rotor: &Rotor) -> Option<(f64, f64)> {
     let top = rotor.operating_range.map_or(f64::INFINITY, |[_, b]| b);
-    let s = r.speeds.iter().min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?;
+    let s = r
+        .speeds
+        .iter()
+        .min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?;
     s.point.modes.modes.first().map(|m| (s.point.speed_rad_s * 30.0 / std::f64::consts::PI, m.frequency_hz()))
 }
 
 fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
     let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
-    let onset = r.onset.as_ref().map_or_else(|| "none in the sweep".to_string(), |o| format!("{:.0} rpm", rpm(o.speed_rad_s)));
+    let onset =
+        r.onset.as_ref().map_or_else(|| "none in the sweep".to_string(), |o| format!("{:.0} rpm", rpm(o.speed_rad_s)));
     let critical: Vec<String> = r.critical_speeds.iter().map(|c| format!("{:.0}", rpm(c.speed_rad_s))).collect();
-    let lowest = first_mode_at_top_speed(r, rotor).map(|(n, f)| format!(" Lowest natural frequency at {n:.0} rpm: {f:.3} Hz.")).unwrap_or_default();
+    let lowest = first_mode_at_top_speed(r, rotor)
+        .map(|(n, f)| format!(" Lowest natural frequency at {n:.0} rpm: {f:.3} Hz."))
+        .unwrap_or_default();
     ui.label(format!(
         "Onset of instability: {onset}. 1× critical speeds: {} rpm.{lowest} {} bearing solves, {} eigen-solutions, {} DOFs.",
         if critical.is_empty() { "none".to_string() } else { critical.join(", ") },
@@ -317,7 +359,8 @@ enum Sample {
 /// for the plot's hover label.
 fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<f64>) {
     let grey = Color32::from_gray(150);
-    let mut entries = vec![("forward".to_string(), FORWARD, Sample::Solid), ("backward".to_string(), BACKWARD, Sample::Dashed)];
+    let mut entries =
+        vec![("forward".to_string(), FORWARD, Sample::Solid), ("backward".to_string(), BACKWARD, Sample::Dashed)];
     if campbell {
         entries.push(("1×".into(), grey, Sample::Dashed));
         entries.push(("1× critical".into(), LIMIT, Sample::Dot));
@@ -333,7 +376,8 @@ fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<
     ui.horizontal_wrapped(|ui| {
         for (label, color, sample) in entries {
             let (rect, sample_response) = ui.allocate_exact_size(egui::vec2(18.0, 12.0), egui::Sense::hover());
-            sample_response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend sample: {label}")));
+            sample_response
+                .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend sample: {label}")));
             let (a, b) = (rect.left_center(), rect.right_center());
             let stroke = Stroke::new(1.6, color);
             let painter = ui.painter();
@@ -360,17 +404,28 @@ fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
     let c = mode_curves(r, rotor, RANKS);
     let height = (ui.available_height() - 10.0).max(160.0);
     let campbell = tab == RotorTab::Campbell;
-    let (id, y_label, curves) = if campbell { ("rotor_campbell", "damped frequency [Hz]", &c.frequency_hz) } else { ("rotor_stability", "log decrement [–]", &c.log_dec) };
+    let (id, y_label, curves) = if campbell {
+        ("rotor_campbell", "damped frequency [Hz]", &c.frequency_hz)
+    } else {
+        ("rotor_stability", "log decrement [–]", &c.log_dec)
+    };
     curves_legend_ui(ui, campbell, c.operating_rpm.is_some(), c.onset_rpm);
     let height = (height - ui.spacing().interact_size.y - ui.spacing().item_spacing.y).max(160.0);
     plot_without_legend(id, ui, height).x_axis_label("speed [rpm]").y_axis_label(y_label).show(ui, |p| {
         for curve in curves {
             let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
-            p.line(Line::new(curve.name.clone(), curve.points.clone()).color(whirl_color(curve.whirl)).style(style).width(1.6));
+            p.line(
+                Line::new(curve.name.clone(), curve.points.clone())
+                    .color(whirl_color(curve.whirl))
+                    .style(style)
+                    .width(1.6),
+            );
         }
         if let Some([a, b]) = c.operating_rpm {
             for x in [a, b] {
-                p.vline(VLine::new("operating range", x).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
+                p.vline(
+                    VLine::new("operating range", x).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()),
+                );
             }
         }
         if campbell {
@@ -388,12 +443,26 @@ fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
 fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &Rotor) {
     let last = r.speeds.len().saturating_sub(1);
     view.speed_index = view.speed_index.min(last);
-    let index_rpm: Vec<f64> = (0..r.speeds.len()).map(|i| r.speeds[i].point.speed_rad_s * 30.0 / std::f64::consts::PI).collect();
+    let index_rpm: Vec<f64> =
+        (0..r.speeds.len()).map(|i| r.speeds[i].point.speed_rad_s * 30.0 / std::f64::consts::PI).collect();
     ui.horizontal(|ui| {
-        ui.add(egui::Slider::new(&mut view.speed_index, 0..=last).custom_formatter(|v, _| format!("{:.0} rpm", index_rpm.get(nearest_index(v)).copied().unwrap_or(0.0))).text("speed"));
+        ui.add(
+            egui::Slider::new(&mut view.speed_index, 0..=last)
+                .custom_formatter(|v, _| format!("{:.0} rpm", index_rpm.get(nearest_index(v)).copied().unwrap_or(0.0)))
+                .text("speed"),
+        );
         let modes = &r.speeds[view.speed_index].point.modes.modes;
         view.mode_index = view.mode_index.min(modes.len().saturating_sub(1));
-        let describe = |i: usize| modes.get(i).map_or_else(String::new, |m| format!("{} {:.1} Hz, δ {:.3}", if m.whirl == Whirl::Forward { "forward" } else { "backward" }, m.frequency_hz(), m.log_dec));
+        let describe = |i: usize| {
+            modes.get(i).map_or_else(String::new, |m| {
+                format!(
+                    "{} {:.1} Hz, δ {:.3}",
+                    if m.whirl == Whirl::Forward { "forward" } else { "backward" },
+                    m.frequency_hz(),
+                    m.log_dec
+                )
+            })
+        };
         let label = ui.label("Mode");
         egui::ComboBox::from_id_salt("rotor-mode")
             .selected_text(describe(view.mode_index))
@@ -412,36 +481,68 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
     let z_mm: Vec<f64> = s.z_m.iter().map(|z| z * 1e3).collect();
     let color = whirl_color(s.whirl);
     let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
-    plot("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0)).x_axis_label("axial position [mm]").y_axis_label("deflection (largest = 1)").show(ui, |p| {
-        p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
-        p.line(Line::new("x", z_mm.iter().zip(&s.x).map(|(z, v)| [*z, *v]).collect::<Vec<_>>()).color(color).width(2.5));
-        p.line(Line::new("y", z_mm.iter().zip(&s.y).map(|(z, v)| [*z, *v]).collect::<Vec<_>>()).color(color).style(LineStyle::dashed_loose()).width(1.5));
-        for z in &bearings {
-            p.vline(VLine::new("bearings", *z).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
-        }
-    });
+    plot("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
+        .x_axis_label("axial position [mm]")
+        .y_axis_label("deflection (largest = 1)")
+        .show(ui, |p| {
+            p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
+            p.line(
+                Line::new("x", z_mm.iter().zip(&s.x).map(|(z, v)| [*z, *v]).collect::<Vec<_>>())
+                    .color(color)
+                    .width(2.5),
+            );
+            p.line(
+                Line::new("y", z_mm.iter().zip(&s.y).map(|(z, v)| [*z, *v]).collect::<Vec<_>>())
+                    .color(color)
+                    .style(LineStyle::dashed_loose())
+                    .width(1.5),
+            );
+            for z in &bearings {
+                p.vline(VLine::new("bearings", *z).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
+            }
+        });
 }
 
 fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult) {
     let b = unbalance_bode(r);
     let height = ((ui.available_height() - 20.0) / 2.0).max(120.0);
     let link = ui.scope_id().with("rotor_bode");
-    let colors = [FORWARD, BACKWARD, Color32::from_rgb(0, 158, 115), Color32::from_rgb(204, 121, 167), Color32::from_rgb(86, 180, 233)];
-    plot("rotor_unbalance_amplitude", ui, height).x_axis_label("speed [rpm]").y_axis_label("orbit major axis, peak to peak [µm]").link_axis(link, [true, false]).show(ui, |p| {
-        for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
-            p.line(Line::new(format!("node {}", n.node), n.amplitude_um.clone()).color(*color).width(1.6));
-        }
-        p.line(Line::new("API 617 limit 25.4 sqrt(12000/N) µm", b.api617_um.clone()).color(LIMIT).style(LineStyle::dashed_dense()).width(2.0));
-    });
-    plot("rotor_unbalance_phase", ui, height).x_axis_label("speed [rpm]").y_axis_label("phase of x [deg]").link_axis(link, [true, false]).show(ui, |p| {
-        for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
-            p.line(Line::new(format!("node {}", n.node), n.phase_deg.clone()).color(*color).width(1.6));
-        }
-    });
+    let colors = [
+        FORWARD,
+        BACKWARD,
+        Color32::from_rgb(0, 158, 115),
+        Color32::from_rgb(204, 121, 167),
+        Color32::from_rgb(86, 180, 233),
+    ];
+    plot("rotor_unbalance_amplitude", ui, height)
+        .x_axis_label("speed [rpm]")
+        .y_axis_label("orbit major axis, peak to peak [µm]")
+        .link_axis(link, [true, false])
+        .show(ui, |p| {
+            for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
+                p.line(Line::new(format!("node {}", n.node), n.amplitude_um.clone()).color(*color).width(1.6));
+            }
+            p.line(
+                Line::new("API 617 limit 25.4 sqrt(12000/N) µm", b.api617_um.clone())
+                    .color(LIMIT)
+                    .style(LineStyle::dashed_dense())
+                    .width(2.0),
+            );
+        });
+    plot("rotor_unbalance_phase", ui, height)
+        .x_axis_label("speed [rpm]")
+        .y_axis_label("phase of x [deg]")
+        .link_axis(link, [true, false])
+        .show(ui, |p| {
+            for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
+                p.line(Line::new(format!("node {}", n.node), n.phase_deg.clone()).color(*color).width(1.6));
+            }
+        });
 }
 
 fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
-    let colors = [FORWARD, Color32::from_rgb(0, 158, 115), Color32::from_rgb(204, 121, 167), Color32::from_rgb(86, 180, 233)];
+    let colors =
+        [FORWARD, Color32::from_rgb(0, 158, 115), Color32::from_rgb(204, 121, 167), Color32::from_rgb(86, 180, 233)];
     plot("rotor_critical_map", ui, (ui.available_height() - 10.0).max(160.0))
         .x_axis_label("support stiffness at the bearings [N/m]")
         .y_axis_label("undamped critical speed [rpm]")
@@ -454,7 +555,9 @@ fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
                 let style = if name.ends_with("k_xx") { LineStyle::dashed_dense() } else { LineStyle::dotted_dense() };
                 p.line(Line::new(name.clone(), points.clone()).color(BACKWARD).style(style).width(1.6));
             }
-            p.points(Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(LIMIT));
+            p.points(
+                Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(LIMIT),
+            );
         });
 }
 
@@ -468,8 +571,12 @@ fn nearest_index(v: f64) -> usize {
 fn item_rect(kind: SketchItem, px: f32, mid: f32) -> egui::Rect {
     match kind {
         SketchItem::Disk => egui::Rect::from_center_size(egui::pos2(px, mid), egui::vec2(6.0, 60.0)),
-        SketchItem::Bearing => egui::Rect::from_min_max(egui::pos2(px - 7.0, mid + 17.0), egui::pos2(px + 7.0, mid + 29.0)),
-        SketchItem::Numbers | SketchItem::Support => egui::Rect::from_center_size(egui::pos2(px, mid + 24.0), egui::vec2(10.0, 10.0)),
+        SketchItem::Bearing => {
+            egui::Rect::from_min_max(egui::pos2(px - 7.0, mid + 17.0), egui::pos2(px + 7.0, mid + 29.0))
+        }
+        SketchItem::Numbers | SketchItem::Support => {
+            egui::Rect::from_center_size(egui::pos2(px, mid + 24.0), egui::vec2(10.0, 10.0))
+        }
         SketchItem::Unbalance => egui::Rect::from_center_size(egui::pos2(px, mid - 38.0), egui::vec2(8.0, 8.0)),
     }
 }
@@ -488,7 +595,12 @@ fn item_selection(kind: SketchItem, rank: usize) -> Option<Selected> {
 /// A click selects the item under the pointer (within a few points), else the shaft section there
 /// (`section_of_element`: the section of each element).
 #[allow(clippy::cast_possible_truncation)] // millimetres to screen points
-fn sketch_ui(ui: &mut Ui, s: &RotorSketch, section_of_element: &[usize], selected: Option<Selected>) -> Option<Selected> {
+fn sketch_ui(
+    ui: &mut Ui,
+    s: &RotorSketch,
+    section_of_element: &[usize],
+    selected: Option<Selected>,
+) -> Option<Selected> {
     let width = ui.available_width().min(ui.clip_rect().width());
     let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 124.0), egui::Sense::click());
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "rotor sketch"));
@@ -521,7 +633,11 @@ fn sketch_ui(ui: &mut Ui, s: &RotorSketch, section_of_element: &[usize], selecte
         let r = egui::Rect::from_min_max(egui::pos2(x(*z0), mid - h), egui::pos2(x(*z1), mid + h));
         painter.rect_filled(r, 0.0, fill);
         if hi > 0.0 {
-            painter.rect_filled(egui::Rect::from_min_max(egui::pos2(x(*z0), mid - hi), egui::pos2(x(*z1), mid + hi)), 0.0, ui.visuals().extreme_bg_color);
+            painter.rect_filled(
+                egui::Rect::from_min_max(egui::pos2(x(*z0), mid - hi), egui::pos2(x(*z1), mid + hi)),
+                0.0,
+                ui.visuals().extreme_bg_color,
+            );
         }
         if let (Some(Selected::Section(i)), Some(&sec)) = (selected, section_of_element.get(e)) {
             if i == sec {
@@ -536,7 +652,11 @@ fn sketch_ui(ui: &mut Ui, s: &RotorSketch, section_of_element: &[usize], selecte
                 painter.rect_filled(r, 1.0, FORWARD);
             }
             SketchItem::Bearing => {
-                painter.add(egui::Shape::convex_polygon(vec![r.center_top(), r.left_bottom(), r.right_bottom()], BACKWARD, Stroke::NONE));
+                painter.add(egui::Shape::convex_polygon(
+                    vec![r.center_top(), r.left_bottom(), r.right_bottom()],
+                    BACKWARD,
+                    Stroke::NONE,
+                ));
             }
             SketchItem::Numbers | SketchItem::Support => {
                 painter.line_segment([r.left_top(), r.right_bottom()], Stroke::new(2.0, LIMIT));
@@ -544,7 +664,8 @@ fn sketch_ui(ui: &mut Ui, s: &RotorSketch, section_of_element: &[usize], selecte
             }
             SketchItem::Unbalance => {
                 painter.circle_filled(r.center(), 4.0, LIMIT);
-                painter.line_segment([r.center_bottom(), egui::pos2(r.center().x, mid - 30.0)], Stroke::new(1.0, LIMIT));
+                painter
+                    .line_segment([r.center_bottom(), egui::pos2(r.center().x, mid - 30.0)], Stroke::new(1.0, LIMIT));
             }
         }
         if selected.is_some() && item_selection(kind, rank) == selected {
@@ -553,8 +674,20 @@ fn sketch_ui(ui: &mut Ui, s: &RotorSketch, section_of_element: &[usize], selecte
     }
     let text = ui.visuals().weak_text_color();
     // Two lines under the shaft: the scale, then the legend (side by side they overlap in a narrow panel).
-    painter.text(egui::pos2(rect.left() + margin, rect.bottom() - 16.0), egui::Align2::LEFT_BOTTOM, format!("0 — {:.0} mm (diameters ×{:.0})", s.length_mm, sy / sx), egui::FontId::proportional(11.0), text);
-    painter.text(egui::pos2(rect.left() + margin, rect.bottom() - 2.0), egui::Align2::LEFT_BOTTOM, "blue: disks, orange: bearings, red ×: coefficients by numbers, red dots: unbalances", egui::FontId::proportional(11.0), text);
+    painter.text(
+        egui::pos2(rect.left() + margin, rect.bottom() - 16.0),
+        egui::Align2::LEFT_BOTTOM,
+        format!("0 — {:.0} mm (diameters ×{:.0})", s.length_mm, sy / sx),
+        egui::FontId::proportional(11.0),
+        text,
+    );
+    painter.text(
+        egui::pos2(rect.left() + margin, rect.bottom() - 2.0),
+        egui::Align2::LEFT_BOTTOM,
+        "blue: disks, orange: bearings, red ×: coefficients by numbers, red dots: unbalances",
+        egui::FontId::proportional(11.0),
+        text,
+    );
     let click = response.interact_pointer_pos().filter(|_| response.clicked())?;
     // The nearest item whose drawing (grown by a few points) holds the click, else the section at its z.
     let hit = items

@@ -17,7 +17,8 @@ const LINE: Color32 = Color32::from_rgb(86, 180, 233);
 const CURRENT: Color32 = Color32::from_rgb(230, 159, 0);
 const OVER_LIMIT: Color32 = Color32::from_rgb(235, 70, 60);
 /// ε and the reduced coefficients: the designers' chart against the Sommerfeld number.
-const SOMMERFELD_CHART: [&str; 5] = ["eccentricity_ratio", "kxx_n_per_m", "kyy_n_per_m", "cxx_ns_per_m", "cyy_ns_per_m"];
+const SOMMERFELD_CHART: [&str; 5] =
+    ["eccentricity_ratio", "kxx_n_per_m", "kyy_n_per_m", "cxx_ns_per_m", "cyy_ns_per_m"];
 
 /// The view's runtime state (the spec itself is persisted with the view settings).
 #[derive(Default)]
@@ -77,7 +78,9 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
         ui.label(unit);
         let label = ui.label("points");
         ui.add(DragValue::new(&mut spec.count).range(2..=MAX_POINTS)).labelled_by(label.id);
-        ui.checkbox(&mut spec.preview, "preview fidelity").on_hover_text("Solve the points on the coarse preview mesh (faster; see the Fidelity group for its error).");
+        ui.checkbox(&mut spec.preview, "preview fidelity").on_hover_text(
+            "Solve the points on the coarse preview mesh (faster; see the Fidelity group for its error).",
+        );
         run = ui.button("Run sweep").clicked();
     });
     ui.horizontal_wrapped(|ui| {
@@ -96,7 +99,11 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
         });
         ui.checkbox(&mut spec.against_sommerfeld, "against the Sommerfeld number")
             .on_hover_text("Abscissa S = µ N L D / W (R/Cb)² of each point instead of the swept value.");
-        if ui.button("Sommerfeld chart").on_hover_text("ε and the reduced coefficients against S, from a load sweep.").clicked() {
+        if ui
+            .button("Sommerfeld chart")
+            .on_hover_text("ε and the reduced coefficients against S, from a load sweep.")
+            .clicked()
+        {
             spec.outputs = SOMMERFELD_CHART.iter().map(|s| (*s).to_string()).collect();
             spec.against_sommerfeld = true;
         }
@@ -105,7 +112,13 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
 }
 
 /// Draws the view; `text` is the edited case (TOML) the sweep starts from, `current` the shown solution.
-pub fn sweep_view_ui(ui: &mut Ui, view: &mut SweepView, spec: &mut SweepSpec, text: Option<String>, current: Option<&Solution>) -> Option<SweepAction> {
+pub fn sweep_view_ui(
+    ui: &mut Ui,
+    view: &mut SweepView,
+    spec: &mut SweepSpec,
+    text: Option<String>,
+    current: Option<&Solution>,
+) -> Option<SweepAction> {
     let key_x = |key: &str| text.as_deref().and_then(|t| key_value(t, key));
     let run = controls_ui(ui, spec);
     let current_x = view.job.as_ref().and_then(|j| key_x(&j.spec.key)).or_else(|| key_x(&spec.key));
@@ -130,7 +143,11 @@ pub fn sweep_view_ui(ui: &mut Ui, view: &mut SweepView, spec: &mut SweepSpec, te
     let (done, total) = job.progress();
     ui.horizontal(|ui| {
         if job.done() {
-            ui.label(format!("{done} points of {} ({})", job.spec.key, if job.spec.preview { "preview fidelity" } else { "the case's fidelity" }));
+            ui.label(format!(
+                "{done} points of {} ({})",
+                job.spec.key,
+                if job.spec.preview { "preview fidelity" } else { "the case's fidelity" }
+            ));
         } else {
             ui.spinner();
             ui.label(format!("Solving point {} of {total}…", done + 1));
@@ -148,7 +165,11 @@ pub fn sweep_view_ui(ui: &mut Ui, view: &mut SweepView, spec: &mut SweepSpec, te
 fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solution>, key_x: Option<f64>) {
     let table = &job.table;
     let against_s = spec.against_sommerfeld;
-    let x_label = if against_s { "Sommerfeld number S [–]".to_string() } else { format!("{} [{}]", job.spec.key, job.spec.unit()) };
+    let x_label = if against_s {
+        "Sommerfeld number S [–]".to_string()
+    } else {
+        format!("{} [{}]", job.spec.key, job.spec.unit())
+    };
     let current_cells = current.map(crate::study::columns::outputs);
     let current_x = if against_s { current.and_then(|s| s.sommerfeld) } else { key_x };
     let n = spec.outputs.len().max(1);
@@ -171,12 +192,22 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
                     p.line(Line::new(label.clone(), series.clone()).color(LINE).width(1.8));
                     p.points(Points::new(label.clone(), series).color(LINE).radius(2.5));
                     if !flagged.is_empty() {
-                        p.points(Points::new("beyond a design limit", flagged).color(OVER_LIMIT).shape(MarkerShape::Cross).radius(6.0));
+                        p.points(
+                            Points::new("beyond a design limit", flagged)
+                                .color(OVER_LIMIT)
+                                .shape(MarkerShape::Cross)
+                                .radius(6.0),
+                        );
                     }
                     if let Some(x) = current_x {
                         p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
                         if let Some(y) = current_cells.as_ref().and_then(|c| c[k]) {
-                            p.points(Points::new("this case", vec![[x, y]]).color(CURRENT).shape(MarkerShape::Diamond).radius(6.0));
+                            p.points(
+                                Points::new("this case", vec![[x, y]])
+                                    .color(CURRENT)
+                                    .shape(MarkerShape::Diamond)
+                                    .radius(6.0),
+                            );
                         }
                     }
                 });

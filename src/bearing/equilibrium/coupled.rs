@@ -41,14 +41,22 @@ type Outcome = Progress<Result<Found, Stall>, Resume>;
 type Accepted = (Vec<f64>, Vec<PadState>);
 
 /// Runs the coupled Newton from `u0` (`cold`: place every pad first).
-pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Outcome, SolveError> {
+pub(super) fn coupled_newton(
+    model: &mut BearingModel,
+    u0: &[f64],
+    cold: bool,
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Outcome, SolveError> {
     let w = external_load(ctx.op, 1.0);
     let tol = ctx.params.force_tol * ctx.force_scale;
     let mut u = u0.to_vec();
     let mut states = if cold {
         match cold_start(model, &mut u, ctx, cancel)? {
             Progress::Done(Some(st)) => st,
-            Progress::Done(None) => return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, "film closes at the start")))),
+            Progress::Done(None) => {
+                return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, "film closes at the start"))))
+            }
             Progress::Suspended(r) => return Ok(Progress::Suspended(r)),
         }
     } else {
@@ -123,7 +131,9 @@ pub(super) fn coupled_newton(model: &mut BearingModel, u0: &[f64], cold: bool, c
         // the loaded pads leave a direction without stiffness), walk along it until another pad picks up load.
         let kred = bearing_stiffness(&model.pads, &states);
         if walks < model.pads.len() {
-            if let Some(d) = unsupported_direction(&kred, &Vector2::new(r[0], r[1]), tol).filter(|d| pads_ahead(&model.pads, *d)) {
+            if let Some(d) =
+                unsupported_direction(&kred, &Vector2::new(r[0], r[1]), tol).filter(|d| pads_ahead(&model.pads, *d))
+            {
                 walks += 1;
                 // Following the journal rigidly first (cheap); then, if no pad picked up load before a film
                 // closed, searching the approached floating pads for a loaded state on the way.
@@ -153,11 +163,20 @@ fn stall(u: &[f64], states: &[PadState], w: [f64; 2], reason: &str, ctx: &Ctx<'_
 
 /// Places every pad at the starting journal position (those placed before a suspension again: from their
 /// placed coordinates that costs one film solve each). `None` if a film closes.
-fn cold_start(model: &mut BearingModel, u: &mut [f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Progress<Option<Vec<PadState>>, Resume>, SolveError> {
+fn cold_start(
+    model: &mut BearingModel,
+    u: &mut [f64],
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Progress<Option<Vec<PadState>>, Resume>, SolveError> {
     let mut st = Vec::with_capacity(model.pads.len());
     for k in 0..model.pads.len() {
         if k > ctx.params.placed_pads && cancel.suspend() {
-            return Ok(Progress::Suspended(Resume { coordinates: u.to_vec(), placed_pads: k, report: Default::default() }));
+            return Ok(Progress::Suspended(Resume {
+                coordinates: u.to_vec(),
+                placed_pads: k,
+                report: Default::default(),
+            }));
         }
         let slice = model.dofs.pad_slice(k);
         let q = u[slice.clone()].to_vec();
@@ -186,14 +205,22 @@ fn replace_pad(model: &mut BearingModel, k: usize, u: &mut [f64], ctx: &mut Ctx<
 /// that `moved_unloaded` says was carried along with a moving journal ([`follow_journal`]) is searched again
 /// only if it picked up load (a journal moving towards a floating pad loads it); one that stays unloaded
 /// carries a negligible force until the search before acceptance ([`recheck_unloaded`]) places it exactly.
-fn place_hard_pads(model: &mut BearingModel, u: &mut [f64], states: &mut [PadState], moved_unloaded: &[bool], ctx: &mut Ctx<'_>) -> Result<(), SolveError> {
+fn place_hard_pads(
+    model: &mut BearingModel,
+    u: &mut [f64],
+    states: &mut [PadState],
+    moved_unloaded: &[bool],
+    ctx: &mut Ctx<'_>,
+) -> Result<(), SolveError> {
     for k in 0..model.pads.len() {
         let pm = &model.pads[k];
         let nd = pm.dofs().len();
         if nd == 0 || (ctx.held(k) && states[k].unloaded) {
             continue;
         }
-        let own_ok = (0..nd).all(|d| states[k].lin.stiffness[(JOURNAL_DOFS + d, JOURNAL_DOFS + d)] + pm.structure.stiffness[(d, d)] > 0.0);
+        let own_ok = (0..nd).all(|d| {
+            states[k].lin.stiffness[(JOURNAL_DOFS + d, JOURNAL_DOFS + d)] + pm.structure.stiffness[(d, d)] > 0.0
+        });
         let picked_up = moved_unloaded[k] && ctx.share(&states[k]) >= UNLOADED_SHARE;
         if picked_up || ((!own_ok || states[k].unloaded) && states[k].residual > ctx.params.pad_tol) {
             states[k] = replace_pad(model, k, u, ctx)?;
@@ -203,7 +230,13 @@ fn place_hard_pads(model: &mut BearingModel, u: &mut [f64], states: &mut [PadSta
 }
 
 /// Gives every unloaded, not held pad one safeguarded search; true if one of them picked up load.
-fn recheck_unloaded(model: &mut BearingModel, u: &mut [f64], states: &mut [PadState], rechecked: &mut [bool], ctx: &mut Ctx<'_>) -> Result<bool, SolveError> {
+fn recheck_unloaded(
+    model: &mut BearingModel,
+    u: &mut [f64],
+    states: &mut [PadState],
+    rechecked: &mut [bool],
+    ctx: &mut Ctx<'_>,
+) -> Result<bool, SolveError> {
     let mut loaded_again = false;
     for k in 0..model.pads.len() {
         if !states[k].unloaded || ctx.held(k) || model.pads[k].dofs().is_empty() || rechecked[k] {
@@ -228,7 +261,12 @@ fn recheck_unloaded(model: &mut BearingModel, u: &mut [f64], states: &mut [PadSt
 /// but above the tolerance, which no journal motion removes where the bearing has no stiffness across it
 /// (the test rig's floating top pad, 2.3e-7 of a 118 kN load, sideways), after its one thorough search
 /// ([`recheck_unloaded`]) has been spent.
-fn settle_stray_pressure(model: &mut BearingModel, u: &mut [f64], states: &mut [PadState], ctx: &mut Ctx<'_>) -> Result<bool, SolveError> {
+fn settle_stray_pressure(
+    model: &mut BearingModel,
+    u: &mut [f64],
+    states: &mut [PadState],
+    ctx: &mut Ctx<'_>,
+) -> Result<bool, SolveError> {
     let stray = STRAY_SHARE * ctx.params.force_tol;
     let mut settled = false;
     for k in 0..model.pads.len() {
@@ -276,7 +314,11 @@ fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<V
     let bm = DMatrix::from_fn(n, basis.len(), |i, c| basis[c][i]);
     let kr = bm.transpose() * &k * &bm;
     let rr = bm.transpose() * DVector::from_column_slice(r);
-    let y = kr.lu().solve(&rr).filter(|s| s.iter().all(|v| v.is_finite())).ok_or_else(|| "singular Jacobian".to_string())?;
+    let y = kr
+        .lu()
+        .solve(&rr)
+        .filter(|s| s.iter().all(|v| v.is_finite()))
+        .ok_or_else(|| "singular Jacobian".to_string())?;
     Ok((&bm * y).iter().copied().collect())
 }
 
@@ -289,9 +331,21 @@ const WALK_STEPS: usize = 60;
 /// closes first or none does within [`WALK_STEPS`]. `search_approached`: a floating pad whose film thins
 /// is also searched for a loaded state beyond its fold at each step (a negative-preload pad followed
 /// rigidly keeps a diverging film, without pressure, until it closes).
-fn advance_until_loaded(model: &mut BearingModel, u: &[f64], states: &[PadState], d: Vector2<f64>, search_approached: bool, ctx: &mut Ctx<'_>) -> Result<Option<Accepted>, SolveError> {
+fn advance_until_loaded(
+    model: &mut BearingModel,
+    u: &[f64],
+    states: &[PadState],
+    d: Vector2<f64>,
+    search_approached: bool,
+    ctx: &mut Ctx<'_>,
+) -> Result<Option<Accepted>, SolveError> {
     let cb = model.assembled_clearance;
-    let follows: Vec<bool> = model.pads.iter().enumerate().map(|(k, pm)| !(pm.dofs().is_empty() || ctx.held(k) && states[k].unloaded)).collect();
+    let follows: Vec<bool> = model
+        .pads
+        .iter()
+        .enumerate()
+        .map(|(k, pm)| !(pm.dofs().is_empty() || ctx.held(k) && states[k].unloaded))
+        .collect();
     let floating: Vec<bool> = follows.iter().zip(states).map(|(f, s)| *f && s.unloaded).collect();
     // Thinnest film of each floating pad at the previous step (the first step only sets it: the pads were
     // searched at the start).
@@ -368,7 +422,13 @@ fn line_search(
     let capped = alpha < 1.0 && alpha < closing;
     alpha = alpha.min(closing);
     // Unloaded pads are held by the Newton step; on a trial point they follow the journal.
-    let moved: Vec<bool> = model.pads.iter().zip(states).enumerate().map(|(k, (pm, st))| st.unloaded && !pm.dofs().is_empty() && !ctx.held(k)).collect();
+    let moved: Vec<bool> = model
+        .pads
+        .iter()
+        .zip(states)
+        .enumerate()
+        .map(|(k, (pm, st))| st.unloaded && !pm.dofs().is_empty() && !ctx.held(k))
+        .collect();
     for halving in 0..LINE_SEARCH_HALVINGS {
         let mut trial: Vec<f64> = u.iter().zip(step).map(|(a, d)| a + alpha * d).collect();
         let de = [alpha * step[0], alpha * step[1]];
@@ -383,7 +443,10 @@ fn line_search(
             }
             place_hard_pads(model, &mut trial, &mut st2, &moved, ctx)?;
             let (r2, m2) = coupled_residual(model, &trial, &st2, w, ctx.force_scale);
-            if any || m2.sqrt() < (1.0 - SUFFICIENT_DECREASE * alpha) * merit.sqrt() || (r2[0].hypot(r2[1]) <= tol && m2 <= merit) {
+            if any
+                || m2.sqrt() < (1.0 - SUFFICIENT_DECREASE * alpha) * merit.sqrt()
+                || (r2[0].hypot(r2[1]) <= tol && m2 <= merit)
+            {
                 return Ok(Some(((trial, st2), capped && halving == 0)));
             }
         }

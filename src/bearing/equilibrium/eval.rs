@@ -29,7 +29,9 @@ pub fn force_scale(model: &BearingModel, op: &OperatingPoint) -> f64 {
 /// The static load on the journal at `fraction` of its magnitude [N].
 pub(super) fn external_load(op: &OperatingPoint, fraction: f64) -> [f64; 2] {
     match op.load {
-        LoadSpec::Force { magnitude_n, angle_rad } => [fraction * magnitude_n * angle_rad.cos(), fraction * magnitude_n * angle_rad.sin()],
+        LoadSpec::Force { magnitude_n, angle_rad } => {
+            [fraction * magnitude_n * angle_rad.cos(), fraction * magnitude_n * angle_rad.sin()]
+        }
         LoadSpec::Position { .. } => [0.0, 0.0],
     }
 }
@@ -74,7 +76,20 @@ pub(crate) struct Ctx<'a> {
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
-        Self { op, params, force_scale: force_scale(model, op), report: SolveReport::default(), closes_before_balance: None, no_stiffness: None, thorough_onset: false, loaded_state_found: Vec::new(), force_gap: None, gap_2d: None, budget, started }
+        Self {
+            op,
+            params,
+            force_scale: force_scale(model, op),
+            report: SolveReport::default(),
+            closes_before_balance: None,
+            no_stiffness: None,
+            thorough_onset: false,
+            loaded_state_found: Vec::new(),
+            force_gap: None,
+            gap_2d: None,
+            budget,
+            started,
+        }
     }
 
     /// Seconds since the solve started.
@@ -127,7 +142,12 @@ impl<'a> Ctx<'a> {
 
 /// One film solve of pad k at local coordinates: forces, stiffness and what the solve did. Touches only
 /// the pad, so pads can be evaluated in parallel.
-pub(super) fn film_eval(pm: &mut PadModel, k: usize, local: &[f64], op: &OperatingPoint) -> Result<(Vec<f64>, FilmLinearization, FilmSolveInfo), FilmError> {
+pub(super) fn film_eval(
+    pm: &mut PadModel,
+    k: usize,
+    local: &[f64],
+    op: &OperatingPoint,
+) -> Result<(Vec<f64>, FilmLinearization, FilmSolveInfo), FilmError> {
     pm.film.set_coordinates(local)?;
     let inp = op.film_inputs(k);
     let info = pm.film.solve(&inp, true)?;
@@ -146,7 +166,12 @@ fn account(ctx: &mut Ctx<'_>, k: usize, info: FilmSolveInfo) {
 }
 
 /// Evaluates pad k at local coordinates: forces and linearisation.
-pub(super) fn eval_pad(pm: &mut PadModel, k: usize, local: &[f64], ctx: &mut Ctx<'_>) -> Result<(Vec<f64>, FilmLinearization), FilmError> {
+pub(super) fn eval_pad(
+    pm: &mut PadModel,
+    k: usize,
+    local: &[f64],
+    ctx: &mut Ctx<'_>,
+) -> Result<(Vec<f64>, FilmLinearization), FilmError> {
     if let Some(b) = ctx.exhausted() {
         return Err(FilmError::Input(b.to_string()));
     }
@@ -175,7 +200,12 @@ pub(super) fn structural_force(pm: &PadModel, q: &[f64], d: usize) -> f64 {
 }
 
 /// All pads at a journal position, warm-started from `u`; returns pad states and the total film force.
-pub(super) fn solve_all_pads(model: &mut BearingModel, journal: [f64; 2], u: &[f64], ctx: &mut Ctx<'_>) -> Result<(Vec<PadState>, [f64; 2]), (usize, FilmError)> {
+pub(super) fn solve_all_pads(
+    model: &mut BearingModel,
+    journal: [f64; 2],
+    u: &[f64],
+    ctx: &mut Ctx<'_>,
+) -> Result<(Vec<PadState>, [f64; 2]), (usize, FilmError)> {
     let mut states = Vec::with_capacity(model.pads.len());
     let mut f = [0.0, 0.0];
     for k in 0..model.pads.len() {
@@ -201,7 +231,13 @@ pub(super) fn total_force(states: &[PadState]) -> [f64; 2] {
 
 /// The thinnest film over all pads and where it is.
 pub(super) fn min_film(model: &BearingModel) -> (usize, f64) {
-    model.pads.iter().enumerate().map(|(k, p)| (k, p.film.h_min().0)).fold((0, f64::INFINITY), |m, x| if x.1 < m.1 { x } else { m })
+    model.pads.iter().enumerate().map(|(k, p)| (k, p.film.h_min().0)).fold((0, f64::INFINITY), |m, x| {
+        if x.1 < m.1 {
+            x
+        } else {
+            m
+        }
+    })
 }
 
 /// Film nodes above which pads are solved in parallel (below, thread start-up costs more than it saves).
@@ -226,13 +262,18 @@ fn eval_films(model: &mut BearingModel, u: &[f64], op: &OperatingPoint) -> Vec<F
                     .map(|(c, pads)| {
                         let locals = &locals;
                         scope.spawn(move || {
-                            pads.iter_mut().enumerate().map(|(i, pm)| film_eval(pm, c * chunk + i, &locals[c * chunk + i], op)).collect::<Vec<_>>()
+                            pads.iter_mut()
+                                .enumerate()
+                                .map(|(i, pm)| film_eval(pm, c * chunk + i, &locals[c * chunk + i], op))
+                                .collect::<Vec<_>>()
                         })
                     })
                     .collect();
                 handles
                     .into_iter()
-                    .flat_map(|h| h.join().unwrap_or_else(|_| vec![Err(FilmError::Input("pad solve thread panicked".into()))]))
+                    .flat_map(|h| {
+                        h.join().unwrap_or_else(|_| vec![Err(FilmError::Input("pad solve thread panicked".into()))])
+                    })
                     .collect()
             });
         }
@@ -241,7 +282,11 @@ fn eval_films(model: &mut BearingModel, u: &[f64], op: &OperatingPoint) -> Vec<F
 }
 
 /// Evaluates every pad at the global coordinates `u` (one film solve each, no pad iteration).
-pub(super) fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -> Result<Vec<PadState>, (usize, FilmError)> {
+pub(super) fn eval_all(
+    model: &mut BearingModel,
+    u: &[f64],
+    ctx: &mut Ctx<'_>,
+) -> Result<Vec<PadState>, (usize, FilmError)> {
     if let Some(b) = ctx.exhausted() {
         return Err((0, FilmError::Input(b.to_string())));
     }
@@ -253,7 +298,9 @@ pub(super) fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -
         let pm = &model.pads[k];
         let q = u[model.dofs.pad_slice(k)].to_vec();
         let sc = pad_scales(pm, &forces, ctx.force_scale);
-        let residual = (0..q.len()).map(|d| relative(forces[JOURNAL_DOFS + d] - structural_force(pm, &q, d), sc[d])).fold(0.0, f64::max);
+        let residual = (0..q.len())
+            .map(|d| relative(forces[JOURNAL_DOFS + d] - structural_force(pm, &q, d), sc[d]))
+            .fold(0.0, f64::max);
         let mut st = PadState { q, forces, lin, unloaded: false, residual };
         // An unloaded pad's relative residual is meaningless (its scale is its vanishing load); a held pad
         // that picks up load is solved like any other.
@@ -268,7 +315,13 @@ pub(super) fn eval_all(model: &mut BearingModel, u: &[f64], ctx: &mut Ctx<'_>) -
 
 /// Global residual `R(u)` (journal force balance, pad balances) and its merit (scaled sum of squares;
 /// unloaded pads do not count).
-pub(super) fn coupled_residual(model: &BearingModel, u: &[f64], states: &[PadState], w: [f64; 2], force_scale: f64) -> (Vec<f64>, f64) {
+pub(super) fn coupled_residual(
+    model: &BearingModel,
+    u: &[f64],
+    states: &[PadState],
+    w: [f64; 2],
+    force_scale: f64,
+) -> (Vec<f64>, f64) {
     let mut r = vec![0.0; model.n_dofs()];
     let f = total_force(states);
     r[0] = f[0] + w[0];

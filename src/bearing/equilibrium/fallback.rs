@@ -31,11 +31,18 @@ const SCAN_STEPS: usize = 100;
 pub(super) const TOUCHDOWN_FRACTION: f64 = 0.05;
 
 /// Runs the fallbacks in turn from `u0`.
-pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
+pub(super) fn run(
+    model: &mut BearingModel,
+    u0: &[f64],
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Found, SolveError> {
     let named = |r: Result<Found, Stall>, method: &str| r.map(|f| Found { method: method.to_string(), ..f });
     match named(newton_journal(model, u0, 1.0, ctx, cancel)?, "Newton (pad assembly)") {
         Ok(f) => return Ok(f),
-        Err(s) => ctx.report.warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
+        Err(s) => ctx
+            .report
+            .warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
     }
     if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
         // Outside the cone of the pads no search can find stiffness: that is the answer.
@@ -49,7 +56,9 @@ pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cance
     centred[..2].fill(0.0);
     match named(super::polar::polar_search(model, &centred, ctx, cancel)?, "polar bracketing search") {
         Ok(f) => return Ok(f),
-        Err(s) => ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason)),
+        Err(s) => {
+            ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason))
+        }
     }
     if let Some((pad, below_n, above_n)) = ctx.force_gap {
         // The force along the load jumps from below it to above it (the ray's bracket): the scan and the
@@ -60,14 +69,22 @@ pub(super) fn run(model: &mut BearingModel, u0: &[f64], ctx: &mut Ctx<'_>, cance
     if let Some(u_scan) = scan_along_load(model, &centred, ctx, cancel)? {
         match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, "scan along the load + Newton") {
             Ok(f) => return Ok(f),
-            Err(s) => ctx.report.warn(format!("Newton after the load-direction scan failed ({}); using load continuation", s.reason)),
+            Err(s) => ctx
+                .report
+                .warn(format!("Newton after the load-direction scan failed ({}); using load continuation", s.reason)),
         }
     }
     continuation(model, &centred, ctx, cancel)
 }
 
 /// Newton on the journal position for load fraction `fraction`, from `u0`.
-pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+pub(super) fn newton_journal(
+    model: &mut BearingModel,
+    u0: &[f64],
+    fraction: f64,
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Result<Found, Stall>, SolveError> {
     let w = external_load(ctx.op, fraction);
     let cb = model.assembled_clearance;
     let mut journal = [u0[0], u0[1]];
@@ -83,7 +100,11 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
         Err((k, e)) => return Err(ctx.film_error(k, e)),
     };
     let tol = ctx.params.force_tol * ctx.force_scale;
-    let stall = |journal: [f64; 2], r: Vector2<f64>, reason: String, scale: f64| Stall { journal, residual: r.norm() / scale, reason };
+    let stall = |journal: [f64; 2], r: Vector2<f64>, reason: String, scale: f64| Stall {
+        journal,
+        residual: r.norm() / scale,
+        reason,
+    };
     for _ in 0..ctx.params.max_iterations {
         if cancel.cancelled() {
             return Err(SolveError::Cancelled);
@@ -140,7 +161,12 @@ pub(super) fn newton_journal(model: &mut BearingModel, u0: &[f64], fraction: f64
 
 /// Walks the journal along the load direction from the centre in steps of 0.1 Cb until the residual along
 /// the load changes sign with a restoring slope; returns the coordinates there (or `None`).
-fn scan_along_load(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Option<Vec<f64>>, SolveError> {
+fn scan_along_load(
+    model: &mut BearingModel,
+    centred: &[f64],
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Option<Vec<f64>>, SolveError> {
     let w = external_load(ctx.op, 1.0);
     let dir = load_direction(ctx.op);
     if dir == [0.0, 0.0] {
@@ -172,7 +198,12 @@ fn scan_along_load(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>,
 }
 
 /// Load continuation from a centred journal; touchdown when a step fails with a film nearly closed.
-fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Found, SolveError> {
+fn continuation(
+    model: &mut BearingModel,
+    centred: &[f64],
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Found, SolveError> {
     let cb = model.assembled_clearance;
     let mut u = centred.to_vec();
     let mut last = Stall { journal: [0.0; 2], residual: 0.0, reason: String::new() };
@@ -197,7 +228,13 @@ fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, ca
         // The polar search met the jump off the load direction, and neither the scan nor the continuation
         // found a state beyond it.
         let w = external_load(ctx.op, 1.0);
-        return Err(SolveError::ForceGap2d { pad, angle_deg: angle_rad.to_degrees(), before_n, after_n, load_n: w[0].hypot(w[1]) });
+        return Err(SolveError::ForceGap2d {
+            pad,
+            angle_deg: angle_rad.to_degrees(),
+            before_n,
+            after_n,
+            load_n: w[0].hypot(w[1]),
+        });
     }
     if let Some(b) = ctx.exhausted() {
         return Err(ctx.budget_error(b));
@@ -211,7 +248,10 @@ fn continuation(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, ca
         }
         // Pads surround the load, so some pad can carry it: the missing stiffness is where the search
         // stopped, not an answer.
-        last.reason = format!("{} (pads surround the load, yet the search stopped with no stiffness along {axis_deg:.0}°)", last.reason);
+        last.reason = format!(
+            "{} (pads surround the load, yet the search stopped with no stiffness along {axis_deg:.0}°)",
+            last.reason
+        );
     }
     Err(SolveError::NotConverged { iterations: ctx.report.iterations, residual: last.residual, reason: last.reason })
 }

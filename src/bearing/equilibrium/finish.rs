@@ -33,7 +33,11 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
     let op = ctx.op;
     let cb = model.assembled_clearance;
     let w = external_load(op, 1.0);
-    ctx.report.residual = if matches!(op.load, LoadSpec::Force { .. }) { (force[0] + w[0]).hypot(force[1] + w[1]) / ctx.force_scale } else { 0.0 };
+    ctx.report.residual = if matches!(op.load, LoadSpec::Force { .. }) {
+        (force[0] + w[0]).hypot(force[1] + w[1]) / ctx.force_scale
+    } else {
+        0.0
+    };
     ctx.report.method = method;
     for (k, p) in pads.iter_mut().enumerate() {
         // The films must hold the returned state (a search may have evaluated a pad elsewhere last).
@@ -49,9 +53,16 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
         if share < FLOATING_SHARE {
             p.unloaded = true;
             let n = film.geom.n_dofs();
-            p.lin = FilmLinearization { stiffness: nalgebra::DMatrix::zeros(n, n), damping: nalgebra::DMatrix::zeros(n, n) };
+            p.lin = FilmLinearization {
+                stiffness: nalgebra::DMatrix::zeros(n, n),
+                damping: nalgebra::DMatrix::zeros(n, n),
+            };
             ctx.report.floating_pads.push(k);
-            let what = if model.pads[k].dofs().is_empty() { "" } else { "; its tilt is weakly determined (set where film pressure begins)" };
+            let what = if model.pads[k].dofs().is_empty() {
+                ""
+            } else {
+                "; its tilt is weakly determined (set where film pressure begins)"
+            };
             ctx.report.warn(format!(
                 "pad {k} floats: it carries {share:.1e} of the load scale, its film is treated as cavitated and contributes no stiffness or damping{what}"
             ));
@@ -71,10 +82,18 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
     ctx.report.pad_residual = pads.iter().filter(|p| !p.unloaded).fold(0.0_f64, |m, p| m.max(p.residual));
     let (kmin, hmin) = min_film(model);
     if hmin < op.touchdown_film {
-        return Err(SolveError::Touchdown { pad: kmin, h_min_um: hmin * 1e6, eccentricity_ratio: u[0].hypot(u[1]) / cb });
+        return Err(SolveError::Touchdown {
+            pad: kmin,
+            h_min_um: hmin * 1e6,
+            eccentricity_ratio: u[0].hypot(u[1]) / cb,
+        });
     }
     if hmin < TOUCHDOWN_WARNING * op.touchdown_film {
-        ctx.report.warn(format!("minimum film thickness {:.2} µm on pad {kmin} is close to touchdown ({:.2} µm)", hmin * 1e6, op.touchdown_film * 1e6));
+        ctx.report.warn(format!(
+            "minimum film thickness {:.2} µm on pad {kmin} is close to touchdown ({:.2} µm)",
+            hmin * 1e6,
+            op.touchdown_film * 1e6
+        ));
     }
     ctx.report.seconds = ctx.elapsed();
     Ok(Equilibrium { u, pads, film_force: force, report: ctx.report })
@@ -91,7 +110,9 @@ pub(super) fn classify_failure(model: &BearingModel, ctx: &Ctx<'_>, e: SolveErro
     // A budget spent after the polar search saw the films close before the load balanced: touchdown, as the
     // continuation would have answered had the budget lasted.
     let e = match (e, ctx.closes_before_balance) {
-        (SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. }, Some((pad, h, ecc))) => SolveError::Touchdown { pad, h_min_um: h * 1e6, eccentricity_ratio: ecc },
+        (SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. }, Some((pad, h, ecc))) => {
+            SolveError::Touchdown { pad, h_min_um: h * 1e6, eccentricity_ratio: ecc }
+        }
         (e, _) => e,
     };
     match classify_contact(model, e) {
@@ -114,7 +135,10 @@ fn unsupported_load(model: &BearingModel, ctx: &Ctx<'_>) -> Option<SolveError> {
     let n = nearest_normal(&model.pads, w)?;
     let across = [-n[1], n[0]];
     let component = w[0] * across[0] + w[1] * across[1];
-    Some(SolveError::NoStiffness { axis_deg: across[1].atan2(across[0]).to_degrees().rem_euclid(180.0), load_component_n: component.abs() })
+    Some(SolveError::NoStiffness {
+        axis_deg: across[1].atan2(across[0]).to_degrees().rem_euclid(180.0),
+        load_component_n: component.abs(),
+    })
 }
 
 fn classify_contact(model: &BearingModel, e: SolveError) -> SolveError {

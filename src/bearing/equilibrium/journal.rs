@@ -50,7 +50,10 @@ pub(super) fn bearing_stiffness(pads: &[PadModel], states: &[PadState]) -> Matri
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum StepFailure {
     /// A load component of `component` [N] acts along `axis_deg`, where the bearing has no stiffness.
-    NoStiffness { axis_deg: f64, component: f64 },
+    NoStiffness {
+        axis_deg: f64,
+        component: f64,
+    },
     Other(String),
 }
 
@@ -101,8 +104,14 @@ fn axis_deg(d: &Vector2<f64>) -> f64 {
 
 /// Newton step `K Δ = r` by singular values: directions without stiffness are not moved along; a load
 /// component there above `10 tol` cannot be carried. Returns the step and the held direction, if any.
-pub(super) fn journal_step(k: &Matrix2<f64>, r: &Vector2<f64>, tol: f64) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StepFailure> {
-    let Some(dirs) = Directions::of(k) else { return Err(StepFailure::Other("non-finite bearing stiffness or failed singular value decomposition".into())) };
+pub(super) fn journal_step(
+    k: &Matrix2<f64>,
+    r: &Vector2<f64>,
+    tol: f64,
+) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StepFailure> {
+    let Some(dirs) = Directions::of(k) else {
+        return Err(StepFailure::Other("non-finite bearing stiffness or failed singular value decomposition".into()));
+    };
     if dirs.soft == [true, true] {
         if r.norm() > 10.0 * tol {
             return Err(StepFailure::NoStiffness { axis_deg: axis_deg(r), component: r.norm() });
@@ -151,13 +160,14 @@ pub(super) fn pads_surround(pads: &[PadModel], w: [f64; 2]) -> bool {
     let phi = w[1].atan2(w[0]).rem_euclid(TAU);
     // The load on a pad, or in a gap between consecutive pad normals of under a half turn.
     let on_pad = angles.iter().any(|a| ((phi - a + PI).rem_euclid(TAU) - PI).abs() < 1e-6);
-    on_pad || (0..angles.len()).any(|i| {
-        let a = angles[i];
-        let b = if i + 1 < angles.len() { angles[i + 1] } else { angles[0] + TAU };
-        let gap = b - a;
-        let inside = (phi - a).rem_euclid(TAU) <= gap;
-        inside && gap < PI - 1e-9
-    })
+    on_pad
+        || (0..angles.len()).any(|i| {
+            let a = angles[i];
+            let b = if i + 1 < angles.len() { angles[i + 1] } else { angles[0] + TAU };
+            let gap = b - a;
+            let inside = (phi - a).rem_euclid(TAU) <= gap;
+            inside && gap < PI - 1e-9
+        })
 }
 
 /// Each pad's mean outward film normal (towards the pad from the bearing centre), from its journal shapes.
@@ -167,7 +177,11 @@ fn pad_normals(pads: &[PadModel]) -> Vec<[f64; 2]> {
             let s = &pm.film.geom.shapes;
             let (cx, cy) = (-s[0].node.iter().sum::<f64>(), -s[1].node.iter().sum::<f64>());
             let n = cx.hypot(cy);
-            if n > 0.0 { [cx / n, cy / n] } else { [0.0, 0.0] }
+            if n > 0.0 {
+                [cx / n, cy / n]
+            } else {
+                [0.0, 0.0]
+            }
         })
         .collect()
 }

@@ -42,10 +42,10 @@ use web_time::Instant;
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization};
 
-pub use super::progress::{Cancel, NoCancel, NoSuspend, Progress};
-pub use super::report::SolveReport;
 use super::error::SolveError;
 use super::model::{BearingModel, OperatingPoint};
+pub use super::progress::{Cancel, NoCancel, NoSuspend, Progress};
+pub use super::report::SolveReport;
 
 pub use eval::force_scale;
 
@@ -178,7 +178,10 @@ pub fn solve_equilibrium(
     match step_equilibrium(model, op, params, start, &NoSuspend(cancel))? {
         Progress::Done(eq) => Ok(eq),
         // NoSuspend never asks for a pause.
-        Progress::Suspended(r) => Err(SolveError::Invalid(format!("equilibrium paused unexpectedly after {} iterations", r.report.iterations))),
+        Progress::Suspended(r) => Err(SolveError::Invalid(format!(
+            "equilibrium paused unexpectedly after {} iterations",
+            r.report.iterations
+        ))),
     }
 }
 
@@ -233,7 +236,12 @@ impl Stall {
 }
 
 /// Tries the methods in turn.
-fn solve_inner(model: &mut BearingModel, ctx: &mut eval::Ctx<'_>, start: Option<&[f64]>, cancel: &dyn Cancel) -> Result<Progress<Found, Resume>, SolveError> {
+fn solve_inner(
+    model: &mut BearingModel,
+    ctx: &mut eval::Ctx<'_>,
+    start: Option<&[f64]>,
+    cancel: &dyn Cancel,
+) -> Result<Progress<Found, Resume>, SolveError> {
     let cb = model.assembled_clearance;
     let n = model.n_dofs();
     if let LoadSpec::Position { eccentricity_ratio, angle_rad } = ctx.op.load {
@@ -241,11 +249,18 @@ fn solve_inner(model: &mut BearingModel, ctx: &mut eval::Ctx<'_>, start: Option<
         let mut u = start.filter(|s| s.len() == n).map_or_else(|| vec![0.0; n], <[f64]>::to_vec);
         u[..2].copy_from_slice(&journal);
         let (pads, force) = eval::solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| match e {
-            FilmError::Contact { h_min_m, .. } => SolveError::Touchdown { pad: k, h_min_um: h_min_m * 1e6, eccentricity_ratio },
+            FilmError::Contact { h_min_m, .. } => {
+                SolveError::Touchdown { pad: k, h_min_um: h_min_m * 1e6, eccentricity_ratio }
+            }
             e => ctx.film_error(k, e),
         })?;
         let u = eval::assemble_u(model, journal, &pads);
-        return Ok(Progress::Done(Found { u, pads, force, method: "prescribed journal position (pads solved)".into() }));
+        return Ok(Progress::Done(Found {
+            u,
+            pads,
+            force,
+            method: "prescribed journal position (pads solved)".into(),
+        }));
     }
 
     // Initial guess: previous solution, else a small displacement along the load.
@@ -264,7 +279,9 @@ fn solve_inner(model: &mut BearingModel, ctx: &mut eval::Ctx<'_>, start: Option<
     match coupled::coupled_newton(model, &u0, cold, ctx, cancel)? {
         Progress::Suspended(r) => return Ok(Progress::Suspended(r)),
         Progress::Done(Ok(found)) => return Ok(Progress::Done(found)),
-        Progress::Done(Err(fail)) => ctx.report.warn(format!("coupled Newton failed ({}); trying the fallbacks", fail.reason)),
+        Progress::Done(Err(fail)) => {
+            ctx.report.warn(format!("coupled Newton failed ({}); trying the fallbacks", fail.reason))
+        }
     }
     // The fallbacks run to the end once started (their state is not a single iterate to resume from).
     fallback::run(model, &u0, ctx, &NoSuspend(cancel)).map(Progress::Done)

@@ -24,7 +24,13 @@ use super::eval::{eval_pad, pad_scales, relative, structural_force, Ctx};
 use super::{PadState, NO_PRESSURE_SHARE, ONSET_FIRST_STEP, ONSET_WIDTH, SUFFICIENT_DECREASE, UNLOADED_SHARE};
 
 /// Solves one pad's coordinates for a fixed journal position (warm-started from `q`).
-pub(super) fn solve_pad(pm: &mut PadModel, k: usize, journal: [f64; 2], q: &[f64], ctx: &mut Ctx<'_>) -> Result<PadState, FilmError> {
+pub(super) fn solve_pad(
+    pm: &mut PadModel,
+    k: usize,
+    journal: [f64; 2],
+    q: &[f64],
+    ctx: &mut Ctx<'_>,
+) -> Result<PadState, FilmError> {
     let local: Vec<f64> = journal.iter().chain(q).copied().collect();
     if pm.dofs().is_empty() || ctx.held(k) {
         let (forces, lin) = eval_pad(pm, k, &local, ctx)?;
@@ -116,7 +122,13 @@ fn thinnest(pm: &PadModel, h: &[f64]) -> FilmError {
 /// [`ONSET_WIDTH`] of the admissible interval away from the warm start (a pad placed before and moved with
 /// the journal is found in two film solves), then bisected to that width; the pressure-free end is
 /// returned, so a floating pad adds no force at all.
-fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mut Ctx<'_>) -> Result<PadState, FilmError> {
+fn tilt_search(
+    pm: &mut PadModel,
+    k: usize,
+    local: &[f64],
+    slot: usize,
+    ctx: &mut Ctx<'_>,
+) -> Result<PadState, FilmError> {
     let (lo, hi) = admissible_interval(pm, local, slot)?;
     let range = hi - lo;
     let margin = 1e-7 * range;
@@ -143,7 +155,13 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
         let rel = relative(r, scale);
         let share = forces[0].hypot(forces[1]) / ctx.force_scale;
         let loaded = share > NO_PRESSURE_SHARE;
-        let state = PadState { q: local[JOURNAL_DOFS..].to_vec(), forces, lin, unloaded: share < UNLOADED_SHARE || kt <= 0.0, residual: rel };
+        let state = PadState {
+            q: local[JOURNAL_DOFS..].to_vec(),
+            forces,
+            lin,
+            unloaded: share < UNLOADED_SHARE || kt <= 0.0,
+            residual: rel,
+        };
         // Onset of pressure: loaded, the moment still pushing the trailing edge out, a vanishing share (there
         // the moment is second order in the tilt, so a small moment says nothing about the distance to the root).
         let onset = loaded && share < UNLOADED_SHARE && r <= 0.0;
@@ -171,14 +189,17 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
         let newton = if kt > 0.0 && loaded { d + r / kt } else { f64::NAN };
         if exact_onset.is_none() && (!loaded || r <= 0.0) {
             let inp = ctx.op.film_inputs(k);
-            exact_onset = Some(pm.film.pressure_free_interval(&local, slot, &inp).map(|(_, end)| end).filter(|&x| x >= lo && x < hi));
+            exact_onset = Some(
+                pm.film.pressure_free_interval(&local, slot, &inp).map(|(_, end)| end).filter(|&x| x >= lo && x < hi),
+            );
         }
         let onset_at = exact_onset.flatten();
         let probe = onset_at.map(|x| x + 0.5 * width);
         // Towards the onset: no pressure here, or the moment pushes the pad back and Newton heads for the onset
         // (it would cross into the pressure-free range, or halve the distance to it: the moment has a double
         // root at the onset, where Newton converges only linearly).
-        let towards_onset = !loaded || onset || (r <= 0.0 && onset_at.is_some_and(|x| newton.is_nan() || newton - x <= 0.6 * (d - x)));
+        let towards_onset =
+            !loaded || onset || (r <= 0.0 && onset_at.is_some_and(|x| newton.is_nan() || newton - x <= 0.6 * (d - x)));
         let next = if let Some(p) = probe.filter(|&p| inside(p) && onset_pts[0].is_none() && towards_onset) {
             // Just past the exact onset of pressure: is the moment there pushing the pad back (then the root is
             // the onset)?
@@ -194,7 +215,11 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
                 _ => 0.5 * (blo + bhi),
             };
             let x = est.max(blo + 0.5 * width);
-            if inside(x) { x } else { 0.5 * (blo + bhi) }
+            if inside(x) {
+                x
+            } else {
+                0.5 * (blo + bhi)
+            }
         } else if inside(newton) && !onset {
             newton
         } else if !loaded && bhi == hi - margin && inside(d + reach) {
@@ -220,14 +245,22 @@ fn tilt_search(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, ctx: &mu
         last = Some(state);
         d = next;
     }
-    last.map(|s| if s.unloaded { PadState { residual: 0.0, ..s } } else { s }).ok_or_else(|| FilmError::Input("no tilt iteration".into()))
+    last.map(|s| if s.unloaded { PadState { residual: 0.0, ..s } } else { s })
+        .ok_or_else(|| FilmError::Input("no tilt iteration".into()))
 }
 
 /// Tilt samples across the loaded side when looking for a loaded root beyond the onset of pressure.
 const LOADED_ROOT_SAMPLES: usize = 12;
 
 /// One evaluation of the tilt moment residual `r` and its slope `dr/dδ` at tilt `d`.
-fn moment_at(pm: &mut PadModel, k: usize, local: &mut [f64], slot: usize, d: f64, ctx: &mut Ctx<'_>) -> Result<(f64, f64, PadState), FilmError> {
+fn moment_at(
+    pm: &mut PadModel,
+    k: usize,
+    local: &mut [f64],
+    slot: usize,
+    d: f64,
+    ctx: &mut Ctx<'_>,
+) -> Result<(f64, f64, PadState), FilmError> {
     let t = slot - JOURNAL_DOFS;
     local[slot] = d;
     let (forces, lin) = eval_pad(pm, k, local, ctx)?;
@@ -235,7 +268,11 @@ fn moment_at(pm: &mut PadModel, k: usize, local: &mut [f64], slot: usize, d: f64
     let slope = -(lin.stiffness[(slot, slot)] + pm.structure.stiffness[(t, t)]);
     let rel = relative(r, pad_scales(pm, &forces, ctx.force_scale)[t]);
     let share = forces[0].hypot(forces[1]) / ctx.force_scale;
-    Ok((r, slope, PadState { q: local[JOURNAL_DOFS..].to_vec(), forces, lin, unloaded: share < UNLOADED_SHARE, residual: rel }))
+    Ok((
+        r,
+        slope,
+        PadState { q: local[JOURNAL_DOFS..].to_vec(), forces, lin, unloaded: share < UNLOADED_SHARE, residual: rel },
+    ))
 }
 
 /// A pad whose moment pushes it back just past the onset of pressure may still have a loaded root further
@@ -244,7 +281,15 @@ fn moment_at(pm: &mut PadModel, k: usize, local: &mut [f64], slot: usize, d: f64
 /// pressure-free side), so the loaded root is preferred when it exists — a deterministic choice whatever the
 /// starting point. The loaded side `(from, to)` is sampled for a positive moment or a local maximum of the
 /// moment (slope changing sign), and the falling root after it is bracketed and solved.
-fn loaded_root_beyond(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, from: f64, to: f64, ctx: &mut Ctx<'_>) -> Result<Option<PadState>, FilmError> {
+fn loaded_root_beyond(
+    pm: &mut PadModel,
+    k: usize,
+    local: &[f64],
+    slot: usize,
+    from: f64,
+    to: f64,
+    ctx: &mut Ctx<'_>,
+) -> Result<Option<PadState>, FilmError> {
     let mut local = local.to_vec();
     let step = (to - from) / (LOADED_ROOT_SAMPLES + 1) as f64;
     let mut prev: Option<(f64, f64, f64)> = None;
@@ -270,7 +315,11 @@ fn loaded_root_beyond(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, f
                         positive = Some(x);
                         break;
                     }
-                    if sx > 0.0 { (a, sa) = (x, sx) } else { (b, sb) = (x, sx) }
+                    if sx > 0.0 {
+                        (a, sa) = (x, sx)
+                    } else {
+                        (b, sb) = (x, sx)
+                    }
                 }
                 if positive.is_some() || best < 0.0 {
                     break;
@@ -289,7 +338,11 @@ fn loaded_root_beyond(pm: &mut PadModel, k: usize, local: &[f64], slot: usize, f
         if st.residual <= ctx.params.pad_tol && !st.unloaded {
             return Ok(Some(st));
         }
-        if r > 0.0 { a = x } else { b = x }
+        if r > 0.0 {
+            a = x
+        } else {
+            b = x
+        }
         let newton = if slope < 0.0 { x - r / slope } else { f64::NAN };
         x = if newton > a && newton < b { newton } else { 0.5 * (a + b) };
         if b - a <= 1e-13 * (to - from) {
@@ -328,7 +381,13 @@ fn coordinate_residual(pm: &PadModel, st: &PadState, d: usize, ctx: &Ctx<'_>) ->
 
 /// One non-tilt coordinate `d` (pivot translation, elastic mode), the tilt solved inside: Newton on the
 /// decreasing residual, safeguarded by a bracket; a position where the film closes moves the pad out.
-fn solve_one(pm: &mut PadModel, k: usize, mut local: Vec<f64>, d: usize, ctx: &mut Ctx<'_>) -> Result<PadState, FilmError> {
+fn solve_one(
+    pm: &mut PadModel,
+    k: usize,
+    mut local: Vec<f64>,
+    d: usize,
+    ctx: &mut Ctx<'_>,
+) -> Result<PadState, FilmError> {
     let slot = JOURNAL_DOFS + d;
     let clearance = pm.film.geom.base.node.iter().fold(0.0_f64, |m, &h| m.max(h));
     // Unit of the coordinate's film shape: a translation or mode of 0.1 Cp moves the film by about 0.1 Cp.
@@ -415,14 +474,26 @@ fn opening_side(pm: &PadModel, slot: usize, contact: &FilmError) -> Option<bool>
 
 /// Several non-tilt coordinates: the coupled Newton step when it lowers the residual, else one bracketed
 /// sweep over the coordinates.
-fn solve_several(pm: &mut PadModel, k: usize, mut local: Vec<f64>, others: &[usize], ctx: &mut Ctx<'_>) -> Result<PadState, FilmError> {
-    let merit = |pm: &PadModel, st: &PadState, ctx: &Ctx<'_>| others.iter().map(|&d| coordinate_residual(pm, st, d, ctx)).map(|(r, s)| (r / s).powi(2)).sum::<f64>();
+fn solve_several(
+    pm: &mut PadModel,
+    k: usize,
+    mut local: Vec<f64>,
+    others: &[usize],
+    ctx: &mut Ctx<'_>,
+) -> Result<PadState, FilmError> {
+    let merit = |pm: &PadModel, st: &PadState, ctx: &Ctx<'_>| {
+        others.iter().map(|&d| coordinate_residual(pm, st, d, ctx)).map(|(r, s)| (r / s).powi(2)).sum::<f64>()
+    };
     let mut st = solve_tilt(pm, k, &local, ctx)?;
     for _ in 0..ctx.params.max_inner_iterations {
         ctx.report.inner_iterations += 1;
         local[JOURNAL_DOFS..].copy_from_slice(&st.q);
         let m0 = merit(pm, &st, ctx);
-        let worst = others.iter().map(|&d| coordinate_residual(pm, &st, d, ctx)).map(|(r, s)| relative(r, s)).fold(0.0, f64::max);
+        let worst = others
+            .iter()
+            .map(|&d| coordinate_residual(pm, &st, d, ctx))
+            .map(|(r, s)| relative(r, s))
+            .fold(0.0, f64::max);
         if worst <= ctx.params.pad_tol {
             return Ok(PadState { residual: worst.max(st.residual), ..st });
         }

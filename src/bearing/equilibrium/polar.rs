@@ -112,14 +112,28 @@ impl Search<'_, '_, '_> {
     fn ray_without_root(&mut self, psi: f64) -> Result<Result<Found, Stall>, SolveError> {
         if let Some((pad, g_before, g_after)) = self.jump {
             self.ctx.gap_2d = Some((pad, psi, g_before, g_after));
-            return Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: "the force along a ray inside the angular bracket jumps over zero".into() }));
+            return Ok(Err(Stall {
+                journal: [0.0; 2],
+                residual: f64::INFINITY,
+                reason: "the force along a ray inside the angular bracket jumps over zero".into(),
+            }));
         }
-        Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: "a ray without a restoring root inside the angular bracket".into() }))
+        Ok(Err(Stall {
+            journal: [0.0; 2],
+            residual: f64::INFINITY,
+            reason: "a ray without a restoring root inside the angular bracket".into(),
+        }))
     }
 
     /// The ray's root to a tolerance of [`RAY_TOL_FRACTION`] of `transverse_scale` [N]; solved again to a tenth
     /// of the tolerance when its transverse residual is already within the tolerance (a candidate answer).
-    fn ray_to(&mut self, psi: f64, guess: f64, transverse_scale: f64, cancel: &dyn Cancel) -> Result<Option<RayRoot>, SolveError> {
+    fn ray_to(
+        &mut self,
+        psi: f64,
+        guess: f64,
+        transverse_scale: f64,
+        cancel: &dyn Cancel,
+    ) -> Result<Option<RayRoot>, SolveError> {
         let tight = 0.1 * self.tol;
         self.ray_tol = (RAY_TOL_FRACTION * transverse_scale).max(tight);
         let r = self.ray(psi, guess, cancel)?;
@@ -175,10 +189,14 @@ impl Search<'_, '_, '_> {
             let gb = pb.as_ref().map_or(f64::NEG_INFINITY, |p| p.g);
             let converged_b = gb.abs() <= self.ray_tol;
             if converged_b || pa.g.abs() <= self.ray_tol || (b - a).abs() <= 1e-13 * cb {
-                if let Some(p) = pb.as_ref().filter(|p| !converged_b && pa.g.abs() > self.ray_tol && pa.g - p.g > JUMP * self.w[0].hypot(self.w[1])) {
+                if let Some(p) = pb.as_ref().filter(|p| {
+                    !converged_b && pa.g.abs() > self.ray_tol && pa.g - p.g > JUMP * self.w[0].hypot(self.w[1])
+                }) {
                     // No root but a jump: a pad switched between floating and a loaded state across it (any
                     // other jump — near a closing film, say — is only the end of this ray's search).
-                    if let Some(pad) = switching_pad(self.ctx, (&pa.states, pa.thinnest.1), (&p.states, p.thinnest.1), cb) {
+                    if let Some(pad) =
+                        switching_pad(self.ctx, (&pa.states, pa.thinnest.1), (&p.states, p.thinnest.1), cb)
+                    {
                         self.jump = Some((pad, pa.g, p.g));
                     }
                     return Ok(None);
@@ -195,7 +213,15 @@ impl Search<'_, '_, '_> {
                 };
                 let perp = [-psi.sin(), psi.cos()];
                 let h = (p.force[0] + self.w[0]) * perp[0] + (p.force[1] + self.w[1]) * perp[1];
-                return Ok(Some(RayRoot { s, thinnest: p.thinnest, g: p.g, h, u: p.u, states: p.states, force: p.force }));
+                return Ok(Some(RayRoot {
+                    s,
+                    thinnest: p.thinnest,
+                    g: p.g,
+                    h,
+                    u: p.u,
+                    states: p.states,
+                    force: p.force,
+                }));
             }
             let x = illinois(a, fa_scale * pa.g, b, fb_scale * gb);
             match self.probe(psi, x)? {
@@ -237,16 +263,27 @@ fn switching_pad(ctx: &Ctx<'_>, a: (&[PadState], f64), b: (&[PadState], f64), cb
 /// Where a pad has two states (floating, and loaded beyond a fold), the loaded one is taken: the force law is
 /// then one function of the journal position, and a jump in it is a property of the bearing. A load ray that
 /// ends at such a jump (the force along it steps across the load) is recorded in `ctx.force_gap`.
-pub(super) fn polar_search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+pub(super) fn polar_search(
+    model: &mut BearingModel,
+    centred: &[f64],
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Result<Found, Stall>, SolveError> {
     let thorough = std::mem::replace(&mut ctx.thorough_onset, true);
     let found = search(model, centred, ctx, cancel);
     ctx.thorough_onset = thorough;
     found
 }
 
-fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Result<Found, Stall>, SolveError> {
+fn search(
+    model: &mut BearingModel,
+    centred: &[f64],
+    ctx: &mut Ctx<'_>,
+    cancel: &dyn Cancel,
+) -> Result<Result<Found, Stall>, SolveError> {
     let w = external_load(ctx.op, 1.0);
-    let stall = |reason: &str| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: reason.to_string() }));
+    let stall =
+        |reason: &str| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: reason.to_string() }));
     if w[0].hypot(w[1]) <= 0.0 {
         return stall("no load to search along");
     }
@@ -270,7 +307,11 @@ fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: 
     let (mut a, mut ra, mut b, mut rb) = (psi_w, None, psi_w, None);
     let mut step = FIRST_ANGLE_STEP;
     let up = mid.h > 0.0;
-    if up { (a, ra) = (psi_w, Some(mid)) } else { (b, rb) = (psi_w, Some(mid)) }
+    if up {
+        (a, ra) = (psi_w, Some(mid))
+    } else {
+        (b, rb) = (psi_w, Some(mid))
+    }
     loop {
         let done_a = ra.as_ref().is_some_and(|r: &RayRoot| r.g.hypot(r.h) <= tol);
         let done_b = rb.as_ref().is_some_and(|r: &RayRoot| r.g.hypot(r.h) <= tol);
@@ -339,5 +380,9 @@ fn search(model: &mut BearingModel, centred: &[f64], ctx: &mut Ctx<'_>, cancel: 
         search.ctx.closes_before_balance = Some((r.thinnest.0, r.thinnest.1, r.s / cb));
     }
     let best = best.map_or(f64::INFINITY, |r| r.g.hypot(r.h));
-    Ok(Err(Stall { journal: [0.0; 2], residual: best / search.ctx.force_scale, reason: "angular bracket exhausted".into() }))
+    Ok(Err(Stall {
+        journal: [0.0; 2],
+        residual: best / search.ctx.force_scale,
+        reason: "angular bracket exhausted".into(),
+    }))
 }

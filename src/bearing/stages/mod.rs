@@ -104,7 +104,12 @@ pub trait Stage: Default + 'static {
     ///
     /// # Errors
     /// The stage's failure (the caller keeps its last good outcome).
-    fn poll(&mut self, inputs: &Self::Inputs, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<Self::Output>, SolveError>;
+    fn poll(
+        &mut self,
+        inputs: &Self::Inputs,
+        ctx: &mut Ctx<'_>,
+        cancel: &dyn Cancel,
+    ) -> Result<Poll<Self::Output>, SolveError>;
 
     /// The output as the caller sees it (`None`: internal).
     fn publish(&mut self, _output: &Self::Output, _req: &Request) -> Option<Published> {
@@ -234,7 +239,10 @@ impl Outcome {
 #[derive(Debug, Clone)]
 pub enum Step {
     /// More work to do: the stage worked on, and its completed fraction (1 when it just finished).
-    Pending { stage: StageId, fraction: f64 },
+    Pending {
+        stage: StageId,
+        fraction: f64,
+    },
     Done(Outcome),
 }
 
@@ -367,7 +375,9 @@ impl Ctx<'_> {
     ///
     /// # Errors
     /// As [`Self::output`].
-    pub fn outputs_mut<A: Registered, B: Registered>(&mut self) -> Result<(&mut A::Output, &mut B::Output), SolveError> {
+    pub fn outputs_mut<A: Registered, B: Registered>(
+        &mut self,
+    ) -> Result<(&mut A::Output, &mut B::Output), SolveError> {
         let (ia, ib) = (self.check::<A>()?, self.check::<B>()?);
         let (ea, eb) = (self.refuse::<A>("its output is not current"), self.refuse::<B>("its output is not current"));
         let (mut a, mut b) = (None, None);

@@ -8,14 +8,20 @@ use crate::model::load_case;
 fn case(set: &[&str]) -> Case {
     let text = include_str!("../../../cases/fillon-a.toml");
     // These tests are about the isothermal stages; the thermal stage has its own test below.
-    let set: Vec<String> = std::iter::once("thermal.model=\"isothermal\"").chain(set.iter().copied()).map(str::to_string).collect();
+    let set: Vec<String> =
+        std::iter::once("thermal.model=\"isothermal\"").chain(set.iter().copied()).map(str::to_string).collect();
     load_case(&text.replace("fidelity = \"standard\"", "fidelity = \"preview\""), &set).unwrap().1
 }
 
 const RATIOS: [f64; 3] = [0.5, 1.0, 2.0];
 
 fn with_sweep(case: Case) -> Request {
-    Request { case, wanted: vec![StageId::Reduction, StageId::FrequencySweep], frequency_ratios: RATIOS.to_vec(), speeds_rpm: Vec::new() }
+    Request {
+        case,
+        wanted: vec![StageId::Reduction, StageId::FrequencySweep],
+        frequency_ratios: RATIOS.to_vec(),
+        speeds_rpm: Vec::new(),
+    }
 }
 
 /// Runs of (Films, Equilibrium, Thermal, Coefficients, Reduction, FrequencySweep, SpeedSweep); the FRF
@@ -34,12 +40,22 @@ fn the_frf_stage_reads_the_ports_pads_only() {
         let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
         load_case(include_str!("../../../cases/test-rig-pub5.toml"), &set).unwrap().1
     };
-    let req = |case: Case| Request { case, wanted: vec![StageId::Reduction, StageId::Frf], frequency_ratios: Vec::new(), speeds_rpm: Vec::new() };
+    let req = |case: Case| Request {
+        case,
+        wanted: vec![StageId::Reduction, StageId::Frf],
+        frequency_ratios: Vec::new(),
+        speeds_rpm: Vec::new(),
+    };
     let mut s = Stages::new();
     let first = s.run(&req(rig(&[])), &NoCancel).unwrap();
     let model = first.get::<crate::bearing::frf_job::FrfModel>(StageId::Frf).unwrap();
     assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (1, 1));
-    for edit in ["hydraulics.port.0.air_fraction=0.01", "hydraulics.port.0.line_length_mm=1500", "hydraulics.valve.natural_frequency_hz=80", "hydraulics.supply_pressure_bar=40"] {
+    for edit in [
+        "hydraulics.port.0.air_fraction=0.01",
+        "hydraulics.port.0.line_length_mm=1500",
+        "hydraulics.valve.natural_frequency_hz=80",
+        "hydraulics.supply_pressure_bar=40",
+    ] {
         let o = s.run(&req(rig(&[edit])), &NoCancel).unwrap();
         assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (1, 1), "{edit} ran a stage");
         assert!(Arc::ptr_eq(&o.get::<crate::bearing::frf_job::FrfModel>(StageId::Frf).unwrap(), &model));
@@ -49,7 +65,8 @@ fn the_frf_stage_reads_the_ports_pads_only() {
     // The CLI's model (the stage run alone) is the app's, to round-off.
     let alone = crate::bearing::frf_job::FrfModel::new(&rig(&[])).unwrap();
     let dk = (&alone.dynamics.k - &model.dynamics.k).norm() / model.dynamics.k.norm();
-    let df = (&alone.dynamics.coupling.force - &model.dynamics.coupling.force).norm() / model.dynamics.coupling.force.norm();
+    let df =
+        (&alone.dynamics.coupling.force - &model.dynamics.coupling.force).norm() / model.dynamics.coupling.force.norm();
     assert!(dk < 1e-9 && df < 1e-9, "{dk:e} {df:e}");
     assert!(model.dynamics.m.norm() > 0.0, "pad inertia");
 }
@@ -106,7 +123,8 @@ fn edits_that_no_stage_reads_run_nothing() {
 fn pad_density_reruns_only_what_depends_on_inertia() {
     let mut s = Stages::new();
     let light = s.run(&with_sweep(case(&[])), &NoCancel).unwrap().solution().unwrap();
-    let heavy = s.run(&with_sweep(case(&["bearing.pads.density_kg_per_m3=15600"])), &NoCancel).unwrap().solution().unwrap();
+    let heavy =
+        s.run(&with_sweep(case(&["bearing.pads.density_kg_per_m3=15600"])), &NoCancel).unwrap().solution().unwrap();
     // Films, equilibrium untouched; coefficients, reduction and the frequency sweep rerun.
     assert_eq!(runs(&s), [1, 1, 0, 2, 2, 2, 0]);
     // The inertia is proportional to the density; the film's K and C are unchanged.
@@ -138,7 +156,12 @@ fn pivot_stiffness_reruns_the_equilibrium_on_the_same_films() {
     assert!(pivot(&b) < 0.5 * pivot(&a), "{} vs {}", pivot(&b), pivot(&a));
     let fresh = crate::bearing::solve_case(&stiff).unwrap();
     let rel = |x: f64, y: f64| ((x - y) / y).abs();
-    assert!(rel(b.eccentricity_ratio, fresh.eccentricity_ratio) < 1e-6, "{} vs {}", b.eccentricity_ratio, fresh.eccentricity_ratio);
+    assert!(
+        rel(b.eccentricity_ratio, fresh.eccentricity_ratio) < 1e-6,
+        "{} vs {}",
+        b.eccentricity_ratio,
+        fresh.eccentricity_ratio
+    );
     assert!(rel(pivot(&b), pivot(&fresh)) < 1e-5);
     assert!(rel(b.reduced.k_n_per_m[1][1], fresh.reduced.k_n_per_m[1][1]) < 1e-5);
     // Removing the spring changes the pads' coordinates: new films.
@@ -148,7 +171,8 @@ fn pivot_stiffness_reruns_the_equilibrium_on_the_same_films() {
 
 fn flexible(set: &[&str]) -> Case {
     let text = include_str!("../../../cases/compressor-bearing-flexible.toml");
-    let set: Vec<String> = std::iter::once("mesh.fidelity=preview").chain(set.iter().copied()).map(str::to_string).collect();
+    let set: Vec<String> =
+        std::iter::once("mesh.fidelity=preview").chain(set.iter().copied()).map(str::to_string).collect();
     load_case(text, &set).unwrap().1
 }
 
@@ -169,21 +193,35 @@ fn pad_modes_are_computed_once_per_pad_shape_and_kept_across_operating_edits() {
     let modes = modes_of(&first);
     // Five identical pads: one computation, shared.
     let m0 = modes[0].clone().expect("flexible pads");
-    assert!(modes.iter().all(|m| m.as_ref().is_some_and(|m| Arc::ptr_eq(m, &m0))), "identical pads share one computation");
+    assert!(
+        modes.iter().all(|m| m.as_ref().is_some_and(|m| Arc::ptr_eq(m, &m0))),
+        "identical pads share one computation"
+    );
     // Speed and load: the films (and the modes in them) are kept; the very same modes are used.
     for edit in ["operating.speed_rpm=7000", "operating.load_n=3000"] {
         let again = s.run(&Request::solution(flexible(&[edit])), &NoCancel).unwrap().solution().unwrap();
         assert_eq!(runs(&s)[0], 1, "{edit} rebuilt the films");
-        assert!(modes_of(&again).iter().all(|m| m.as_ref().is_some_and(|m| Arc::ptr_eq(m, &m0))), "{edit} recomputed the modes");
+        assert!(
+            modes_of(&again).iter().all(|m| m.as_ref().is_some_and(|m| Arc::ptr_eq(m, &m0))),
+            "{edit} recomputed the modes"
+        );
         assert_ne!(again.eccentricity_ratio, first.eccentricity_ratio, "{edit} changes the solution");
     }
     // What the modes read recomputes them: E (frequency ∝ √E) and density (∝ 1/√ρ).
     let f0 = m0.modes[0].frequency_hz;
-    let stiff = s.run(&Request::solution(flexible(&["bearing.pads.youngs_modulus_gpa=800"])), &NoCancel).unwrap().solution().unwrap();
+    let stiff = s
+        .run(&Request::solution(flexible(&["bearing.pads.youngs_modulus_gpa=800"])), &NoCancel)
+        .unwrap()
+        .solution()
+        .unwrap();
     assert_eq!(runs(&s)[0], 2);
     let f = modes_of(&stiff)[0].as_ref().unwrap().modes[0].frequency_hz;
     assert!((f / f0 - 2.0).abs() < 1e-9, "E × 4 doubles the frequency: {f} / {f0}");
-    let light = s.run(&Request::solution(flexible(&["bearing.pads.density_kg_per_m3=1950"])), &NoCancel).unwrap().solution().unwrap();
+    let light = s
+        .run(&Request::solution(flexible(&["bearing.pads.density_kg_per_m3=1950"])), &NoCancel)
+        .unwrap()
+        .solution()
+        .unwrap();
     assert_eq!(runs(&s)[0], 3);
     let f = modes_of(&light)[0].as_ref().unwrap().modes[0].frequency_hz;
     assert!((f / f0 - 2.0).abs() < 1e-9, "ρ / 4 doubles the frequency: {f} / {f0}");
@@ -222,16 +260,30 @@ fn a_suspended_equilibrium_resumes_from_its_iterate_and_reaches_the_same_solutio
     assert!(equilibrium_steps > pads, "the solve was split: {equilibrium_steps} steps for {pads} pads");
     assert_eq!(s.runs(StageId::Equilibrium), 1);
     assert!(parts.report.method.contains("resumed"), "{}", parts.report.method);
-    assert!(parts.report.iterations + pads >= equilibrium_steps, "the report counts every part: {}", parts.report.iterations);
+    assert!(
+        parts.report.iterations + pads >= equilibrium_steps,
+        "the report counts every part: {}",
+        parts.report.iterations
+    );
     assert_eq!(parts.report.residual_history.len(), parts.report.iterations);
     assert!(parts.report.residual < 1e-9, "converged: {:e}", parts.report.residual);
     let rel = |a: f64, b: f64| ((a - b) / b).abs();
-    assert!(rel(parts.eccentricity_ratio, whole.eccentricity_ratio) < 1e-6, "{} vs {}", parts.eccentricity_ratio, whole.eccentricity_ratio);
+    assert!(
+        rel(parts.eccentricity_ratio, whole.eccentricity_ratio) < 1e-6,
+        "{} vs {}",
+        parts.eccentricity_ratio,
+        whole.eccentricity_ratio
+    );
     assert!(rel(parts.reduced.k_n_per_m[1][1], whole.reduced.k_n_per_m[1][1]) < 1e-5);
 }
 
 fn speed_request(case: Case) -> Request {
-    Request { case, wanted: vec![StageId::SpeedSweep], frequency_ratios: Vec::new(), speeds_rpm: vec![2000.0, 3000.0, 4000.0] }
+    Request {
+        case,
+        wanted: vec![StageId::SpeedSweep],
+        frequency_ratios: Vec::new(),
+        speeds_rpm: vec![2000.0, 3000.0, 4000.0],
+    }
 }
 
 #[test]
@@ -278,7 +330,12 @@ fn speed_sweep_runs_point_by_point_and_is_cached() {
     assert!(e[0] > e[1] && e[1] > e[2], "eccentricity falls with speed: {e:?}");
     // The 4000 rpm point is the case's own solution.
     let own = crate::bearing::solve_case(&req.case).unwrap();
-    assert!(((e[2] - own.eccentricity_ratio) / own.eccentricity_ratio).abs() < 1e-6, "{} vs {}", e[2], own.eccentricity_ratio);
+    assert!(
+        ((e[2] - own.eccentricity_ratio) / own.eccentricity_ratio).abs() < 1e-6,
+        "{} vs {}",
+        e[2],
+        own.eccentricity_ratio
+    );
     // Cached; the case's speed is not an input of the sweep.
     s.run(&req, &NoCancel).unwrap();
     s.run(&speed_request(case(&["operating.speed_rpm=3000"])), &NoCancel).unwrap();
@@ -314,14 +371,26 @@ fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
     let whole = crate::bearing::solve_point(&mut m, &mut None, &req.case, None, &NoCancel).unwrap();
     let w = whole.thermal.as_ref().unwrap();
     assert!((w.t_max_film_c - t.t_max_film_c).abs() < 1e-3, "{} vs {}", w.t_max_film_c, t.t_max_film_c);
-    assert!(sol.pads.iter().all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
+    assert!(sol
+        .pads
+        .iter()
+        .all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
     // The headline report is the whole solve's: every equilibrium of the loop and its time, plus (through
     // the stages) the isothermal start; not the last equilibrium's.
     let (r, wr) = (&sol.report, &whole.report);
-    assert_eq!((wr.iterations, wr.film_solves, wr.seconds), (w.report.equilibrium_iterations, w.report.film_solves, w.report.seconds));
-    assert!(wr.inner_iterations == w.report.inner_iterations && wr.factorizations > w.report.equilibrium_factorizations);
+    assert_eq!(
+        (wr.iterations, wr.film_solves, wr.seconds),
+        (w.report.equilibrium_iterations, w.report.film_solves, w.report.seconds)
+    );
+    assert!(
+        wr.inner_iterations == w.report.inner_iterations && wr.factorizations > w.report.equilibrium_factorizations
+    );
     assert!(r.seconds > t.report.seconds, "{} s vs the loop's {} s", r.seconds, t.report.seconds);
-    assert!(r.iterations > t.report.equilibrium_iterations && r.film_solves > t.report.film_solves, "{r:?} vs {:?}", t.report);
+    assert!(
+        r.iterations > t.report.equilibrium_iterations && r.film_solves > t.report.film_solves,
+        "{r:?} vs {:?}",
+        t.report
+    );
     // A thermal setting reruns only the thermal stage (and those after it).
     req.case = thd(&["thermal.convection_w_per_m2_k=150"]);
     s.run(&req, &NoCancel).unwrap();
@@ -368,7 +437,9 @@ fn every_stage_reads_only_stages_registered_before_it() {
     }
     // What a wanted stage pulls in: the reduction reads films, equilibrium, thermal (when it applies) and
     // coefficients; the speed sweep only the films.
-    let needed = |w: &[StageId]| -> Vec<StageId> { Stages::needed(w).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect() };
+    let needed = |w: &[StageId]| -> Vec<StageId> {
+        Stages::needed(w).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect()
+    };
     use StageId::*;
     assert_eq!(needed(&[Reduction]), vec![Films, Equilibrium, Thermal, Coefficients, Reduction]);
     assert_eq!(needed(&[SpeedSweep]), vec![Films, SpeedSweep]);

@@ -55,7 +55,10 @@ impl From<&Solution> for SolutionData {
                 field: std::mem::take(&mut p.field),
                 flex: p.flex.take(),
                 solid: p.thermal.as_mut().and_then(|t| t.solid.take()),
-                growth: p.thermal_growth.as_mut().map(|g| (std::mem::take(&mut g.nodal_polar_m), std::mem::take(&mut g.radii_m))),
+                growth: p
+                    .thermal_growth
+                    .as_mut()
+                    .map(|g| (std::mem::take(&mut g.nodal_polar_m), std::mem::take(&mut g.radii_m))),
             })
             .collect();
         Self { solution, pads }
@@ -191,14 +194,29 @@ mod tests {
     fn a_tehd_outcome_round_trips_with_its_drawing_data() {
         let c = case(
             include_str!("../../../cases/compressor-bearing-flexible.toml"),
-            &["mesh.fidelity=\"preview\"", "thermal.model=\"thd\"", "thermal.pad_expansion_ppm_per_k=12", "thermal.journal_expansion_ppm_per_k=11", "thermal.reference_temperature_c=20"],
+            &[
+                "mesh.fidelity=\"preview\"",
+                "thermal.model=\"thd\"",
+                "thermal.pad_expansion_ppm_per_k=12",
+                "thermal.journal_expansion_ppm_per_k=11",
+                "thermal.reference_temperature_c=20",
+            ],
         );
-        let req = Request { case: c, wanted: vec![StageId::Reduction, StageId::FrequencySweep, StageId::SpeedSweep], frequency_ratios: vec![0.5, 1.0], speeds_rpm: vec![8000.0] };
+        let req = Request {
+            case: c,
+            wanted: vec![StageId::Reduction, StageId::FrequencySweep, StageId::SpeedSweep],
+            frequency_ratios: vec![0.5, 1.0],
+            speeds_rpm: vec![8000.0],
+        };
         let back = round_trip(&req);
         let s = back.solution().unwrap();
         let pad = &s.pads[0];
         assert!(!pad.field.pressure_pa.is_empty() && pad.flex.is_some());
-        assert!(pad.thermal.as_ref().and_then(|t| t.solid.as_ref()).is_some_and(|solid| !solid.temperature_c.is_empty()));
+        assert!(pad
+            .thermal
+            .as_ref()
+            .and_then(|t| t.solid.as_ref())
+            .is_some_and(|solid| !solid.temperature_c.is_empty()));
         assert!(pad.thermal_growth.as_ref().is_some_and(|g| !g.nodal_polar_m.is_empty() && !g.radii_m.is_empty()));
         assert_eq!(back.frequency_sweep().unwrap().len(), 2);
         assert_eq!(back.speed_sweep().unwrap().len(), 1);
@@ -208,7 +226,12 @@ mod tests {
     #[test]
     fn an_frf_outcome_round_trips() {
         let c = case(include_str!("../../../cases/test-rig-pub5.toml"), &["mesh.fidelity=\"preview\""]);
-        let req = Request { case: c, wanted: vec![StageId::Reduction, StageId::Frf], frequency_ratios: Vec::new(), speeds_rpm: Vec::new() };
+        let req = Request {
+            case: c,
+            wanted: vec![StageId::Reduction, StageId::Frf],
+            frequency_ratios: Vec::new(),
+            speeds_rpm: Vec::new(),
+        };
         let back = round_trip(&req);
         assert!(back.get::<FrfModel>(StageId::Frf).is_some_and(|m| m.dynamics.k.norm() > 0.0));
     }

@@ -32,17 +32,17 @@ use serde::{Deserialize, Serialize};
 use web_time::Instant;
 
 use crate::fem::supg::Stabilisation;
+use crate::fem::SolverError;
 use crate::mesh::pad3d::PadMesh;
 use crate::model::{Case, CavitatedFilm, PadFilmBc};
 use crate::physics::energy::{BalanceInputs, Exchange, FilmHeat, Injection, Oil};
-use crate::fem::SolverError;
 use crate::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
 
+use super::anderson::{flatten, unflatten, Anderson};
 use super::equilibrium::{Cancel, Equilibrium, EquilibriumParams, NoSuspend, Progress};
 use super::error::{Budget, Iteration, SolveError};
-use super::model::{BearingModel, OperatingPoint};
-use super::anderson::{flatten, unflatten, Anderson};
 use super::mixing::inlet_and_journal;
+use super::model::{BearingModel, OperatingPoint};
 use super::tehd::{self, Growth, GrowthField, TehdModel, GROWTH_TOL};
 use super::thermal_pad::{PadTemperatures, PadThermal, ThermalSetup};
 
@@ -106,7 +106,13 @@ pub struct ThermalParams {
 
 impl Default for ThermalParams {
     fn default() -> Self {
-        Self { viscosity_tol: 1e-4, max_iterations: DEFAULT_MAX_ITERATIONS, max_seconds: DEFAULT_MAX_SECONDS, relaxation: 0.8, stabilisation: Stabilisation::Supg }
+        Self {
+            viscosity_tol: 1e-4,
+            max_iterations: DEFAULT_MAX_ITERATIONS,
+            max_seconds: DEFAULT_MAX_SECONDS,
+            relaxation: 0.8,
+            stabilisation: Stabilisation::Supg,
+        }
     }
 }
 
@@ -205,7 +211,10 @@ impl ThermalModel {
                     "pad {k} has no pad solid (a fixed sector without thickness): use thermal.pad_film_bc = \"bc1\""
                 )));
             }
-            pads.push(PadThermal::new(film, conduction).map_err(|e| SolveError::Invalid(format!("pad {k} thermal system: {e}")))?);
+            pads.push(
+                PadThermal::new(film, conduction)
+                    .map_err(|e| SolveError::Invalid(format!("pad {k} thermal system: {e}")))?,
+            );
         }
         // Upstream pad: the one whose leading edge comes last before pad k's, going against the rotation.
         let n = b.pads.len();
@@ -233,11 +242,17 @@ impl ThermalModel {
     ///
     /// # Errors
     /// A failed factorisation.
-    pub fn pad_bc1(&mut self, k: usize, film_t: &[f64], material: &PadMaterial) -> Result<Option<Vec<f64>>, SolverError> {
+    pub fn pad_bc1(
+        &mut self,
+        k: usize,
+        film_t: &[f64],
+        material: &PadMaterial,
+    ) -> Result<Option<Vec<f64>>, SolverError> {
         let Some(mesh) = self.pads[k].conduction.as_ref().map(|c| &c.mesh) else { return Ok(None) };
         if self.pad_solver_of[k].is_none() {
             let shared = (0..self.pads.len()).find(|&j| {
-                self.pad_solver_of[j].is_some() && self.pads[j].conduction.as_ref().is_some_and(|c| c.mesh.same_shape(mesh))
+                self.pad_solver_of[j].is_some()
+                    && self.pads[j].conduction.as_ref().is_some_and(|c| c.mesh.same_shape(mesh))
             });
             self.pad_solver_of[k] = Some(match shared {
                 Some(j) => self.pad_solver_of[j].unwrap_or_default(),
@@ -304,14 +319,26 @@ fn setup(case: &Case, op: &OperatingPoint, k: usize, stabilisation: Stabilisatio
     let l = &case.lubricant;
     let t = &case.thermal;
     ThermalSetup {
-        oil: Oil { density: l.density_kg_per_m3, specific_heat: l.specific_heat_j_per_kg_k, conductivity: l.conductivity_w_per_m_k },
-        injection: Injection { pressure: op.injection_pressure[k], viscosity: op.injection_viscosity, temperature_c: case.operating.injection_temperature_c },
+        oil: Oil {
+            density: l.density_kg_per_m3,
+            specific_heat: l.specific_heat_j_per_kg_k,
+            conductivity: l.conductivity_w_per_m_k,
+        },
+        injection: Injection {
+            pressure: op.injection_pressure[k],
+            viscosity: op.injection_viscosity,
+            temperature_c: case.operating.injection_temperature_c,
+        },
         exchange: match t.pad_film_bc {
             PadFilmBc::Bc1 => Exchange::Adiabatic,
             PadFilmBc::Bc2 { h_w_per_m2_k } => Exchange::Convective { h: h_w_per_m2_k },
             PadFilmBc::Bc3 => Exchange::Parabolic,
         },
-        material: PadMaterial { conductivity: t.pad_conductivity_w_per_m_k, convection: t.convection_w_per_m2_k, ambient_c: t.ambient_temperature_c },
+        material: PadMaterial {
+            conductivity: t.pad_conductivity_w_per_m_k,
+            convection: t.convection_w_per_m2_k,
+            ambient_c: t.ambient_temperature_c,
+        },
         stabilisation,
         striated: t.cavitated_film == CavitatedFilm::Striated,
     }
@@ -334,7 +361,11 @@ fn nodal_viscosity(law: &crate::model::ViscosityLaw, t: &[f64], uniform: bool) -
 fn equilibrium_params(last_change: f64, params: &ThermalParams) -> EquilibriumParams {
     let full = EquilibriumParams::default();
     if last_change.is_finite() && last_change > 10.0 * params.viscosity_tol {
-        EquilibriumParams { force_tol: (1e-3 * last_change).clamp(full.force_tol, 1e-4), pad_tol: (1e-4 * last_change).clamp(full.pad_tol, 1e-5), ..full }
+        EquilibriumParams {
+            force_tol: (1e-3 * last_change).clamp(full.force_tol, 1e-4),
+            pad_tol: (1e-4 * last_change).clamp(full.pad_tol, 1e-5),
+            ..full
+        }
     } else {
         full
     }
@@ -342,12 +373,20 @@ fn equilibrium_params(last_change: f64, params: &ThermalParams) -> EquilibriumPa
 
 /// The equilibrium warm-started from `u`, retried from scratch if that fails, to its end: the resumable
 /// form's rule ([`resumable::equilibrium_part`]) without pauses.
-fn warm_equilibrium(model: &mut BearingModel, op: &OperatingPoint, params: EquilibriumParams, u: Option<&[f64]>, cancel: &dyn Cancel) -> Result<Equilibrium, SolveError> {
+fn warm_equilibrium(
+    model: &mut BearingModel,
+    op: &OperatingPoint,
+    params: EquilibriumParams,
+    u: Option<&[f64]>,
+    cancel: &dyn Cancel,
+) -> Result<Equilibrium, SolveError> {
     let pending = resumable::PendingEquilibrium::new(params, u.map(<[f64]>::to_vec));
     match resumable::equilibrium_part(model, op, pending, &NoSuspend(cancel))? {
         Progress::Done(eq) => Ok(eq),
         // NoSuspend never asks for a pause.
-        Progress::Suspended(p) => Err(SolveError::Invalid(format!("equilibrium paused unexpectedly after {} parts", p.parts()))),
+        Progress::Suspended(p) => {
+            Err(SolveError::Invalid(format!("equilibrium paused unexpectedly after {} parts", p.parts())))
+        }
     }
 }
 
@@ -361,13 +400,21 @@ fn load_shares(eq: &Equilibrium) -> Vec<f64> {
 /// (per-pad solutions, T_in per pad, T_j, film temperatures).
 type FilmTemperatures = (Vec<PadTemperatures>, Vec<f64>, f64, Vec<Vec<f64>>);
 
-fn film_temperatures(model: &BearingModel, thermal: &mut ThermalModel, case: &Case, op: &OperatingPoint, params: &ThermalParams) -> Result<FilmTemperatures, SolveError> {
+fn film_temperatures(
+    model: &BearingModel,
+    thermal: &mut ThermalModel,
+    case: &Case,
+    op: &OperatingPoint,
+    params: &ThermalParams,
+) -> Result<FilmTemperatures, SolveError> {
     let n = model.pads.len();
     let mut sols = Vec::with_capacity(n);
     for k in 0..n {
         let s = setup(case, op, k, params.stabilisation);
         let inp = op.film_inputs(k);
-        let sol = thermal.pads[k].solve(&model.pads[k].film, &inp, &s).map_err(|e| SolveError::Invalid(format!("pad {k} thermal solve: {e}")))?;
+        let sol = thermal.pads[k]
+            .solve(&model.pads[k].film, &inp, &s)
+            .map_err(|e| SolveError::Invalid(format!("pad {k} thermal solve: {e}")))?;
         sols.push(sol);
     }
     let (t_in, t_j) = inlet_and_journal(case, &sols, &thermal.upstream)?;
@@ -403,6 +450,6 @@ pub fn solve_thd(
     }
 }
 
-mod run;
 pub mod resumable;
+mod run;
 pub use run::ThdRun;

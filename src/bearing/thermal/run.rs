@@ -3,9 +3,9 @@
 //! pads and journal when the case asks for it (TEHD), a load step of the Hertz pivots when the pads have
 //! them ([`HertzPivots`]) — with its budgets, deadline and report.
 
+use super::resumable::{equilibrium_part, PendingEquilibrium};
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use super::resumable::{equilibrium_part, PendingEquilibrium};
 use crate::bearing::pivot_contact::{self, HertzPivots};
 use crate::bearing::progress::Progress;
 
@@ -81,7 +81,8 @@ struct Deadline<'a> {
 
 impl<'a> Deadline<'a> {
     fn after(inner: &'a dyn Cancel, seconds: f64) -> Self {
-        let until = std::time::Duration::try_from_secs_f64(seconds.max(0.0)).ok().and_then(|d| Instant::now().checked_add(d));
+        let until =
+            std::time::Duration::try_from_secs_f64(seconds.max(0.0)).ok().and_then(|d| Instant::now().checked_add(d));
         Self { inner, until }
     }
     fn expired(&self) -> bool {
@@ -100,7 +101,13 @@ impl Cancel for Deadline<'_> {
 
 impl ThdRun {
     #[must_use]
-    pub fn new(model: &BearingModel, thermal: &mut ThermalModel, case: &Case, params: ThermalParams, start: Option<&[f64]>) -> Self {
+    pub fn new(
+        model: &BearingModel,
+        thermal: &mut ThermalModel,
+        case: &Case,
+        params: ThermalParams,
+        start: Option<&[f64]>,
+    ) -> Self {
         let n = model.pads.len();
         let factorizations0: usize = thermal.pads.iter().map(|p| p.factorizations).sum();
         for pt in &mut thermal.pads {
@@ -151,7 +158,13 @@ impl ThdRun {
     /// # Errors
     /// Equilibrium failures, a singular thermal system, or a loop that spends its iteration or time budget
     /// ([`SolveError::BudgetExceeded`], saying which).
-    pub fn step(&mut self, model: &mut BearingModel, thermal: &mut ThermalModel, case: &Case, cancel: &dyn Cancel) -> Result<Option<ThdState>, SolveError> {
+    pub fn step(
+        &mut self,
+        model: &mut BearingModel,
+        thermal: &mut ThermalModel,
+        case: &Case,
+        cancel: &dyn Cancel,
+    ) -> Result<Option<ThdState>, SolveError> {
         if cancel.cancelled() {
             return Err(SolveError::Cancelled);
         }
@@ -168,7 +181,9 @@ impl ThdRun {
         }
         self.work_seconds += started.elapsed().as_secs_f64();
         match result {
-            Err(SolveError::Cancelled) if !cancel.cancelled() && deadline.expired() => Err(self.budget_exceeded(time_budget)),
+            Err(SolveError::Cancelled) if !cancel.cancelled() && deadline.expired() => {
+                Err(self.budget_exceeded(time_budget))
+            }
             r => r,
         }
     }
@@ -188,7 +203,13 @@ impl ThdRun {
         }
     }
 
-    fn outer_iteration(&mut self, model: &mut BearingModel, thermal: &mut ThermalModel, case: &Case, cancel: &dyn Cancel) -> Result<Option<ThdState>, SolveError> {
+    fn outer_iteration(
+        &mut self,
+        model: &mut BearingModel,
+        thermal: &mut ThermalModel,
+        case: &Case,
+        cancel: &dyn Cancel,
+    ) -> Result<Option<ThdState>, SolveError> {
         let law = case.lubricant.viscosity;
         let n = model.pads.len();
         let params = self.params;
@@ -198,7 +219,8 @@ impl ThdRun {
                 self.report.outer_iterations += 1;
                 self.growth.clone_from(&self.growth_next);
                 for k in 0..n {
-                    self.op.nodal_viscosity[k] = self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
+                    self.op.nodal_viscosity[k] =
+                        self.t_try.as_ref().map(|t| nodal_viscosity(&law, &t[k], self.uniform[k]));
                 }
                 PendingEquilibrium::new(equilibrium_params(self.last_change, &params), self.u.clone())
             }
@@ -235,7 +257,10 @@ impl ThdRun {
         for (k, p) in eq.pads.iter().enumerate() {
             if p.unloaded && !self.op.held_pads[k] && !model.pads[k].dofs().is_empty() {
                 self.op.held_pads[k] = true;
-                self.report.warnings.push(format!("pad {k} is unloaded: its tilt is held from outer iteration {}", self.report.outer_iterations));
+                self.report.warnings.push(format!(
+                    "pad {k} is unloaded: its tilt is held from outer iteration {}",
+                    self.report.outer_iterations
+                ));
             }
         }
         if self.t_ok.is_none() && self.t_try.is_none() {
@@ -268,16 +293,24 @@ impl ThdRun {
         self.report.viscosity_change.push(change);
         self.last_change = change;
         self.report.thermal_seconds += tt.elapsed().as_secs_f64();
-        if change < params.viscosity_tol && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m && self.pivot_change < pivot_contact::RTOL {
+        if change < params.viscosity_tol
+            && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m
+            && self.pivot_change < pivot_contact::RTOL
+        {
             self.report.converged = true;
             self.report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
             if self.pivots.is_some() {
-                self.report.stop_reason += &format!(", Hertz pivot springs changing by {:.1e} (below {:.0e})", self.pivot_change, pivot_contact::RTOL);
+                self.report.stop_reason += &format!(
+                    ", Hertz pivot springs changing by {:.1e} (below {:.0e})",
+                    self.pivot_change,
+                    pivot_contact::RTOL
+                );
             }
             self.report.thermal_factorizations = self.factorizations0;
             let report = std::mem::take(&mut self.report);
             if exact {
-                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_structure(s)));
+                return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0)
+                    .map(|s| Some(self.with_structure(s)));
             }
             // The last equilibrium was solved loosely (early iterations are inexact on purpose): polish it with
             // the full tolerances on the same viscosity field, and take the temperatures of that state.
@@ -295,7 +328,8 @@ impl ThdRun {
             report.equilibrium_factorizations += eq.report.factorizations;
             let (sols, t_in, t_j, t_polished) = film_temperatures(model, thermal, case, &self.op, &params)?;
             report.viscosity_change.push(viscosity_change(&law, &t_polished, current));
-            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0).map(|s| Some(self.with_structure(s)));
+            return finish(model, thermal, case, params, self.op.clone(), eq, &sols, &t_in, t_j, report, self.t0)
+                .map(|s| Some(self.with_structure(s)));
         }
         if self.report.outer_iterations >= params.max_iterations {
             return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
@@ -314,7 +348,13 @@ impl ThdRun {
     /// Thermal growth for the temperatures just computed (`temps`: per-pad solutions, T_in per pad, T_j, film
     /// temperatures); stored for the next outer iteration. Returns its change against the growth in the
     /// films now (0 without thermal growth).
-    fn update_growth(&mut self, model: &BearingModel, thermal: &mut ThermalModel, case: &Case, temps: (&[PadTemperatures], &[f64], f64, &[Vec<f64>])) -> Result<f64, SolveError> {
+    fn update_growth(
+        &mut self,
+        model: &BearingModel,
+        thermal: &mut ThermalModel,
+        case: &Case,
+        temps: (&[PadTemperatures], &[f64], f64, &[Vec<f64>]),
+    ) -> Result<f64, SolveError> {
         let (sols, t_in, t_j, t_new) = temps;
         if Growth::of(case).is_off() {
             return Ok(0.0);
@@ -330,7 +370,9 @@ impl ThdRun {
         for (k, sol) in sols.iter().enumerate() {
             let s = setup(case, &self.op, k, self.params.stabilisation);
             pad_c.push(if s.exchange == Exchange::Adiabatic {
-                thermal.pad_bc1(k, &t_new[k], &s.material).map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?
+                thermal
+                    .pad_bc1(k, &t_new[k], &s.material)
+                    .map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?
             } else {
                 sol.pad(t_in[k], t_j)
             });
@@ -349,7 +391,12 @@ impl ThdRun {
         if let Some(g) = &self.growth {
             state.report.journal_growth_m = Some(g.journal_m);
             state.report.housing_growth_m.clone_from(&g.housing_m);
-            state.report.pad_growth_range_m = Some(g.pad_film_m.iter().flatten().fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &v| [lo.min(v), hi.max(v)]));
+            state.report.pad_growth_range_m = Some(
+                g.pad_film_m
+                    .iter()
+                    .flatten()
+                    .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], &v| [lo.min(v), hi.max(v)]),
+            );
         }
         state.growth.clone_from(&self.growth);
         state.pivots.clone_from(&self.pivots);
@@ -384,7 +431,9 @@ fn finish(
         let film_c = sol.film(t_in[k], t_j);
         let pad_c = if s.exchange == Exchange::Adiabatic {
             let tp = Instant::now();
-            let r = thermal.pad_bc1(k, &film_c, &s.material).map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?;
+            let r = thermal
+                .pad_bc1(k, &film_c, &s.material)
+                .map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?;
             report.pad_conduction_seconds += tp.elapsed().as_secs_f64();
             r
         } else {
@@ -427,7 +476,8 @@ fn finish(
     report.thermal_seconds += tt.elapsed().as_secs_f64();
     report.energy_balance_closure = heat.closure();
     report.energy_balance_worst_pad = worst;
-    report.thermal_factorizations = thermal.pads.iter().map(|p| p.factorizations).sum::<usize>() - report.thermal_factorizations;
+    report.thermal_factorizations =
+        thermal.pads.iter().map(|p| p.factorizations).sum::<usize>() - report.thermal_factorizations;
     if report.energy_balance_closure.abs() > 0.01 {
         report.warnings.push(format!("energy balance closes to {:.2} % only", 100.0 * report.energy_balance_closure));
     }

@@ -23,19 +23,26 @@ pub(super) fn resolve_lubricant(file: &CaseFile) -> Result<Lubricant, CaseError>
             let mu2 = Range::positive(100.0).check("lubricant.viscosity2_pa_s", mu2)?;
             let t2 = t_range.check("lubricant.viscosity2_temperature_c", t2)?;
             if (t2 - t1).abs() < 1.0 {
-                return Err(inconsistent("lubricant.viscosity2_temperature_c", "the two viscosity points need different temperatures"));
+                return Err(inconsistent(
+                    "lubricant.viscosity2_temperature_c",
+                    "the two viscosity points need different temperatures",
+                ));
             }
             let eta = (mu1 / mu2).ln() / (t2 - t1);
             if !(0.0..=1.0).contains(&eta) {
                 return Err(inconsistent(
                     "lubricant.viscosity2_pa_s",
-                    format!("the two points give η = {eta:.4} /K; viscosity must fall with temperature (η in [0, 1] /K)"),
+                    format!(
+                        "the two points give η = {eta:.4} /K; viscosity must fall with temperature (η in [0, 1] /K)"
+                    ),
                 ));
             }
             eta
         }
         (None, None, Some(eta)) => Range::closed(0.0, 1.0).check("lubricant.viscosity_coefficient_per_k", eta)?,
-        (Some(_), None, _) => return Err(missing("lubricant.viscosity2_temperature_c", "temperature of the second viscosity point")),
+        (Some(_), None, _) => {
+            return Err(missing("lubricant.viscosity2_temperature_c", "temperature of the second viscosity point"))
+        }
         (None, Some(_), _) => return Err(missing("lubricant.viscosity2_pa_s", "viscosity of the second point")),
         (None, None, None) => {
             return Err(missing(
@@ -48,7 +55,9 @@ pub(super) fn resolve_lubricant(file: &CaseFile) -> Result<Lubricant, CaseError>
         name: l.name.clone().unwrap_or_default(),
         viscosity: ViscosityLaw { mu_ref_pa_s: mu1, t_ref_c: t1, eta_per_k: eta },
         density_kg_per_m3: Range::positive(2e4).check("lubricant.density_kg_per_m3", l.density_kg_per_m3)?,
-        specific_heat_j_per_kg_k: Range::positive(1e5).check("lubricant.specific_heat_j_per_kg_k", l.specific_heat_j_per_kg_k)?,
-        conductivity_w_per_m_k: Range::positive(1e3).check("lubricant.conductivity_w_per_m_k", l.conductivity_w_per_m_k)?,
+        specific_heat_j_per_kg_k: Range::positive(1e5)
+            .check("lubricant.specific_heat_j_per_kg_k", l.specific_heat_j_per_kg_k)?,
+        conductivity_w_per_m_k: Range::positive(1e3)
+            .check("lubricant.conductivity_w_per_m_k", l.conductivity_w_per_m_k)?,
     })
 }

@@ -40,13 +40,23 @@ fn context(key: &str) -> Vec<String> {
     match key {
         "thermal.h_oil_pad_w_per_m2_k" => vec!["thermal.pad_film_bc=\"bc2\"".into()],
         "operating.eccentricity_ratio" | "operating.eccentricity_angle_deg" => {
-            vec!["operating.load_n=".into(), "operating.load_angle_deg=".into(), "operating.eccentricity_ratio=0.3".into()]
+            vec![
+                "operating.load_n=".into(),
+                "operating.load_angle_deg=".into(),
+                "operating.eccentricity_ratio=0.3".into(),
+            ]
         }
         "bearing.pads.preload" | "bearing.pads.clearance_um" => vec!["bearing.pads.bore_radius_mm=".into()],
-        "lubricant.viscosity_coefficient_per_k" => vec!["lubricant.viscosity2_pa_s=".into(), "lubricant.viscosity2_temperature_c=".into()],
+        "lubricant.viscosity_coefficient_per_k" => {
+            vec!["lubricant.viscosity2_pa_s=".into(), "lubricant.viscosity2_temperature_c=".into()]
+        }
         "bearing.pads.pivot_radius_mm" => vec!["bearing.pads.pivot_contact=\"ball\"".into()],
-        "bearing.pads.pivot_seat_radius_mm" => vec!["bearing.pads.pivot_contact=\"ball\"".into(), "bearing.pads.pivot_radius_mm=10".into()],
-        "bearing.pads.pivot_length_mm" | "bearing.pads.pivot_seat_youngs_modulus_gpa" | "bearing.pads.pivot_seat_poisson_ratio" => vec![
+        "bearing.pads.pivot_seat_radius_mm" => {
+            vec!["bearing.pads.pivot_contact=\"ball\"".into(), "bearing.pads.pivot_radius_mm=10".into()]
+        }
+        "bearing.pads.pivot_length_mm"
+        | "bearing.pads.pivot_seat_youngs_modulus_gpa"
+        | "bearing.pads.pivot_seat_poisson_ratio" => vec![
             "bearing.pads.pivot_contact=\"rocker\"".into(),
             "bearing.pads.pivot_radius_mm=20".into(),
             "bearing.pads.pivot_seat_radius_mm=21".into(),
@@ -67,8 +77,16 @@ fn validation_enforces_the_documented_ranges() {
         };
         let key = k.key.replace("[]", ".0");
         let outside: Vec<f64> = [
-            if range.lo.is_finite() { Some(if range.open_lo { range.lo } else { range.lo - range.lo.abs().max(1.0) * 1e-3 }) } else { None },
-            if range.hi.is_finite() { Some(if range.open_hi { range.hi } else { range.hi + range.hi.abs().max(1.0) * 1e-3 }) } else { None },
+            if range.lo.is_finite() {
+                Some(if range.open_lo { range.lo } else { range.lo - range.lo.abs().max(1.0) * 1e-3 })
+            } else {
+                None
+            },
+            if range.hi.is_finite() {
+                Some(if range.open_hi { range.hi } else { range.hi + range.hi.abs().max(1.0) * 1e-3 })
+            } else {
+                None
+            },
         ]
         .into_iter()
         .flatten()
@@ -80,7 +98,12 @@ fn validation_enforces_the_documented_ranges() {
             match load_case(text, &set) {
                 Err(CaseError::OutOfRange { key: got, allowed, .. }) => {
                     assert!(spec(&got).is_some_and(|s| s.key == k.key), "{}: error names `{got}`", k.key);
-                    assert!(allowed.contains(&range.describe()), "{}: validation allows {allowed}, the schema says {}", k.key, range.describe());
+                    assert!(
+                        allowed.contains(&range.describe()),
+                        "{}: validation allows {allowed}, the schema says {}",
+                        k.key,
+                        range.describe()
+                    );
                     checked += 1;
                 }
                 other => panic!("{} = {v}: expected an out-of-range error, got {other:?}", k.key),

@@ -88,7 +88,11 @@ impl FilmHeat {
     #[must_use]
     pub fn closure(&self) -> f64 {
         let p = self.power_in();
-        if p.abs() > 0.0 { (p - self.carried_by_oil() - self.conducted_out()) / p } else { 0.0 }
+        if p.abs() > 0.0 {
+            (p - self.carried_by_oil() - self.conducted_out()) / p
+        } else {
+            0.0
+        }
     }
 }
 
@@ -135,7 +139,8 @@ impl FilmEnergy {
         }
         let (mut inj, mut pipe) = (0.0, 0.0);
         for j in 0..t.len() {
-            inj += rc * (st.inj.inflow[j] * (st.injection_temperature_c - inp.t_ref) + st.inj.drain[j] * (t[j] - inp.t_ref));
+            inj += rc
+                * (st.inj.inflow[j] * (st.injection_temperature_c - inp.t_ref) + st.inj.drain[j] * (t[j] - inp.t_ref));
             pipe += st.inj.pipe[j] * (st.injection_temperature_c - t[j]);
         }
         let (mut to_pad, mut to_journal) = (0.0, 0.0);

@@ -65,7 +65,9 @@ mod striated;
 pub use balance::{BalanceInputs, FilmHeat};
 
 use crate::fem::quad4::QuadPoint;
-use crate::fem::supg::{add_crosswind_point, add_point, element_average, supg_tau, test_weights, Adr, Stabilisation, CROSSWIND_CONSTANT};
+use crate::fem::supg::{
+    add_crosswind_point, add_point, element_average, supg_tau, test_weights, Adr, Stabilisation, CROSSWIND_CONSTANT,
+};
 use crate::fem::GeneralPattern;
 use crate::mesh::grid::NodeSite;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm};
@@ -128,7 +130,14 @@ impl Exchange {
             }
             Self::Parabolic => {
                 let k = theta * kappa / h;
-                ExchangeCoefficients { c: 12.0 * k, g_pad: 6.0 * k, g_j: 6.0 * k, gamma: 6.0 * k, beta: 4.0 * k, phi: 2.0 * k }
+                ExchangeCoefficients {
+                    c: 12.0 * k,
+                    g_pad: 6.0 * k,
+                    g_j: 6.0 * k,
+                    gamma: 6.0 * k,
+                    beta: 4.0 * k,
+                    phi: 2.0 * k,
+                }
             }
         }
     }
@@ -265,7 +274,14 @@ impl FilmEnergy {
 
     /// Evaluates the flow, dissipation and injection of the film's last solve.
     #[must_use]
-    pub fn flow_state(&self, film: &PadFilm, inp: &FilmInputs<'_>, inj: &Injection, oil: &Oil, striated: bool) -> FlowState {
+    pub fn flow_state(
+        &self,
+        film: &PadFilm,
+        inp: &FilmInputs<'_>,
+        inj: &Injection,
+        oil: &Oil,
+        striated: bool,
+    ) -> FlowState {
         let g = &film.geom;
         let u = inp.surface_speed;
         let rc = oil.capacity();
@@ -469,16 +485,20 @@ mod tests {
         assert!((knight_barrett(t, tp, tj, 1.0) - tj).abs() < 1e-12, "T(h) = T_j");
         // Mean over the film by 3-point Gauss (exact for a parabola).
         let g = 0.5 * (3.0_f64 / 5.0).sqrt();
-        let mean = 5.0 / 18.0 * knight_barrett(t, tp, tj, 0.5 - g) + 8.0 / 18.0 * knight_barrett(t, tp, tj, 0.5) + 5.0 / 18.0 * knight_barrett(t, tp, tj, 0.5 + g);
+        let mean = 5.0 / 18.0 * knight_barrett(t, tp, tj, 0.5 - g)
+            + 8.0 / 18.0 * knight_barrett(t, tp, tj, 0.5)
+            + 5.0 / 18.0 * knight_barrett(t, tp, tj, 0.5 + g);
         assert!((mean - t).abs() < 1e-12, "mean {mean} = T");
         // The thesis' printed form gives −T_j at y = h (the inconsistency model.md corrects).
-        let printed = |eta: f64| tp + 2.0 * (3.0 * t - 2.0 * tj - 2.0 * tp) * eta + 3.0 * (tj - 2.0 * t + tp) * eta * eta;
+        let printed =
+            |eta: f64| tp + 2.0 * (3.0 * t - 2.0 * tj - 2.0 * tp) * eta + 3.0 * (tj - 2.0 * t + tp) * eta * eta;
         assert!((printed(1.0) - tj).abs() > 1.0);
         // Fluxes: κ dT/dy at the pad (y = 0), −κ dT/dy at the journal (y = h), by central differences, which
         // are exact for a parabola (the polynomial extends past the film), so only round-off remains.
         let (kappa, h) = (0.13, 40e-6);
         let d = 1e-2;
-        let slope = |eta: f64| (knight_barrett(t, tp, tj, eta + d) - knight_barrett(t, tp, tj, eta - d)) / (2.0 * d * h);
+        let slope =
+            |eta: f64| (knight_barrett(t, tp, tj, eta + d) - knight_barrett(t, tp, tj, eta - d)) / (2.0 * d * h);
         let ex = Exchange::Parabolic.coefficients(h, 1.0, kappa);
         let q_pad = ex.gamma * t - ex.beta * tp - ex.phi * tj;
         assert!((q_pad - kappa * slope(0.0)).abs() < 1e-12 * q_pad.abs(), "q_pad {q_pad} vs {}", kappa * slope(0.0));

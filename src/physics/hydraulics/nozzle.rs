@@ -18,8 +18,8 @@
 //! fields that give them are computed by [`crate::physics::reynolds::PadFilm::injection_response`] and
 //! assembled over pads by [`crate::bearing::injection`].
 
-use serde::{Deserialize, Serialize};
 use nalgebra::{Complex, DMatrix, DVector};
+use serde::{Deserialize, Serialize};
 
 /// π d⁴/(128 µ l): flow per unit pressure drop of a capillary of diameter `d`, length `l` (Hagen–Poiseuille),
 /// the admittance of a nozzle discharging into a film at uniform pressure [m³/(s·Pa)].
@@ -54,7 +54,12 @@ impl NozzleCoupling {
 
     /// The nozzle flows `δq = Y δp + (D + s E) δu` at `s`.
     #[must_use]
-    pub fn flow(&self, s: Complex<f64>, dp: &DVector<Complex<f64>>, du: &DVector<Complex<f64>>) -> DVector<Complex<f64>> {
+    pub fn flow(
+        &self,
+        s: Complex<f64>,
+        dp: &DVector<Complex<f64>>,
+        du: &DVector<Complex<f64>>,
+    ) -> DVector<Complex<f64>> {
         let y = self.admittance.map(Complex::from);
         let m = DMatrix::from_fn(self.displacement.nrows(), self.displacement.ncols(), |i, j| {
             Complex::from(self.displacement[(i, j)]) + s * self.velocity[(i, j)]

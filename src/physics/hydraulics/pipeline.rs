@@ -180,7 +180,10 @@ mod tests {
 
     /// Largest relative difference of the four two-port terms (each against its own magnitude).
     fn diff(x: &TwoPort, y: &TwoPort) -> f64 {
-        [(x.a, y.a), (x.b, y.b), (x.c, y.c), (x.e, y.e)].iter().map(|(p, q)| (p - q).norm() / q.norm()).fold(0.0, f64::max)
+        [(x.a, y.a), (x.b, y.b), (x.c, y.c), (x.e, y.e)]
+            .iter()
+            .map(|(p, q)| (p - q).norm() / q.norm())
+            .fold(0.0, f64::max)
     }
 
     /// The exact line's resonances with the nozzle end open are the quarter-wave frequencies

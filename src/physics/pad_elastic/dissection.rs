@@ -33,7 +33,8 @@ fn dissect(ids: Vec<usize>, at: &[[f64; 2]], out: &mut Vec<usize>) {
         return;
     }
     let extent = |d: usize| {
-        let (lo, hi) = ids.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| (lo.min(at[i][d]), hi.max(at[i][d])));
+        let (lo, hi) =
+            ids.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &i| (lo.min(at[i][d]), hi.max(at[i][d])));
         hi - lo
     };
     let dims = if extent(0) >= extent(1) { [0, 1] } else { [1, 0] };

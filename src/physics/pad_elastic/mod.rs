@@ -23,9 +23,9 @@
 //! them as they are. Units: SI.
 
 use crate::fem::eigen::{self, EigenError, EigenPairs, EigenParams};
+use crate::fem::hex8::NODES;
 use crate::fem::solid8::{Elastic, Formulation};
 use crate::fem::{Pattern, SolverError, SpdSolver};
-use crate::fem::hex8::NODES;
 use crate::mesh::pad3d::PadMesh;
 
 mod dissection;
@@ -205,7 +205,12 @@ impl ElasticSystem {
     ///
     /// # Errors
     /// [`ElasticError::Element`] for an inverted element, [`ElasticError::Empty`] if nothing is free.
-    pub fn assemble(solid: &Solid, material: &Elastic, form: Formulation, supports: Supports) -> Result<Self, ElasticError> {
+    pub fn assemble(
+        solid: &Solid,
+        material: &Elastic,
+        form: Formulation,
+        supports: Supports,
+    ) -> Result<Self, ElasticError> {
         Self::assemble_with_thermal_load(solid, material, form, supports).map(|(system, _)| system)
     }
 
@@ -213,7 +218,12 @@ impl ElasticSystem {
     ///
     /// # Errors
     /// As [`Self::assemble`].
-    pub fn assemble_with_thermal_load(solid: &Solid, material: &Elastic, form: Formulation, supports: Supports) -> Result<(Self, ThermalLoad), ElasticError> {
+    pub fn assemble_with_thermal_load(
+        solid: &Solid,
+        material: &Elastic,
+        form: Formulation,
+        supports: Supports,
+    ) -> Result<(Self, ThermalLoad), ElasticError> {
         if supports.is_empty() {
             return Err(ElasticError::Empty);
         }
@@ -231,7 +241,8 @@ impl ElasticSystem {
         let mut shapes = ElementShapes::default();
         let mut shape_of = Vec::with_capacity(solid.hexes.len());
         for (e, g) in linked.iter().enumerate() {
-            let (shape, turn) = shapes.element(&solid.element_nodes(e), material, form).ok_or(ElasticError::Element { element: e })?;
+            let (shape, turn) =
+                shapes.element(&solid.element_nodes(e), material, form).ok_or(ElasticError::Element { element: e })?;
             shape_of.push((shape, turn));
             // The mass of a turned copy is the same (each nodal block is a multiple of the identity).
             let (ke, me) = (shapes.stiffness(shape, turn), &shapes.shapes[shape].1);
@@ -247,7 +258,10 @@ impl ElasticSystem {
             }
             offset += len * len;
         }
-        Ok((Self { supports, pattern, stiffness, mass }, ThermalLoad { distinct: shapes.shapes.into_iter().map(|s| s.2).collect(), shape_of }))
+        Ok((
+            Self { supports, pattern, stiffness, mass },
+            ThermalLoad { distinct: shapes.shapes.into_iter().map(|s| s.2).collect(), shape_of },
+        ))
     }
 
     /// Orders the unknowns of a pad solid (cylindrical element boxes about the z axis) for the Cholesky
@@ -318,7 +332,16 @@ mod tests {
             for j in 0..ny {
                 for k in 0..nz {
                     // hex8 node order with (ξ, η, ζ) ↔ (x, y, z).
-                    hexes.push([id(i, j, k), id(i, j + 1, k), id(i, j + 1, k + 1), id(i, j, k + 1), id(i + 1, j, k), id(i + 1, j + 1, k), id(i + 1, j + 1, k + 1), id(i + 1, j, k + 1)]);
+                    hexes.push([
+                        id(i, j, k),
+                        id(i, j + 1, k),
+                        id(i, j + 1, k + 1),
+                        id(i, j, k + 1),
+                        id(i + 1, j, k),
+                        id(i + 1, j + 1, k),
+                        id(i + 1, j + 1, k + 1),
+                        id(i + 1, j, k + 1),
+                    ]);
                 }
             }
         }
@@ -337,7 +360,13 @@ mod tests {
 
     /// Total force `p` spread over the nodes selected by `on` in proportion to their share of the face
     /// (equal-area faces of a uniform grid: corner 1, edge 2, interior 4 quarters).
-    fn face_load(solid: &Solid, on: impl Fn([f64; 3]) -> bool, dir: [f64; 3], p: f64, share: impl Fn([f64; 3]) -> f64) -> Vec<f64> {
+    fn face_load(
+        solid: &Solid,
+        on: impl Fn([f64; 3]) -> bool,
+        dir: [f64; 3],
+        p: f64,
+        share: impl Fn([f64; 3]) -> f64,
+    ) -> Vec<f64> {
         let mut f = vec![0.0; 3 * solid.n_nodes()];
         let sel: Vec<usize> = (0..solid.n_nodes()).filter(|&n| on(solid.nodes[n])).collect();
         let total: f64 = sel.iter().map(|&n| share(solid.nodes[n])).sum();
@@ -352,8 +381,12 @@ mod tests {
     fn cantilever_tip(n: [usize; 3], form: Formulation) -> f64 {
         let (l, h, b) = (0.2, 0.01, 0.01);
         let solid = beam(l, h, b, n);
-        let fixed: Vec<(usize, usize)> = (0..solid.n_nodes()).filter(|&i| solid.nodes[i][0] == 0.0).flat_map(|i| (0..3).map(move |c| (i, c))).collect();
-        let sys = ElasticSystem::assemble(&solid, &STEEL_NU0, form, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+        let fixed: Vec<(usize, usize)> = (0..solid.n_nodes())
+            .filter(|&i| solid.nodes[i][0] == 0.0)
+            .flat_map(|i| (0..3).map(move |c| (i, c)))
+            .collect();
+        let sys =
+            ElasticSystem::assemble(&solid, &STEEL_NU0, form, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
         let tip = |x: [f64; 3]| (x[0] - l).abs() < 1e-12;
         let edge = |v: f64, len: f64| if v.abs() < 1e-12 || (v - len).abs() < 1e-12 { 1.0 } else { 2.0 };
         let f = face_load(&solid, tip, [0.0, -1.0, 0.0], 100.0, |x| edge(x[1], h) * edge(x[2], b));
@@ -372,7 +405,8 @@ mod tests {
     #[test]
     fn cantilever_tip_deflection_converges_at_second_order_to_timoshenko() {
         let exact = cantilever_exact();
-        let d: Vec<f64> = [1, 2, 4, 8].iter().map(|&k| cantilever_tip([10 * k, k, k], Formulation::Incompatible)).collect();
+        let d: Vec<f64> =
+            [1, 2, 4, 8].iter().map(|&k| cantilever_tip([10 * k, k, k], Formulation::Incompatible)).collect();
         let order = ((d[2] - d[1]) / (d[3] - d[2])).abs().log2();
         let errors: Vec<f64> = d.iter().map(|v| (v - exact) / exact).collect();
         eprintln!("cantilever: deflections {d:?}, errors vs Timoshenko {errors:?}, observed order {order:.2}");
@@ -385,7 +419,11 @@ mod tests {
         let exact = cantilever_exact();
         let plain = cantilever_tip([20, 1, 1], Formulation::Trilinear);
         let wilson = cantilever_tip([20, 1, 1], Formulation::Incompatible);
-        eprintln!("one element through the thickness: trilinear {:.4}, incompatible {:.4} of Timoshenko", plain / exact, wilson / exact);
+        eprintln!(
+            "one element through the thickness: trilinear {:.4}, incompatible {:.4} of Timoshenko",
+            plain / exact,
+            wilson / exact
+        );
         // Measured: trilinear 0.667 (a third too stiff), incompatible 0.9991.
         assert!(plain < 0.7 * exact, "{}", plain / exact);
         assert!((wilson - exact).abs() < 0.002 * exact, "{}", wilson / exact);
@@ -404,8 +442,17 @@ mod tests {
         let grid = PadGrid { s, z, periodic: false, half: false };
         let mesh = PadMesh::extrude(&grid, 1.0, 0.0, r_in, t, layers);
         let solid = Solid::from_pad(&mesh);
-        let fixed: Vec<(usize, usize)> = (0..solid.n_nodes()).filter(|&i| solid.nodes[i][1].abs() < 1e-12).flat_map(|i| (0..3).map(move |c| (i, c))).collect();
-        let sys = ElasticSystem::assemble(&solid, &STEEL_NU0, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+        let fixed: Vec<(usize, usize)> = (0..solid.n_nodes())
+            .filter(|&i| solid.nodes[i][1].abs() < 1e-12)
+            .flat_map(|i| (0..3).map(move |c| (i, c)))
+            .collect();
+        let sys = ElasticSystem::assemble(
+            &solid,
+            &STEEL_NU0,
+            Formulation::Incompatible,
+            Supports::new(&solid, &fixed, &[], [0.0; 2]),
+        )
+        .unwrap();
         let free_end = |x: [f64; 3]| x[0].abs() < 1e-12;
         // Consistent nodal shares of a uniform traction on the end face: ∝ (Δr at the node) × (Δz at the node).
         let radii = mesh.radii.clone();
@@ -447,13 +494,31 @@ mod tests {
             }
         }
         let steel = Elastic { youngs_modulus: 200e9, poisson_ratio: 0.3, density: 7800.0 };
-        let (sys, load) = ElasticSystem::assemble_with_thermal_load(&solid, &steel, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+        let (sys, load) = ElasticSystem::assemble_with_thermal_load(
+            &solid,
+            &steel,
+            Formulation::Incompatible,
+            Supports::new(&solid, &fixed, &[], [0.0; 2]),
+        )
+        .unwrap();
         let (alpha, a, slope) = (1.2e-5, 30.0, 2000.0);
         let dt: Vec<f64> = solid.nodes.iter().map(|x| a + slope * x[1]).collect();
         let u = sys.static_solve(&load.forces(&solid, alpha, &dt)).unwrap();
-        let exact = |x: [f64; 3]| [alpha * (a + slope * x[1]) * x[0], alpha * (a * x[1] + 0.5 * slope * (x[1] * x[1] - x[0] * x[0] - x[2] * x[2])), alpha * (a + slope * x[1]) * x[2]];
+        let exact = |x: [f64; 3]| {
+            [
+                alpha * (a + slope * x[1]) * x[0],
+                alpha * (a * x[1] + 0.5 * slope * (x[1] * x[1] - x[0] * x[0] - x[2] * x[2])),
+                alpha * (a + slope * x[1]) * x[2],
+            ]
+        };
         let scale = alpha * slope * l * l;
-        let worst = solid.nodes.iter().enumerate().flat_map(|(i, x)| (0..3).map(move |c| (i, c, *x))).map(|(i, c, x)| (u[3 * i + c] - exact(x)[c]).abs()).fold(0.0, f64::max);
+        let worst = solid
+            .nodes
+            .iter()
+            .enumerate()
+            .flat_map(|(i, x)| (0..3).map(move |c| (i, c, *x)))
+            .map(|(i, c, x)| (u[3 * i + c] - exact(x)[c]).abs())
+            .fold(0.0, f64::max);
         assert!(worst < 1e-9 * scale, "{}", worst / scale);
     }
 
@@ -464,8 +529,17 @@ mod tests {
         let (l, h, b) = (0.2, 0.01, 0.01);
         let omega = |k: usize| {
             let solid = beam(l, h, b, [10 * k, k, k]);
-            let fixed: Vec<(usize, usize)> = (0..solid.n_nodes()).filter(|&i| solid.nodes[i][0] == 0.0).flat_map(|i| (0..3).map(move |c| (i, c))).collect();
-            let sys = ElasticSystem::assemble(&solid, &STEEL_NU0, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+            let fixed: Vec<(usize, usize)> = (0..solid.n_nodes())
+                .filter(|&i| solid.nodes[i][0] == 0.0)
+                .flat_map(|i| (0..3).map(move |c| (i, c)))
+                .collect();
+            let sys = ElasticSystem::assemble(
+                &solid,
+                &STEEL_NU0,
+                Formulation::Incompatible,
+                Supports::new(&solid, &fixed, &[], [0.0; 2]),
+            )
+            .unwrap();
             let pairs = sys.modes(2).unwrap();
             // The round-off floor of the residual grows with the stiffness spread: 2.5e-8 at the finest mesh.
             assert!(pairs.converged && pairs.residuals.iter().all(|&r| r < 5e-8), "{:?}", pairs.residuals);
@@ -494,7 +568,13 @@ mod tests {
             let z: Vec<f64> = (0..=layers).map(|j| b * j as f64 / layers as f64).collect();
             let grid = PadGrid { s, z, periodic: true, half: false };
             let solid = Solid::from_pad(&PadMesh::extrude(&grid, 1.0, 0.0, r_in, t, layers));
-            let sys = ElasticSystem::assemble(&solid, &STEEL_NU0, Formulation::Incompatible, Supports::new(&solid, &[], &[], [0.0; 2])).unwrap();
+            let sys = ElasticSystem::assemble(
+                &solid,
+                &STEEL_NU0,
+                Formulation::Incompatible,
+                Supports::new(&solid, &[], &[], [0.0; 2]),
+            )
+            .unwrap();
             let pairs = sys.modes(8).unwrap();
             assert!(pairs.converged && pairs.residuals.iter().all(|&r| r < 1e-8), "{:?}", pairs.residuals);
             // Six rigid motions, then the n = 2 pair.
@@ -528,7 +608,8 @@ mod tests {
     /// A pad solid on a film grid finer at the mid-plane (and at the leading edge when `graded_arc`; else
     /// of equal arc spacing), arc 1 rad at 2.5.
     fn graded_pad(layers: usize, graded_arc: bool) -> Solid {
-        let s: Vec<f64> = (0..=10).map(|i| if graded_arc { 0.05 * f64::from(i * i) / 10.0 } else { 0.05 * f64::from(i) }).collect();
+        let s: Vec<f64> =
+            (0..=10).map(|i| if graded_arc { 0.05 * f64::from(i * i) / 10.0 } else { 0.05 * f64::from(i) }).collect();
         let z: Vec<f64> = (0..=6).map(|j| 0.004 * f64::from(j) + 0.0005 * f64::from(j.min(2))).collect();
         let grid = PadGrid { s, z, periodic: false, half: false };
         Solid::from_pad(&PadMesh::extrude(&grid, 0.05, 2.5, 0.0501, 0.01, layers))
@@ -556,7 +637,11 @@ mod tests {
             worst[1] = worst[1].max((shapes.shapes[shape].1 - m).amax() / m.amax());
             worst[2] = worst[2].max((gt - g).amax() / g.amax());
         }
-        eprintln!("{} elements, {} shapes; largest relative differences K, M, G: {worst:?}", solid.hexes.len(), shapes.shapes.len());
+        eprintln!(
+            "{} elements, {} shapes; largest relative differences K, M, G: {worst:?}",
+            solid.hexes.len(),
+            shapes.shapes.len()
+        );
         // Distinct (axial spacing, layer): 2 · 3 of the 10 · 6 · 3 elements; every arc column but the first
         // is a turned copy.
         assert_eq!(shapes.shapes.len(), 6);
@@ -571,9 +656,18 @@ mod tests {
         let mut nodes = pad_dissection(&solid);
         nodes.sort_unstable();
         assert_eq!(nodes, (0..solid.n_nodes()).collect::<Vec<_>>());
-        let fixed: Vec<(usize, usize)> = (0..solid.n_nodes()).filter(|&n| solid.nodes[n][2] == 0.0).flat_map(|n| (0..3).map(move |c| (n, c))).collect();
+        let fixed: Vec<(usize, usize)> = (0..solid.n_nodes())
+            .filter(|&n| solid.nodes[n][2] == 0.0)
+            .flat_map(|n| (0..3).map(move |c| (n, c)))
+            .collect();
         let mat = Elastic { youngs_modulus: 200e9, poisson_ratio: 0.3, density: 7800.0 };
-        let amd = ElasticSystem::assemble(&solid, &mat, Formulation::Incompatible, Supports::new(&solid, &fixed, &[], [0.0; 2])).unwrap();
+        let amd = ElasticSystem::assemble(
+            &solid,
+            &mat,
+            Formulation::Incompatible,
+            Supports::new(&solid, &fixed, &[], [0.0; 2]),
+        )
+        .unwrap();
         let mut nd = amd.clone();
         nd.order_as_pad(&solid);
         let mut order = nd.pattern.ordering.clone().unwrap();

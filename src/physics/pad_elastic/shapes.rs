@@ -20,7 +20,12 @@ pub(super) struct ElementShapes {
 impl ElementShapes {
     /// The shape of the element with nodes `x` (integrated if new) and the turn (cos, sin) from the shape to
     /// it; `None` for an inverted element.
-    pub(super) fn element(&mut self, x: &[[f64; 3]; 8], material: &Elastic, form: Formulation) -> Option<(usize, [f64; 2])> {
+    pub(super) fn element(
+        &mut self,
+        x: &[[f64; 3]; 8],
+        material: &Elastic,
+        form: Formulation,
+    ) -> Option<(usize, [f64; 2])> {
         let angle = x[0][1].atan2(x[0][0]);
         let (s, c) = angle.sin_cos();
         let offsets: [f64; 21] = std::array::from_fn(|i| {

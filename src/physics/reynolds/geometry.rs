@@ -65,7 +65,12 @@ impl FilmGeometry {
         let mut rects = Vec::with_capacity(grid.n_elements());
         for (i, j) in grid.elements() {
             elements.push(grid.element_nodes(i, j));
-            rects.push(RectElement { s0: grid.s[i], z0: grid.z[j], ds: grid.s[i + 1] - grid.s[i], dz: grid.z[j + 1] - grid.z[j] });
+            rects.push(RectElement {
+                s0: grid.s[i],
+                z0: grid.z[j],
+                ds: grid.s[i + 1] - grid.s[i],
+                dz: grid.z[j + 1] - grid.z[j],
+            });
         }
         let qp: Vec<[QuadPoint; 4]> = rects.iter().map(RectElement::gauss_2x2).collect();
         let qp_theta: Vec<[f64; 4]> = qp.iter().map(|q| q.map(|p| theta_le + p.s / radius)).collect();

@@ -80,7 +80,11 @@ mod tests {
             2
         }
         fn dof(&self, k: usize, theta: f64, z: f64) -> f64 {
-            if k == 0 { -0.06 * (theta - 0.5).sin() } else { (theta - 0.5).cos() + 2.0 * z }
+            if k == 0 {
+                -0.06 * (theta - 0.5).sin()
+            } else {
+                (theta - 0.5).cos() + 2.0 * z
+            }
         }
     }
 
@@ -94,7 +98,13 @@ mod tests {
     }
 
     fn inputs(p_inj: f64, cavitation: Cavitation) -> FilmInputs<'static> {
-        FilmInputs { surface_speed: 5.0, viscosity: Viscosity::Uniform(0.02), injection_pressure: p_inj, injection_viscosity: 0.02, cavitation }
+        FilmInputs {
+            surface_speed: 5.0,
+            viscosity: Viscosity::Uniform(0.02),
+            injection_pressure: p_inj,
+            injection_viscosity: 0.02,
+            cavitation,
+        }
     }
 
     const HOLES: [LocalOrifice; 2] = [

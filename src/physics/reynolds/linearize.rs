@@ -3,8 +3,8 @@
 //! back-substitutions with the factorisation of the converged solve (exact for a fixed cavitation boundary).
 
 use super::{FilmInputs, FilmLinearization, PadFilm};
-use nalgebra::DMatrix;
 use crate::model::Cavitation;
+use nalgebra::DMatrix;
 
 impl PadFilm {
     /// Generalised film forces `Q_k = ∫ p φ_k dA` (whole pad).

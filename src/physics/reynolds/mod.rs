@@ -48,10 +48,10 @@
 //! cavitation solves; `linearize.rs` forces and their perturbations; `outputs.rs` flows, friction and
 //! extrema; `injection.rs` the response to the injection pressure.
 
-use serde::{Deserialize, Serialize};
 use crate::fem::{SolverError, SpdSolver};
 use crate::model::Cavitation;
 use nalgebra::DMatrix;
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 mod geometry;
@@ -376,7 +376,9 @@ impl PadFilm {
             }
             Viscosity::Nodal(values) => {
                 if values.len() != self.geom.n_nodes() || values.iter().any(|m| !(*m > 0.0 && m.is_finite())) {
-                    return Err(FilmError::Input("nodal viscosity field has the wrong length or a non-positive value".into()));
+                    return Err(FilmError::Input(
+                        "nodal viscosity field has the wrong length or a non-positive value".into(),
+                    ));
                 }
                 for (e, nodes) in self.geom.elements.iter().enumerate() {
                     for (g, q) in self.geom.qp[e].iter().enumerate() {
@@ -387,5 +389,4 @@ impl PadFilm {
         }
         Ok(())
     }
-
 }

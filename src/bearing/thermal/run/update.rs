@@ -47,7 +47,8 @@ impl ThdRun {
             .flatten()
             .fold(case.operating.supply_temperature_c.min(th.ambient_temperature_c), f64::min);
         let floor = coldest - UNDERSHOOT_ALLOWANCE_K;
-        let (lo, hi) = t_new.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+        let (lo, hi) =
+            t_new.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
         let (lo, hi) = (lo.max(floor), hi.max(floor));
         for v in &mut next {
             *v = v.clamp(lo, hi);
@@ -58,9 +59,14 @@ impl ThdRun {
     /// An equilibrium failed with the proposed field: the lightly loaded pads get their mean viscosity, or the
     /// step is halved back towards the last field that worked, or — a touchdown that backtracking could not
     /// leave — the loop restarts cautiously once ([`ThdRun::restart_cautiously`]); else the error stands.
-    pub(super) fn failed_equilibrium(&mut self, thermal: &mut ThermalModel, e: SolveError) -> Result<Option<ThdState>, SolveError> {
+    pub(super) fn failed_equilibrium(
+        &mut self,
+        thermal: &mut ThermalModel,
+        e: SolveError,
+    ) -> Result<Option<ThdState>, SolveError> {
         let Some(tt) = &self.t_try else { return Err(e) };
-        let light: Vec<usize> = (0..self.uniform.len()).filter(|&k| !self.uniform[k] && self.shares[k] < LIGHT_PAD_SHARE).collect();
+        let light: Vec<usize> =
+            (0..self.uniform.len()).filter(|&k| !self.uniform[k] && self.shares[k] < LIGHT_PAD_SHARE).collect();
         if !light.is_empty() {
             for &k in &light {
                 self.uniform[k] = true;
@@ -85,7 +91,8 @@ impl ThdRun {
         }
         self.backtracks += 1;
         let base = self.t_ok.as_ref().unwrap_or(&self.t_iso);
-        self.t_try = Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
+        self.t_try =
+            Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
         self.anderson.reset();
         self.report.warnings.push(format!("equilibrium failed with the updated viscosity field ({e}); step halved"));
         Ok(None)
