@@ -31,6 +31,7 @@
 //!   coefficients for ROSS and as CSV.
 //! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
 //! - [`number`]: numbers as text at the edges (significant digits, CSV cells, tick labels).
+//! - [`units`]: the engineering units of the edges (rpm, bar, µm, L/min …), each conversion factor defined once.
 //! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `schema`, `bench`).
 
 // Lints: `[lints]` in Cargo.toml. Library paths that user input reaches never unwrap or expect (test
@@ -50,3 +51,4 @@ pub mod physics;
 pub mod rotor;
 pub mod scene;
 pub mod study;
+pub mod units;
