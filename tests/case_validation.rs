@@ -196,7 +196,7 @@ fn thermal_table() {
 fn massless_pads_are_an_explicit_option() {
     let mass = |case: &tiltpad::model::Case| {
         let b = &case.bearing;
-        tiltpad::bearing::coordinates::PadStructure::rigid(&b.pads[0], b.journal_radius_m, b.length_m).mass
+        tiltpad::bearing::film::coordinates::PadStructure::rigid(&b.pads[0], b.journal_radius_m, b.length_m).mass
     };
     let someya = common::case("someya-4pad-lbp.toml", &[]);
     assert!(someya.bearing.pads.iter().all(|p| p.massless));

@@ -10,7 +10,7 @@
 mod common;
 
 use common::{case, solve};
-use tiltpad::bearing::coordinates::{Coord, PadDof};
+use tiltpad::bearing::film::coordinates::{Coord, PadDof};
 use tiltpad::bearing::{solve_case, Solution};
 
 const PREVIEW: &str = "mesh.fidelity=preview";

@@ -12,7 +12,7 @@
 mod common;
 
 use common::case;
-use tiltpad::bearing::pivot_contact::FLOOR;
+use tiltpad::bearing::equilibrium::pivots::FLOOR;
 use tiltpad::bearing::{solve_point, BearingModel, NoCancel, Solution};
 use tiltpad::model::Case;
 

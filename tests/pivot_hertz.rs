@@ -13,9 +13,9 @@
 mod common;
 
 use common::case;
-use tiltpad::bearing::coefficients::reduce;
-use tiltpad::bearing::coordinates::{Coord, PadDof};
-use tiltpad::bearing::pivot_contact::FLOOR;
+use tiltpad::bearing::equilibrium::pivots::FLOOR;
+use tiltpad::bearing::film::coordinates::{Coord, PadDof};
+use tiltpad::bearing::solution::coefficients::reduce;
 use tiltpad::bearing::solve_case;
 
 const CASE: &str = "compressor-bearing-rocker-pivot.toml";

@@ -25,8 +25,8 @@ mod common;
 
 use common::case;
 use nalgebra::Complex;
-use tiltpad::bearing::coefficients::reduce;
-use tiltpad::bearing::coordinates::{Coord, PadDof};
+use tiltpad::bearing::film::coordinates::{Coord, PadDof};
+use tiltpad::bearing::solution::coefficients::reduce;
 use tiltpad::bearing::{solve_case, Solution};
 use tiltpad::model::Case;
 

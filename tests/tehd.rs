@@ -48,7 +48,7 @@ fn growth_converges_closes_the_film_and_keeps_the_energy_balance() {
     assert!(r.converged, "{r:?}");
     let clearance = tehd.inputs.bearing.assembled_clearance_m;
     let last = *r.growth_change_m.last().unwrap();
-    assert!(last <= tiltpad::bearing::tehd::GROWTH_TOL * clearance, "growth change {last:.2e} m");
+    assert!(last <= tiltpad::bearing::thermal::growth::GROWTH_TOL * clearance, "growth change {last:.2e} m");
     // Journal growth from the converged journal temperature.
     let expected = 11e-6 * tehd.inputs.bearing.journal_radius_m * (t.journal_temperature_c - 20.0);
     let journal = r.journal_growth_m.unwrap();

@@ -3,11 +3,11 @@
 mod common;
 
 use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
-use tiltpad::bearing::thermal_pad::PadThermal;
+use tiltpad::bearing::thermal::pad_system::PadThermal;
 use tiltpad::bearing::{BearingModel, OperatingPoint, ThermalModel};
 use tiltpad::mesh::pad3d::PadMesh;
 use tiltpad::physics::energy::{FilmEnergy, Injection, Oil};
-use tiltpad::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
+use tiltpad::physics::pad_conduction::{PadConduction, PadDirichletSolver, PadMaterial};
 
 /// The energy equation integrates the injected flow with the Reynolds solver's own orifice quadrature: the
 /// flux field's nodal outflows add up to the orifice flows the film reports.
@@ -88,7 +88,7 @@ fn film_temperature_stays_above_the_coldest_inflow() {
 /// also stops an equilibrium that is running when it is spent).
 #[test]
 fn thermal_loop_stops_at_its_budgets() {
-    use tiltpad::bearing::error::{Budget, Iteration};
+    use tiltpad::bearing::report::error::{Budget, Iteration};
     use tiltpad::bearing::thermal::{solve_thd, ThdRun};
     use tiltpad::bearing::{SolveError, ThermalParams};
     let case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);

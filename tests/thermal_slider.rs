@@ -14,12 +14,12 @@
 //! Lubrication*, ch. 8). Checks: the outlet temperature on the mid-plane against that closed form, and the
 //! global balance `P = H + C` of the whole finite slider.
 
-use tiltpad::bearing::thermal_pad::{PadThermal, ThermalSetup};
+use tiltpad::bearing::thermal::pad_system::{PadThermal, ThermalSetup};
 use tiltpad::fem::supg::Stabilisation;
 use tiltpad::mesh::grid::{graded_nodes, PadGrid};
 use tiltpad::model::Cavitation;
 use tiltpad::physics::energy::{BalanceInputs, Exchange, Injection, Oil};
-use tiltpad::physics::pad_thermal::PadMaterial;
+use tiltpad::physics::pad_conduction::PadMaterial;
 use tiltpad::physics::reynolds::{FilmGeometry, FilmInputs, FilmShape, PadFilm, Viscosity};
 
 const R: f64 = 10.0; // large radius: the arc is a plane to the film

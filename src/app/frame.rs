@@ -215,7 +215,10 @@ impl WorkbenchApp {
         let fidelity = format!("{:?}", shown.solution.inputs.mesh.fidelity).to_lowercase();
         ui.label(RichText::new(format!("{} — {fidelity} mesh", shown.solution.title)).small());
         let s = summary::summary(&shown.solution);
-        limits_view::limits_ui(ui, &crate::bearing::limits::check(&shown.solution.inputs.limits, &shown.solution));
+        limits_view::limits_ui(
+            ui,
+            &crate::bearing::solution::limits::check(&shown.solution.inputs.limits, &shown.solution),
+        );
         let (solution, text) = (shown.solution.clone(), self.doc.text().ok());
         let pins = &mut self.persisted.pins;
         let action = egui::ScrollArea::vertical()
@@ -257,8 +260,9 @@ impl WorkbenchApp {
                     let o = outline::bearing_outline_with(&case, solution, self.persisted.outline_lock);
                     bearing_view::lock_ui(ui, &mut self.persisted.outline_lock, o.scales());
                     let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
-                    let checks =
-                        solution.map(|s| crate::bearing::limits::check(&s.inputs.limits, s)).unwrap_or_default();
+                    let checks = solution
+                        .map(|s| crate::bearing::solution::limits::check(&s.inputs.limits, s))
+                        .unwrap_or_default();
                     // The pinned outline at the live picture's scales, so the two overlay.
                     let overlay = pinned.map(|(name, p)| {
                         (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales())))

@@ -57,7 +57,7 @@ pub struct Shown {
     pub frequency_sweep: Option<Arc<Vec<(f64, ReducedCoefficients)>>>,
     pub speed_sweep: Option<Arc<Vec<SpeedPoint>>>,
     /// The bearing linearised for its injection ports (FRF view open, case with `[hydraulics]`).
-    pub frf: Option<Arc<crate::bearing::frf_job::FrfModel>>,
+    pub frf: Option<Arc<crate::bearing::frf::model::FrfModel>>,
 }
 
 /// What the solver is doing.

@@ -1,42 +1,36 @@
-//! The bearing: film geometry and coordinates ([`geometry`]), the model built once per mesh ([`model`]),
-//! static equilibrium ([`equilibrium`]), the thermal (THD) loop around it ([`thermal`], with the per-pad
-//! thermal systems in [`thermal_pad`] and the thermal growth of pads and journal in [`tehd`]), dynamic coefficients ([`coefficients`]), the flow-regime checks of
-//! a solved film ([`regime`]), the design-limit checks of a solution ([`limits`]), the solve job ([`job`]) that turns a case into a [`Solution`], and the
-//! cached, steppable [`stages`] the app asks for results through.
+//! # The bearing
+//!
+//! Everything that turns a validated [`crate::model::Case`] into a [`Solution`], in folders by role. Each
+//! folder imports only the ones listed above it here, never one below:
+//!
+//! | folder            | owns                                                                                 |
+//! |-------------------|--------------------------------------------------------------------------------------|
+//! | [`report`]        | what every solve hands back besides its result: the [`SolveReport`], the typed errors ([`SolveError`]) and warnings, cancellation and suspension ([`Cancel`], [`Progress`]) |
+//! | [`film`]          | the films of the pads: film-thickness geometry, the generalised coordinates and their layout ([`DofMap`]), the model built once per mesh ([`BearingModel`]) and the flexible pads' modes |
+//! | [`equilibrium`]   | the static equilibrium of journal and pads (coupled Newton, its fallbacks, the Hertz pivots' load iteration) |
+//! | [`thermal`]       | the thermal (THD) loop around the equilibrium: per-pad energy and conduction systems, groove mixing, Anderson acceleration, the thermal growth of pads, journal and housing (TEHD) |
+//! | [`solution`]      | a converged state as a result: assembly, dynamic coefficients and their reduction, flow-regime and design-limit checks, the JSON form |
+//! | [`frf`]           | the bearing linearised at its injection nozzles and the frequency responses of the controllable bearing |
+//! | [`stages`]        | **the one entrance**: every caller (workbench, CLI, studies, rotor, bench) asks [`Stages`] for what it needs with a [`Request`]; one cache keyed on each stage's declared inputs serves them all |
+//!
+//! [`solve_case`] is the three-line form of a request for one solution.
 
-pub mod anderson;
-pub mod coefficients;
-pub mod coordinates;
 pub mod equilibrium;
-pub mod error;
-pub mod flex;
+pub mod film;
 pub mod frf;
-pub mod frf_job;
-pub mod geometry;
-pub mod growth_solid;
-pub mod injection;
-pub mod job;
-pub mod limits;
-pub mod mixing;
-pub mod model;
-pub mod pivot_contact;
-pub mod progress;
-pub mod regime;
 pub mod report;
 pub mod solution;
 pub mod stages;
-pub mod tehd;
 pub mod thermal;
-pub mod thermal_pad;
 
-pub use coefficients::{FullCoefficients, ReducedCoefficients};
-pub use coordinates::{Coord, DofMap, PadDof};
 pub use equilibrium::EquilibriumParams;
-pub use error::SolveError;
-pub use job::{solve_case, solve_operating_point, solve_point};
-pub use model::{BearingModel, OperatingPoint};
-pub use progress::{Cancel, FrameBudget, NoCancel, NoSuspend, Progress};
+pub use film::coordinates::{Coord, DofMap, PadDof};
+pub use film::model::{BearingModel, OperatingPoint};
+pub use report::error::SolveError;
+pub use report::progress::{Cancel, FrameBudget, NoCancel, NoSuspend, Progress};
 pub use report::SolveReport;
+pub use solution::assemble::{solve_case, solve_operating_point, solve_point};
+pub use solution::coefficients::{FullCoefficients, ReducedCoefficients};
 pub use solution::Solution;
 pub use stages::{Outcome, Request, StageId, Stages, Step};
 pub use thermal::{ThermalModel, ThermalParams, ThermalReport};

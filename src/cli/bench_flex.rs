@@ -132,7 +132,7 @@ fn tehd_table(text: &str, repeats: usize) -> Result<String> {
 
 /// The pad layers' share of the TEHD error: the standard film mesh with 2, 4 (the growth solid on every second
 /// layer, the standard default, and on all) and 8 pad layers (the truth). The explicit film mesh with the
-/// reference fidelity keeps every layer in the growth solid ([`crate::bearing::tehd::growth_layer_step`]).
+/// reference fidelity keeps every layer in the growth solid ([`crate::bearing::thermal::growth::growth_layer_step`]).
 fn layers_table(text: &str, repeats: usize) -> Result<String> {
     let with = |extra: &[String]| -> Vec<String> {
         TEHD.iter().map(|s| (*s).to_string()).chain(extra.iter().cloned()).collect()

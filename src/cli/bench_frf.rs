@@ -10,7 +10,7 @@ use std::path::Path;
 use anyhow::Result;
 use web_time::Instant;
 
-use crate::bearing::frf_job::{band, FrfModel};
+use crate::bearing::frf::model::{band, FrfModel};
 use crate::model::load_case;
 
 /// The target of issue 10: 400 frequencies of all FRFs after the equilibrium.

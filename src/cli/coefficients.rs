@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::bearing::coefficients::reduce;
+use crate::bearing::solution::coefficients::reduce;
 use crate::io::coefficients::{CoefficientTable, FrequencyMeaning};
 use crate::io::write_file;
 use crate::study::{Axis, Runner};

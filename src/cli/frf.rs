@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 use serde_json::json;
 
-use crate::bearing::frf_job::{band, FrfModel};
+use crate::bearing::frf::model::{band, FrfModel};
 use crate::io::write_file;
 use crate::model::Case;
 use crate::scene::frf::FrfCurves;

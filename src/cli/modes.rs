@@ -10,8 +10,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use serde::Serialize;
 
-use crate::bearing::flex::{mode_table, pad_solid_modes, ModeCache, ModeTableRow};
-use crate::bearing::model::pad_grid;
+use crate::bearing::film::flex::{mode_table, pad_solid_modes, ModeCache, ModeTableRow};
+use crate::bearing::film::model::pad_grid;
 
 use super::rows::announce;
 use super::{read_case, write_atomic};

@@ -54,7 +54,7 @@ pub fn solution_json(s: &Solution) -> Value {
         "thermal": s.thermal,
         "design_limits": {
             "limits": s.inputs.limits,
-            "checks": crate::bearing::limits::check(&s.inputs.limits, s),
+            "checks": crate::bearing::solution::limits::check(&s.inputs.limits, s),
         },
         "inputs": {
             "case": s.inputs,
@@ -200,7 +200,7 @@ pub fn summary_text(s: &Solution) -> String {
 /// One line: the design limits the solution exceeds, or that it meets them all.
 #[must_use]
 pub fn limits_line(s: &Solution) -> String {
-    let checks = crate::bearing::limits::check(&s.inputs.limits, s);
+    let checks = crate::bearing::solution::limits::check(&s.inputs.limits, s);
     let bad: Vec<String> = checks.iter().filter(|c| c.exceeded).map(crate::scene::limits::text).collect();
     if bad.is_empty() {
         let all: Vec<String> = checks.iter().map(crate::scene::limits::text).collect();

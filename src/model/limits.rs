@@ -31,7 +31,7 @@
 //!   Lubrication Technology 103(1), 1981, p. 150). So 20 MPa stays a screening value, stated as such; a
 //!   design review replaces it by the bearing maker's figure for its lining.
 //! - `max_reynolds` = 1000: the low end of the 1000–1500 laminar–turbulent transition reported for
-//!   journal bearings ([`crate::bearing::regime::LAMINAR_REYNOLDS`]); above it the laminar model this solver
+//!   journal bearings ([`crate::bearing::solution::regime::LAMINAR_REYNOLDS`]); above it the laminar model this solver
 //!   uses underestimates loss and temperature.
 
 use serde::{Deserialize, Serialize};
@@ -94,7 +94,7 @@ pub const DEFAULT_MIN_FILM_UM: f64 = 10.0;
 pub const DEFAULT_MAX_PAD_TEMPERATURE_C: f64 = 120.0;
 pub const DEFAULT_MAX_SPECIFIC_LOAD_MPA: f64 = 3.5;
 pub const DEFAULT_MAX_PEAK_PRESSURE_MPA: f64 = 20.0;
-/// The regime check's laminar limit ([`crate::bearing::regime::LAMINAR_REYNOLDS`], a test keeps them equal).
+/// The regime check's laminar limit ([`crate::bearing::solution::regime::LAMINAR_REYNOLDS`], a test keeps them equal).
 pub const DEFAULT_MAX_REYNOLDS: f64 = 1000.0;
 
 /// Allowed ranges (also the schema's).

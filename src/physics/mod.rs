@@ -9,7 +9,7 @@
 //!   solutions and modes).
 //! - [`pad_modes`]: the pad's bending modes on its pivot as pseudo-modal coordinates (film shapes, modal
 //!   mass and stiffness).
-//! - [`pad_thermal`]: steady 3-D heat conduction in a pad, free convection on its free faces.
+//! - [`pad_conduction`]: steady 3-D heat conduction in a pad, free convection on its free faces.
 //! - [`hertz`]: Hertz contact of a pivot (rocker, ball in socket): approach and stiffness, nonlinear in load.
 //! - [`hydraulics`]: servovalve, injection lines and nozzles of the controllable bearing, linearised.
 
@@ -17,8 +17,8 @@ pub mod energy;
 pub mod hertz;
 pub mod hydraulics;
 pub mod orifice;
+pub mod pad_conduction;
 pub mod pad_elastic;
 pub mod pad_modes;
-pub mod pad_thermal;
 pub mod reynolds;
 pub mod viscosity;

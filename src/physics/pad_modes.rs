@@ -25,7 +25,7 @@ use crate::fem::solid8::{element_momentum, Elastic, Formulation};
 use crate::mesh::grid::PadGrid;
 use crate::mesh::pad3d::PadMesh;
 
-use super::pad_elastic::{ElasticError, ElasticSystem, Solid, Supports};
+use crate::physics::pad_elastic::{ElasticError, ElasticSystem, Solid, Supports};
 
 /// A field given at the film grid's nodes, evaluated at (θ, z) by bilinear interpolation in (s, z).
 #[derive(Debug, Clone, PartialEq)]

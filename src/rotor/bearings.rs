@@ -10,9 +10,9 @@ use std::collections::BTreeMap;
 
 use super::coupling::BearingCoefficients;
 use super::error::RotorError;
-use crate::bearing::coefficients::FullCoefficients;
-use crate::bearing::job::solve_point;
-use crate::bearing::model::BearingModel;
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::solution::assemble::solve_point;
+use crate::bearing::solution::coefficients::FullCoefficients;
 use crate::bearing::thermal::ThermalModel;
 use crate::bearing::NoCancel;
 use crate::model::rotor::{BearingSupport, CoefficientModel, CoefficientTable, Rotor};

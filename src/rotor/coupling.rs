@@ -14,8 +14,8 @@
 use nalgebra::DMatrix;
 
 use super::assembly::{NodeDof, ShaftModel, Weights};
-use crate::bearing::coefficients::{active_pad_dofs, reduce, FullCoefficients};
-use crate::bearing::coordinates::{Coord, JOURNAL_DOFS};
+use crate::bearing::film::coordinates::{Coord, JOURNAL_DOFS};
+use crate::bearing::solution::coefficients::{active_pad_dofs, reduce, FullCoefficients};
 
 /// The coefficients of one bearing position at one speed.
 #[derive(Debug, Clone, PartialEq)]

@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use crate::bearing::error::SolveError;
+use crate::bearing::report::error::SolveError;
 use crate::model::CaseError;
 
 /// Why a rotor analysis failed.

@@ -8,8 +8,8 @@ use super::assembly::ShaftModel;
 use super::coupling::BearingCoefficients;
 use super::element::{BeamSection, BeamTheory};
 use super::stability::modes_at;
-use crate::bearing::coefficients::FullCoefficients;
-use crate::bearing::coordinates::{Coord, PadDof};
+use crate::bearing::film::coordinates::{Coord, PadDof};
+use crate::bearing::solution::coefficients::FullCoefficients;
 use crate::model::rotor::{CoefficientModel, Disk, Rotor};
 
 fn bearing(kf: f64, cf: f64, kp: f64, mp: f64) -> FullCoefficients {

@@ -8,7 +8,7 @@
 //! film face is `u_m(s, z) = Σ_i q_i φ_i(s, z)` ([`crate::bearing::solution::PadResult::elastic_displacement_m`];
 //! positive away from the journal, opening the film).
 //!
-//! Thermal growth of the pad (TEHD, [`crate::bearing::tehd`]): the solid's displacement `v_t(x)` from the
+//! Thermal growth of the pad (TEHD, [`crate::bearing::thermal::growth`]): the solid's displacement `v_t(x)` from the
 //! converged pad temperature, its film-face radial component `u_t`
 //! ([`crate::bearing::solution::PadThermalGrowth`]). The journal's uniform growth δ_j is not the pad's and
 //! is not drawn here (the film carries it: `h = h_rigid + u_m + u_t − δ_j`).

@@ -8,7 +8,7 @@
 use nalgebra::Complex;
 use serde::Serialize;
 
-use crate::bearing::frf_job::FrfSweep;
+use crate::bearing::frf::model::FrfSweep;
 
 type C64 = Complex<f64>;
 
@@ -73,7 +73,7 @@ impl FrfCurves {
     #[must_use]
     pub fn new(sweep: &FrfSweep, port_names: &[&str], title: String) -> Self {
         let pts = &sweep.points;
-        let get = |f: &dyn Fn(&crate::bearing::frf::FrfPoint) -> C64| pts.iter().map(f).collect::<Vec<_>>();
+        let get = |f: &dyn Fn(&crate::bearing::frf::dynamics::FrfPoint) -> C64| pts.iter().map(f).collect::<Vec<_>>();
         let mut curves = vec![curve("G1".into(), "V/V", "G1", 1.0, &get(&|p| p.g1))];
         let np = pts.first().map_or(0, |p| p.g2.len());
         let name = |k: usize| port_names.get(k).copied().unwrap_or(PORTS[k.min(1)]);
@@ -89,7 +89,8 @@ impl FrfCurves {
             curves.push(curve(format!("G_{ax}"), "N/V", "G", 1.0, &get(&|p| p.g[a])));
         }
         if let Some(sh) = &sweep.shaker {
-            let col = |f: &dyn Fn(&crate::bearing::frf::ShakerPoint) -> C64| sh.iter().map(f).collect::<Vec<_>>();
+            let col =
+                |f: &dyn Fn(&crate::bearing::frf::dynamics::ShakerPoint) -> C64| sh.iter().map(f).collect::<Vec<_>>();
             curves.push(curve("C".into(), "N/V", "rig", 1.0, &col(&|p| p.calibration)));
             curves.push(curve("H_pseudo".into(), "µm/V", "rig", 1e6, &col(&|p| p.pseudo)));
             curves.push(curve("H_chain".into(), "µm/N", "rig", 1e6, &col(&|p| p.chain)));

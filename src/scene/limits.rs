@@ -1,7 +1,7 @@
-//! Design-limit checks ([`crate::bearing::limits`]) as text in engineering units, for the results panel,
+//! Design-limit checks ([`crate::bearing::solution::limits`]) as text in engineering units, for the results panel,
 //! the bearing view and the command line's summary.
 
-use crate::bearing::limits::{Check, LimitKind};
+use crate::bearing::solution::limits::{Check, LimitKind};
 
 use super::summary::sig4;
 

@@ -21,8 +21,8 @@
 
 use std::f64::consts::TAU;
 
-use crate::bearing::coordinates::{pad_dofs, Coord};
-use crate::bearing::geometry::PadShape;
+use crate::bearing::film::coordinates::{pad_dofs, Coord};
+use crate::bearing::film::geometry::PadShape;
 use crate::bearing::solution::Solution;
 use crate::model::{Case, LoadSpec};
 use crate::physics::reynolds::FilmShape;

@@ -5,7 +5,7 @@
 //! ω; model.md §7) or against the running speed (one equilibrium per speed, synchronous or at the case's
 //! ω/Ω). Display units: stiffness in MN/m, damping in kN·s/m.
 
-use crate::bearing::coefficients::{FullCoefficients, ReducedCoefficients};
+use crate::bearing::solution::coefficients::{FullCoefficients, ReducedCoefficients};
 use crate::bearing::stages::SpeedPoint;
 
 /// Display factor from N/m to MN/m.

@@ -9,7 +9,7 @@
 
 use web_time::Instant;
 
-use crate::bearing::limits::LimitKind;
+use crate::bearing::solution::limits::LimitKind;
 use crate::bearing::{solve_point, BearingModel, NoCancel, Solution, SolveError, ThermalModel};
 use crate::model::{load_case, Case, CaseError};
 
@@ -32,7 +32,7 @@ pub struct Row {
     pub inputs: Vec<(String, String)>,
     /// Output cells in [`COLUMNS`] order, or the error.
     pub result: Result<Vec<Option<f64>>, PointError>,
-    /// Names of the design limits the point's solution exceeds ([`crate::bearing::limits`]); empty for a
+    /// Names of the design limits the point's solution exceeds ([`crate::bearing::solution::limits`]); empty for a
     /// point within them and for a failed point.
     #[serde(deserialize_with = "limit_names")]
     pub limits_exceeded: Vec<&'static str>,
@@ -214,7 +214,7 @@ impl Row {
     ) -> Self {
         let limits_exceeded = result.as_ref().map_or_else(
             |_| Vec::new(),
-            |s| crate::bearing::limits::exceeded(&s.inputs.limits, s).iter().map(|c| c.kind.name()).collect(),
+            |s| crate::bearing::solution::limits::exceeded(&s.inputs.limits, s).iter().map(|c| c.kind.name()).collect(),
         );
         Self { index, inputs: overrides.to_vec(), result: result.map(outputs), limits_exceeded, seconds }
     }

@@ -3,7 +3,7 @@
 
 use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
 
-use crate::bearing::limits::{Check, LimitKind};
+use crate::bearing::solution::limits::{Check, LimitKind};
 use crate::scene::outline::{BearingOutline, OutlineScales, Point};
 use crate::scene::summary::PadRow;
 

@@ -10,7 +10,7 @@
 use egui::{Color32, RichText, Ui};
 use egui_plot::{HoverPosition, Legend, Line, Plot, VLine};
 
-use crate::bearing::frf_job::{band, FrfModel};
+use crate::bearing::frf::model::{band, FrfModel};
 use crate::model::Case;
 use crate::scene::frf::FrfCurves;
 

@@ -1,9 +1,9 @@
 //! The design-limit marks of the results panel: one line when every limit is met (the checks in its
-//! tooltip), else one red line per exceeded limit with its value and limit ([`crate::bearing::limits`]).
+//! tooltip), else one red line per exceeded limit with its value and limit ([`crate::bearing::solution::limits`]).
 
 use egui::{Color32, RichText, Ui};
 
-use crate::bearing::limits::Check;
+use crate::bearing::solution::limits::Check;
 
 pub const EXCEEDED: Color32 = Color32::from_rgb(235, 70, 60);
 

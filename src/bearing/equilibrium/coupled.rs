@@ -1,5 +1,5 @@
 //! Coupled Newton on all coordinates at once: one film solve per pad per iteration, the films' analytic
-//! Jacobian `∂R/∂u = −(K_film + K_s)` assembled through the [`DofMap`](super::super::coordinates::DofMap).
+//! Jacobian `∂R/∂u = −(K_film + K_s)` assembled through the [`DofMap`](crate::bearing::film::coordinates::DofMap).
 //!
 //! Safeguards: on a cold start, and whenever a pad's own stiffness is not positive (far from its
 //! equilibrium the tilt moment is not monotone), that pad is placed with the safeguarded pad solve; pads
@@ -10,13 +10,15 @@
 
 use nalgebra::{DMatrix, DVector, Vector2};
 
-use super::super::coordinates::JOURNAL_DOFS;
-use super::super::error::SolveError;
-use super::super::model::BearingModel;
-use super::eval::{coupled_residual, eval_all, external_load, total_force, Ctx};
-use super::journal::{bearing_stiffness, journal_step, pads_ahead, unsupported_direction};
-use super::pad::{follow_journal, solve_pad};
-use super::{Cancel, Found, PadState, Progress, Resume, Stall, SUFFICIENT_DECREASE, UNLOADED_SHARE};
+use crate::bearing::equilibrium::eval::{coupled_residual, eval_all, external_load, total_force, Ctx};
+use crate::bearing::equilibrium::journal::{bearing_stiffness, journal_step, pads_ahead, unsupported_direction};
+use crate::bearing::equilibrium::pad::{follow_journal, solve_pad};
+use crate::bearing::equilibrium::{
+    Cancel, Found, PadState, Progress, Resume, Stall, SUFFICIENT_DECREASE, UNLOADED_SHARE,
+};
+use crate::bearing::film::coordinates::JOURNAL_DOFS;
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::error::SolveError;
 
 /// Backtracking halvings of a Newton step before the line search gives up.
 const LINE_SEARCH_HALVINGS: usize = 12;

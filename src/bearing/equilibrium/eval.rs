@@ -7,10 +7,10 @@ use web_time::Instant;
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization, FilmSolveInfo};
 
-use super::super::coordinates::JOURNAL_DOFS;
-use super::super::error::{Budget, Iteration, SolveError};
-use super::super::model::{BearingModel, OperatingPoint, PadModel};
-use super::{EquilibriumParams, PadState, SolveReport, FLOATING_SHARE, UNLOADED_SHARE};
+use crate::bearing::equilibrium::{EquilibriumParams, PadState, SolveReport, FLOATING_SHARE, UNLOADED_SHARE};
+use crate::bearing::film::coordinates::JOURNAL_DOFS;
+use crate::bearing::film::model::{BearingModel, OperatingPoint, PadModel};
+use crate::bearing::report::error::{Budget, Iteration, SolveError};
 
 /// A force scale for residuals: the larger of the load, the hydrodynamic load at S = 1, and a hydrostatic
 /// scale from the injection pressure.
@@ -210,7 +210,8 @@ pub(super) fn solve_all_pads(
     let mut f = [0.0, 0.0];
     for k in 0..model.pads.len() {
         let q = u[model.dofs.pad_slice(k)].to_vec();
-        let st = super::pad::solve_pad(&mut model.pads[k], k, journal, &q, ctx).map_err(|e| (k, e))?;
+        let st =
+            crate::bearing::equilibrium::pad::solve_pad(&mut model.pads[k], k, journal, &q, ctx).map_err(|e| (k, e))?;
         f[0] += st.forces[0];
         f[1] += st.forces[1];
         states.push(st);

@@ -2,7 +2,7 @@
 //! pad assembly, so the journal force `F(e)` is the bearing's static force law):
 //!
 //! 1. Newton on `F(e) + W = 0` with the pad-condensed stiffness, from the initial guess.
-//! 2. The polar bracketing search ([`super::polar`]): converges for any continuous restoring force law,
+//! 2. The polar bracketing search ([`crate::bearing::equilibrium::polar`]): converges for any continuous restoring force law,
 //!    including the non-smooth ones of zero-preload pads whose film is uniform.
 //! 3. A scan along the load for the first stable crossing (negative-stiffness regions and folds, e.g.
 //!    hydrostatic pads on soft pivots), then Newton.
@@ -14,11 +14,11 @@ use nalgebra::Vector2;
 
 use crate::physics::reynolds::FilmError;
 
-use super::super::error::SolveError;
-use super::super::model::BearingModel;
-use super::eval::{assemble_u, external_load, load_direction, min_film, solve_all_pads, Ctx};
-use super::journal::{bearing_stiffness, journal_step, pads_surround, StepFailure};
-use super::{Cancel, Found, Stall, SUFFICIENT_DECREASE};
+use crate::bearing::equilibrium::eval::{assemble_u, external_load, load_direction, min_film, solve_all_pads, Ctx};
+use crate::bearing::equilibrium::journal::{bearing_stiffness, journal_step, pads_surround, StepFailure};
+use crate::bearing::equilibrium::{Cancel, Found, Stall, SUFFICIENT_DECREASE};
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::error::SolveError;
 
 /// Backtracking halvings of a journal Newton step.
 const LINE_SEARCH_HALVINGS: usize = 14;
@@ -54,7 +54,10 @@ pub(super) fn run(
     // outer thermal loop keep their coordinates).
     let mut centred = u0.to_vec();
     centred[..2].fill(0.0);
-    match named(super::polar::polar_search(model, &centred, ctx, cancel)?, "polar bracketing search") {
+    match named(
+        crate::bearing::equilibrium::polar::polar_search(model, &centred, ctx, cancel)?,
+        "polar bracketing search",
+    ) {
         Ok(f) => return Ok(f),
         Err(s) => {
             ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason))

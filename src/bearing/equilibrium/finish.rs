@@ -14,13 +14,13 @@
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization};
 
-use super::super::coordinates::PadDof;
-use super::super::error::{Iteration, SolveError};
-use super::super::model::BearingModel;
-use super::eval::{external_load, min_film, Ctx};
-use super::fallback::TOUCHDOWN_FRACTION;
-use super::journal::{nearest_normal, pads_surround};
-use super::{Equilibrium, Found, FLOATING_SHARE};
+use crate::bearing::equilibrium::eval::{external_load, min_film, Ctx};
+use crate::bearing::equilibrium::fallback::TOUCHDOWN_FRACTION;
+use crate::bearing::equilibrium::journal::{nearest_normal, pads_surround};
+use crate::bearing::equilibrium::{Equilibrium, Found, FLOATING_SHARE};
+use crate::bearing::film::coordinates::PadDof;
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::error::{Iteration, SolveError};
 
 /// Pad residual (relative) above which a converged state is reported with a warning.
 const PAD_RESIDUAL_WARNING: f64 = 1e3;

@@ -8,9 +8,9 @@
 
 use nalgebra::{DMatrix, Matrix2, Vector2};
 
-use super::super::coordinates::JOURNAL_DOFS;
-use super::super::model::PadModel;
-use super::PadState;
+use crate::bearing::equilibrium::PadState;
+use crate::bearing::film::coordinates::JOURNAL_DOFS;
+use crate::bearing::film::model::PadModel;
 
 /// Singular values below this fraction of the largest are treated as zero stiffness.
 pub(super) const STIFFNESS_RANK_TOL: f64 = 1e-7;

@@ -1,7 +1,7 @@
 //! Static equilibrium of journal and pads.
 //!
 //! ## Problem
-//! Find the global coordinates `u = [e_x, e_y, pad coordinates…]` (layout: [`super::coordinates::DofMap`])
+//! Find the global coordinates `u = [e_x, e_y, pad coordinates…]` (layout: [`crate::bearing::film::coordinates::DofMap`])
 //! such that
 //!
 //! ```text
@@ -34,6 +34,7 @@ mod fallback;
 mod finish;
 mod journal;
 mod pad;
+pub mod pivots;
 mod polar;
 
 use nalgebra::DMatrix;
@@ -42,10 +43,10 @@ use web_time::Instant;
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization};
 
-use super::error::SolveError;
-use super::model::{BearingModel, OperatingPoint};
-pub use super::progress::{Cancel, NoCancel, NoSuspend, Progress};
-pub use super::report::SolveReport;
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::SolveError;
+pub use crate::bearing::report::progress::{Cancel, NoCancel, NoSuspend, Progress};
+pub use crate::bearing::report::SolveReport;
 
 pub use eval::force_scale;
 
@@ -109,7 +110,7 @@ impl Default for EquilibriumParams {
 /// Converged state of one pad.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PadState {
-    /// Pad coordinates, in the pad's order ([`super::model::PadModel::dofs`]).
+    /// Pad coordinates, in the pad's order ([`crate::bearing::film::model::PadModel::dofs`]).
     pub q: Vec<f64>,
     /// Generalised film forces `[F_x, F_y, Q_pad…]` (film on journal; moment about the pivot; …).
     pub forces: Vec<f64>,
@@ -130,13 +131,13 @@ impl PadState {
     /// Generalised film force on pad coordinate `d`.
     #[must_use]
     pub fn pad_force(&self, d: usize) -> f64 {
-        self.forces[super::coordinates::JOURNAL_DOFS + d]
+        self.forces[crate::bearing::film::coordinates::JOURNAL_DOFS + d]
     }
 
     /// Film stiffness block over the pad's own coordinates.
     #[must_use]
     pub fn pad_stiffness(&self) -> DMatrix<f64> {
-        let j = super::coordinates::JOURNAL_DOFS;
+        let j = crate::bearing::film::coordinates::JOURNAL_DOFS;
         let n = self.q.len();
         self.lin.stiffness.view((j, j), (n, n)).into_owned()
     }

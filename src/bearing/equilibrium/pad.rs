@@ -18,10 +18,12 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::physics::reynolds::FilmError;
 
-use super::super::coordinates::{PadDof, JOURNAL_DOFS};
-use super::super::model::PadModel;
-use super::eval::{eval_pad, pad_scales, relative, structural_force, Ctx};
-use super::{PadState, NO_PRESSURE_SHARE, ONSET_FIRST_STEP, ONSET_WIDTH, SUFFICIENT_DECREASE, UNLOADED_SHARE};
+use crate::bearing::equilibrium::eval::{eval_pad, pad_scales, relative, structural_force, Ctx};
+use crate::bearing::equilibrium::{
+    PadState, NO_PRESSURE_SHARE, ONSET_FIRST_STEP, ONSET_WIDTH, SUFFICIENT_DECREASE, UNLOADED_SHARE,
+};
+use crate::bearing::film::coordinates::{PadDof, JOURNAL_DOFS};
+use crate::bearing::film::model::PadModel;
 
 /// Solves one pad's coordinates for a fixed journal position (warm-started from `q`).
 pub(super) fn solve_pad(

@@ -15,11 +15,11 @@
 //! Both roots are bracketed, so the search converges for any continuous restoring force law (intermediate
 //! value theorem), superlinearly where the law is smooth. Each evaluation is a pad assembly.
 
-use super::super::error::SolveError;
-use super::super::model::BearingModel;
-use super::eval::{assemble_u, external_load, min_film, solve_all_pads, Ctx};
-use super::fallback::TOUCHDOWN_FRACTION;
-use super::{Cancel, Found, PadState, Stall, UNLOADED_SHARE};
+use crate::bearing::equilibrium::eval::{assemble_u, external_load, min_film, solve_all_pads, Ctx};
+use crate::bearing::equilibrium::fallback::TOUCHDOWN_FRACTION;
+use crate::bearing::equilibrium::{Cancel, Found, PadState, Stall, UNLOADED_SHARE};
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::error::SolveError;
 use crate::physics::reynolds::FilmError;
 
 /// First angular step from the load direction [rad] (doubled until the bracket is found), and the largest

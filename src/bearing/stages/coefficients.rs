@@ -5,17 +5,17 @@
 
 use std::sync::Arc;
 
-use crate::bearing::coordinates::{Coord, PadStructure};
-use crate::bearing::error::SolveError;
-use crate::bearing::flex::modal_properties;
-use crate::bearing::progress::Cancel;
+use crate::bearing::film::coordinates::{Coord, PadStructure};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::film::flex::modal_properties;
+use crate::bearing::report::progress::Cancel;
 use crate::bearing::solution::Solution;
 use crate::model::Case;
 
-use super::equilibrium::{EquilibriumInputs, EquilibriumStage};
-use super::films::StructureInputs;
-use super::thermal::{ThermalInputs, ThermalStage};
-use super::{Ctx, Poll, Progress, Request, Stage, StageId};
+use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
+use crate::bearing::stages::films::StructureInputs;
+use crate::bearing::stages::thermal::{ThermalInputs, ThermalStage};
+use crate::bearing::stages::{Ctx, Poll, Progress, Request, Stage, StageId};
 
 /// The inputs of the full coefficients.
 #[derive(Debug, Clone, PartialEq)]

@@ -9,16 +9,16 @@
 use std::sync::Arc;
 
 use crate::bearing::equilibrium::EquilibriumParams;
-use crate::bearing::error::SolveError;
-use crate::bearing::job::{solve_operating_point, step_operating_point};
-use crate::bearing::model::OperatingPoint;
-use crate::bearing::progress::{Cancel, NoSuspend};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::solution::assemble::{solve_operating_point, step_operating_point};
+use crate::bearing::film::model::OperatingPoint;
+use crate::bearing::report::progress::{Cancel, NoSuspend};
 use crate::bearing::report::SolveReport;
 use crate::bearing::solution::Solution;
 use crate::model::{Case, Lubricant, Operating, Physics, ViscosityLaw};
 
-use super::films::{install_structure, FilmsInputs, FilmsStage};
-use super::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
+use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage};
+use crate::bearing::stages::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
 
 /// Suspensions of one equilibrium before it must run to the end.
 pub const MAX_SUSPENSIONS: usize = 40;
@@ -66,7 +66,7 @@ impl EquilibriumInputs {
             excitation_ratio: _, // the reduction's
         } = operating;
         let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _ } = physics; // kept whole below (pad_modes: the films')
-        let structure = super::films::StructureInputs::of(case);
+        let structure = crate::bearing::stages::films::StructureInputs::of(case);
         Self {
             films: FilmsInputs::of(case),
             stiffness_n_per_m: structure.stiffness_n_per_m,

@@ -7,15 +7,15 @@
 //! bending modes (their film shapes are coordinates): then E, ν, the density and the pad solid's layers
 //! are read too ([`FlexInputs`]), and only then — a rigid case's films ignore them.
 
-use crate::bearing::coordinates::{pad_dofs, PadDof, PadStructure};
-use crate::bearing::error::SolveError;
-use crate::bearing::flex::modal_properties;
-use crate::bearing::model::BearingModel;
+use crate::bearing::film::coordinates::{pad_dofs, PadDof, PadStructure};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::film::flex::modal_properties;
+use crate::bearing::film::model::BearingModel;
 use crate::model::{Bearing, Case, MeshSpec, Orifice, Pad, Physics};
 use crate::physics::hertz::PivotContact;
 
-use super::{Ctx, Poll, Progress, Request, Stage, StageId};
-use crate::bearing::progress::Cancel;
+use crate::bearing::stages::{Ctx, Poll, Progress, Request, Stage, StageId};
+use crate::bearing::report::progress::Cancel;
 
 /// What shapes one pad's film.
 #[derive(Debug, Clone, PartialEq)]

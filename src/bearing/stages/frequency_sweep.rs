@@ -2,12 +2,12 @@
 
 use std::sync::Arc;
 
-use crate::bearing::coefficients::{reduce, ReducedCoefficients};
-use crate::bearing::error::SolveError;
-use crate::bearing::progress::Cancel;
+use crate::bearing::solution::coefficients::{reduce, ReducedCoefficients};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::Cancel;
 
-use super::coefficients::{CoefficientsInputs, CoefficientsStage};
-use super::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
+use crate::bearing::stages::coefficients::{CoefficientsInputs, CoefficientsStage};
+use crate::bearing::stages::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
 
 /// Reduced coefficients at each excitation ratio ω/Ω of a frequency sweep.
 pub type FrequencySweep = Vec<(f64, ReducedCoefficients)>;

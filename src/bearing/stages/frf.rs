@@ -1,6 +1,6 @@
 //! The FRF stage: the bearing linearised for its injection ports at the isothermal equilibrium
 //! ([`FrfModel`]: full `K`, `C`, `M` over journal and pad coordinates and the nozzle coupling — one extra
-//! right-hand side per port in the films' factorisations, see [`crate::bearing::injection`]).
+//! right-hand side per port in the films' factorisations, see [`crate::bearing::frf::injection`]).
 //!
 //! It reads which pads each port feeds and nothing else of `[hydraulics]`: the valve, the lines, the air
 //! fraction and the rig are cheap and enter only the frequency loop ([`FrfModel::sweep`]), which the FRF view
@@ -12,16 +12,16 @@ use std::sync::Arc;
 
 use web_time::Instant;
 
-use crate::bearing::error::SolveError;
-use crate::bearing::frf_job::FrfModel;
-use crate::bearing::model::OperatingPoint;
-use crate::bearing::progress::Cancel;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::frf::model::FrfModel;
+use crate::bearing::film::model::OperatingPoint;
+use crate::bearing::report::progress::Cancel;
 use crate::model::hydraulics::{Hydraulics, Port};
 
-use super::coefficients::pad_inertia;
-use super::equilibrium::{EquilibriumInputs, EquilibriumStage};
-use super::films::{FilmsStage, StructureInputs};
-use super::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
+use crate::bearing::stages::coefficients::pad_inertia;
+use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
+use crate::bearing::stages::films::{FilmsStage, StructureInputs};
+use crate::bearing::stages::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
 
 /// The inputs of the linearisation for the ports.
 #[derive(Debug, Clone, PartialEq)]

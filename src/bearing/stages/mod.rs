@@ -26,7 +26,7 @@
 //! the oil's name, the node budget `mesh.max_nodes` (checked when the case is validated, before any stage
 //! runs), and of the `[hydraulics]` section everything but the ports' pads (the valve, lines and rig enter
 //! only the FRF view's frequency loop, run on the `Frf` stage's output), and the design limits `[limits]`
-//! (checked on the published solution by [`crate::bearing::limits`]).
+//! (checked on the published solution by [`crate::bearing::solution::limits`]).
 //! Editing them runs nothing. The pivot stiffnesses and the pad density are not read by the films: the
 //! stages that solve install the pads' structure in the films' model ([`films::install_structure`],
 //! [`crate::bearing::BearingModel::set_structure`]) without rebuilding it; the density reaches only
@@ -70,9 +70,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::model::Case;
 
-use super::error::SolveError;
-use super::progress::{Cancel, Progress};
-use super::solution::Solution;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::{Cancel, Progress};
+use crate::bearing::solution::Solution;
 
 pub use cache::Cached;
 pub use equilibrium::MAX_SUSPENSIONS;

@@ -4,13 +4,13 @@
 
 use std::sync::Arc;
 
-use crate::bearing::coefficients::reduce;
-use crate::bearing::error::SolveError;
-use crate::bearing::progress::Cancel;
+use crate::bearing::solution::coefficients::reduce;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::Cancel;
 use crate::bearing::solution::Solution;
 
-use super::coefficients::{CoefficientsInputs, CoefficientsStage};
-use super::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
+use crate::bearing::stages::coefficients::{CoefficientsInputs, CoefficientsStage};
+use crate::bearing::stages::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
 
 /// The inputs of the reduced solution.
 #[derive(Debug, Clone, PartialEq)]

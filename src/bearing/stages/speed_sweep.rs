@@ -6,20 +6,20 @@ use std::sync::Arc;
 
 use serde::{Deserialize, Serialize};
 
-use crate::bearing::coefficients::ReducedCoefficients;
+use crate::bearing::solution::coefficients::ReducedCoefficients;
 use crate::bearing::equilibrium::EquilibriumParams;
-use crate::bearing::error::SolveError;
-use crate::bearing::job::{solve_point, step_operating_point};
-use crate::bearing::model::{BearingModel, OperatingPoint};
-use crate::bearing::progress::{Cancel, NoSuspend};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::solution::assemble::{solve_point, step_operating_point};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::progress::{Cancel, NoSuspend};
 use crate::bearing::solution::Solution;
 use crate::bearing::thermal::ThermalModel;
 use crate::model::{Case, ThermalModelKind};
 
-use super::coefficients::CoefficientsInputs;
-use super::equilibrium::MAX_SUSPENSIONS;
-use super::films::{install_structure, FilmsStage};
-use super::{Cached, Ctx, Poll, Progress, Published, Request, Stage, StageId};
+use crate::bearing::stages::coefficients::CoefficientsInputs;
+use crate::bearing::stages::equilibrium::MAX_SUSPENSIONS;
+use crate::bearing::stages::films::{install_structure, FilmsStage};
+use crate::bearing::stages::{Cached, Ctx, Poll, Progress, Published, Request, Stage, StageId};
 
 /// One point of a speed sweep.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -1,8 +1,8 @@
 //! Execution counters: what reruns on which edit; suspension and resumption.
 
 use super::*;
-use crate::bearing::model::BearingModel;
-use crate::bearing::progress::NoCancel;
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::progress::NoCancel;
 use crate::model::load_case;
 
 fn case(set: &[&str]) -> Case {
@@ -48,7 +48,7 @@ fn the_frf_stage_reads_the_ports_pads_only() {
     };
     let mut s = Stages::new();
     let first = s.run(&req(rig(&[])), &NoCancel).unwrap();
-    let model = first.get::<crate::bearing::frf_job::FrfModel>(StageId::Frf).unwrap();
+    let model = first.get::<crate::bearing::frf::model::FrfModel>(StageId::Frf).unwrap();
     assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (1, 1));
     for edit in [
         "hydraulics.port.0.air_fraction=0.01",
@@ -58,12 +58,12 @@ fn the_frf_stage_reads_the_ports_pads_only() {
     ] {
         let o = s.run(&req(rig(&[edit])), &NoCancel).unwrap();
         assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (1, 1), "{edit} ran a stage");
-        assert!(Arc::ptr_eq(&o.get::<crate::bearing::frf_job::FrfModel>(StageId::Frf).unwrap(), &model));
+        assert!(Arc::ptr_eq(&o.get::<crate::bearing::frf::model::FrfModel>(StageId::Frf).unwrap(), &model));
     }
     s.run(&req(rig(&["operating.load_n=500"])), &NoCancel).unwrap();
     assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (2, 2));
     // The CLI's model (the stage run alone) is the app's, to round-off.
-    let alone = crate::bearing::frf_job::FrfModel::new(&rig(&[])).unwrap();
+    let alone = crate::bearing::frf::model::FrfModel::new(&rig(&[])).unwrap();
     let dk = (&alone.dynamics.k - &model.dynamics.k).norm() / model.dynamics.k.norm();
     let df =
         (&alone.dynamics.coupling.force - &model.dynamics.coupling.force).norm() / model.dynamics.coupling.force.norm();

@@ -5,16 +5,16 @@
 
 use std::sync::Arc;
 
-use crate::bearing::error::SolveError;
-use crate::bearing::job::assemble_thd_solution;
-use crate::bearing::progress::Cancel;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::solution::assemble::assemble_thd_solution;
+use crate::bearing::report::progress::Cancel;
 use crate::bearing::solution::Solution;
 use crate::bearing::thermal::{ThdRun, ThermalModel, ThermalParams};
 use crate::model::{Case, Lubricant, MeshSpec, Operating, PadFilmBc, Thermal, ThermalModelKind};
 
-use super::equilibrium::{EquilibriumInputs, EquilibriumStage};
-use super::films::{install_structure, FilmsInputs, FilmsStage};
-use super::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
+use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
+use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage};
+use crate::bearing::stages::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
 
 /// Outer iterations a THD loop typically needs (for the progress fraction only).
 const THERMAL_ITERATIONS_EXPECTED: f64 = 10.0;

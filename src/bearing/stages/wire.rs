@@ -14,9 +14,9 @@ use std::sync::Arc;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use super::{FrequencySweep, Outcome, Published, SpeedPoint, StageId};
-use crate::bearing::frf_job::FrfModel;
+use crate::bearing::frf::model::FrfModel;
 use crate::bearing::solution::{PadField, PadFlex, PadSolidField, Solution};
+use crate::bearing::stages::{FrequencySweep, Outcome, Published, SpeedPoint, StageId};
 
 /// A published output by its type.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -169,7 +169,7 @@ pub fn from_bytes<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, WireError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::progress::NoCancel;
+    use crate::bearing::report::progress::NoCancel;
     use crate::bearing::stages::{Request, Stages};
     use crate::model::{load_case, Case};
 

@@ -26,7 +26,7 @@
 //! (a uniform viscosity scales the pad's pressure and leaves its tilt root where the isothermal one is); the
 //! report says which. Otherwise the temperature step is halved back towards the last field that worked.
 //!
-//! Inlet mixing and the journal temperature: [`super::mixing`]; the acceleration: [`super::anderson`].
+//! Inlet mixing and the journal temperature: [`crate::bearing::thermal::mixing`]; the acceleration: [`crate::bearing::thermal::anderson`].
 
 use serde::{Deserialize, Serialize};
 use web_time::Instant;
@@ -36,15 +36,15 @@ use crate::fem::SolverError;
 use crate::mesh::pad3d::PadMesh;
 use crate::model::{Case, CavitatedFilm, PadFilmBc};
 use crate::physics::energy::{BalanceInputs, Exchange, FilmHeat, Injection, Oil};
-use crate::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadMaterial};
+use crate::physics::pad_conduction::{PadConduction, PadDirichletSolver, PadMaterial};
 
-use super::anderson::{flatten, unflatten, Anderson};
-use super::equilibrium::{Cancel, Equilibrium, EquilibriumParams, NoSuspend, Progress};
-use super::error::{Budget, Iteration, SolveError};
-use super::mixing::inlet_and_journal;
-use super::model::{BearingModel, OperatingPoint};
-use super::tehd::{self, Growth, GrowthField, TehdModel, GROWTH_TOL};
-use super::thermal_pad::{PadTemperatures, PadThermal, ThermalSetup};
+use crate::bearing::equilibrium::{Cancel, Equilibrium, EquilibriumParams, NoSuspend, Progress};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::{Budget, Iteration, SolveError};
+use crate::bearing::thermal::anderson::{flatten, unflatten, Anderson};
+use crate::bearing::thermal::growth::{Growth, GrowthField, TehdModel, GROWTH_TOL};
+use crate::bearing::thermal::mixing::inlet_and_journal;
+use crate::bearing::thermal::pad_system::{PadTemperatures, PadThermal, ThermalSetup};
 
 /// History depth of the Anderson acceleration of the thermal loop.
 pub const ANDERSON_DEPTH: usize = 4;
@@ -312,7 +312,7 @@ pub struct ThdState {
     /// The thermal growth in the films of the converged state (TEHD), installed to assemble the solution.
     pub growth: Option<GrowthField>,
     /// The Hertz pivots' load iteration at the converged state (their tangent stiffnesses linearise it).
-    pub pivots: Option<crate::bearing::pivot_contact::HertzPivots>,
+    pub pivots: Option<crate::bearing::equilibrium::pivots::HertzPivots>,
 }
 
 fn setup(case: &Case, op: &OperatingPoint, k: usize, stabilisation: Stabilisation) -> ThermalSetup {
@@ -450,6 +450,11 @@ pub fn solve_thd(
     }
 }
 
+pub mod anderson;
+pub mod growth;
+pub mod growth_solid;
+pub mod mixing;
+pub mod pad_system;
 pub mod resumable;
 mod run;
 pub use run::ThdRun;

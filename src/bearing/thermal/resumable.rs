@@ -3,14 +3,14 @@
 //! [`Cancel::suspend`] asks, the coupled Newton pauses ([`step_equilibrium`]) and [`equilibrium_part`]
 //! returns where to resume ([`PendingEquilibrium`]); the next call continues from that iterate.
 //!
-//! Contract: the same result as [`super::warm_equilibrium`] — a warm start that fails is retried from
+//! Contract: the same result as [`crate::bearing::thermal::warm_equilibrium`] — a warm start that fails is retried from
 //! scratch once; a suspended solve's parts add up in the final report ([`SolveReport::add_earlier`]); after
 //! [`MAX_EQUILIBRIUM_PARTS`] parts the solve runs to its end (bounded work even when every part is slow).
 
 use crate::bearing::equilibrium::{step_equilibrium, Equilibrium, EquilibriumParams};
-use crate::bearing::error::SolveError;
-use crate::bearing::model::{BearingModel, OperatingPoint};
-use crate::bearing::progress::{Cancel, NoSuspend, Progress};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::{Cancel, NoSuspend, Progress};
 use crate::bearing::report::SolveReport;
 
 /// Parts an outer iteration's equilibrium may be split into before it runs to its end.

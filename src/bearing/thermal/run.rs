@@ -3,17 +3,18 @@
 //! pads and journal when the case asks for it (TEHD), a load step of the Hertz pivots when the pads have
 //! them ([`HertzPivots`]) — with its budgets, deadline and report.
 
-use super::resumable::{equilibrium_part, PendingEquilibrium};
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use crate::bearing::pivot_contact::{self, HertzPivots};
-use crate::bearing::progress::Progress;
+use crate::bearing::equilibrium::pivots::{self, HertzPivots};
+use crate::bearing::report::progress::Progress;
+use crate::bearing::thermal::growth;
+use crate::bearing::thermal::resumable::{equilibrium_part, PendingEquilibrium};
 
 mod update;
 /// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
 /// the current viscosity field, then the film and pad temperatures), so a caller without threads (the web
 /// build) can spread a THD solve over frames; when the caller's [`Cancel::suspend`] asks, the outer
-/// iteration's equilibrium itself pauses ([`super::resumable`]) and the next step resumes it.
+/// iteration's equilibrium itself pauses ([`crate::bearing::thermal::resumable`]) and the next step resumes it.
 ///
 /// Robustness: the temperature update is Anderson-accelerated (depth [`ANDERSON_DEPTH`], damping ω); after
 /// [`SAFEGUARD_AFTER`] outer iterations without convergence it is safeguarded: an outer iteration whose
@@ -23,7 +24,7 @@ mod update;
 /// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
 /// curve loses its root), the proposal is halved back towards the last field that worked, up to
 /// [`MAX_BACKTRACKS`] times, and the history is restarted. Every proposal is clamped to the range of the
-/// image it was made from; ω is doubled again after falls of the change ([`super::super::anderson::RECOVER_AFTER`]);
+/// image it was made from; ω is doubled again after falls of the change ([`crate::bearing::thermal::anderson::RECOVER_AFTER`]);
 /// a safeguarded loop whose change has not halved in [`STALL_WINDOW`] outer iterations drops the
 /// extrapolation for plain damped steps; and a touchdown the loop walked into restarts it once, safeguarded
 /// from the start (`update.rs`).
@@ -50,7 +51,7 @@ pub struct ThdRun {
     shares: Vec<f64>,
     /// Computing time spent inside [`ThdRun::step`] so far [s] (the time budget's count).
     work_seconds: f64,
-    /// TEHD ([`super::tehd`]): the growth model (built on first use), the growth in the films of the current
+    /// TEHD ([`crate::bearing::thermal::tehd`]): the growth model (built on first use), the growth in the films of the current
     /// outer iteration, and the one the last temperatures give (installed at the next iteration).
     tehd: Option<TehdModel>,
     growth: Option<GrowthField>,
@@ -113,7 +114,7 @@ impl ThdRun {
         for pt in &mut thermal.pads {
             pt.t_prev = None;
         }
-        let housing = tehd::housing_only(case, model);
+        let housing = growth::housing_only(case, model);
         Self {
             t0: Instant::now(),
             params,
@@ -177,7 +178,7 @@ impl ThdRun {
         let result = self.outer_iteration(model, thermal, case, &deadline);
         if self.growth.is_some() || self.growth_next.is_some() {
             // The films are shared with other stages: they hold the growth only while the loop works.
-            tehd::clear(model);
+            growth::clear(model);
         }
         self.work_seconds += started.elapsed().as_secs_f64();
         match result {
@@ -228,9 +229,9 @@ impl ThdRun {
         // Installed at every step: a step ends with the films cleared (see `step`), and a stage may rebuild
         // the pad structures between steps.
         if let Some(g) = &self.growth {
-            tehd::install(model, g);
+            growth::install(model, g);
         }
-        if self.pivots.is_none() && pivot_contact::has_contacts(case) {
+        if self.pivots.is_none() && pivots::has_contacts(case) {
             self.pivots = HertzPivots::new(model, case)?;
         }
         if let Some(p) = &self.pivots {
@@ -295,7 +296,7 @@ impl ThdRun {
         self.report.thermal_seconds += tt.elapsed().as_secs_f64();
         if change < params.viscosity_tol
             && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m
-            && self.pivot_change < pivot_contact::RTOL
+            && self.pivot_change < pivots::RTOL
         {
             self.report.converged = true;
             self.report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
@@ -303,7 +304,7 @@ impl ThdRun {
                 self.report.stop_reason += &format!(
                     ", Hertz pivot springs changing by {:.1e} (below {:.0e})",
                     self.pivot_change,
-                    pivot_contact::RTOL
+                    pivots::RTOL
                 );
             }
             self.report.thermal_factorizations = self.factorizations0;
@@ -343,7 +344,7 @@ impl ThdRun {
     }
 }
 
-/// TEHD steps of the loop ([`super::tehd`]), kept apart from the THD iteration itself.
+/// TEHD steps of the loop ([`crate::bearing::thermal::tehd`]), kept apart from the THD iteration itself.
 impl ThdRun {
     /// Thermal growth for the temperatures just computed (`temps`: per-pad solutions, T_in per pad, T_j, film
     /// temperatures); stored for the next outer iteration. Returns its change against the growth in the

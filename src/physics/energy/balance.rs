@@ -20,8 +20,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{Exchange, FilmEnergy, FlowState, Oil};
 use crate::mesh::grid::NodeSite;
+use crate::physics::energy::{Exchange, FilmEnergy, FlowState, Oil};
 use crate::physics::reynolds::PadFilm;
 
 /// Heat balance of one pad's film [W], whole pad.

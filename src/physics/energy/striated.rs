@@ -3,7 +3,7 @@
 //! the pressure's Swift–Stieber approach to zero ([`rupture_thickness`]), so the oil a pad hands to the next
 //! one moves continuously with the film.
 
-use super::FilmEnergy;
+use crate::physics::energy::FilmEnergy;
 use crate::physics::reynolds::PadFilm;
 
 impl FilmEnergy {

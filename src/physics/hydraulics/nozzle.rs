@@ -16,7 +16,7 @@
 //! The line's end condition therefore depends on the film: on eccentricity and speed, as the thesis
 //! measured (its §6.2.2). This module holds the coefficients and evaluates the law; the film's influence
 //! fields that give them are computed by [`crate::physics::reynolds::PadFilm::injection_response`] and
-//! assembled over pads by [`crate::bearing::injection`].
+//! assembled over pads by [`crate::bearing::frf::injection`].
 
 use nalgebra::{Complex, DMatrix, DVector};
 use serde::{Deserialize, Serialize};
@@ -30,7 +30,7 @@ pub fn capillary_conductance(diameter: f64, length: f64, viscosity: f64) -> f64 
 
 /// Linearised nozzle–film coupling: over a pad's local coordinates and its orifices
 /// ([`crate::physics::reynolds::InjectionResponse`]), or over the bearing's global coordinates and the valve
-/// ports ([`crate::bearing::injection::injection_coupling`]).
+/// ports ([`crate::bearing::frf::injection::injection_coupling`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct NozzleCoupling {
     /// Y [m³/(s·Pa)], ports × ports.

@@ -1,6 +1,6 @@
 //! Nested-dissection elimination order of a pad solid's nodes for the Cholesky factorisation.
 
-use super::Solid;
+use crate::physics::pad_elastic::Solid;
 
 /// Nested dissection of a pad solid's nodes: the nodes on the middle grid surface of constant arc length or
 /// axial position (whichever extent is longer; through all layers) separate the rest in two, which are ordered

@@ -8,11 +8,11 @@
 //! sub-cell quadrature; the operators are stored sparse (only the hole's footprint), and a hole across the
 //! seam of a 360° sector wraps.
 
-use super::{FilmShape, SampledField};
 use crate::fem::quad4::QuadPoint;
 use crate::fem::{Pattern, RectElement};
 use crate::mesh::grid::{NodeSite, PadGrid};
 use crate::physics::orifice::LocalOrifice;
+use crate::physics::reynolds::{FilmShape, SampledField};
 
 /// Sub-cells per direction for elements cut by an orifice edge.
 const ORIFICE_SUBCELLS: usize = 6;

@@ -21,7 +21,7 @@
 
 use nalgebra::DMatrix;
 
-use super::{FilmInputs, PadFilm};
+use crate::physics::reynolds::{FilmInputs, PadFilm};
 
 /// One pad's film response to its orifices' entry pressures, in the pad's local coordinates
 /// `[e_x, e_y, pad coordinates…]` (rows/columns) and its orifices (the "ports"): `force` = B = ∂Q/∂p_inj,
@@ -63,11 +63,11 @@ impl PadFilm {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{FilmGeometry, FilmShape, SampledField, Viscosity};
     use super::*;
     use crate::mesh::grid::PadGrid;
     use crate::model::Cavitation;
     use crate::physics::orifice::LocalOrifice;
+    use crate::physics::reynolds::{FilmGeometry, FilmShape, SampledField, Viscosity};
 
     /// A converging pad (50 mm radius, 60° arc, 40 mm long) with two coordinates: a tilt-like and a
     /// translation-like shape.

@@ -2,8 +2,8 @@
 //! `Q_k = ∫ p φ_k dA`, `K_kl = −∂Q_k/∂q_l`, `C_kl = −∂Q_k/∂q̇_l`, the perturbation pressures coming from
 //! back-substitutions with the factorisation of the converged solve (exact for a fixed cavitation boundary).
 
-use super::{FilmInputs, FilmLinearization, PadFilm};
 use crate::model::Cavitation;
+use crate::physics::reynolds::{FilmInputs, FilmLinearization, PadFilm};
 use nalgebra::DMatrix;
 
 impl PadFilm {

@@ -2,8 +2,8 @@
 //! `−r_i/12` with `r = A p − b`, so the discrete mass balance closes exactly), orifice and edge flows,
 //! friction, peak pressure and minimum thickness.
 
-use super::{FilmInputs, PadFilm, PadFlows};
 use crate::mesh::grid::NodeSite;
+use crate::physics::reynolds::{FilmInputs, PadFilm, PadFlows};
 
 impl PadFilm {
     /// Consistent flows of the last solve (whole pad).

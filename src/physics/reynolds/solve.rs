@@ -2,8 +2,8 @@
 //! right-hand side for the current thickness, then either the Gümbel clip or the Reynolds (Swift–Stieber)
 //! complementarity problem `p ≥ 0, A p − b ≥ 0, p·(A p − b) = 0` by a warm-started primal–dual active set.
 
-use super::{FilmError, FilmInputs, FilmSolveInfo, PadFilm, MAX_ACTIVE_SET_ITERATIONS};
 use crate::model::Cavitation;
+use crate::physics::reynolds::{FilmError, FilmInputs, FilmSolveInfo, PadFilm, MAX_ACTIVE_SET_ITERATIONS};
 
 impl PadFilm {
     /// Assembles the matrix (lower triangle) and the right-hand side for the current thickness.

@@ -2,9 +2,9 @@
 //! image — Anderson-extrapolated, safeguarded, clamped — and what the loop does when an equilibrium fails
 //! with a proposed field (backtracking, the lightly loaded pads' mean viscosity, the cautious restart).
 
+use crate::bearing::thermal::run::ThdRun;
 #[allow(clippy::wildcard_imports)]
-use super::super::*;
-use super::ThdRun;
+use crate::bearing::thermal::*;
 
 /// How far below the coldest oil or surroundings a proposed film temperature may lie [K]: the
 /// discretisation's own undershoot in converged states is far smaller (0.08 K below the supply temperature,

@@ -5,7 +5,7 @@
 //! The global vector is `u = [e_x, e_y, pad 0 coordinates…, pad 1 coordinates…, …]`. A pad may carry any
 //! list of coordinates ([`PadDof`]); each has
 //! - a film shape `φ(θ, z) = ∂h/∂q` (the film thickness is linear in the coordinates, see
-//!   [`super::geometry`]),
+//!   [`crate::bearing::film::geometry`]),
 //! - a structural stiffness and an inertia ([`PadStructure`]),
 //! - a unit and a residual scale for the equilibrium.
 //!
@@ -92,7 +92,7 @@ impl PadDof {
     }
 
     /// Structural stiffness on this coordinate [N/m, N·m/rad] (frictionless pivot: none on the tilt; a Hertz
-    /// pivot's load-dependent stiffness is set by [`super::pivot_contact`], 0 here).
+    /// pivot's load-dependent stiffness is set by [`crate::bearing::equilibrium::pivots`], 0 here).
     #[must_use]
     pub fn stiffness(self, pad: &Pad) -> f64 {
         match self {

@@ -2,7 +2,7 @@
 //!
 //! A pad with a pivot contact ([`crate::physics::hertz`]) has the radial pivot coordinate ξ like a pad with a
 //! given pivot stiffness, but its spring is nonlinear: the pivot carries `F` with the Hertz approach
-//! `ξ = δ(F)`. The equilibrium ([`super::equilibrium`]) solves with linear pivot springs, so the load is
+//! `ξ = δ(F)`. The equilibrium ([`crate::bearing::equilibrium`]) solves with linear pivot springs, so the load is
 //! iterated around it (fixed point on the secant stiffness, with a secant step per pad: [`accelerated`]):
 //!
 //! ```text
@@ -20,12 +20,12 @@
 use crate::model::{Case, LoadSpec};
 use crate::physics::hertz::{ContactState, PivotContact};
 
-use super::coordinates::{Coord, PadDof};
-use super::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
-use super::error::SolveError;
-use super::job::assemble_solution;
-use super::model::{BearingModel, OperatingPoint};
-use super::solution::Solution;
+use crate::bearing::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
+use crate::bearing::film::coordinates::{Coord, PadDof};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::solution::assemble::assemble_solution;
+use crate::bearing::solution::Solution;
 
 /// Relative change of every secant stiffness at which the load iteration stops.
 pub const RTOL: f64 = 1e-6;
@@ -94,7 +94,7 @@ fn accelerated(k: f64, mapped: f64, previous: Option<(f64, f64)>) -> f64 {
 /// carrying nothing; on 40 mm balls in 41 mm sockets 30 iterations without converging).
 fn pivot_load(case: &Case, c: &ContactPad, eq: &Equilibrium) -> f64 {
     let theta = case.bearing.pads[c.pad].pivot_rad;
-    let f = eq.pads.get(c.pad).map_or([0.0, 0.0], super::equilibrium::PadState::journal_force);
+    let f = eq.pads.get(c.pad).map_or([0.0, 0.0], crate::bearing::equilibrium::PadState::journal_force);
     -(f[0] * theta.cos() + f[1] * theta.sin())
 }
 
@@ -241,7 +241,7 @@ pub fn solve(
         let eq = solve_equilibrium(model, op, params, start, cancel)?;
         return Ok(assemble_solution(model, case, op, &eq));
     };
-    let mut earlier: Option<super::report::SolveReport> = None;
+    let mut earlier: Option<crate::bearing::report::SolveReport> = None;
     let mut u: Option<Vec<f64>> = start.map(<[f64]>::to_vec);
     let (eq, converged) = loop {
         pivots.install(model);

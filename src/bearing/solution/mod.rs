@@ -2,13 +2,18 @@
 
 use serde::{Deserialize, Serialize};
 
+pub mod assemble;
+pub mod coefficients;
+pub mod limits;
+pub mod regime;
+
 use crate::model::{Case, LoadSpec, PadFilmBc};
 use crate::physics::energy::FilmHeat;
 use crate::physics::reynolds::PadFlows;
 
-use super::coefficients::{FullCoefficients, ReducedCoefficients};
-use super::report::SolveReport;
-use super::thermal::ThermalReport;
+use crate::bearing::report::SolveReport;
+use crate::bearing::solution::coefficients::{FullCoefficients, ReducedCoefficients};
+use crate::bearing::thermal::ThermalReport;
 
 /// Quantities derived from the inputs that a reader of a result file needs.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -87,7 +92,7 @@ pub struct PadResult {
     pub friction_power_w: f64,
     /// Fraction of film nodes cavitated.
     pub cavitated_fraction: f64,
-    /// The pad carries almost no load (a floating pad: see [`super::equilibrium::FLOATING_SHARE`]).
+    /// The pad carries almost no load (a floating pad: see [`crate::bearing::equilibrium::FLOATING_SHARE`]).
     pub unloaded: bool,
     /// Amplitude of each retained bending mode (flexible pads) [m]: the largest film-face radial
     /// displacement of the mode, positive opening the film where the mode's shape peaks.
@@ -120,7 +125,7 @@ pub struct PadFlex {
     pub radii_m: Vec<f64>,
 }
 
-/// Thermal growth of a pad solid (TEHD, [`super::tehd`]): displacement from the reference temperature, the
+/// Thermal growth of a pad solid (TEHD, [`crate::bearing::thermal::growth`]): displacement from the reference temperature, the
 /// pad supported on its pivot line (the journal's growth is not in it).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PadThermalGrowth {

@@ -4,7 +4,7 @@
 //! A tilting pad with thickness gets `physics.pad_modes` bending modes ([`crate::physics::pad_modes`]) on the
 //! pad solid extruded from its film grid with `mesh.pad_radial_elements` layers — the same solid the
 //! thermal model conducts heat in. Each mode becomes the coordinate `PadDof::Mode(i)`: its film shape is the
-//! sampled field, its modal mass and stiffness join the pad's [`super::coordinates::PadStructure`]; the
+//! sampled field, its modal mass and stiffness join the pad's [`crate::bearing::film::coordinates::PadStructure`]; the
 //! equilibrium and the coefficients handle the extra coordinates as they handle any other.
 //!
 //! Modes depend on exactly [`ModeKey`]: the film grid, journal radius, bore, thickness, layers, pivot
@@ -21,8 +21,8 @@ use crate::mesh::pad3d::PadMesh;
 use crate::model::{Case, PadKind};
 use crate::physics::pad_modes::{FilmField, ModeKey, PadModes, PivotSupport};
 
-use super::coordinates::ModalProperties;
-use super::error::SolveError;
+use crate::bearing::film::coordinates::ModalProperties;
+use crate::bearing::report::error::SolveError;
 
 /// Modes computed so far in one model build, by key.
 pub type ModeCache = Vec<(ModeKey, Arc<PadModes>)>;

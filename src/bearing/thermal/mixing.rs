@@ -12,15 +12,15 @@
 //! affects nothing but the report).
 //!
 //! Each pad's film temperature is affine in its inlet temperature and the journal temperature
-//! ([`super::thermal_pad::Affine`]), so all the balances together are one small dense linear system in
+//! ([`crate::bearing::thermal::pad_system::Affine`]), so all the balances together are one small dense linear system in
 //! (T_in per pad, T_j), solved exactly.
 
 use nalgebra::{DMatrix, DVector};
 
 use crate::model::{Case, PadFilmBc};
 
-use super::error::SolveError;
-use super::thermal_pad::PadTemperatures;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::thermal::pad_system::PadTemperatures;
 
 /// Solves the groove mixing balances and the journal condition for all inlet temperatures and the journal
 /// temperature at once (module documentation). Returns (T_in per pad, T_j).

@@ -4,7 +4,7 @@
 //! ## Contract
 //! A *port* feeds a group of pads; every orifice of those pads sees the port's pressure `p_k` (the
 //! line-end pressure). [`injection_coupling`] re-solves each pad's film at the equilibrium and assembles,
-//! over the bearing's global coordinates `u` (layout: [`super::coordinates::DofMap`]),
+//! over the bearing's global coordinates `u` (layout: [`crate::bearing::film::coordinates::DofMap`]),
 //!
 //! ```text
 //! B_ck = ∂Q_c/∂p_k      generalised film force per unit port pressure          (coordinates × ports)
@@ -31,8 +31,8 @@ use nalgebra::{Complex, DMatrix};
 
 use crate::physics::hydraulics::NozzleCoupling;
 
-use super::error::SolveError;
-use super::model::{BearingModel, OperatingPoint};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::SolveError;
 
 type C64 = Complex<f64>;
 
@@ -117,8 +117,8 @@ pub fn dynamic_stiffness(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>, s
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::bearing::coefficients::full_coefficients;
     use crate::bearing::equilibrium::{solve_equilibrium, Equilibrium, EquilibriumParams, NoCancel};
+    use crate::bearing::solution::coefficients::full_coefficients;
     use crate::model::{load_case, Case, LoadSpec};
 
     fn mat(rows: &[Vec<f64>]) -> DMatrix<f64> {
@@ -128,8 +128,8 @@ pub(crate) mod tests {
     /// The Publication 5 rig at 40 bar on both pads, one port feeding both (the sums are what a finite
     /// difference of the common injection pressure sees).
     pub(crate) fn rig(p_bar: f64) -> Case {
-        let text =
-            include_str!("../../cases/test-rig-pub5.toml").replace("fidelity = \"standard\"", "fidelity = \"preview\"");
+        let text = include_str!("../../../cases/test-rig-pub5.toml")
+            .replace("fidelity = \"standard\"", "fidelity = \"preview\"");
         let set = [format!("operating.injection_pressure_bar={p_bar}"), "operating.load_n=1500".to_string()];
         load_case(&text, &set).unwrap().1
     }

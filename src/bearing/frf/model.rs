@@ -20,14 +20,14 @@ use crate::physics::hydraulics::{effective_bulk_modulus, Line, Servovalve};
 
 use nalgebra::DMatrix;
 
-use super::error::SolveError;
-use super::frf::{BearingDynamics, FrfPoint, Hydraulics, Port, Rig, ShakerPoint};
-use super::injection::injection_coupling;
-use super::model::{BearingModel, OperatingPoint};
-use super::progress::NoCancel;
-use super::report::SolveReport;
-use super::solution::Solution;
-use super::stages::{Request, StageId, Stages};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::frf::dynamics::{BearingDynamics, FrfPoint, Hydraulics, Port, Rig, ShakerPoint};
+use crate::bearing::frf::injection::injection_coupling;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::NoCancel;
+use crate::bearing::report::SolveReport;
+use crate::bearing::solution::Solution;
+use crate::bearing::stages::{Request, StageId, Stages};
 
 /// Atmospheric pressure [Pa], for the air's absolute pressure.
 const ATMOSPHERE: f64 = 101_325.0;
@@ -232,7 +232,7 @@ mod tests {
     use crate::model::load_case;
 
     fn case(set: &[&str]) -> Case {
-        let text = include_str!("../../cases/test-rig-pub5.toml");
+        let text = include_str!("../../../cases/test-rig-pub5.toml");
         load_case(text, &set.iter().map(|s| (*s).to_string()).collect::<Vec<_>>()).unwrap().1
     }
 

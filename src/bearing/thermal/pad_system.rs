@@ -1,5 +1,5 @@
 //! The thermal system of one pad: the film energy equation ([`crate::physics::energy`]) and, when needed,
-//! the pad's heat conduction ([`crate::physics::pad_thermal`]) in one sparse system.
+//! the pad's heat conduction ([`crate::physics::pad_conduction`]) in one sparse system.
 //!
 //! For a fixed flow and viscosity field the system is linear in the temperatures, and the only unknowns
 //! coupling it to the rest of the bearing are the pad's inlet temperature `T_in` (leading-edge Dirichlet
@@ -24,7 +24,7 @@ use crate::fem::supg::Stabilisation;
 use crate::fem::{GeneralPattern, LuSolver, SolverError};
 use crate::mesh::grid::NodeSite;
 use crate::physics::energy::{Exchange, FilmEnergy, FilmLayout, FlowState, Injection, Oil, RHS_COLUMNS};
-use crate::physics::pad_thermal::{PadConduction, PadDirichletSolver, PadLayout, PadMaterial};
+use crate::physics::pad_conduction::{PadConduction, PadDirichletSolver, PadLayout, PadMaterial};
 use crate::physics::reynolds::{FilmInputs, PadFilm};
 
 /// `c0 + c_in T_in + c_j T_j`.

@@ -13,12 +13,12 @@
 //! ```
 //!
 //! with the line two-ports of [`crate::physics::hydraulics::pipeline`], the nozzle coupling `Y, D, E, B` of
-//! [`super::injection`] and `Z = K + sC + s²M` from the full coefficients. A journal on the rig's support
+//! [`crate::bearing::frf::injection`] and `Z = K + sC + s²M` from the full coefficients. A journal on the rig's support
 //! adds `m s² + c s + k` to its diagonal ([`Mounting::Free`]). One complex LU of size `2·ports + free`
 //! per frequency.
 //!
 //! The component FRFs (rotor held): `G1 = x_V/u_V` (valve), `G2_k = p_k/x_V` (line with the film at its
-//! end, pad motion included), `G3_k = F/p_k` ([`super::injection::condense`], pads free),
+//! end, pad motion included), `G3_k = F/p_k` ([`crate::bearing::frf::injection::condense`], pads free),
 //! `G = F/u_V = G1 Σ_k G2_k G3_k` — the sum equals the force of the coupled solve to round-off (a test).
 //!
 //! Not in the model: the extra phase lag between nozzle pressure and force the thesis measured (its §6.3);
@@ -30,11 +30,11 @@ use serde::{Deserialize, Serialize};
 use crate::physics::hydraulics::pipeline::Truncation;
 use crate::physics::hydraulics::{Line, NozzleCoupling, Servovalve};
 
-use super::coefficients::full_coefficients;
-use super::equilibrium::Equilibrium;
-use super::error::SolveError;
-use super::injection::{condense, dynamic_stiffness, injection_coupling};
-use super::model::{BearingModel, OperatingPoint};
+use crate::bearing::equilibrium::Equilibrium;
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::frf::injection::{condense, dynamic_stiffness, injection_coupling};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::solution::coefficients::full_coefficients;
 
 type C64 = Complex<f64>;
 
@@ -258,7 +258,7 @@ impl BearingDynamics {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::injection::tests::{rig, solve};
+    use crate::bearing::frf::injection::tests::{rig, solve};
     use crate::physics::hydraulics::servovalve::flow_gain;
 
     /// A representative rig line (700 mm, 4 mm bore, oil β 1.5 GPa) and valve (120 Hz, ξ 0.7, 5 L/min at

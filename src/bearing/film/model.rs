@@ -2,7 +2,7 @@
 //! factorisation, orifice operators, thickness shapes) per pad, and the global coordinate layout.
 //!
 //! Global coordinates: `u = [e_x, e_y, pad 0 coordinates…, pad 1 coordinates…, …]`, laid out by the
-//! model's [`DofMap`] (see [`super::coordinates`]). Changing the operating point (speed, load, viscosity,
+//! model's [`DofMap`] (see [`crate::bearing::film::coordinates`]). Changing the operating point (speed, load, viscosity,
 //! injection) never rebuilds this.
 
 use std::sync::Arc;
@@ -14,10 +14,10 @@ use crate::model::{Case, LoadSpec};
 use crate::physics::orifice::LocalOrifice;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm, Viscosity};
 
-use super::coordinates::{DofMap, PadDof, PadStructure};
-use super::error::SolveError;
-use super::flex::{pad_modes, ModeCache};
-use super::geometry::PadShape;
+use crate::bearing::film::coordinates::{DofMap, PadDof, PadStructure};
+use crate::bearing::film::flex::{pad_modes, ModeCache};
+use crate::bearing::film::geometry::PadShape;
+use crate::bearing::report::error::SolveError;
 
 /// One pad: its film and its structure (coordinates, structural stiffness and inertia).
 #[derive(Debug, Clone)]

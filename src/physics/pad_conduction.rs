@@ -46,7 +46,7 @@ pub struct PadMaterial {
 /// The pad's conduction problem: mesh and element matrices (built once per geometry).
 #[derive(Debug, Clone)]
 pub struct PadConduction {
-    /// The pad solid, shared with the elastic model ([`crate::bearing::model::PadModel::solid`]).
+    /// The pad solid, shared with the elastic model ([`crate::bearing::film::model::PadModel::solid`]).
     pub mesh: std::sync::Arc<PadMesh>,
     /// Unit-conductivity element matrices, one per hexahedron.
     conduction: Vec<[[f64; 8]; 8]>,

@@ -1,7 +1,10 @@
 //! What a solve did: iterations, residuals, time, warnings ([`SolveReport`]). Every equilibrium returns
-//! one; the thermal loop keeps its own ([`super::ThermalReport`]) around the equilibria it runs.
+//! one; the thermal loop keeps its own ([`crate::bearing::ThermalReport`]) around the equilibria it runs.
 
 use serde::{Deserialize, Serialize};
+
+pub mod error;
+pub mod progress;
 
 /// What an equilibrium solve did.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]

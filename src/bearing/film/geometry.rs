@@ -13,7 +13,7 @@
 //! ```
 //!
 //! Each pad coordinate is a rigid motion of the pad (or an elastic mode); its shape follows from that
-//! motion in [`super::coordinates`].
+//! motion in [`crate::bearing::film::coordinates`].
 //!
 //! The generalised film force on coordinate q_k is `Q_k = ∫ p ∂h/∂q_k dA`; for the journal coordinates it
 //! is the film force on the journal (x, y), for the tilt it is the film moment about the pivot
@@ -24,7 +24,7 @@ use crate::model::Pad;
 use crate::physics::pad_modes::FilmField;
 use crate::physics::reynolds::FilmShape;
 
-use super::coordinates::{PadDof, RigidMotion};
+use crate::bearing::film::coordinates::{PadDof, RigidMotion};
 
 /// Thickness model of one pad: `h0` and the shapes `∂h/∂q` for q = (e_x, e_y, pad coordinates…).
 #[derive(Debug, Clone, PartialEq)]
@@ -92,7 +92,7 @@ impl FilmShape for PadShape {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::coordinates::pad_dofs;
+    use crate::bearing::film::coordinates::pad_dofs;
     use crate::model::PadKind;
 
     fn pad() -> Pad {

@@ -24,7 +24,7 @@
 
 use crate::model::Case;
 
-use super::solution::PadResult;
+use crate::bearing::solution::PadResult;
 
 /// Film Reynolds number above which the film is taken as no longer laminar (the low end of the
 /// 1000–1500 transition range reported for journal bearings).

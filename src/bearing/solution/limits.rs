@@ -13,8 +13,8 @@ use serde::Serialize;
 
 use crate::model::limits::Limits;
 
-use super::regime::Regime;
-use super::solution::Solution;
+use crate::bearing::solution::regime::Regime;
+use crate::bearing::solution::Solution;
 
 /// Which limit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -142,8 +142,8 @@ pub fn exceeded(limits: &Limits, s: &Solution) -> Vec<Check> {
 pub(crate) fn compressor_preview(set: &[&str]) -> Solution {
     let mut set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
     set.push("mesh.fidelity=\"preview\"".into());
-    let (_, case) = crate::model::load_case(include_str!("../../cases/compressor-bearing.toml"), &set).unwrap();
-    super::solve_case(&case).unwrap()
+    let (_, case) = crate::model::load_case(include_str!("../../../cases/compressor-bearing.toml"), &set).unwrap();
+    crate::bearing::solve_case(&case).unwrap()
 }
 
 #[cfg(test)]
@@ -158,7 +158,7 @@ mod tests {
     fn the_issues_example_is_flagged_by_the_default_limits() {
         let mut s = compressor_preview(&["thermal.model=\"thd\""]);
         let limits = Limits::default();
-        assert_eq!(limits.max_reynolds, super::super::regime::LAMINAR_REYNOLDS);
+        assert_eq!(limits.max_reynolds, crate::bearing::solution::regime::LAMINAR_REYNOLDS);
         assert!(exceeded(&limits, &s).is_empty(), "{:?}", exceeded(&limits, &s));
         s.h_min_m = 6.6e-6;
         s.p_max_pa = 24e6;

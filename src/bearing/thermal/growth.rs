@@ -14,7 +14,7 @@
 //! ```
 //! `T` is the pad's 3-D temperature on the pad mesh (the thermal model's, same mesh as the elastic one).
 //!
-//! The pad solid, its supports and its layers: [`super::growth_solid`].
+//! The pad solid, its supports and its layers: [`crate::bearing::thermal::growth_solid`].
 //!
 //! With all three expansion coefficients zero ([`Growth::is_off`]) nothing is built and the THD loop is the
 //! rigid one. The housing's growth is given (its temperature is a case input), so it needs no solid: each
@@ -26,9 +26,9 @@ use crate::mesh::pad3d::PadMesh;
 use crate::model::{Case, PadKind};
 use crate::physics::reynolds::SampledField;
 
-use super::error::SolveError;
-use super::growth_solid::{effective_step, growth_layer_step, GrowthSolver};
-use super::model::BearingModel;
+use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::thermal::growth_solid::{effective_step, growth_layer_step, GrowthSolver};
 
 /// Convergence of the growth in the thermal loop: its largest change between outer iterations, relative to
 /// the assembled clearance.
@@ -308,14 +308,14 @@ pub fn clear(model: &mut BearingModel) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::model::pad_grid;
+    use crate::bearing::film::model::pad_grid;
     use crate::model::load_case;
     use crate::physics::pad_elastic::Solid;
 
     fn fillon(sets: &[&str]) -> Case {
         let set: Vec<String> =
             std::iter::once("mesh.fidelity=preview").chain(sets.iter().copied()).map(str::to_string).collect();
-        load_case(include_str!("../../cases/fillon-a.toml"), &set).unwrap().1
+        load_case(include_str!("../../../cases/fillon-a.toml"), &set).unwrap().1
     }
 
     fn meshes(case: &Case, model: &BearingModel) -> Vec<Option<std::sync::Arc<PadMesh>>> {

@@ -8,18 +8,18 @@ use std::f64::consts::TAU;
 
 use crate::model::{Case, LoadSpec, ThermalModelKind};
 
-use super::coefficients::{full_coefficients, reduce};
-use super::coordinates::PadDof;
-use super::equilibrium::{
+use crate::bearing::equilibrium::{
     solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume,
 };
-use super::error::SolveError;
-use super::model::{BearingModel, OperatingPoint};
-use super::solution::{
+use crate::bearing::film::coordinates::PadDof;
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::SolveError;
+use crate::bearing::solution::coefficients::{full_coefficients, reduce};
+use crate::bearing::solution::{
     BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalGrowth, PadThermalResult, Solution,
     ThermalResult,
 };
-use super::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
+use crate::bearing::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
 
 /// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
 ///
@@ -64,14 +64,14 @@ pub fn solve_point(
 pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdState) -> Solution {
     // The films of the converged state hold its thermal growth (TEHD) while the solution is assembled.
     if let Some(g) = &state.growth {
-        super::tehd::install(model, g);
+        crate::bearing::thermal::growth::install(model, g);
     }
     if let Some(p) = &state.pivots {
         p.install_tangents(model);
     }
     let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium);
     if state.growth.is_some() {
-        super::tehd::clear(model);
+        crate::bearing::thermal::growth::clear(model);
     }
     if let Some(p) = &state.pivots {
         // The loop stops only once the pivot loads have converged with the viscosity field.
@@ -165,8 +165,8 @@ pub fn solve_operating_point_with(
     params: EquilibriumParams,
     cancel: &dyn Cancel,
 ) -> Result<Solution, SolveError> {
-    if super::pivot_contact::has_contacts(case) {
-        return super::pivot_contact::solve(model, case, op, start, params, cancel);
+    if crate::bearing::equilibrium::pivots::has_contacts(case) {
+        return crate::bearing::equilibrium::pivots::solve(model, case, op, start, params, cancel);
     }
     let eq = solve_equilibrium(model, op, params, start, cancel)?;
     Ok(assemble_solution(model, case, op, &eq))
@@ -185,10 +185,17 @@ pub fn step_operating_point(
     params: EquilibriumParams,
     cancel: &dyn Cancel,
 ) -> Result<Progress<Solution, Resume>, SolveError> {
-    if super::pivot_contact::has_contacts(case) {
+    if crate::bearing::equilibrium::pivots::has_contacts(case) {
         // The contact's load iteration runs to the end (a few warm-started equilibria).
-        return super::pivot_contact::solve(model, case, op, start, params, &super::progress::NoSuspend(cancel))
-            .map(Progress::Done);
+        return crate::bearing::equilibrium::pivots::solve(
+            model,
+            case,
+            op,
+            start,
+            params,
+            &crate::bearing::report::progress::NoSuspend(cancel),
+        )
+        .map(Progress::Done);
     }
     Ok(match step_equilibrium(model, op, params, start, cancel)? {
         Progress::Done(eq) => Progress::Done(assemble_solution(model, case, op, &eq)),
@@ -337,7 +344,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
     let attitude = if ecc > 1e-12 { wrap_deg((e[1].atan2(e[0]) - load_angle).to_degrees()) } else { 0.0 };
     let n_rev = op.speed_rad_s / TAU;
     let sommerfeld = (wmag > 1e-9).then(|| op.viscosity * n_rev * model.length * 2.0 * r / wmag * (r / cb).powi(2));
-    report.warnings.extend(super::regime::Regime::of(case, op.surface_speed, &pads).warnings());
+    report.warnings.extend(crate::bearing::solution::regime::Regime::of(case, op.surface_speed, &pads).warnings());
     Solution {
         title: case.title.clone(),
         eccentricity_ratio: ecc,
@@ -371,12 +378,12 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
 }
 
 /// The pad's modal coordinates `PadDof::Mode(i)`, in mode order.
-fn mode_amplitudes(pm: &super::model::PadModel, q: &[f64]) -> Vec<f64> {
+fn mode_amplitudes(pm: &crate::bearing::film::model::PadModel, q: &[f64]) -> Vec<f64> {
     pm.dofs().iter().zip(q).filter(|(d, _)| matches!(d, PadDof::Mode(_))).map(|(_, v)| *v).collect()
 }
 
 /// Σ q_i φ_i at the film nodes (empty for a rigid pad).
-fn elastic_displacement(pm: &super::model::PadModel, q: &[f64]) -> Vec<f64> {
+fn elastic_displacement(pm: &crate::bearing::film::model::PadModel, q: &[f64]) -> Vec<f64> {
     let Some(modes) = &pm.modes else { return Vec::new() };
     let amps = mode_amplitudes(pm, q);
     let mut u = vec![0.0; pm.film.geom.n_nodes()];

@@ -12,9 +12,9 @@
 use nalgebra::{Complex, DMatrix};
 use serde::{Deserialize, Serialize};
 
-use super::coordinates::{Coord, JOURNAL_DOFS};
-use super::equilibrium::Equilibrium;
-use super::model::BearingModel;
+use crate::bearing::equilibrium::Equilibrium;
+use crate::bearing::film::coordinates::{Coord, JOURNAL_DOFS};
+use crate::bearing::film::model::BearingModel;
 
 /// Full coefficient matrices and what each row means.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -51,7 +51,7 @@ fn to_rows(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
 }
 
 /// Assembles the full matrices at an equilibrium: each pad's film block scattered through the model's
-/// [`DofMap`](super::coordinates::DofMap), plus its structural stiffness and inertia.
+/// [`DofMap`](crate::bearing::film::coordinates::DofMap), plus its structural stiffness and inertia.
 #[must_use]
 pub fn full_coefficients(model: &BearingModel, eq: &Equilibrium) -> FullCoefficients {
     let n = model.n_dofs();
