@@ -41,6 +41,7 @@
 #[cfg(feature = "gui")]
 pub mod app;
 pub mod bearing;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
 pub mod fem;
 pub mod io;

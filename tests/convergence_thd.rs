@@ -5,7 +5,7 @@
 
 mod common;
 
-use tiltpad::bearing::{solve_point, BearingModel, NoCancel, ThermalParams};
+use tiltpad::bearing::{solve_case, ThermalParams};
 use tiltpad::model::LoadSpec;
 use tiltpad::study::convergence::{classify, load_for_sommerfeld, Class};
 
@@ -23,8 +23,7 @@ fn map_point_as(case_file: &str, sommerfeld: f64, direction_deg: f64, physical_a
     let mut case = common::case(case_file, &["mesh.fidelity=\"preview\""]);
     case.operating.load =
         LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, sommerfeld), angle_rad: direction_deg.to_radians() };
-    let mut model = BearingModel::new(&case).unwrap();
-    let result = solve_point(&mut model, &mut None, &case, None, &NoCancel);
+    let result = solve_case(&case);
     let (class, detail) = classify(&result);
     let at = format!("{case_file} at {direction_deg}°, S = {sommerfeld}");
     if physical_allowed && class.is_physical() {
@@ -43,7 +42,7 @@ fn map_point_as(case_file: &str, sommerfeld: f64, direction_deg: f64, physical_a
         r.viscosity_change
     );
     assert!(r.energy_balance_closure.abs() < 1e-12, "{at}: energy balance closes to {:.1e}", r.energy_balance_closure);
-    r.warnings.clone()
+    r.warnings.iter().map(ToString::to_string).collect()
 }
 
 /// Taniguchi B (BC3) at S = 1 with the load 20° past a pivot: the Anderson extrapolation cycled at a
@@ -98,7 +97,7 @@ fn fillon_a_at_s_0_1_restarts_cautiously_after_an_overshoot_into_touchdown() {
 #[test]
 fn a_restart_that_spends_the_budget_answers_with_its_touchdown() {
     use tiltpad::bearing::thermal::solve_thd;
-    use tiltpad::bearing::{SolveError, ThermalModel};
+    use tiltpad::bearing::{BearingModel, NoCancel, SolveError, ThermalModel};
     let mut case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);
     case.operating.load =
         LoadSpec::Force { magnitude_n: load_for_sommerfeld(&case, 0.1), angle_rad: 35.0_f64.to_radians() };

@@ -5,7 +5,8 @@ mod common;
 
 use std::f64::consts::PI;
 
-use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
+use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams};
+use tiltpad::bearing::NoCancel;
 use tiltpad::bearing::{solve_case, BearingModel, OperatingPoint};
 use tiltpad::model::load_case;
 use tiltpad::physics::orifice::hagen_poiseuille_flow;

@@ -8,6 +8,7 @@
 
 mod common;
 
+use tiltpad::bearing::report::warning::Warning;
 use tiltpad::bearing::Solution;
 
 const PREVIEW: &str = "mesh.fidelity=preview";
@@ -111,15 +112,17 @@ fn housing_growth_is_a_larger_assembled_clearance() {
     );
     // The preload falls from 0.47 to 0.36 and the upper pads become lightly loaded: both solves give them their
     // mean film viscosity (the housing's growth is in the films from the loop's first equilibrium, which decides).
-    let light = |s: &Solution| -> Vec<String> {
+    let light = |s: &Solution| -> Vec<usize> {
         s.thermal
             .as_ref()
             .unwrap()
             .report
             .warnings
             .iter()
-            .filter(|w| w.contains("mean film viscosity"))
-            .map(|w| w[..5].to_string())
+            .filter_map(|w| match w {
+                Warning::MeanViscosity { pad, .. } | Warning::MeanViscosityAfterFailure { pad, .. } => Some(*pad),
+                _ => None,
+            })
             .collect()
     };
     assert!(!light(&wider).is_empty());

@@ -2,8 +2,9 @@
 
 mod common;
 
-use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams, NoCancel};
+use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams};
 use tiltpad::bearing::thermal::pad_system::PadThermal;
+use tiltpad::bearing::NoCancel;
 use tiltpad::bearing::{BearingModel, OperatingPoint, ThermalModel};
 use tiltpad::mesh::pad3d::PadMesh;
 use tiltpad::physics::energy::{FilmEnergy, Injection, Oil};

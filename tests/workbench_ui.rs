@@ -204,7 +204,7 @@ fn coefficient_view_against_speed_runs_a_background_sweep() {
     assert_eq!(ecc.len(), 11, "every point converges: {sweep:?}");
     assert!(ecc.windows(2).all(|w| w[1] < w[0]), "the journal rises with speed: {ecc:?}");
     for p in sweep.iter().filter(|p| p.result.is_err()) {
-        h.get_by_label_contains(&format!("No solution at {:.0}", p.speed_rpm));
+        h.get_by_label_contains(&format!("No solution at {:.0}", tiltpad::units::RPM.from_si(p.speed_rad_s)));
     }
     snapshot(&mut h, "coefficients_speed");
 }

@@ -9,7 +9,8 @@ use std::collections::VecDeque;
 
 use web_time::Instant;
 
-use crate::bearing::stages::{Request, Stages, Step};
+use crate::bearing::report::error::InternalError;
+use crate::bearing::stages::{Request, StageId, Stages, Step};
 use crate::bearing::{Cancel, FrameBudget, NoCancel, SolveError};
 use crate::scene::sweep::point_override;
 use crate::study::{PointError, Row, Runner};
@@ -59,7 +60,9 @@ impl SteppedPoints {
                 Ok(case) => match self.stages.step(&Request::solution(case), &cancel) {
                     Ok(Step::Pending { .. }) => None,
                     Ok(Step::Done(o)) => Some(o.solution().ok_or_else(|| {
-                        PointError::from(SolveError::Invalid("the stages returned no solution".into()))
+                        PointError::from(SolveError::Internal(InternalError::Unpublished {
+                            stage: StageId::Reduction.label().into(),
+                        }))
                     })),
                     Err(e) => Some(Err(PointError::from(e))),
                 },

@@ -233,10 +233,13 @@ mod tests {
         let mut wanted = vec![StageId::Reduction, StageId::FrequencySweep];
         wanted.extend(sweep.then_some(StageId::SpeedSweep));
         Request {
-            case,
-            wanted,
             frequency_ratios: vec![0.5, 1.0],
-            speeds_rpm: if sweep { vec![8000.0, 9000.0] } else { Vec::new() },
+            speeds_rad_s: if sweep {
+                [8000.0, 9000.0].map(|n| crate::units::RPM.to_si(n)).to_vec()
+            } else {
+                Vec::new()
+            },
+            ..Request::of(case, &wanted)
         }
     }
 

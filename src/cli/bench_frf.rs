@@ -10,7 +10,8 @@ use std::path::Path;
 use anyhow::Result;
 use web_time::Instant;
 
-use crate::bearing::frf::model::{band, FrfModel};
+use crate::bearing::frf::model::band;
+use crate::bearing::{NoCancel, Stages};
 use crate::model::load_case;
 
 /// The target of issue 10: 400 frequencies of all FRFs after the equilibrium.
@@ -37,7 +38,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         let mut model = None;
         for _ in 0..repeats {
             let t0 = Instant::now();
-            let m = FrfModel::new(&case)?;
+            let m = Stages::new().frf(&case, &NoCancel)?;
             let total = t0.elapsed().as_secs_f64();
             eq.push((total - m.linearise_seconds) * 1e3);
             lin.push(m.linearise_seconds * 1e3);

@@ -97,7 +97,7 @@ fn at_level(base: &Rotor, bearing_text: &str, level: &str) -> Result<Rotor> {
 }
 
 fn rpm(r: &AnalysisResult) -> String {
-    r.onset.map_or("—".to_string(), |o| format!("{:.0} rpm", o.speed_rad_s * 30.0 / std::f64::consts::PI))
+    r.onset.map_or("—".to_string(), |o| format!("{:.0} rpm", crate::units::RPM.from_si(o.speed_rad_s)))
 }
 
 /// The markdown section.

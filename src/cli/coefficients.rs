@@ -2,7 +2,6 @@
 //! condensed at the case's excitation ratio) or over excitation frequency at the case's speed (one solve,
 //! the full matrices condensed at each ω), written for ROSS (`--ross`) and as CSV (`--csv`).
 
-use std::f64::consts::TAU;
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
@@ -94,7 +93,7 @@ pub fn run(args: &CoefficientArgs<'_>) -> Result<()> {
         (None, Some(spec)) => excitation_table(&mut runner, &numbers("--excitation-ratio", spec)?)?,
         (Some(_), Some(_)) => bail!("give --speed-rpm (a speed sweep) or --excitation-ratio (one speed), not both"),
         (None, None) => {
-            let rpm = runner.case(&[])?.operating.speed_rad_s * 60.0 / TAU;
+            let rpm = crate::units::RPM.from_si(runner.case(&[])?.operating.speed_rad_s);
             speed_table(&mut runner, &[rpm])?
         }
     };

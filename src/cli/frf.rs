@@ -6,7 +6,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 use serde_json::json;
 
-use crate::bearing::frf::model::{band, FrfModel};
+use crate::bearing::frf::model::band;
+use crate::bearing::{NoCancel, Stages};
 use crate::io::write_file;
 use crate::model::Case;
 use crate::scene::frf::FrfCurves;
@@ -47,16 +48,16 @@ pub fn run(args: &FrfArgs<'_>) -> Result<()> {
         bail!("--points {}: allowed 2 to 100000", args.points);
     }
     let (_, case) = read_case(args.case, args.set)?;
-    let model = FrfModel::new(&case).with_context(|| format!("solving {}", args.case.display()))?;
+    let model = Stages::new().frf(&case, &NoCancel).with_context(|| format!("solving {}", args.case.display()))?;
     let freqs = band(args.from_hz, args.to_hz, args.points);
     let sweep = model.sweep(&case, &freqs)?;
     let h = case.hydraulics.as_ref().context("no [hydraulics]")?;
     let title = format!(
         "{} — {:.0} rpm, ε = {:.3}, supply {:.0} bar",
         case.title,
-        case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU,
+        crate::units::RPM.from_si(case.operating.speed_rad_s),
         model.eccentricity_ratio,
-        h.supply_pressure_pa / 1e5
+        crate::units::BAR.from_si(h.supply_pressure_pa)
     );
     let mut curves = FrfCurves::new(&sweep, &port_names(&case), title);
     if let Some(a) = args.amplitude_v {

@@ -3,57 +3,37 @@
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
 //! also receives every error, with a non-zero exit status. Files are written safely ([`crate::io`]).
-//! The result documents ([`solution_json`], [`summary_text`]) build on every target (the web workbench
-//! exports them too); the commands themselves are native only.
+//! Native only (the web workbench exports a solution's JSON form through
+//! [`crate::bearing::solution::json`]).
 
-#[cfg(not(target_arch = "wasm32"))]
 mod batch;
-#[cfg(not(target_arch = "wasm32"))]
 mod bench;
-#[cfg(not(target_arch = "wasm32"))]
 mod bench_batch;
-#[cfg(not(target_arch = "wasm32"))]
 mod bench_flex;
-#[cfg(not(target_arch = "wasm32"))]
 mod bench_frf;
-#[cfg(not(target_arch = "wasm32"))]
 mod bench_rotor;
-#[cfg(not(target_arch = "wasm32"))]
 mod coefficients;
-#[cfg(not(target_arch = "wasm32"))]
 mod convergence_map;
-#[cfg(not(target_arch = "wasm32"))]
 pub mod frf;
-#[cfg(not(target_arch = "wasm32"))]
 pub mod modes;
-#[cfg(not(target_arch = "wasm32"))]
 pub mod rotor;
-#[cfg(not(target_arch = "wasm32"))]
 mod rotor_map;
-#[cfg(not(target_arch = "wasm32"))]
 mod rows;
 mod summary;
-#[cfg(not(target_arch = "wasm32"))]
 mod sweep;
-#[cfg(not(target_arch = "wasm32"))]
 mod vtu;
 
-#[cfg(not(target_arch = "wasm32"))]
 use std::path::{Path, PathBuf};
 
-#[cfg(not(target_arch = "wasm32"))]
 use anyhow::{Context, Result};
-#[cfg(not(target_arch = "wasm32"))]
 use clap::{Parser, Subcommand};
 
-#[cfg(not(target_arch = "wasm32"))]
 use crate::bearing::solve_case;
-#[cfg(not(target_arch = "wasm32"))]
 use crate::model::{load_case, Case, CaseFile};
 
-pub use summary::{solution_json, summary_text};
+pub use crate::bearing::solution::json::solution_json;
+pub use summary::summary_text;
 
-#[cfg(not(target_arch = "wasm32"))]
 #[derive(Debug, Parser)]
 #[command(
     name = "tiltpad",
@@ -66,7 +46,6 @@ pub struct Cli {
     pub command: Option<Command>,
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Solve one case and print a summary.
@@ -284,7 +263,6 @@ pub enum Command {
 }
 
 /// `--step-deg`: a divisor of 360 between 1 and 90.
-#[cfg(not(target_arch = "wasm32"))]
 fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
     let v: f64 = s.parse().map_err(|e| format!("{e}"))?;
     let n = 360.0 / v;
@@ -294,7 +272,6 @@ fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
     Ok(v)
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 /// Reads and validates a case file with overrides.
 ///
 /// # Errors
@@ -304,7 +281,6 @@ pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
     load_case(&text, set).with_context(|| format!("invalid case {}", path.display()))
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 /// Writes a file safely (see [`crate::io::safe_write`]).
 ///
 /// # Errors
@@ -313,12 +289,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     Ok(crate::io::write_file(path, bytes)?)
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 fn is_stdout(p: Option<&PathBuf>) -> bool {
     p.is_some_and(|p| p.as_os_str() == "-")
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathBuf>) -> Result<()> {
     let (_, c) = read_case(case, set)?;
     let sol = solve_case(&c).with_context(|| format!("solving {}", case.display()))?;
@@ -342,7 +316,6 @@ fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathB
     Ok(())
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 /// Runs a CLI command.
 ///
 /// # Errors

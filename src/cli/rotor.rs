@@ -3,6 +3,7 @@
 //! unbalance response (with the API 617 limit) — as a summary, JSON (`--json`) and CSV (`--csv`, one row
 //! per speed).
 
+use crate::units::RPM;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::path::PathBuf;
@@ -16,7 +17,6 @@ use crate::rotor::eigen::Whirl;
 use super::rows::announce;
 use super::{is_stdout, write_atomic};
 
-const RPM: f64 = std::f64::consts::PI / 30.0;
 /// Modes written per speed in the CSV and the summary.
 const MODES: usize = 6;
 
@@ -46,7 +46,7 @@ pub fn parse_speeds(spec: &str) -> Result<Vec<f64>> {
         bail!("--speeds `{spec}`: needs 0 ≤ FROM < TO and 2 ≤ N ≤ 10000");
     }
     #[allow(clippy::cast_precision_loss)]
-    Ok((0..n).map(|i| (a + (b - a) * i as f64 / (n - 1) as f64) * RPM).collect())
+    Ok((0..n).map(|i| RPM.to_si(a + (b - a) * i as f64 / (n - 1) as f64)).collect())
 }
 
 /// Arguments of `tiltpad rotor`.
@@ -145,8 +145,12 @@ pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
     );
     match r.onset {
         Some(o) => {
-            let _ =
-                writeln!(s, "instability onset: {:.0} rpm (± {:.0})", o.speed_rad_s / RPM, o.bracket_rad_s / RPM / 2.0);
+            let _ = writeln!(
+                s,
+                "instability onset: {:.0} rpm (± {:.0})",
+                RPM.from_si(o.speed_rad_s),
+                RPM.from_si(o.bracket_rad_s) / 2.0
+            );
         }
         None => {
             let _ = writeln!(s, "instability onset: none in the sweep");
@@ -157,7 +161,7 @@ pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
             s,
             "critical speed (1×, forward mode {}): {:.0} rpm, log dec {:.3}",
             c.rank + 1,
-            c.speed_rad_s / RPM,
+            RPM.from_si(c.speed_rad_s),
             c.log_dec
         );
     }
@@ -166,7 +170,7 @@ pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
     }
     let _ = writeln!(s, "{:>9}  modes: frequency [Hz] / log dec / whirl", "rpm");
     for p in &r.speeds {
-        let _ = write!(s, "{:>9.0} ", p.point.speed_rad_s / RPM);
+        let _ = write!(s, "{:>9.0} ", RPM.from_si(p.point.speed_rad_s));
         for m in p.point.modes.modes.iter().take(MODES) {
             let _ = write!(s, " {:>8.2}/{:>7.3}/{}", m.frequency_hz(), m.log_dec, whirl(m.whirl));
         }
@@ -191,7 +195,7 @@ pub fn csv_text(r: &AnalysisResult) -> Result<String> {
     head.push("api617_limit_um".into());
     w.write_record(&head)?;
     for p in &r.speeds {
-        let mut row = vec![format!("{}", p.point.speed_rad_s / RPM), format!("{}", p.point.min_log_dec())];
+        let mut row = vec![format!("{}", RPM.from_si(p.point.speed_rad_s)), format!("{}", p.point.min_log_dec())];
         for i in 0..MODES {
             match p.point.modes.modes.get(i) {
                 Some(m) => {

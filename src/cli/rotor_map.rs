@@ -4,6 +4,7 @@
 //! form: one row per point of a series `modeN`, `bearingB_kxx`, `bearingB_kyy` or `crossing`, with its
 //! stiffness [N/m] and speed [rpm]).
 
+use crate::units::RPM;
 use std::fmt::Write as _;
 
 use anyhow::{Context, Result};
@@ -12,7 +13,6 @@ use crate::rotor::critical_map::{critical_speed_map, CriticalSpeedMap};
 
 use super::rotor::{emit, parse_speeds, read_rotor, RotorArgs};
 
-const RPM: f64 = std::f64::consts::PI / 30.0;
 /// Stiffnesses of the map (logarithmic) and modes drawn.
 const POINTS: usize = 81;
 const MODES: usize = 4;
@@ -60,7 +60,7 @@ pub fn summary(m: &CriticalSpeedMap) -> String {
             c.mode + 1,
             c.bearing,
             direction(c.direction),
-            c.speed_rad_s / RPM,
+            RPM.from_si(c.speed_rad_s),
             c.stiffness_n_per_m
         );
     }
@@ -77,7 +77,7 @@ pub fn csv_text(m: &CriticalSpeedMap) -> Result<String> {
     for mode in 0..MODES {
         for (k, f) in m.map.stiffness_n_per_m.iter().zip(&m.map.frequencies_rad_s) {
             if let Some(w_rad_s) = f.get(mode) {
-                w.write_record([format!("mode{}", mode + 1), format!("{k}"), format!("{}", w_rad_s / RPM)])?;
+                w.write_record([format!("mode{}", mode + 1), format!("{k}"), format!("{}", RPM.from_si(*w_rad_s))])?;
             }
         }
     }
@@ -87,7 +87,7 @@ pub fn csv_text(m: &CriticalSpeedMap) -> Result<String> {
                 w.write_record([
                     format!("bearing{b}_{}", direction(d)),
                     format!("{}", if d == 0 { p.1 } else { p.2 }),
-                    format!("{}", p.0 / RPM),
+                    format!("{}", RPM.from_si(p.0)),
                 ])?;
             }
         }
@@ -96,7 +96,7 @@ pub fn csv_text(m: &CriticalSpeedMap) -> Result<String> {
         w.write_record([
             "crossing".to_string(),
             format!("{}", c.stiffness_n_per_m),
-            format!("{}", c.speed_rad_s / RPM),
+            format!("{}", RPM.from_si(c.speed_rad_s)),
         ])?;
     }
     Ok(String::from_utf8(w.into_inner()?)?)

@@ -54,7 +54,7 @@ pub struct EigenPairs {
 }
 
 /// Failure of the eigen-solution.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, serde::Deserialize)]
 pub enum EigenError {
     #[error("shifted matrix K − σM (σ = {shift:e}) is not positive definite: {source}")]
     Factor { shift: f64, source: SolverError },

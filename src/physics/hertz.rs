@@ -62,7 +62,7 @@ pub struct PivotContact {
 }
 
 /// A contact outside the formula's validity.
-#[derive(Debug, Clone, PartialEq, Error)]
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
 pub enum HertzError {
     #[error("pivot contact half-width {half_width_m:.3e} m exceeds 0.2 of the pivot radius {pivot_radius_m:.3e} m at load {load_n:.4e} N: Hertz theory does not hold")]
     ContactTooWide { half_width_m: f64, pivot_radius_m: f64, load_n: f64 },

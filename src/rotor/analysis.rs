@@ -159,7 +159,7 @@ impl Analysis {
         } else {
             response(&sys, &self.shaft, &self.rotor.unbalances, omega, &self.nodes)?
         };
-        let rpm = omega * 30.0 / std::f64::consts::PI;
+        let rpm = crate::units::RPM.from_si(omega);
         self.done.push(SpeedResult {
             point: SpeedPoint { speed_rad_s: omega, modes },
             orbits,

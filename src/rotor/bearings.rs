@@ -1,31 +1,27 @@
-//! Bearing coefficients per speed for every bearing position: bearing cases solved at each speed (each
-//! distinct case once per speed, warm-started from the nearest speed solved before, results cached by speed)
-//! or coefficients given by numbers (interpolated in their speed table).
+//! Bearing coefficients per speed for every bearing position: bearing cases asked of the stages at each
+//! speed (each distinct case has its own [`Stages`], which builds its films once, warm-starts each speed from
+//! the last one solved and keeps the outputs of the speeds it has solved), or coefficients given by numbers
+//! (interpolated in their speed table).
 //!
 //! The case's own operating point is kept except the speed, which is the rotor's spin speed. With
 //! [`CoefficientModel::Reduced`] a case's full coefficients are reduced synchronously (at ω = Ω); with
 //! [`CoefficientModel::Full`] they enter whole ([`super::coupling`]). Numbers are always 2×2.
 
-use std::collections::BTreeMap;
-
 use super::coupling::BearingCoefficients;
 use super::error::RotorError;
-use crate::bearing::film::model::BearingModel;
-use crate::bearing::solution::assemble::solve_point;
 use crate::bearing::solution::coefficients::FullCoefficients;
-use crate::bearing::thermal::ThermalModel;
-use crate::bearing::NoCancel;
+use crate::bearing::{NoCancel, Request, StageId, Stages};
 use crate::model::rotor::{BearingSupport, CoefficientModel, CoefficientTable, Rotor};
 use crate::model::Case;
 
-/// One distinct bearing case and what was solved for it.
+/// Outputs each bearing case's stages keep: enough for the speeds an onset bisection returns to.
+const KEPT_SPEEDS: usize = 16;
+
+/// One distinct bearing case and the stages that solve it.
 struct CaseEntry {
     name: String,
     case: Case,
-    model: Option<BearingModel>,
-    thermal: Option<ThermalModel>,
-    /// Speed [rad/s] bits → (full coefficients, equilibrium coordinates).
-    cache: BTreeMap<u64, (FullCoefficients, Vec<f64>)>,
+    stages: Stages,
 }
 
 enum Source {
@@ -58,9 +54,7 @@ impl BearingSet {
                         entries.push(CaseEntry {
                             name: name.clone(),
                             case: (**case).clone(),
-                            model: None,
-                            thermal: None,
-                            cache: BTreeMap::new(),
+                            stages: Stages::keeping(KEPT_SPEEDS),
                         });
                         entries.len() - 1
                     });
@@ -77,26 +71,17 @@ impl BearingSet {
         }
     }
 
-    /// Full coefficients of distinct case `i` at `omega` [rad/s] (solved, or from the cache).
+    /// Full coefficients of distinct case `i` at `omega` [rad/s] (solved, or kept from before).
     fn full(&mut self, i: usize, omega: f64) -> Result<FullCoefficients, RotorError> {
         let e = &mut self.entries[i];
-        if let Some((f, _)) = e.cache.get(&omega.to_bits()) {
-            return Ok(f.clone());
-        }
-        let speed_rpm = omega * 30.0 / std::f64::consts::PI;
-        let err = |source| RotorError::Bearing { bearing: e.name.clone(), speed_rpm, source };
         let mut case = e.case.clone();
         case.operating.speed_rad_s = omega;
-        if e.model.is_none() {
-            e.model = Some(BearingModel::new(&case).map_err(err)?);
-        }
-        let start = nearest(&e.cache, omega).map(|(_, x)| x.clone());
-        let model = e.model.as_mut().ok_or_else(|| RotorError::Speeds("no bearing model".into()))?;
-        let sol = solve_point(model, &mut e.thermal, &case, start.as_deref(), &NoCancel)
-            .map_err(|source| RotorError::Bearing { bearing: e.name.clone(), speed_rpm, source })?;
-        e.cache.insert(omega.to_bits(), (sol.full.clone(), sol.coordinates.clone()));
-        self.solves += 1;
-        Ok(sol.full)
+        let before = e.stages.runs(StageId::Coefficients);
+        let solution = e.stages.coefficients(&Request::coefficients(case), &NoCancel).map_err(|source| {
+            RotorError::Bearing { bearing: e.name.clone(), speed_rpm: crate::units::RPM.from_si(omega), source }
+        })?;
+        self.solves += e.stages.runs(StageId::Coefficients) - before;
+        Ok(solution.full.clone())
     }
 
     /// Coefficients of every position at spin speed `omega` [rad/s].
@@ -135,11 +120,4 @@ impl BearingSet {
             Source::Numbers(_) => Ok(None),
         }
     }
-}
-
-fn nearest(cache: &BTreeMap<u64, (FullCoefficients, Vec<f64>)>, omega: f64) -> Option<&(FullCoefficients, Vec<f64>)> {
-    cache
-        .iter()
-        .min_by(|a, b| (f64::from_bits(*a.0) - omega).abs().total_cmp(&(f64::from_bits(*b.0) - omega).abs()))
-        .map(|(_, v)| v)
 }

@@ -81,9 +81,9 @@ pub fn response(
             f[j] += Complex::new(a.im, -a.re) * w;
         }
     }
-    let x = z.lu().solve(&f).ok_or(RotorError::SingularResponse { speed_rpm: omega * 30.0 / std::f64::consts::PI })?;
+    let x = z.lu().solve(&f).ok_or(RotorError::SingularResponse { speed_rpm: crate::units::RPM.from_si(omega) })?;
     if x.iter().any(|v| !v.re.is_finite() || !v.im.is_finite()) {
-        return Err(RotorError::SingularResponse { speed_rpm: omega * 30.0 / std::f64::consts::PI });
+        return Err(RotorError::SingularResponse { speed_rpm: crate::units::RPM.from_si(omega) });
     }
     let at = |node, dof| shaft.weights(node, dof).iter().fold(Complex::new(0.0, 0.0), |acc, &(j, w)| acc + x[j] * w);
     Ok(nodes.iter().map(|&node| Orbit::from_amplitudes(node, at(node, NodeDof::X), at(node, NodeDof::Y))).collect())

@@ -148,8 +148,8 @@ mod tests {
     /// a pin compared with its own solution differs by exactly zero, and a pin round-trips through JSON.
     #[test]
     fn a_pin_compares_column_by_column_and_round_trips() {
-        let fast = crate::bearing::solution::limits::compressor_preview(&[]);
-        let slow = crate::bearing::solution::limits::compressor_preview(&["operating.speed_rpm=6000"]);
+        let fast = crate::bearing::stages::registry::compressor_preview(&[]);
+        let slow = crate::bearing::stages::registry::compressor_preview(&["operating.speed_rpm=6000"]);
         let pin = Pin::new("9000 rpm", "title = \"x\"", &fast);
         let rows = compare(&slow, &pin);
         let eps = rows.iter().find(|r| r.column == "eccentricity_ratio").unwrap();

@@ -45,7 +45,7 @@ pub fn fields_csv(solution: &Solution) -> String {
 /// The result document (as `tiltpad solve --json`) with the pins beside it, pretty-printed.
 #[must_use]
 pub fn results_json(solution: &Solution, pins: &[Pin]) -> String {
-    let mut doc = crate::cli::solution_json(solution);
+    let mut doc = crate::bearing::solution::json::solution_json(solution);
     let pins: Vec<Value> = pins
         .iter()
         .map(|p| {
@@ -83,8 +83,8 @@ mod tests {
     /// first, then the pin, and reads back to the same numbers.
     #[test]
     fn pins_export_beside_the_live_result_and_read_back() {
-        let fast = crate::bearing::solution::limits::compressor_preview(&[]);
-        let slow = crate::bearing::solution::limits::compressor_preview(&["operating.speed_rpm=6000"]);
+        let fast = crate::bearing::stages::registry::compressor_preview(&[]);
+        let slow = crate::bearing::stages::registry::compressor_preview(&["operating.speed_rpm=6000"]);
         let pin = Pin::new("9000 rpm", "title = \"pinned\"", &fast);
         let doc: Value = serde_json::from_str(&results_json(&slow, std::slice::from_ref(&pin))).unwrap();
         assert_eq!(doc["eccentricity_ratio"].as_f64(), Some(slow.eccentricity_ratio));

@@ -116,8 +116,8 @@ mod tests {
     /// range is symmetric and reaches the largest |Δp|; a different pad count is a clear mismatch.
     #[test]
     fn differences_are_nodal_on_one_mesh_and_interpolated_across_meshes() {
-        let fast = crate::bearing::solution::limits::compressor_preview(&[]);
-        let slow = crate::bearing::solution::limits::compressor_preview(&["operating.speed_rpm=6000"]);
+        let fast = crate::bearing::stages::registry::compressor_preview(&[]);
+        let slow = crate::bearing::stages::registry::compressor_preview(&["operating.speed_rpm=6000"]);
         let (a, b) = (pad_map(&slow), pad_map(&fast));
         let (d, (lo, hi)) = difference_maps(&a, &b).unwrap();
         for (k, dm) in d.iter().enumerate() {

@@ -7,6 +7,7 @@
 
 use crate::bearing::solution::coefficients::{FullCoefficients, ReducedCoefficients};
 use crate::bearing::stages::SpeedPoint;
+use crate::units::RPM;
 
 /// Display factor from N/m to MN/m.
 pub const STIFFNESS_MN_PER_M: f64 = 1e-6;
@@ -78,8 +79,11 @@ pub fn frequency_plot(
 #[must_use]
 pub fn speed_plot(sweep: &[SpeedPoint], current: Option<(f64, ReducedCoefficients)>) -> CoefficientPlot {
     let ok: Vec<(f64, ReducedCoefficients)> =
-        sweep.iter().filter_map(|p| p.result.as_ref().ok().map(|v| (p.speed_rpm, v.reduced))).collect();
-    let failures = sweep.iter().filter_map(|p| p.result.as_ref().err().map(|e| (p.speed_rpm, e.clone()))).collect();
+        sweep.iter().filter_map(|p| p.result.as_ref().ok().map(|v| (RPM.from_si(p.speed_rad_s), v.reduced))).collect();
+    let failures = sweep
+        .iter()
+        .filter_map(|p| p.result.as_ref().err().map(|e| (RPM.from_si(p.speed_rad_s), e.to_string())))
+        .collect();
     build("speed [rpm]", &ok, current, failures)
 }
 
@@ -99,9 +103,9 @@ pub fn frequency_ratios(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 /// Speeds for the speed sweep around the case's speed: `n` points on `[0.5, 1.5] × rpm` (positive).
 #[must_use]
 #[allow(clippy::cast_precision_loss)]
-pub fn sweep_speeds(rpm: f64, n: usize) -> Vec<f64> {
+pub fn sweep_speeds(speed: f64, n: usize) -> Vec<f64> {
     let n = n.max(2);
-    let (lo, hi) = (0.5 * rpm, 1.5 * rpm);
+    let (lo, hi) = (0.5 * speed, 1.5 * speed);
     (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).filter(|&s| s > 0.0).collect()
 }
 
@@ -157,12 +161,12 @@ mod tests {
             })
         };
         let sweep = vec![
-            SpeedPoint { speed_rpm: 1000.0, result: Err("touchdown".into()) },
-            SpeedPoint { speed_rpm: 2000.0, result: v(1e8) },
+            SpeedPoint { speed_rad_s: RPM.to_si(1000.0), result: Err(crate::bearing::SolveError::Cancelled) },
+            SpeedPoint { speed_rad_s: RPM.to_si(2000.0), result: v(1e8) },
         ];
         let p = speed_plot(&sweep, None);
-        assert_eq!(p.stiffness[0].points, vec![[2000.0, 100.0]]);
-        assert_eq!(p.failures, vec![(1000.0, "touchdown".to_string())]);
+        assert!((p.stiffness[0].points[0][0] - 2000.0).abs() < 1e-9 && p.stiffness[0].points[0][1] == 100.0);
+        assert!((p.failures[0].0 - 1000.0).abs() < 1e-9 && p.failures[0].1 == "solve cancelled");
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! into one [`Request`] with the grids its sweeps run over. Adding a view that needs a new stage: list the
 //! stage in the view's needs; the stage runs (with every stage it reads) while the view is open.
 
-use crate::bearing::stages::{Request, StageId};
+use crate::bearing::stages::{Request, StageId, Start};
 use crate::model::Case;
 
 use super::plots::{frequency_ratios, sweep_speeds};
@@ -37,12 +37,12 @@ pub fn request<'a>(case: Case, needs: impl IntoIterator<Item = &'a [StageId]>) -
     } else {
         Vec::new()
     };
-    let speeds_rpm = if wanted.contains(&StageId::SpeedSweep) {
-        sweep_speeds(case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU, SPEED_POINTS)
+    let speeds_rad_s = if wanted.contains(&StageId::SpeedSweep) {
+        sweep_speeds(case.operating.speed_rad_s, SPEED_POINTS)
     } else {
         Vec::new()
     };
-    Request { case, wanted, frequency_ratios, speeds_rpm }
+    Request { case, wanted, frequency_ratios, speeds_rad_s, start: Start::Warm }
 }
 
 #[cfg(test)]
@@ -55,16 +55,13 @@ mod tests {
         let case = load_case(include_str!("../../cases/fillon-a.toml"), &[]).unwrap().1;
         let r = request(case.clone(), [SOLUTION]);
         assert_eq!(r.wanted, vec![StageId::Reduction]);
-        assert!(r.frequency_ratios.is_empty() && r.speeds_rpm.is_empty());
+        assert!(r.frequency_ratios.is_empty() && r.speeds_rad_s.is_empty());
         let r = request(case.clone(), [SOLUTION, FREQUENCY_PLOTS, SPEED_PLOTS]);
         assert_eq!(r.wanted, vec![StageId::Reduction, StageId::FrequencySweep, StageId::SpeedSweep]);
         assert_eq!(r.frequency_ratios.len(), RATIOS.2);
-        assert_eq!(r.speeds_rpm.len(), SPEED_POINTS);
+        assert_eq!(r.speeds_rad_s.len(), SPEED_POINTS);
         // 4000 rpm: from 2000 to 6000 rpm.
-        assert!(
-            (r.speeds_rpm[0] - 2000.0).abs() < 1e-9 && (r.speeds_rpm[SPEED_POINTS - 1] - 6000.0).abs() < 1e-9,
-            "{:?}",
-            r.speeds_rpm
-        );
+        let rpm: Vec<f64> = r.speeds_rad_s.iter().map(|&w| crate::units::RPM.from_si(w)).collect();
+        assert!((rpm[0] - 2000.0).abs() < 1e-9 && (rpm[SPEED_POINTS - 1] - 6000.0).abs() < 1e-9, "{rpm:?}");
     }
 }

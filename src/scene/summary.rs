@@ -167,7 +167,7 @@ pub fn summary(s: &Solution) -> Summary {
     let solver = Group {
         title: "Solver report",
         rows: vec![
-            row("Method", r.method.clone(), "", "How equilibrium was found: coupled Newton on journal and pad coordinates; pad assembly (nested Newton), a scan along the load and load continuation as fallbacks."),
+            row("Method", r.method_text(), "", "How equilibrium was found: coupled Newton on journal and pad coordinates; pad assembly (nested Newton), a scan along the load and load continuation as fallbacks."),
             row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations, over the whole solve (THD: every equilibrium of the thermal loop and its isothermal start)."),
             row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations (THD: with the film-energy and pad-conduction factorisations)."),
             row("Residual", format!("{} (pads {})", small(r.residual), small(r.pad_residual)), "–", "Final force residual relative to the force scale, and the largest pad residual."),
@@ -191,10 +191,10 @@ pub fn summary(s: &Solution) -> Summary {
         })
         .collect();
     let mut groups = vec![operating, flows];
-    let mut warnings = r.warnings.clone();
+    let mut warnings: Vec<String> = r.warnings.iter().map(ToString::to_string).collect();
     if let Some(t) = &s.thermal {
         groups.push(thermal_group(t));
-        warnings.extend(t.report.warnings.iter().cloned());
+        warnings.extend(t.report.warnings.iter().map(ToString::to_string));
     }
     groups.extend([coeffs, solver]);
     Summary { groups, pads, warnings }

@@ -6,6 +6,7 @@
 //! coefficients the reduced 2×2 ones at the case's excitation ratio (rows and columns x, y).
 
 use crate::bearing::Solution;
+use crate::units::{L_PER_MIN, MPA, UM};
 
 /// One output column.
 #[derive(Clone, Copy)]
@@ -21,8 +22,6 @@ impl std::fmt::Debug for Column {
     }
 }
 
-const L_PER_MIN: f64 = 6e4;
-
 /// Every output column, in table order.
 #[allow(clippy::cast_precision_loss)]
 pub const COLUMNS: &[Column] = &[
@@ -30,19 +29,22 @@ pub const COLUMNS: &[Column] = &[
     Column { name: "attitude_angle_deg", value: |s| Some(s.attitude_angle_deg) },
     Column { name: "load_n", value: |s| Some(s.load_magnitude_n) },
     Column { name: "sommerfeld", value: |s| s.sommerfeld },
-    Column { name: "h_min_um", value: |s| Some(s.h_min_m * 1e6) },
-    Column { name: "p_max_mpa", value: |s| Some(s.p_max_pa * 1e-6) },
+    Column { name: "h_min_um", value: |s| Some(UM.from_si(s.h_min_m)) },
+    Column { name: "p_max_mpa", value: |s| Some(MPA.from_si(s.p_max_pa)) },
     Column { name: "t_max_film_c", value: |s| s.thermal.as_ref().map(|t| t.t_max_film_c) },
     Column { name: "t_max_pad_c", value: |s| s.thermal.as_ref().and_then(|t| t.t_max_pad_c) },
     Column { name: "t_journal_c", value: |s| s.thermal.as_ref().map(|t| t.journal_temperature_c) },
     Column { name: "friction_power_w", value: |s| Some(s.friction_power_w) },
-    Column { name: "flow_leading_edges_in_l_per_min", value: |s| Some(s.flows_m3_per_s.leading_edges_in * L_PER_MIN) },
+    Column {
+        name: "flow_leading_edges_in_l_per_min",
+        value: |s| Some(L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in)),
+    },
     Column {
         name: "flow_trailing_edges_out_l_per_min",
-        value: |s| Some(s.flows_m3_per_s.trailing_edges_out * L_PER_MIN),
+        value: |s| Some(L_PER_MIN.from_si(s.flows_m3_per_s.trailing_edges_out)),
     },
-    Column { name: "flow_sides_out_l_per_min", value: |s| Some(s.flows_m3_per_s.sides_out * L_PER_MIN) },
-    Column { name: "flow_orifices_in_l_per_min", value: |s| Some(s.flows_m3_per_s.orifices_in * L_PER_MIN) },
+    Column { name: "flow_sides_out_l_per_min", value: |s| Some(L_PER_MIN.from_si(s.flows_m3_per_s.sides_out)) },
+    Column { name: "flow_orifices_in_l_per_min", value: |s| Some(L_PER_MIN.from_si(s.flows_m3_per_s.orifices_in)) },
     Column { name: "kxx_n_per_m", value: |s| Some(s.reduced.k_n_per_m[0][0]) },
     Column { name: "kxy_n_per_m", value: |s| Some(s.reduced.k_n_per_m[0][1]) },
     Column { name: "kyx_n_per_m", value: |s| Some(s.reduced.k_n_per_m[1][0]) },

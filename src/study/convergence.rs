@@ -18,7 +18,7 @@
 use serde::Serialize;
 use web_time::Instant;
 
-use crate::bearing::{solve_point, BearingModel, EquilibriumParams, NoCancel, Solution, SolveError};
+use crate::bearing::{EquilibriumParams, NoCancel, Request, Solution, SolveError, Stages, Start};
 use crate::model::{load_case, Case, CaseError, LoadSpec};
 
 /// A bearing of the map: a case text and overrides.
@@ -127,16 +127,14 @@ pub fn load_for_sommerfeld(case: &Case, s: f64) -> f64 {
     mu * case.operating.speed_rev_s() * l * 2.0 * r * (r / c).powi(2) / s
 }
 
-/// Solves every point of the map for one bearing, cold from a centred journal each time (the model, and a
-/// thermal model for THD cases, are built once).
+/// Solves every point of the map for one bearing, cold from a centred journal each time (the stages build
+/// the films, and the pads' thermal systems for THD cases, once).
 ///
 /// # Errors
 /// The bearing's case is invalid.
 pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>, CaseError> {
     let (_, base) = load_case(&bearing.text, &bearing.set)?;
-    let mut model = BearingModel::new(&base)
-        .map_err(|e| CaseError::Inconsistent { key: "bearing".into(), message: e.to_string() })?;
-    let mut thermal = None;
+    let mut stages = Stages::new();
     let mut points = Vec::new();
     for &s in &spec.sommerfeld {
         let load_n = load_for_sommerfeld(&base, s);
@@ -144,7 +142,9 @@ pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>
             let mut case = base.clone();
             case.operating.load = LoadSpec::Force { magnitude_n: load_n, angle_rad: direction_deg.to_radians() };
             let t0 = Instant::now();
-            let result = solve_point(&mut model, &mut thermal, &case, None, &NoCancel);
+            let result = stages
+                .solution(&Request::solution(case).starting(Start::Cold), &NoCancel)
+                .map(std::sync::Arc::unwrap_or_clone);
             let seconds = t0.elapsed().as_secs_f64();
             let (class, detail) = classify(&result);
             let film_solves = result

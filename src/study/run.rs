@@ -1,16 +1,16 @@
 //! Solving the points of a study, one [`Row`] per point.
 //!
 //! A [`Runner`] holds the base case text and its `--set` overrides. Each point's overrides are applied on
-//! top, the case is validated and solved. The bearing model (meshes, symbolic factorisations) and the
-//! thermal model are reused while the geometry, mesh, lubricant and thermal settings stay the same. With
-//! warm starts (sweeps) a point starts from the previous point's equilibrium and, if that fails, once more
-//! from scratch; without them (batches) every point is solved from scratch, so its row does not depend on
-//! which points came before it.
+//! top, the case is validated and asked of the runner's [`Stages`], which rebuild only what the point's
+//! values change (the films while the geometry and mesh stay, the pads' thermal systems while the pad mesh
+//! stays). With warm starts (sweeps) a point starts from the previous point's equilibrium and, if that
+//! fails, once more from scratch; without them (batches) every point is solved from scratch
+//! ([`Start::Cold`]), so its row does not depend on which points came before it.
 
 use web_time::Instant;
 
 use crate::bearing::solution::limits::LimitKind;
-use crate::bearing::{solve_point, BearingModel, NoCancel, Solution, SolveError, ThermalModel};
+use crate::bearing::{NoCancel, Request, Solution, SolveError, Stages, Start};
 use crate::model::{load_case, Case, CaseError};
 
 use super::columns::{outputs, COLUMNS};
@@ -131,10 +131,8 @@ impl Row {
 pub struct Runner {
     text: String,
     base: Vec<String>,
-    warm: bool,
-    model: Option<(BearingModel, String)>,
-    thermal: Option<(ThermalModel, String)>,
-    start: Option<Vec<f64>>,
+    start: Start,
+    stages: Stages,
 }
 
 impl Runner {
@@ -142,7 +140,7 @@ impl Runner {
     /// previous equilibrium.
     #[must_use]
     pub fn new(text: impl Into<String>, base: Vec<String>, warm: bool) -> Self {
-        Self { text: text.into(), base, warm, model: None, thermal: None, start: None }
+        Self { text: text.into(), base, start: if warm { Start::Warm } else { Start::Cold }, stages: Stages::new() }
     }
 
     /// The validated case of a point.
@@ -161,34 +159,8 @@ impl Runner {
     /// The point's case error or solve error.
     pub fn solve(&mut self, overrides: &[(String, String)]) -> Result<Solution, PointError> {
         let case = self.case(overrides)?;
-        let model_key = format!("{:?}{:?}", case.bearing, case.mesh);
-        if self.model.as_ref().map(|m| &m.1) != Some(&model_key) {
-            self.model = Some((BearingModel::new(&case)?, model_key.clone()));
-            self.thermal = None;
-            self.start = None;
-        }
-        let thermal_key = format!("{model_key}{:?}{:?}", case.lubricant, case.thermal);
-        if self.thermal.as_ref().is_some_and(|t| t.1 != thermal_key) {
-            self.thermal = None;
-        }
-        let start = if self.warm { self.start.take() } else { None };
-        let warm = start.is_some();
-        let mut result = self.solve_with(&case, &thermal_key, start.as_deref());
-        if result.is_err() && warm {
-            result = self.solve_with(&case, &thermal_key, None);
-        }
-        if let Ok(s) = &result {
-            self.start = self.warm.then(|| s.coordinates.clone());
-        }
-        result.map_err(PointError::from)
-    }
-
-    fn solve_with(&mut self, case: &Case, thermal_key: &str, start: Option<&[f64]>) -> Result<Solution, SolveError> {
-        let Some((model, _)) = self.model.as_mut() else { return Err(SolveError::Invalid("no bearing model".into())) };
-        let mut thermal = self.thermal.take().map(|t| t.0);
-        let result = solve_point(model, &mut thermal, case, start, &NoCancel);
-        self.thermal = thermal.map(|t| (t, thermal_key.to_string()));
-        result
+        let solution = self.stages.solution(&Request::solution(case).starting(self.start), &NoCancel)?;
+        Ok(std::sync::Arc::unwrap_or_clone(solution))
     }
 
     /// Solves one point and makes its row; the solution too when there is one (for field exports).

@@ -8,17 +8,18 @@
 //! direction (a two-pad bearing sideways) is held, as in the pad-assembly method. A backtracking line search
 //! on the scaled residual keeps every film open.
 
+use crate::bearing::report::error::StallReason;
+use crate::bearing::report::warning::Method;
 use nalgebra::{DMatrix, DVector, Vector2};
 
 use crate::bearing::equilibrium::eval::{coupled_residual, eval_all, external_load, total_force, Ctx};
 use crate::bearing::equilibrium::journal::{bearing_stiffness, journal_step, pads_ahead, unsupported_direction};
 use crate::bearing::equilibrium::pad::{follow_journal, solve_pad};
-use crate::bearing::equilibrium::{
-    Cancel, Found, PadState, Progress, Resume, Stall, SUFFICIENT_DECREASE, UNLOADED_SHARE,
-};
+use crate::bearing::equilibrium::state::{Found, PadState, Resume, Stall, SUFFICIENT_DECREASE, UNLOADED_SHARE};
 use crate::bearing::film::coordinates::JOURNAL_DOFS;
 use crate::bearing::film::model::BearingModel;
 use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::{Cancel, Progress};
 
 /// Backtracking halvings of a Newton step before the line search gives up.
 const LINE_SEARCH_HALVINGS: usize = 12;
@@ -57,14 +58,14 @@ pub(super) fn coupled_newton(
         match cold_start(model, &mut u, ctx, cancel)? {
             Progress::Done(Some(st)) => st,
             Progress::Done(None) => {
-                return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, "film closes at the start"))))
+                return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, StallReason::FilmClosesAtStart))))
             }
             Progress::Suspended(r) => return Ok(Progress::Suspended(r)),
         }
     } else {
         match eval_all(model, &u, ctx) {
             Ok(st) => st,
-            Err(_) => return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, "film closes at the start")))),
+            Err(_) => return Ok(Progress::Done(Err(Stall::new(&u, f64::INFINITY, StallReason::FilmClosesAtStart)))),
         }
     };
     // Unloaded pads already re-examined in this solve.
@@ -96,7 +97,7 @@ pub(super) fn coupled_newton(
             let (r2, _) = coupled_residual(model, &u, &states, w, ctx.force_scale);
             if !loaded_again && r2[0].hypot(r2[1]) <= tol {
                 let force = total_force(&states);
-                return Ok(Progress::Done(Ok(Found { u, pads: states, force, method: "coupled Newton".into() })));
+                return Ok(Progress::Done(Ok(Found { u, pads: states, force, method: Method::CoupledNewton })));
             }
             continue;
         }
@@ -152,13 +153,13 @@ pub(super) fn coupled_newton(
         }
         // Leave the films at the last accepted point.
         let _ = eval_all(model, &u, ctx);
-        let reason = step.err().unwrap_or_else(|| "line search found no decrease".into());
-        return Ok(Progress::Done(Err(stall(&u, &states, w, &reason, ctx))));
+        let reason = step.err().unwrap_or(StallReason::NoDecrease);
+        return Ok(Progress::Done(Err(stall(&u, &states, w, reason, ctx))));
     }
-    Ok(Progress::Done(Err(stall(&u, &states, w, "iteration limit", ctx))))
+    Ok(Progress::Done(Err(stall(&u, &states, w, StallReason::IterationLimit(ctx.params.max_iterations), ctx))))
 }
 
-fn stall(u: &[f64], states: &[PadState], w: [f64; 2], reason: &str, ctx: &Ctx<'_>) -> Stall {
+fn stall(u: &[f64], states: &[PadState], w: [f64; 2], reason: StallReason, ctx: &Ctx<'_>) -> Stall {
     let f = total_force(states);
     Stall::new(u, (f[0] + w[0]).hypot(f[1] + w[1]) / ctx.force_scale, reason)
 }
@@ -284,11 +285,11 @@ fn settle_stray_pressure(
 }
 
 /// The Newton step over the journal directions with stiffness and the loaded pads' coordinates.
-fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<Vec<f64>, String> {
+fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<Vec<f64>, StallReason> {
     let n = model.n_dofs();
     let kred = bearing_stiffness(&model.pads, states);
     // Pads are not in equilibrium yet, so a residual along a zero-stiffness direction is allowed here.
-    let (_, held) = journal_step(&kred, &Vector2::new(r[0], r[1]), f64::INFINITY).map_err(|e| e.to_string())?;
+    let (_, held) = journal_step(&kred, &Vector2::new(r[0], r[1]), f64::INFINITY)?;
     let unit = |i: usize| {
         let mut b = vec![0.0; n];
         b[i] = 1.0;
@@ -316,11 +317,7 @@ fn newton_step(model: &BearingModel, states: &[PadState], r: &[f64]) -> Result<V
     let bm = DMatrix::from_fn(n, basis.len(), |i, c| basis[c][i]);
     let kr = bm.transpose() * &k * &bm;
     let rr = bm.transpose() * DVector::from_column_slice(r);
-    let y = kr
-        .lu()
-        .solve(&rr)
-        .filter(|s| s.iter().all(|v| v.is_finite()))
-        .ok_or_else(|| "singular Jacobian".to_string())?;
+    let y = kr.lu().solve(&rr).filter(|s| s.iter().all(|v| v.is_finite())).ok_or(StallReason::SingularJacobian)?;
     Ok((&bm * y).iter().copied().collect())
 }
 

@@ -2,15 +2,17 @@
 //! targets when the films are large), the global residual and its merit, scales, budgets and the solve
 //! context shared by every method.
 
+use crate::bearing::report::warning::Warning;
 use web_time::Instant;
 
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization, FilmSolveInfo};
 
-use crate::bearing::equilibrium::{EquilibriumParams, PadState, SolveReport, FLOATING_SHARE, UNLOADED_SHARE};
+use crate::bearing::equilibrium::state::{EquilibriumParams, PadState, FLOATING_SHARE, UNLOADED_SHARE};
 use crate::bearing::film::coordinates::JOURNAL_DOFS;
 use crate::bearing::film::model::{BearingModel, OperatingPoint, PadModel};
 use crate::bearing::report::error::{Budget, Iteration, SolveError};
+use crate::bearing::report::SolveReport;
 
 /// A force scale for residuals: the larger of the load, the hydrodynamic load at S = 1, and a hydrostatic
 /// scale from the injection pressure.
@@ -160,8 +162,8 @@ pub(super) fn film_eval(
 fn account(ctx: &mut Ctx<'_>, k: usize, info: FilmSolveInfo) {
     ctx.report.film_solves += 1;
     ctx.report.factorizations += info.factorizations;
-    for w in info.warnings {
-        ctx.report.warn(format!("pad {k}: {w}"));
+    for warning in info.warnings {
+        ctx.report.warn(Warning::Film { pad: k, warning });
     }
 }
 
@@ -197,32 +199,6 @@ pub(super) fn relative(r: f64, scale: f64) -> f64 {
 /// The structural force `K_s q` on pad coordinate `d`.
 pub(super) fn structural_force(pm: &PadModel, q: &[f64], d: usize) -> f64 {
     (0..q.len()).map(|e| pm.structure.stiffness[(d, e)] * q[e]).sum()
-}
-
-/// All pads at a journal position, warm-started from `u`; returns pad states and the total film force.
-pub(super) fn solve_all_pads(
-    model: &mut BearingModel,
-    journal: [f64; 2],
-    u: &[f64],
-    ctx: &mut Ctx<'_>,
-) -> Result<(Vec<PadState>, [f64; 2]), (usize, FilmError)> {
-    let mut states = Vec::with_capacity(model.pads.len());
-    let mut f = [0.0, 0.0];
-    for k in 0..model.pads.len() {
-        let q = u[model.dofs.pad_slice(k)].to_vec();
-        let st =
-            crate::bearing::equilibrium::pad::solve_pad(&mut model.pads[k], k, journal, &q, ctx).map_err(|e| (k, e))?;
-        f[0] += st.forces[0];
-        f[1] += st.forces[1];
-        states.push(st);
-    }
-    Ok((states, f))
-}
-
-/// The global vector of a journal position and pad states.
-pub(super) fn assemble_u(model: &BearingModel, journal: [f64; 2], states: &[PadState]) -> Vec<f64> {
-    let qs: Vec<&[f64]> = states.iter().map(|s| s.q.as_slice()).collect();
-    model.dofs.assemble(journal, &qs)
 }
 
 /// Total film force on the journal.

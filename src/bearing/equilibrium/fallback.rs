@@ -14,11 +14,16 @@ use nalgebra::Vector2;
 
 use crate::physics::reynolds::FilmError;
 
-use crate::bearing::equilibrium::eval::{assemble_u, external_load, load_direction, min_film, solve_all_pads, Ctx};
-use crate::bearing::equilibrium::journal::{bearing_stiffness, journal_step, pads_surround, StepFailure};
-use crate::bearing::equilibrium::{Cancel, Found, Stall, SUFFICIENT_DECREASE};
+use crate::bearing::equilibrium::eval::{external_load, load_direction, min_film, Ctx};
+use crate::bearing::equilibrium::journal::{bearing_stiffness, journal_step, pads_surround};
+use crate::bearing::equilibrium::pad::{assemble_u, solve_all_pads};
+use crate::bearing::equilibrium::polar::polar_search;
+use crate::bearing::equilibrium::state::{Found, Stall, SUFFICIENT_DECREASE, TOUCHDOWN_FRACTION};
 use crate::bearing::film::model::BearingModel;
 use crate::bearing::report::error::SolveError;
+use crate::bearing::report::error::StallReason;
+use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::warning::{Method, Warning};
 
 /// Backtracking halvings of a journal Newton step.
 const LINE_SEARCH_HALVINGS: usize = 14;
@@ -27,8 +32,6 @@ const CONTINUATION_STEPS: usize = 12;
 /// Step of the scan along the load, as a fraction of the assembled clearance, and its extent.
 const SCAN_STEP: f64 = 0.1;
 const SCAN_STEPS: usize = 100;
-/// A film thinner than this fraction of Cb when every method has failed means the load cannot be carried.
-pub(super) const TOUCHDOWN_FRACTION: f64 = 0.05;
 
 /// Runs the fallbacks in turn from `u0`.
 pub(super) fn run(
@@ -37,12 +40,11 @@ pub(super) fn run(
     ctx: &mut Ctx<'_>,
     cancel: &dyn Cancel,
 ) -> Result<Found, SolveError> {
-    let named = |r: Result<Found, Stall>, method: &str| r.map(|f| Found { method: method.to_string(), ..f });
-    match named(newton_journal(model, u0, 1.0, ctx, cancel)?, "Newton (pad assembly)") {
+    let named = |r: Result<Found, Stall>, method: Method| r.map(|f| Found { method, ..f });
+    let failed = |method, s: Stall, next| Warning::MethodFailed { method, reason: s.reason, next };
+    match named(newton_journal(model, u0, 1.0, ctx, cancel)?, Method::PadAssemblyNewton) {
         Ok(f) => return Ok(f),
-        Err(s) => ctx
-            .report
-            .warn(format!("Newton from the initial guess failed ({}); trying the polar bracketing search", s.reason)),
+        Err(s) => ctx.report.warn(failed(Method::PadAssemblyNewton, s, Method::PolarSearch)),
     }
     if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
         // Outside the cone of the pads no search can find stiffness: that is the answer.
@@ -54,14 +56,9 @@ pub(super) fn run(
     // outer thermal loop keep their coordinates).
     let mut centred = u0.to_vec();
     centred[..2].fill(0.0);
-    match named(
-        crate::bearing::equilibrium::polar::polar_search(model, &centred, ctx, cancel)?,
-        "polar bracketing search",
-    ) {
+    match named(polar_search(model, &centred, ctx, cancel)?, Method::PolarSearch) {
         Ok(f) => return Ok(f),
-        Err(s) => {
-            ctx.report.warn(format!("polar bracketing search failed ({}); trying a scan along the load", s.reason))
-        }
+        Err(s) => ctx.report.warn(failed(Method::PolarSearch, s, Method::ScanAlongLoad)),
     }
     if let Some((pad, below_n, above_n)) = ctx.force_gap {
         // The force along the load jumps from below it to above it (the ray's bracket): the scan and the
@@ -70,11 +67,9 @@ pub(super) fn run(
         return Err(SolveError::ForceGap { pad, below_n, above_n, load_n: w[0].hypot(w[1]) });
     }
     if let Some(u_scan) = scan_along_load(model, &centred, ctx, cancel)? {
-        match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, "scan along the load + Newton") {
+        match named(newton_journal(model, &u_scan, 1.0, ctx, cancel)?, Method::ScanAlongLoad) {
             Ok(f) => return Ok(f),
-            Err(s) => ctx
-                .report
-                .warn(format!("Newton after the load-direction scan failed ({}); using load continuation", s.reason)),
+            Err(s) => ctx.report.warn(failed(Method::ScanAlongLoad, s, Method::LoadContinuation)),
         }
     }
     continuation(model, &centred, ctx, cancel)
@@ -103,7 +98,7 @@ pub(super) fn newton_journal(
         Err((k, e)) => return Err(ctx.film_error(k, e)),
     };
     let tol = ctx.params.force_tol * ctx.force_scale;
-    let stall = |journal: [f64; 2], r: Vector2<f64>, reason: String, scale: f64| Stall {
+    let stall = |journal: [f64; 2], r: Vector2<f64>, reason: StallReason, scale: f64| Stall {
         journal,
         residual: r.norm() / scale,
         reason,
@@ -117,15 +112,15 @@ pub(super) fn newton_journal(
         ctx.report.residual_history.push(r.norm() / ctx.force_scale);
         u = assemble_u(model, journal, &states);
         if r.norm() <= tol {
-            return Ok(Ok(Found { u, pads: states, force: f, method: String::new() }));
+            return Ok(Ok(Found { u, pads: states, force: f, method: Method::None }));
         }
         let mut step = match journal_step(&bearing_stiffness(&model.pads, &states), &r, tol) {
             Ok((step, _)) => step,
             Err(reason) => {
-                if let StepFailure::NoStiffness { axis_deg, component } = reason {
-                    ctx.no_stiffness = Some((axis_deg, component));
+                if let StallReason::NoStiffnessAlong { axis_deg, component_n } = reason {
+                    ctx.no_stiffness = Some((axis_deg, component_n));
                 }
-                return Ok(Err(stall(journal, r, reason.to_string(), ctx.force_scale)));
+                return Ok(Err(stall(journal, r, reason, ctx.force_scale)));
             }
         };
         let max = ctx.params.max_step * cb;
@@ -152,14 +147,14 @@ pub(super) fn newton_journal(
         let Some((j, s, ff)) = accepted else {
             // Leave the films at the last accepted point.
             let _ = solve_all_pads(model, journal, &u, ctx);
-            return Ok(Err(stall(journal, r, "line search found no decrease".into(), ctx.force_scale)));
+            return Ok(Err(stall(journal, r, StallReason::NoDecrease, ctx.force_scale)));
         };
         journal = j;
         states = s;
         f = ff;
     }
     let r = Vector2::new(f[0] + w[0], f[1] + w[1]);
-    Ok(Err(stall(journal, r, format!("{} iterations", ctx.params.max_iterations), ctx.force_scale)))
+    Ok(Err(stall(journal, r, StallReason::IterationLimit(ctx.params.max_iterations), ctx.force_scale)))
 }
 
 /// Walks the journal along the load direction from the centre in steps of 0.1 Cb until the residual along
@@ -209,18 +204,22 @@ fn continuation(
 ) -> Result<Found, SolveError> {
     let cb = model.assembled_clearance;
     let mut u = centred.to_vec();
-    let mut last = Stall { journal: [0.0; 2], residual: 0.0, reason: String::new() };
+    let mut last = Stall { journal: [0.0; 2], residual: 0.0, reason: StallReason::None };
     for s in 1..=CONTINUATION_STEPS {
         #[allow(clippy::cast_precision_loss)]
         let frac = s as f64 / CONTINUATION_STEPS as f64;
         match newton_journal(model, &u, frac, ctx, cancel)? {
-            Ok(found) if s == CONTINUATION_STEPS => return Ok(Found { method: "load continuation".into(), ..found }),
+            Ok(found) if s == CONTINUATION_STEPS => return Ok(Found { method: Method::LoadContinuation, ..found }),
             Ok(found) => u = found.u,
             Err(stall) => {
                 let (pad, hmin) = min_film(model);
                 if hmin < TOUCHDOWN_FRACTION * cb {
                     let ecc = stall.journal[0].hypot(stall.journal[1]) / cb;
-                    return Err(SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: ecc });
+                    return Err(SolveError::Touchdown {
+                        pad,
+                        h_min_um: crate::units::UM.from_si(hmin),
+                        eccentricity_ratio: ecc,
+                    });
                 }
                 last = stall;
                 break;
@@ -243,7 +242,7 @@ fn continuation(
         return Err(ctx.budget_error(b));
     }
     if let Some((pad, hmin, ecc)) = ctx.closes_before_balance {
-        return Err(SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: ecc });
+        return Err(SolveError::Touchdown { pad, h_min_um: crate::units::UM.from_si(hmin), eccentricity_ratio: ecc });
     }
     if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {
         if !pads_surround(&model.pads, external_load(ctx.op, 1.0)) {
@@ -251,10 +250,7 @@ fn continuation(
         }
         // Pads surround the load, so some pad can carry it: the missing stiffness is where the search
         // stopped, not an answer.
-        last.reason = format!(
-            "{} (pads surround the load, yet the search stopped with no stiffness along {axis_deg:.0}°)",
-            last.reason
-        );
+        last.reason = StallReason::StoppedWithoutStiffness { reason: Box::new(last.reason), axis_deg };
     }
     Err(SolveError::NotConverged { iterations: ctx.report.iterations, residual: last.residual, reason: last.reason })
 }

@@ -11,13 +11,13 @@
 //! no stiffness and no damping, so its coordinates decouple from the journal (only their structural
 //! stiffness and inertia remain), identically on every mesh. The report lists the floating pads.
 
+use crate::bearing::report::warning::Warning;
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization};
 
 use crate::bearing::equilibrium::eval::{external_load, min_film, Ctx};
-use crate::bearing::equilibrium::fallback::TOUCHDOWN_FRACTION;
 use crate::bearing::equilibrium::journal::{nearest_normal, pads_surround};
-use crate::bearing::equilibrium::{Equilibrium, Found, FLOATING_SHARE};
+use crate::bearing::equilibrium::state::{Equilibrium, Found, FLOATING_SHARE, TOUCHDOWN_FRACTION};
 use crate::bearing::film::coordinates::PadDof;
 use crate::bearing::film::model::BearingModel;
 use crate::bearing::report::error::{Iteration, SolveError};
@@ -58,24 +58,15 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
                 damping: nalgebra::DMatrix::zeros(n, n),
             };
             ctx.report.floating_pads.push(k);
-            let what = if model.pads[k].dofs().is_empty() {
-                ""
-            } else {
-                "; its tilt is weakly determined (set where film pressure begins)"
-            };
-            ctx.report.warn(format!(
-                "pad {k} floats: it carries {share:.1e} of the load scale, its film is treated as cavitated and contributes no stiffness or damping{what}"
-            ));
+            ctx.report.warn(Warning::PadFloats { pad: k, share, tilting: !model.pads[k].dofs().is_empty() });
             if ctx.loaded_state_found.contains(&k) {
-                ctx.report.warn(format!(
-                    "pad {k} also has a lightly loaded state near this operating point (found during the search; no equilibrium with it loaded was reached): a pad near a fold, so results here may differ between meshes and with the starting point"
-                ));
+                ctx.report.warn(Warning::PadNearFold { pad: k });
             }
         } else {
             // Full linearisation (stiffness and damping) at the converged state: the films hold it.
             p.lin = film.linearize(&op.film_inputs(k));
             if p.residual > PAD_RESIDUAL_WARNING * ctx.params.pad_tol {
-                ctx.report.warn(format!("pad {k} equilibrium residual {:.1e} (relative) above tolerance", p.residual));
+                ctx.report.warn(Warning::PadResidual { pad: k, residual: p.residual });
             }
         }
     }
@@ -84,16 +75,12 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
     if hmin < op.touchdown_film {
         return Err(SolveError::Touchdown {
             pad: kmin,
-            h_min_um: hmin * 1e6,
+            h_min_um: crate::units::UM.from_si(hmin),
             eccentricity_ratio: u[0].hypot(u[1]) / cb,
         });
     }
     if hmin < TOUCHDOWN_WARNING * op.touchdown_film {
-        ctx.report.warn(format!(
-            "minimum film thickness {:.2} µm on pad {kmin} is close to touchdown ({:.2} µm)",
-            hmin * 1e6,
-            op.touchdown_film * 1e6
-        ));
+        ctx.report.warn(Warning::NearTouchdown { pad: kmin, h_min_m: hmin, touchdown_film_m: op.touchdown_film });
     }
     ctx.report.seconds = ctx.elapsed();
     Ok(Equilibrium { u, pads, film_force: force, report: ctx.report })
@@ -111,7 +98,7 @@ pub(super) fn classify_failure(model: &BearingModel, ctx: &Ctx<'_>, e: SolveErro
     // continuation would have answered had the budget lasted.
     let e = match (e, ctx.closes_before_balance) {
         (SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. }, Some((pad, h, ecc))) => {
-            SolveError::Touchdown { pad, h_min_um: h * 1e6, eccentricity_ratio: ecc }
+            SolveError::Touchdown { pad, h_min_um: crate::units::UM.from_si(h), eccentricity_ratio: ecc }
         }
         (e, _) => e,
     };
@@ -151,14 +138,20 @@ fn classify_contact(model: &BearingModel, e: SolveError) -> SolveError {
         SolveError::NotConverged { .. } | SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. } => {
             let (pad, hmin) = min_film(model);
             if hmin < TOUCHDOWN_FRACTION * cb {
-                SolveError::Touchdown { pad, h_min_um: hmin * 1e6, eccentricity_ratio: journal_ecc() }
+                SolveError::Touchdown {
+                    pad,
+                    h_min_um: crate::units::UM.from_si(hmin),
+                    eccentricity_ratio: journal_ecc(),
+                }
             } else {
                 e
             }
         }
-        SolveError::Film { pad, error: FilmError::Contact { h_min_m, .. } } => {
-            SolveError::Touchdown { pad, h_min_um: h_min_m * 1e6, eccentricity_ratio: journal_ecc() }
-        }
+        SolveError::Film { pad, error: FilmError::Contact { h_min_m, .. } } => SolveError::Touchdown {
+            pad,
+            h_min_um: crate::units::UM.from_si(h_min_m),
+            eccentricity_ratio: journal_ecc(),
+        },
         e => e,
     }
 }

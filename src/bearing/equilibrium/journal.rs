@@ -8,9 +8,10 @@
 
 use nalgebra::{DMatrix, Matrix2, Vector2};
 
-use crate::bearing::equilibrium::PadState;
+use crate::bearing::equilibrium::state::PadState;
 use crate::bearing::film::coordinates::JOURNAL_DOFS;
 use crate::bearing::film::model::PadModel;
+use crate::bearing::report::error::StallReason;
 
 /// Singular values below this fraction of the largest are treated as zero stiffness.
 pub(super) const STIFFNESS_RANK_TOL: f64 = 1e-7;
@@ -44,28 +45,6 @@ pub(super) fn condensed_journal_stiffness(pm: &PadModel, st: &PadState) -> Matri
 /// The bearing's condensed journal stiffness: the sum over pads.
 pub(super) fn bearing_stiffness(pads: &[PadModel], states: &[PadState]) -> Matrix2<f64> {
     pads.iter().zip(states).map(|(pm, st)| condensed_journal_stiffness(pm, st)).sum()
-}
-
-/// Why a journal step could not be taken.
-#[derive(Debug, Clone, PartialEq)]
-pub(super) enum StepFailure {
-    /// A load component of `component` [N] acts along `axis_deg`, where the bearing has no stiffness.
-    NoStiffness {
-        axis_deg: f64,
-        component: f64,
-    },
-    Other(String),
-}
-
-impl std::fmt::Display for StepFailure {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::NoStiffness { axis_deg, component } => {
-                write!(f, "a load component of {component:.3e} N acts along the {axis_deg:.0}° axis, where the bearing has no stiffness")
-            }
-            Self::Other(s) => f.write_str(s),
-        }
-    }
 }
 
 /// The singular directions of a journal stiffness: left `u`, right `vt` rows, values, and which of them
@@ -108,15 +87,15 @@ pub(super) fn journal_step(
     k: &Matrix2<f64>,
     r: &Vector2<f64>,
     tol: f64,
-) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StepFailure> {
+) -> Result<(Vector2<f64>, Option<Vector2<f64>>), StallReason> {
     let Some(dirs) = Directions::of(k) else {
-        return Err(StepFailure::Other("non-finite bearing stiffness or failed singular value decomposition".into()));
+        return Err(StallReason::NonFiniteStiffness);
     };
     if dirs.soft == [true, true] {
         if r.norm() > 10.0 * tol {
-            return Err(StepFailure::NoStiffness { axis_deg: axis_deg(r), component: r.norm() });
+            return Err(StallReason::NoStiffnessAlong { axis_deg: axis_deg(r), component_n: r.norm() });
         }
-        return Err(StepFailure::Other("the bearing has no stiffness at this position".into()));
+        return Err(StallReason::NoStiffness);
     }
     let mut step = Vector2::zeros();
     let mut held = None;
@@ -126,7 +105,7 @@ pub(super) fn journal_step(
         if !dirs.soft[i] {
             step += vi * (ri / dirs.sigma[i]);
         } else if ri.abs() > 10.0 * tol {
-            return Err(StepFailure::NoStiffness { axis_deg: axis_deg(&ui), component: ri.abs() });
+            return Err(StallReason::NoStiffnessAlong { axis_deg: axis_deg(&ui), component_n: ri.abs() });
         } else {
             held = Some(vi);
         }

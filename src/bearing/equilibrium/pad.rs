@@ -19,11 +19,11 @@ use nalgebra::{DMatrix, DVector};
 use crate::physics::reynolds::FilmError;
 
 use crate::bearing::equilibrium::eval::{eval_pad, pad_scales, relative, structural_force, Ctx};
-use crate::bearing::equilibrium::{
+use crate::bearing::equilibrium::state::{
     PadState, NO_PRESSURE_SHARE, ONSET_FIRST_STEP, ONSET_WIDTH, SUFFICIENT_DECREASE, UNLOADED_SHARE,
 };
 use crate::bearing::film::coordinates::{PadDof, JOURNAL_DOFS};
-use crate::bearing::film::model::PadModel;
+use crate::bearing::film::model::{BearingModel, PadModel};
 
 /// Solves one pad's coordinates for a fixed journal position (warm-started from `q`).
 pub(super) fn solve_pad(
@@ -53,6 +53,31 @@ pub(super) fn solve_pad(
 
 /// Pad coordinates that keep the film as it was after the journal moves by `de`: the least-squares
 /// solution of `Φ_p Δq = −Φ_j Δe` over the film nodes (a tilt follows a transverse journal motion exactly).
+/// All pads at a journal position, warm-started from `u`; returns pad states and the total film force.
+pub(super) fn solve_all_pads(
+    model: &mut BearingModel,
+    journal: [f64; 2],
+    u: &[f64],
+    ctx: &mut Ctx<'_>,
+) -> Result<(Vec<PadState>, [f64; 2]), (usize, FilmError)> {
+    let mut states = Vec::with_capacity(model.pads.len());
+    let mut f = [0.0, 0.0];
+    for k in 0..model.pads.len() {
+        let q = u[model.dofs.pad_slice(k)].to_vec();
+        let st = solve_pad(&mut model.pads[k], k, journal, &q, ctx).map_err(|e| (k, e))?;
+        f[0] += st.forces[0];
+        f[1] += st.forces[1];
+        states.push(st);
+    }
+    Ok((states, f))
+}
+
+/// The global vector of a journal position and pad states.
+pub(super) fn assemble_u(model: &BearingModel, journal: [f64; 2], states: &[PadState]) -> Vec<f64> {
+    let qs: Vec<&[f64]> = states.iter().map(|s| s.q.as_slice()).collect();
+    model.dofs.assemble(journal, &qs)
+}
+
 /// A warm start for a pad whose coordinates the film does not determine.
 pub(super) fn follow_journal(pm: &PadModel, q: &[f64], de: [f64; 2]) -> Vec<f64> {
     let shapes = &pm.film.geom.shapes;

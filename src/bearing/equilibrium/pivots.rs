@@ -17,15 +17,17 @@
 //! film does not do at equilibrium) or carries less than [`FLOOR`] of the load is given the stiffness at
 //! that floor, with a warning. The iteration count and any non-convergence are in the solve report.
 
+use crate::bearing::report::error::InternalError;
 use crate::model::{Case, LoadSpec};
 use crate::physics::hertz::{ContactState, PivotContact};
 
-use crate::bearing::equilibrium::{solve_equilibrium, Cancel, Equilibrium, EquilibriumParams};
+use crate::bearing::equilibrium::solve::solve_equilibrium;
+use crate::bearing::equilibrium::state::{Equilibrium, EquilibriumParams, PadState};
 use crate::bearing::film::coordinates::{Coord, PadDof};
 use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::report::error::SolveError;
-use crate::bearing::solution::assemble::assemble_solution;
-use crate::bearing::solution::Solution;
+use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::warning::Warning;
 
 /// Relative change of every secant stiffness at which the load iteration stops.
 pub const RTOL: f64 = 1e-6;
@@ -52,11 +54,7 @@ fn contact_pads(model: &BearingModel, case: &Case) -> Result<Vec<ContactPad>, So
         let local = model.pads.get(pad).and_then(|pm| pm.structure.dofs.iter().position(|d| *d == PadDof::PivotRadial));
         match (global, local) {
             (Some(_), Some(local)) => out.push(ContactPad { pad, contact, local }),
-            _ => {
-                return Err(SolveError::Invalid(format!(
-                    "pad {pad}: a pivot contact without the radial pivot coordinate in the model"
-                )))
-            }
+            _ => return Err(SolveError::Internal(InternalError::ContactWithoutCoordinate { pad })),
         }
     }
     Ok(out)
@@ -94,12 +92,12 @@ fn accelerated(k: f64, mapped: f64, previous: Option<(f64, f64)>) -> f64 {
 /// carrying nothing; on 40 mm balls in 41 mm sockets 30 iterations without converging).
 fn pivot_load(case: &Case, c: &ContactPad, eq: &Equilibrium) -> f64 {
     let theta = case.bearing.pads[c.pad].pivot_rad;
-    let f = eq.pads.get(c.pad).map_or([0.0, 0.0], crate::bearing::equilibrium::PadState::journal_force);
+    let f = eq.pads.get(c.pad).map_or([0.0, 0.0], PadState::journal_force);
     -(f[0] * theta.cos() + f[1] * theta.sin())
 }
 
 fn state(c: &ContactPad, load_n: f64) -> Result<ContactState, SolveError> {
-    c.contact.state(load_n).map_err(|e| SolveError::Invalid(format!("pad {} pivot contact: {e}", c.pad)))
+    c.contact.state(load_n).map_err(|error| SolveError::PivotContact { pad: c.pad, error })
 }
 
 /// The load iteration of a case's Hertz pivots (module docs): each contact pad's secant spring, the previous
@@ -116,9 +114,11 @@ pub struct HertzPivots {
     /// Contact states at the loads of the last equilibrium given to [`HertzPivots::update`].
     states: Vec<ContactState>,
     /// Warnings of that last update (loads under the floor).
-    warnings: Vec<String>,
+    warnings: Vec<Warning>,
     /// Load steps taken ([`HertzPivots::update`] calls).
     iterations: usize,
+    /// The last load step changed no secant stiffness by [`RTOL`] or more.
+    converged: bool,
 }
 
 impl HertzPivots {
@@ -126,8 +126,7 @@ impl HertzPivots {
     /// `None` when no pad has a contact.
     ///
     /// # Errors
-    /// [`SolveError::Invalid`] for a contact pad without its radial pivot coordinate, or a contact outside
-    /// Hertz theory at the static load.
+    /// [`SolveError::PivotContact`] for a contact outside Hertz theory at the static load.
     pub fn new(model: &BearingModel, case: &Case) -> Result<Option<Self>, SolveError> {
         let pads = contact_pads(model, case)?;
         if pads.is_empty() {
@@ -148,6 +147,7 @@ impl HertzPivots {
             states: Vec::new(),
             warnings: Vec::new(),
             iterations: 0,
+            converged: false,
         }))
     }
 
@@ -164,7 +164,7 @@ impl HertzPivots {
     /// installed secants and the ones the loads give (the iteration has converged when it is small).
     ///
     /// # Errors
-    /// [`SolveError::Invalid`] for a contact outside Hertz theory at its load.
+    /// [`SolveError::PivotContact`] for a contact outside Hertz theory at its load.
     pub fn update(&mut self, case: &Case, eq: &Equilibrium) -> Result<f64, SolveError> {
         self.iterations += 1;
         self.states.clear();
@@ -173,10 +173,12 @@ impl HertzPivots {
         for ((c, k), prev) in self.pads.iter().zip(self.secant.iter_mut()).zip(self.previous.iter_mut()) {
             let load = pivot_load(case, c, eq);
             if load < self.floor {
-                self.warnings.push(format!(
-                    "pad {}: pivot load {load:.4e} N below {FLOOR} of the static load; its contact stiffness is taken at {:.4e} N",
-                    c.pad, self.floor
-                ));
+                self.warnings.push(Warning::PivotLoadBelowFloor {
+                    pad: c.pad,
+                    load_n: load,
+                    floor_n: self.floor,
+                    floor_share: FLOOR,
+                });
             }
             let s = state(c, load.max(self.floor))?;
             let mapped = s.secant_n_per_m();
@@ -186,6 +188,7 @@ impl HertzPivots {
             *k = next;
             self.states.push(s);
         }
+        self.converged = change < RTOL;
         Ok(change)
     }
 
@@ -204,31 +207,28 @@ impl HertzPivots {
         }
     }
 
-    /// Each contact pad's state in the solution (`PadResult::pivot_contact`), the iteration in its report's
-    /// method, and its warnings; `converged`: whether the loads converged (a warning otherwise).
-    pub fn annotate(&self, sol: &mut Solution, converged: bool) {
-        for (c, s) in self.pads.iter().zip(&self.states) {
-            if let Some(p) = sol.pads.get_mut(c.pad) {
-                p.pivot_contact = Some(*s);
-            }
+    /// Each contact pad's state at the loads of the last equilibrium given to [`HertzPivots::update`].
+    pub fn states(&self) -> impl Iterator<Item = (usize, ContactState)> + '_ {
+        self.pads.iter().zip(&self.states).map(|(c, s)| (c.pad, *s))
+    }
+
+    /// The warnings of the last load step, and one when the loads have not converged.
+    #[must_use]
+    pub fn warnings(&self) -> Vec<Warning> {
+        let mut w = self.warnings.clone();
+        if !self.converged {
+            w.push(Warning::PivotLoadsNotConverged { iterations: MAX_ITERATIONS, tolerance: RTOL });
         }
-        let r = &mut sol.report;
-        r.method = format!("{}; Hertz pivots: {} load iteration(s)", r.method, self.iterations);
-        if !converged {
-            r.warn(format!("Hertz pivot loads not converged in {MAX_ITERATIONS} iterations (relative stiffness change above {RTOL})"));
-        }
-        for w in &self.warnings {
-            r.warn(w.clone());
-        }
+        w
     }
 }
 
-/// Solves the operating point with each Hertz pivot's stiffness at its pad's load (module docs), and
-/// assembles the solution with the tangent stiffnesses; each contact pad's state is in
-/// `PadResult::pivot_contact`.
+/// Solves the operating point with each Hertz pivot's stiffness at its pad's load (module docs): the
+/// equilibrium, and the load iteration (`None` without pivot contacts) whose states and tangents the
+/// solution takes ([`crate::bearing::solution::assemble::assemble_solution`]).
 ///
 /// # Errors
-/// The equilibrium's errors; [`SolveError::Invalid`] for a contact outside Hertz theory at its load.
+/// The equilibrium's errors; [`SolveError::PivotContact`] for a contact outside Hertz theory at its load.
 pub fn solve(
     model: &mut BearingModel,
     case: &Case,
@@ -236,14 +236,13 @@ pub fn solve(
     start: Option<&[f64]>,
     params: EquilibriumParams,
     cancel: &dyn Cancel,
-) -> Result<Solution, SolveError> {
+) -> Result<(Equilibrium, Option<HertzPivots>), SolveError> {
     let Some(mut pivots) = HertzPivots::new(model, case)? else {
-        let eq = solve_equilibrium(model, op, params, start, cancel)?;
-        return Ok(assemble_solution(model, case, op, &eq));
+        return Ok((solve_equilibrium(model, op, params, start, cancel)?, None));
     };
     let mut earlier: Option<crate::bearing::report::SolveReport> = None;
     let mut u: Option<Vec<f64>> = start.map(<[f64]>::to_vec);
-    let (eq, converged) = loop {
+    let eq = loop {
         pivots.install(model);
         let mut eq = solve_equilibrium(model, op, params, u.as_deref(), cancel)?;
         let change = pivots.update(case, &eq)?;
@@ -251,14 +250,11 @@ pub fn solve(
             eq.report.add_earlier(r);
         }
         if change < RTOL || pivots.iterations() >= MAX_ITERATIONS {
-            break (eq, change < RTOL);
+            break eq;
         }
         u = Some(eq.u.clone());
         earlier = Some(eq.report);
     };
     // `eq` was solved with the previous secant stiffnesses; the states hold the loads it produced.
-    pivots.install_tangents(model);
-    let mut sol = assemble_solution(model, case, op, &eq);
-    pivots.annotate(&mut sol, converged);
-    Ok(sol)
+    Ok((eq, Some(pivots)))
 }

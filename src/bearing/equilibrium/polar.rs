@@ -15,11 +15,14 @@
 //! Both roots are bracketed, so the search converges for any continuous restoring force law (intermediate
 //! value theorem), superlinearly where the law is smooth. Each evaluation is a pad assembly.
 
-use crate::bearing::equilibrium::eval::{assemble_u, external_load, min_film, solve_all_pads, Ctx};
-use crate::bearing::equilibrium::fallback::TOUCHDOWN_FRACTION;
-use crate::bearing::equilibrium::{Cancel, Found, PadState, Stall, UNLOADED_SHARE};
+use crate::bearing::equilibrium::eval::{external_load, min_film, Ctx};
+use crate::bearing::equilibrium::pad::{assemble_u, solve_all_pads};
+use crate::bearing::equilibrium::state::{Found, PadState, Stall, TOUCHDOWN_FRACTION, UNLOADED_SHARE};
 use crate::bearing::film::model::BearingModel;
 use crate::bearing::report::error::SolveError;
+use crate::bearing::report::error::StallReason;
+use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::warning::Method;
 use crate::physics::reynolds::FilmError;
 
 /// First angular step from the load direction [rad] (doubled until the bracket is found), and the largest
@@ -112,17 +115,9 @@ impl Search<'_, '_, '_> {
     fn ray_without_root(&mut self, psi: f64) -> Result<Result<Found, Stall>, SolveError> {
         if let Some((pad, g_before, g_after)) = self.jump {
             self.ctx.gap_2d = Some((pad, psi, g_before, g_after));
-            return Ok(Err(Stall {
-                journal: [0.0; 2],
-                residual: f64::INFINITY,
-                reason: "the force along a ray inside the angular bracket jumps over zero".into(),
-            }));
+            return Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: StallReason::RayForceJumps }));
         }
-        Ok(Err(Stall {
-            journal: [0.0; 2],
-            residual: f64::INFINITY,
-            reason: "a ray without a restoring root inside the angular bracket".into(),
-        }))
+        Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: StallReason::RayWithoutRoot }))
     }
 
     /// The ray's root to a tolerance of [`RAY_TOL_FRACTION`] of `transverse_scale` [N]; solved again to a tenth
@@ -282,10 +277,9 @@ fn search(
     cancel: &dyn Cancel,
 ) -> Result<Result<Found, Stall>, SolveError> {
     let w = external_load(ctx.op, 1.0);
-    let stall =
-        |reason: &str| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: reason.to_string() }));
+    let stall = |reason: StallReason| Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason }));
     if w[0].hypot(w[1]) <= 0.0 {
-        return stall("no load to search along");
+        return stall(StallReason::NoLoad);
     }
     let psi_w = w[1].atan2(w[0]);
     let tol = ctx.params.force_tol * ctx.force_scale;
@@ -297,9 +291,9 @@ fn search(
     let Some(mid) = search.ray_to(psi_w, guess, load, cancel)? else {
         if let Some((pad, g_before, g_after)) = search.jump {
             search.ctx.force_gap = Some((pad, load - g_before, load - g_after));
-            return stall("the force along the load jumps across the load");
+            return stall(StallReason::ForceJumpsAcrossLoad);
         }
-        return stall("no restoring root along the load");
+        return stall(StallReason::NoRootAlongLoad);
     };
     guess = mid.s;
     search.ctx.report.iterations += 1;
@@ -319,7 +313,7 @@ fn search(
             break;
         }
         if step > MAX_ANGLE {
-            return stall("no sign change of the transverse residual within 90° of the load");
+            return stall(StallReason::NoTransverseSignChange);
         }
         let psi = if up { psi_w + step } else { psi_w - step };
         search.ctx.report.iterations += 1;
@@ -340,7 +334,7 @@ fn search(
                 let residual = r.g.hypot(r.h) / search.ctx.force_scale;
                 search.ctx.report.residual_history.push(residual);
                 let pads = r.states.clone();
-                return Ok(Ok(Found { u: r.u.clone(), pads, force: r.force, method: String::new() }));
+                return Ok(Ok(Found { u: r.u.clone(), pads, force: r.force, method: Method::None }));
             }
         }
         let (Some(pa), Some(pb)) = (ra.as_ref(), rb.as_ref()) else { break };
@@ -350,7 +344,7 @@ fn search(
             // there beyond its fold, no ray in between balances the load.
             if let Some(pad) = switching_pad(search.ctx, (&pa.states, pa.thinnest.1), (&pb.states, pb.thinnest.1), cb) {
                 search.ctx.gap_2d = Some((pad, 0.5 * (a + b), pa.h, pb.h));
-                return stall("the force across the balancing rays jumps across zero");
+                return stall(StallReason::BalancingRaysJump);
             }
         }
         if (b - a).abs() <= 1e-14 {
@@ -380,9 +374,5 @@ fn search(
         search.ctx.closes_before_balance = Some((r.thinnest.0, r.thinnest.1, r.s / cb));
     }
     let best = best.map_or(f64::INFINITY, |r| r.g.hypot(r.h));
-    Ok(Err(Stall {
-        journal: [0.0; 2],
-        residual: best / search.ctx.force_scale,
-        reason: "angular bracket exhausted".into(),
-    }))
+    Ok(Err(Stall { journal: [0.0; 2], residual: best / search.ctx.force_scale, reason: StallReason::BracketExhausted }))
 }

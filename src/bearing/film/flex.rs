@@ -11,6 +11,7 @@
 //! position within the arc, material and count. Pads whose keys match up to round-off ([`ModeKey::matches`]; the usual
 //! identical pads at other angles) share one computation.
 
+use crate::bearing::report::error::ElasticWork;
 use std::sync::Arc;
 
 use serde::Serialize;
@@ -81,7 +82,7 @@ fn material(case: &Case, k: usize) -> Elastic {
 /// Solid and `bending` modes of pad k on `grid` with `layers` element layers, through the cache.
 ///
 /// # Errors
-/// [`SolveError::Invalid`] naming the pad if the elastic model fails.
+/// [`SolveError::PadElastic`] naming the pad if the elastic model fails.
 pub fn pad_solid_modes(
     case: &Case,
     k: usize,
@@ -108,7 +109,7 @@ pub fn pad_solid_modes(
     };
     let support = PivotSupport { pivot_rad: pad.pivot_rad, lever: bore + pad.thickness_m, arc_rad: pad.arc_rad };
     let modes = PadModes::cached(cache, key, || PadModes::compute(&solid, support, &mat, bending, grid.half))
-        .map_err(|e| SolveError::Invalid(format!("pad {k} elastic modes: {e}")))?;
+        .map_err(|error| SolveError::PadElastic { pad: k, what: ElasticWork::Modes, error })?;
     Ok(FlexPad { solid, modes })
 }
 

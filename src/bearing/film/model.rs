@@ -5,10 +5,12 @@
 //! model's [`DofMap`] (see [`crate::bearing::film::coordinates`]). Changing the operating point (speed, load, viscosity,
 //! injection) never rebuilds this.
 
+use crate::bearing::report::error::InternalError;
 use std::sync::Arc;
 
-use crate::mesh::grid::{graded_nodes, PadGrid, Refinement};
+use crate::mesh::grid::{graded_nodes, PadGrid};
 use crate::mesh::pad3d::PadMesh;
+use crate::model::budget::orifice_zones;
 use crate::model::Cavitation;
 use crate::model::{Case, LoadSpec};
 use crate::physics::orifice::LocalOrifice;
@@ -96,18 +98,14 @@ impl BearingModel {
     /// If a structure's coordinates differ from the model's (they shape the films: rebuild the model).
     pub fn set_structure(&mut self, structures: Vec<PadStructure>) -> Result<(), SolveError> {
         if structures.len() != self.pads.len() {
-            return Err(SolveError::Invalid(format!(
-                "{} pad structures for a model of {} pads",
-                structures.len(),
-                self.pads.len()
-            )));
+            return Err(SolveError::Internal(InternalError::StructureCount {
+                structures: structures.len(),
+                pads: self.pads.len(),
+            }));
         }
         for (k, (pm, s)) in self.pads.iter_mut().zip(structures).enumerate() {
             if s.dofs != pm.structure.dofs {
-                return Err(SolveError::Invalid(format!(
-                    "pad {k}: coordinates {:?} differ from the model's {:?}",
-                    s.dofs, pm.structure.dofs
-                )));
+                return Err(SolveError::Internal(InternalError::StructureCoordinates { pad: k }));
             }
             pm.structure = s;
         }
@@ -133,31 +131,16 @@ impl BearingModel {
     }
 }
 
-/// The graded grid of pad k: refined around its orifices, halved when the case uses the half model.
+/// The graded grid of pad k: refined around its orifices ([`orifice_zones`], the zones the node budget of
+/// validation counts), halved when the case uses the half model.
 #[must_use]
 pub fn pad_grid(case: &Case, k: usize) -> PadGrid {
     let b = &case.bearing;
     let pad = &b.pads[k];
     let r = b.journal_radius_m;
     let m = &case.mesh;
-    let zones_s: Vec<Refinement> = pad
-        .orifices
-        .iter()
-        .map(|o| Refinement {
-            centre: (o.angle_rad - pad.leading_edge_rad) * r,
-            half_width: 0.6 * o.diameter_m,
-            fine: o.diameter_m / m.orifice_elements as f64,
-        })
-        .collect();
-    let zones_z: Vec<Refinement> = pad
-        .orifices
-        .iter()
-        .map(|o| Refinement {
-            centre: o.axial_m,
-            half_width: 0.6 * o.diameter_m,
-            fine: o.diameter_m / m.orifice_elements as f64,
-        })
-        .collect();
+    // The same refinement zones the node budget counts (one place decides the grid).
+    let (zones_s, zones_z) = orifice_zones(pad, r, m.orifice_elements);
     let periodic = pad.is_full_circle();
     let s = graded_nodes(0.0, pad.arc_rad * r, m.circumferential_elements, &zones_s);
     let half_len = 0.5 * b.length_m;

@@ -278,7 +278,7 @@ mod tests {
             valve: Servovalve {
                 natural_frequency_rad_s: std::f64::consts::TAU * 120.0,
                 damping_ratio: 0.7,
-                flow_gain: flow_gain(5e-3 / 60.0, 10.0, 70e5, 40e5, 0.0),
+                flow_gain: flow_gain(crate::units::L_PER_MIN.to_si(5.0), 10.0, 70e5, 40e5, 0.0),
                 flow_pressure_coefficient: 2e-12,
                 leakage: 0.0,
                 full_scale_v: 10.0,

@@ -27,6 +27,7 @@
 //! At s = 0 this is the change of the static film force on a held journal with the pads re-equilibrated;
 //! as |s| → ∞ the pads' inertia holds them and `F_h → B_h` (tests for both limits).
 
+use crate::bearing::report::error::Unsupported;
 use nalgebra::{Complex, DMatrix};
 
 use crate::physics::hydraulics::NozzleCoupling;
@@ -54,13 +55,14 @@ pub fn injection_coupling(
         for &p in pads {
             match owner.get_mut(p) {
                 None => {
-                    return Err(SolveError::Invalid(format!(
-                        "port {k} feeds pad {p}, but the bearing has {} pads",
-                        model.pads.len()
-                    )))
+                    return Err(SolveError::Unsupported(Unsupported::PortPadMissing {
+                        port: k,
+                        pad: p,
+                        pads: model.pads.len(),
+                    }))
                 }
                 Some(Some(other)) => {
-                    return Err(SolveError::Invalid(format!("pad {p} is fed by ports {other} and {k}")))
+                    return Err(SolveError::Unsupported(Unsupported::PadFedTwice { pad: p, first: *other, second: k }))
                 }
                 Some(slot) => *slot = Some(k),
             }
@@ -117,7 +119,8 @@ pub fn dynamic_stiffness(k: &DMatrix<f64>, c: &DMatrix<f64>, m: &DMatrix<f64>, s
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::bearing::equilibrium::{solve_equilibrium, Equilibrium, EquilibriumParams, NoCancel};
+    use crate::bearing::equilibrium::{solve_equilibrium, Equilibrium, EquilibriumParams};
+    use crate::bearing::report::progress::NoCancel;
     use crate::bearing::solution::coefficients::full_coefficients;
     use crate::model::{load_case, Case, LoadSpec};
 
@@ -181,10 +184,10 @@ pub(crate) mod tests {
             e.film_force
         };
         let (fp, fm) = (force(p0 + dp_bar), force(p0 - dp_bar));
-        let fd_y = (fp[1] - fm[1]) / (2.0 * dp_bar * 1e5);
+        let fd_y = (fp[1] - fm[1]) / (2.0 * crate::units::BAR.to_si(dp_bar));
         // The pads face each other along y: the x force is zero by symmetry, on both paths.
         for a in 0..2 {
-            let fd = (fp[a] - fm[a]) / (2.0 * dp_bar * 1e5);
+            let fd = (fp[a] - fm[a]) / (2.0 * crate::units::BAR.to_si(dp_bar));
             let g = g3[(a, 0)];
             if a == 0 {
                 assert!(fd.abs() < 1e-9 * fd_y.abs() && g.norm() < 1e-9 * fd_y.abs(), "x: {g} vs {fd}");

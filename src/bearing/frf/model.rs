@@ -1,7 +1,7 @@
 //! The FRF job: case → equilibrium → linearised bearing ([`BearingDynamics`]) → the FRFs over a band.
 //!
 //! Lifetimes: the equilibrium and the bearing's linearisation (full coefficients and the injection influence
-//! fields) are computed once ([`FrfModel::new`]); the hydraulics (valve, lines, rig) are cheap and rebuilt
+//! fields) are computed once by the FRF stage ([`FrfModel::linearise`]); the hydraulics (valve, lines, rig) are cheap and rebuilt
 //! from the case for every evaluation ([`FrfModel::sweep`]), so sliders on air fraction, line length or
 //! valve bandwidth re-run only the frequency loop.
 //!
@@ -9,6 +9,7 @@
 //! Bernoulli at the supply and return pressures; each line's bulk modulus with entrained air at the port's
 //! static pressure (`β_air = 1.4 p_abs`, adiabatic); laminar line friction at the injected oil's viscosity.
 
+use crate::bearing::report::error::SingularSystem;
 use serde::{Deserialize, Serialize};
 use web_time::Instant;
 
@@ -24,10 +25,8 @@ use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::frf::dynamics::{BearingDynamics, FrfPoint, Hydraulics, Port, Rig, ShakerPoint};
 use crate::bearing::frf::injection::injection_coupling;
 use crate::bearing::report::error::SolveError;
-use crate::bearing::report::progress::NoCancel;
 use crate::bearing::report::SolveReport;
 use crate::bearing::solution::Solution;
-use crate::bearing::stages::{Request, StageId, Stages};
 
 /// Atmospheric pressure [Pa], for the air's absolute pressure.
 const ATMOSPHERE: f64 = 101_325.0;
@@ -71,28 +70,7 @@ pub struct FrfOperatingPoint {
     pub supply_pressure_bar: f64,
 }
 
-fn no_hydraulics() -> SolveError {
-    SolveError::Invalid("the case has no [hydraulics] section (valve, ports, lines): nothing to compute FRFs of".into())
-}
-
 impl FrfModel {
-    /// Solves the isothermal equilibrium of `case` and linearises the bearing for its ports: the FRF stage
-    /// ([`crate::bearing::stages::frf`]) run on its own.
-    ///
-    /// # Errors
-    /// No `[hydraulics]`, or the equilibrium failed.
-    pub fn new(case: &Case) -> Result<Self, SolveError> {
-        case.hydraulics.as_ref().ok_or_else(no_hydraulics)?;
-        let req = Request {
-            case: case.clone(),
-            wanted: vec![StageId::Frf],
-            frequency_ratios: Vec::new(),
-            speeds_rpm: Vec::new(),
-        };
-        let outcome = Stages::new().run(&req, &NoCancel)?;
-        outcome.get::<Self>(StageId::Frf).map(|m| Self::clone(&m)).ok_or_else(no_hydraulics)
-    }
-
     /// Linearises the bearing of `model` at the equilibrium `sol` (full `K`, `C` from it, the pads' inertia
     /// `m`) for the ports (`ports[k]`: the pads port k feeds), at the operating point `op`.
     ///
@@ -177,11 +155,10 @@ impl FrfModel {
     /// # Errors
     /// No `[hydraulics]`; a frequency where the coupled system is singular.
     pub fn sweep(&self, case: &Case, frequencies_hz: &[f64]) -> Result<FrfSweep, SolveError> {
-        let h = case.hydraulics.as_ref().ok_or_else(no_hydraulics)?;
+        let h = case.hydraulics.as_ref().ok_or(SolveError::NoHydraulics)?;
         let hyd = self.hydraulics(h);
         let t0 = Instant::now();
-        let singular =
-            |f: f64| SolveError::Invalid(format!("the coupled valve–line–bearing system is singular at {f} Hz"));
+        let singular = |frequency_hz: f64| SolveError::Singular(SingularSystem::ValveLineBearing { frequency_hz });
         let points = frequencies_hz
             .iter()
             .map(|&f| self.dynamics.frf(&hyd, f).ok_or_else(|| singular(f)))
@@ -246,7 +223,7 @@ mod tests {
     #[test]
     fn rig_resonance_and_supply_pressure_trends() {
         let c = case(&[]);
-        let m = FrfModel::new(&c).unwrap();
+        let m = crate::bearing::Stages::new().frf(&c, &crate::bearing::NoCancel).unwrap();
         let f = band(10.0, 200.0, 400);
         let s = m.sweep(&c, &f).unwrap();
         let (f_res, _) = peak(s.shaker.as_ref().unwrap());

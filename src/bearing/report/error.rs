@@ -1,6 +1,9 @@
 //! Errors of a bearing solve. Each says what failed and where; none is ever replaced by NaN.
 
+use crate::fem::SolverError;
 use crate::model::CaseError;
+use crate::physics::hertz::HertzError;
+use crate::physics::pad_elastic::ElasticError;
 use crate::physics::reynolds::FilmError;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -103,7 +106,7 @@ pub enum SolveError {
     #[error(
         "equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})"
     )]
-    NotConverged { iterations: usize, residual: f64, reason: String },
+    NotConverged { iterations: usize, residual: f64, reason: StallReason },
     /// An iteration used up its iteration or time budget before converging.
     #[error(
         "{what} not converged: stopped by its {budget} after {iterations} iterations ({seconds:.1} s); {} {residual:.2e}",
@@ -112,6 +115,161 @@ pub enum SolveError {
     BudgetExceeded { what: Iteration, budget: Budget, iterations: usize, seconds: f64, residual: f64 },
     #[error("solve cancelled")]
     Cancelled,
+    /// A pad's thermal system (film energy, pad conduction) could not be factorised or solved.
+    #[error("pad {pad} {system}: {error}")]
+    PadThermal { pad: usize, system: ThermalSystem, error: SolverError },
+    /// A pad's elastic solid (its bending modes, its thermal growth) could not be built or solved.
+    #[error("pad {pad} {what}: {error}")]
+    PadElastic { pad: usize, what: ElasticWork, error: ElasticError },
+    /// A Hertz pivot contact outside the theory's range at the load its pad carries.
+    #[error("pad {pad} pivot contact: {error}")]
+    PivotContact { pad: usize, error: HertzError },
+    /// A coupled system of the bearing is singular.
     #[error("{0}")]
-    Invalid(String),
+    Singular(SingularSystem),
+    /// The thermal loop computed a non-finite film temperature.
+    #[error("non-finite film temperature in the thermal loop")]
+    NonFiniteTemperature,
+    /// The case asks for something this model of it cannot do (validation lets it through because it depends
+    /// on what is computed).
+    #[error("{0}")]
+    Unsupported(Unsupported),
+    /// FRFs of a case without a `[hydraulics]` section.
+    #[error("the case has no [hydraulics] section (valve, ports, lines): nothing to compute FRFs of")]
+    NoHydraulics,
+    /// A broken invariant of the solver (a bug): what was expected.
+    #[error("internal error: {0}")]
+    Internal(InternalError),
+}
+
+/// Why a method of the equilibrium stopped short of the tolerance.
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StallReason {
+    #[error("film closes at the start")]
+    FilmClosesAtStart,
+    #[error("{0} iterations")]
+    IterationLimit(usize),
+    #[error("line search found no decrease")]
+    NoDecrease,
+    #[error("singular Jacobian")]
+    SingularJacobian,
+    /// A load component of `component_n` [N] acts along `axis_deg`, where the bearing has no stiffness.
+    #[error(
+        "a load component of {component_n:.3e} N acts along the {axis_deg:.0}° axis, where the bearing has no stiffness"
+    )]
+    NoStiffnessAlong { axis_deg: f64, component_n: f64 },
+    #[error("the bearing has no stiffness at this position")]
+    NoStiffness,
+    #[error("non-finite bearing stiffness or failed singular value decomposition")]
+    NonFiniteStiffness,
+    #[error("the force along a ray inside the angular bracket jumps over zero")]
+    RayForceJumps,
+    #[error("a ray without a restoring root inside the angular bracket")]
+    RayWithoutRoot,
+    #[error("no load to search along")]
+    NoLoad,
+    #[error("the force along the load jumps across the load")]
+    ForceJumpsAcrossLoad,
+    #[error("no restoring root along the load")]
+    NoRootAlongLoad,
+    #[error("no sign change of the transverse residual within 90° of the load")]
+    NoTransverseSignChange,
+    #[error("the force across the balancing rays jumps across zero")]
+    BalancingRaysJump,
+    #[error("angular bracket exhausted")]
+    BracketExhausted,
+    /// The search stopped on a direction without stiffness although the pads surround the load.
+    #[error("{reason} (pads surround the load, yet the search stopped with no stiffness along {axis_deg:.0}°)")]
+    StoppedWithoutStiffness { reason: Box<StallReason>, axis_deg: f64 },
+    /// No method was tried (an empty stall).
+    #[error("no method tried")]
+    None,
+}
+
+/// A pad's thermal system.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ThermalSystem {
+    /// Film energy (with pad conduction for BC2/BC3), assembled and factorised.
+    Assembly,
+    /// Its solve in an outer iteration.
+    Solve,
+    /// The pad's conduction with the film temperature on its face (BC1).
+    Conduction,
+}
+
+impl std::fmt::Display for ThermalSystem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Assembly => "thermal system",
+            Self::Solve => "thermal solve",
+            Self::Conduction => "conduction",
+        })
+    }
+}
+
+/// What a pad's elastic solid was computing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ElasticWork {
+    Modes,
+    ThermalGrowth,
+}
+
+impl std::fmt::Display for ElasticWork {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Modes => "elastic modes",
+            Self::ThermalGrowth => "thermal growth",
+        })
+    }
+}
+
+/// A coupled system of the bearing that is singular.
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SingularSystem {
+    #[error("the inlet mixing / journal balance is singular (no oil flows through the bearing?)")]
+    InletMixing,
+    #[error("the coupled valve–line–bearing system is singular at {frequency_hz} Hz")]
+    ValveLineBearing { frequency_hz: f64 },
+}
+
+/// What the model of a case cannot do.
+#[derive(Debug, Clone, PartialEq, Eq, Error, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Unsupported {
+    #[error("pad {pad}: the thermal model needs sectors with a leading edge (a 360° bore has no oil inlet)")]
+    ThermalWithoutInlet { pad: usize },
+    #[error("pad {pad} has no pad solid (a fixed sector without thickness): use thermal.pad_film_bc = \"bc1\"")]
+    NoPadSolid { pad: usize },
+    #[error("port {port} feeds pad {pad}, but the bearing has {pads} pads")]
+    PortPadMissing { port: usize, pad: usize, pads: usize },
+    #[error("pad {pad} is fed by ports {first} and {second}")]
+    PadFedTwice { pad: usize, first: usize, second: usize },
+}
+
+/// A broken invariant of the solver.
+#[derive(Debug, Clone, PartialEq, Eq, Error, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum InternalError {
+    /// A stage read another stage's output it may not read (a bug in the registration order).
+    #[error("stage '{reader}' cannot read stage '{stage}': {why}")]
+    StageRead { reader: String, stage: String, why: String },
+    /// A wanted stage published nothing.
+    #[error("stage '{stage}' published no output")]
+    Unpublished { stage: String },
+    /// A computation that never pauses paused.
+    #[error("{what} paused unexpectedly after {parts} parts")]
+    Paused { what: String, parts: usize },
+    /// A number of pad structures that is not the model's number of pads.
+    #[error("{structures} pad structures for a model of {pads} pads")]
+    StructureCount { structures: usize, pads: usize },
+    /// A pad structure over other coordinates than the model's pad.
+    #[error("pad {pad}: the structure's coordinates differ from the model's")]
+    StructureCoordinates { pad: usize },
+    /// A pivot contact's pad has no radial pivot coordinate in the model.
+    #[error("pad {pad}: a pivot contact without the radial pivot coordinate in the model")]
+    ContactWithoutCoordinate { pad: usize },
 }

@@ -1,66 +1,11 @@
-//! What a solve did: iterations, residuals, time, warnings ([`SolveReport`]). Every equilibrium returns
-//! one; the thermal loop keeps its own ([`crate::bearing::ThermalReport`]) around the equilibria it runs.
-
-use serde::{Deserialize, Serialize};
+//! What every solve hands back besides its result: the report of the work done ([`SolveReport`]), the typed
+//! errors ([`error::SolveError`]) and warnings ([`warning::Warning`]) it can end with, and the contract by
+//! which a caller cancels or suspends a solve ([`progress::Cancel`], [`progress::Progress`]). Nothing here
+//! imports any other part of the bearing.
 
 pub mod error;
 pub mod progress;
+pub mod solve_report;
+pub mod warning;
 
-/// What an equilibrium solve did.
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct SolveReport {
-    /// Outer (journal) Newton iterations, summed over methods and continuation steps (and for a THD
-    /// solve over every equilibrium of the thermal loop: counts and `seconds` are the whole solve's).
-    pub iterations: usize,
-    /// Pad (inner) iterations.
-    pub inner_iterations: usize,
-    pub film_solves: usize,
-    pub factorizations: usize,
-    /// Final journal force residual |ΣF + W| relative to the force scale.
-    pub residual: f64,
-    /// Largest final pad residual relative to the pad's scale (floating pads excluded).
-    pub pad_residual: f64,
-    /// Residual after each outer iteration (THD: of the converged state's equilibrium).
-    pub residual_history: Vec<f64>,
-    pub method: String,
-    pub seconds: f64,
-    /// Pads that float (no film pressure): their film contributes no stiffness or damping.
-    pub floating_pads: Vec<usize>,
-    pub warnings: Vec<String>,
-}
-
-impl SolveReport {
-    /// Adds a warning once.
-    pub fn warn(&mut self, w: String) {
-        if !self.warnings.contains(&w) {
-            self.warnings.push(w);
-        }
-    }
-
-    /// Adds the counts and time of other work that belongs to the same result (the isothermal start of a
-    /// THD solve); residuals, method and warnings stay this report's.
-    pub fn add_work(&mut self, other: &SolveReport) {
-        self.iterations += other.iterations;
-        self.inner_iterations += other.inner_iterations;
-        self.film_solves += other.film_solves;
-        self.factorizations += other.factorizations;
-        self.seconds += other.seconds;
-    }
-
-    /// Adds the work of an earlier part of the same solve (a suspended part): counts and time add up, its
-    /// residual history comes first, warnings are merged. The final residuals and the method stay this
-    /// part's.
-    pub fn add_earlier(&mut self, earlier: SolveReport) {
-        self.iterations += earlier.iterations;
-        self.inner_iterations += earlier.inner_iterations;
-        self.film_solves += earlier.film_solves;
-        self.factorizations += earlier.factorizations;
-        self.seconds += earlier.seconds;
-        let mut history = earlier.residual_history;
-        history.append(&mut self.residual_history);
-        self.residual_history = history;
-        for w in earlier.warnings {
-            self.warn(w);
-        }
-    }
-}
+pub use solve_report::SolveReport;

@@ -1,62 +1,27 @@
-//! The solve job: case → model → equilibrium → coefficients → [`Solution`].
+//! A converged state as a [`Solution`]: the films' fields, forces, flows and friction of every pad, the
+//! bearing's flows and power loss, the full dynamic coefficients (with the Hertz pivots' tangent stiffness
+//! where the pads have them) and their reduction, the journal's position, attitude and Sommerfeld number,
+//! and the warnings the state calls for (static stability, directions without stiffness, flow regime);
+//! for a THD state also the thermal fields and balances ([`assemble_thd_solution`]).
 //!
-//! Lifetimes: a [`BearingModel`] (meshes, patterns, symbolic factorisations) is built once per geometry and
-//! mesh and can be reused for many operating points ([`solve_operating_point`]); sweeps warm-start each
-//! point from the previous one.
+//! Called by the stages that solve ([`crate::bearing::stages`]); it runs no solve of its own.
 
 use std::f64::consts::TAU;
 
-use crate::model::{Case, LoadSpec, ThermalModelKind};
+use crate::model::{Case, LoadSpec};
 
-use crate::bearing::equilibrium::{
-    solve_equilibrium, step_equilibrium, Cancel, Equilibrium, EquilibriumParams, NoCancel, Progress, Resume,
-};
+use crate::bearing::equilibrium::pivots::HertzPivots;
+use crate::bearing::equilibrium::Equilibrium;
 use crate::bearing::film::coordinates::PadDof;
 use crate::bearing::film::model::{BearingModel, OperatingPoint};
-use crate::bearing::report::error::SolveError;
+use crate::bearing::report::warning::Warning;
 use crate::bearing::solution::coefficients::{full_coefficients, reduce};
-use crate::bearing::solution::{
+use crate::bearing::solution::result::{
     BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalGrowth, PadThermalResult, Solution,
     ThermalResult,
 };
-use crate::bearing::thermal::{solve_thd, ThdState, ThermalModel, ThermalParams};
-
-/// Solves a case from scratch, with the film model the case asks for (isothermal or THD).
-///
-/// # Errors
-/// See [`SolveError`].
-pub fn solve_case(case: &Case) -> Result<Solution, SolveError> {
-    let mut model = BearingModel::new(case)?;
-    let mut thermal = None;
-    solve_point(&mut model, &mut thermal, case, None, &NoCancel)
-}
-
-/// Solves a case on an existing model with the case's film model; the thermal model is built on first use
-/// and kept in `thermal` for the next call (sweeps).
-///
-/// # Errors
-/// See [`SolveError`].
-pub fn solve_point(
-    model: &mut BearingModel,
-    thermal: &mut Option<ThermalModel>,
-    case: &Case,
-    start: Option<&[f64]>,
-    cancel: &dyn Cancel,
-) -> Result<Solution, SolveError> {
-    match case.thermal.model {
-        ThermalModelKind::Isothermal => {
-            solve_operating_point(model, case, &OperatingPoint::isothermal(case), start, cancel)
-        }
-        ThermalModelKind::Thd => {
-            if thermal.is_none() {
-                *thermal = Some(ThermalModel::new(case, model)?);
-            }
-            let tm = thermal.as_mut().ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
-            let state = solve_thd(model, tm, case, ThermalParams::default(), start, cancel)?;
-            Ok(assemble_thd_solution(model, case, &state))
-        }
-    }
-}
+use crate::bearing::thermal::growth;
+use crate::bearing::thermal::ThdState;
 
 /// Collects results of a converged THD state: the solution at its equilibrium (coefficients at the
 /// converged viscosity field, temperatures frozen) plus the thermal fields.
@@ -64,18 +29,11 @@ pub fn solve_point(
 pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdState) -> Solution {
     // The films of the converged state hold its thermal growth (TEHD) while the solution is assembled.
     if let Some(g) = &state.growth {
-        crate::bearing::thermal::growth::install(model, g);
+        growth::install(model, g);
     }
-    if let Some(p) = &state.pivots {
-        p.install_tangents(model);
-    }
-    let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium);
+    let mut sol = assemble_solution(model, case, &state.op, &state.equilibrium, state.pivots.as_ref());
     if state.growth.is_some() {
-        crate::bearing::thermal::growth::clear(model);
-    }
-    if let Some(p) = &state.pivots {
-        // The loop stops only once the pivot loads have converged with the viscosity field.
-        p.annotate(&mut sol, true);
+        growth::clear(model);
     }
     // The headline report is the whole loop's (every equilibrium of it, and its wall time), not the last
     // equilibrium's; residuals and method stay those of the converged state.
@@ -139,73 +97,9 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
     sol
 }
 
-/// Solves an operating point on an existing model (the case must match the model's geometry and mesh).
-///
-/// # Errors
-/// See [`SolveError`].
-pub fn solve_operating_point(
-    model: &mut BearingModel,
-    case: &Case,
-    op: &OperatingPoint,
-    start: Option<&[f64]>,
-    cancel: &dyn Cancel,
-) -> Result<Solution, SolveError> {
-    solve_operating_point_with(model, case, op, start, EquilibriumParams::default(), cancel)
-}
-
-/// [`solve_operating_point`] with explicit solver settings.
-///
-/// # Errors
-/// As [`solve_operating_point`].
-pub fn solve_operating_point_with(
-    model: &mut BearingModel,
-    case: &Case,
-    op: &OperatingPoint,
-    start: Option<&[f64]>,
-    params: EquilibriumParams,
-    cancel: &dyn Cancel,
-) -> Result<Solution, SolveError> {
-    if crate::bearing::equilibrium::pivots::has_contacts(case) {
-        return crate::bearing::equilibrium::pivots::solve(model, case, op, start, params, cancel);
-    }
-    let eq = solve_equilibrium(model, op, params, start, cancel)?;
-    Ok(assemble_solution(model, case, op, &eq))
-}
-
-/// A resumable [`solve_operating_point`]: pauses when `cancel` asks ([`Cancel::suspend`]); resume with
-/// `start = resume.coordinates` and `params.placed_pads = resume.placed_pads`.
-///
-/// # Errors
-/// As [`solve_operating_point`].
-pub fn step_operating_point(
-    model: &mut BearingModel,
-    case: &Case,
-    op: &OperatingPoint,
-    start: Option<&[f64]>,
-    params: EquilibriumParams,
-    cancel: &dyn Cancel,
-) -> Result<Progress<Solution, Resume>, SolveError> {
-    if crate::bearing::equilibrium::pivots::has_contacts(case) {
-        // The contact's load iteration runs to the end (a few warm-started equilibria).
-        return crate::bearing::equilibrium::pivots::solve(
-            model,
-            case,
-            op,
-            start,
-            params,
-            &crate::bearing::report::progress::NoSuspend(cancel),
-        )
-        .map(Progress::Done);
-    }
-    Ok(match step_equilibrium(model, op, params, start, cancel)? {
-        Progress::Done(eq) => Progress::Done(assemble_solution(model, case, op, &eq)),
-        Progress::Suspended(r) => Progress::Suspended(r),
-    })
-}
-
 /// A warning when the static (ω = 0) journal stiffness vanishes along an axis: the journal's position along
 /// it is set by the force balance alone (pads floating there, or no pad on that axis).
-fn zero_stiffness_warning(k: &[[f64; 2]; 2]) -> Option<String> {
+fn zero_stiffness_warning(k: &[[f64; 2]; 2]) -> Option<Warning> {
     let m = nalgebra::Matrix2::new(k[0][0], k[0][1], k[1][0], k[1][1]);
     let svd = m.svd(false, true);
     let v_t = svd.v_t?;
@@ -213,29 +107,19 @@ fn zero_stiffness_warning(k: &[[f64; 2]; 2]) -> Option<String> {
     let i = if svd.singular_values[0] < svd.singular_values[1] { 0 } else { 1 };
     (smax > 0.0 && smin < 1e-7 * smax).then(|| {
         let axis = v_t[(i, 1)].atan2(v_t[(i, 0)]).to_degrees().rem_euclid(180.0).round() % 180.0 + 0.0;
-        format!(
-            "the bearing has no static stiffness along the {axis:.0}° axis at this equilibrium: the journal's \
-             position along it is set by the force balance alone (pads floating at the onset of pressure, or \
-             no pad on that axis: then it is held at its start position, as for a guided rotor)"
-        )
+        Warning::NoStaticStiffness { axis_deg: axis }
     })
 }
 
 /// A warning when the static (ω = 0) journal stiffness has a negative principal value: the equilibrium
 /// exists but is statically unstable (the journal would move away from it).
-fn static_stability_warning(k: &[[f64; 2]; 2]) -> Option<String> {
+fn static_stability_warning(k: &[[f64; 2]; 2]) -> Option<Warning> {
     let (a, b, d) = (k[0][0], 0.5 * (k[0][1] + k[1][0]), k[1][1]);
     let mean = 0.5 * (a + d);
     let rad = (0.25 * (a - d) * (a - d) + b * b).sqrt();
     let (lo, hi) = (mean - rad, mean + rad);
     let scale = hi.abs().max(lo.abs());
-    (lo < -1e-6 * scale).then(|| {
-        format!(
-            "the equilibrium is statically unstable: the static stiffness has a negative principal value \
-             ({:.3e} N/m); the journal would move away from this position",
-            lo
-        )
-    })
+    (lo < -1e-6 * scale).then_some(Warning::StaticallyUnstable { principal_n_per_m: lo })
 }
 
 fn wrap_deg(a: f64) -> f64 {
@@ -247,9 +131,19 @@ fn wrap_deg(a: f64) -> f64 {
     }
 }
 
-/// Collects results from the converged films.
+/// Collects results from the converged films; with Hertz pivots, their tangent stiffness enters the
+/// coefficients (installed in the model, which keeps it) and each contact pad's state its result.
 #[must_use]
-pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPoint, eq: &Equilibrium) -> Solution {
+pub fn assemble_solution(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    eq: &Equilibrium,
+    pivots: Option<&HertzPivots>,
+) -> Solution {
+    if let Some(p) = pivots {
+        p.install_tangents(model);
+    }
     let cb = model.assembled_clearance;
     let r = model.journal_radius;
     let e = [eq.u[0], eq.u[1]];
@@ -345,7 +239,7 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
     let n_rev = op.speed_rad_s / TAU;
     let sommerfeld = (wmag > 1e-9).then(|| op.viscosity * n_rev * model.length * 2.0 * r / wmag * (r / cb).powi(2));
     report.warnings.extend(crate::bearing::solution::regime::Regime::of(case, op.surface_speed, &pads).warnings());
-    Solution {
+    let mut sol = Solution {
         title: case.title.clone(),
         eccentricity_ratio: ecc,
         attitude_angle_deg: attitude,
@@ -368,13 +262,17 @@ pub fn assemble_solution(model: &mut BearingModel, case: &Case, op: &OperatingPo
             pad_clearances_m: case.bearing.pads.iter().map(|p| p.clearance_m).collect(),
             preloads: case.bearing.pads.iter().map(|p| p.preload).collect(),
             speed_rad_s: op.speed_rad_s,
-            speed_rpm: op.speed_rad_s * 60.0 / TAU,
+            speed_rpm: crate::units::RPM.from_si(op.speed_rad_s),
             film_viscosity_pa_s: op.viscosity,
             film_nodes: model.film_nodes(),
         },
         inputs: case.clone(),
         thermal: None,
+    };
+    if let Some(p) = pivots {
+        annotate_pivots(&mut sol, p);
     }
+    sol
 }
 
 /// The pad's modal coordinates `PadDof::Mode(i)`, in mode order.
@@ -393,4 +291,19 @@ fn elastic_displacement(pm: &crate::bearing::film::model::PadModel, q: &[f64]) -
         }
     }
     u
+}
+
+/// Each contact pad's state in the solution (`PadResult::pivot_contact`), the load iteration in the report's
+/// method, and the iteration's warnings (a load under the floor; loads not converged).
+fn annotate_pivots(sol: &mut Solution, pivots: &HertzPivots) {
+    for (pad, s) in pivots.states() {
+        if let Some(p) = sol.pads.get_mut(pad) {
+            p.pivot_contact = Some(s);
+        }
+    }
+    let r = &mut sol.report;
+    r.pivot_load_iterations = Some(pivots.iterations());
+    for w in pivots.warnings() {
+        r.warn(w);
+    }
 }

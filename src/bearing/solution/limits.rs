@@ -14,7 +14,7 @@ use serde::Serialize;
 use crate::model::limits::Limits;
 
 use crate::bearing::solution::regime::Regime;
-use crate::bearing::solution::Solution;
+use crate::bearing::solution::result::Solution;
 
 /// Which limit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -136,16 +136,6 @@ pub fn exceeded(limits: &Limits, s: &Solution) -> Vec<Check> {
     check(limits, s).into_iter().filter(|c| c.exceeded).collect()
 }
 
-/// A preview-fidelity solve of the shipped compressor bearing with `set` overrides (tests of the result
-/// checks and comparisons).
-#[cfg(test)]
-pub(crate) fn compressor_preview(set: &[&str]) -> Solution {
-    let mut set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
-    set.push("mesh.fidelity=\"preview\"".into());
-    let (_, case) = crate::model::load_case(include_str!("../../../cases/compressor-bearing.toml"), &set).unwrap();
-    crate::bearing::solve_case(&case).unwrap()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -156,7 +146,7 @@ mod tests {
     /// is flagged with its value and limit, and the others are not.
     #[test]
     fn the_issues_example_is_flagged_by_the_default_limits() {
-        let mut s = compressor_preview(&["thermal.model=\"thd\""]);
+        let mut s = crate::bearing::stages::registry::compressor_preview(&["thermal.model=\"thd\""]);
         let limits = Limits::default();
         assert_eq!(limits.max_reynolds, crate::bearing::solution::regime::LAMINAR_REYNOLDS);
         assert!(exceeded(&limits, &s).is_empty(), "{:?}", exceeded(&limits, &s));
@@ -176,7 +166,7 @@ mod tests {
     /// Specific load and Reynolds number from their definitions, and limits set in the file apply.
     #[test]
     fn specific_load_and_reynolds_against_configured_limits() {
-        let s = compressor_preview(&[]);
+        let s = crate::bearing::stages::registry::compressor_preview(&[]);
         let b = &s.inputs.bearing;
         let w = value(LimitKind::MaxSpecificLoad, &s).unwrap();
         assert!((w * b.length_m * 2.0 * b.journal_radius_m / s.load_magnitude_n - 1.0).abs() < 1e-12);
@@ -187,7 +177,7 @@ mod tests {
             / s.derived.film_viscosity_pa_s;
         assert!(re > 0.0 && re <= bound * (1.0 + 1e-12), "{re} vs {bound}");
         let file = LimitsFile {
-            max_specific_load_mpa: Some(0.5 * w * 1e-6),
+            max_specific_load_mpa: Some(crate::units::MPA.from_si(0.5 * w)),
             max_reynolds: Some(0.5 * re),
             ..LimitsFile::default()
         };

@@ -24,7 +24,8 @@
 
 use crate::model::Case;
 
-use crate::bearing::solution::PadResult;
+use crate::bearing::report::warning::Warning;
+use crate::bearing::solution::result::PadResult;
 
 /// Film Reynolds number above which the film is taken as no longer laminar (the low end of the
 /// 1000–1500 transition range reported for journal bearings).
@@ -94,44 +95,24 @@ impl Regime {
 
     /// One warning per check that fails.
     #[must_use]
-    pub fn warnings(&self) -> Vec<String> {
+    pub fn warnings(&self) -> Vec<Warning> {
         let mut w = Vec::new();
         if self.reynolds_max > LAMINAR_REYNOLDS {
-            w.push(format!(
-                "turbulent film: the film Reynolds number ρUh/µ reaches {:.0} (pad {}), past the laminar limit of about \
-                 {LAMINAR_REYNOLDS:.0}–1500; the laminar Reynolds equation used here underestimates friction loss, \
-                 temperature rise and stiffness",
-                self.reynolds_max, self.reynolds_pad
-            ));
+            w.push(Warning::Turbulent { reynolds: self.reynolds_max, pad: self.reynolds_pad, limit: LAMINAR_REYNOLDS });
         } else if self.taylor_max > CRITICAL_TAYLOR {
-            w.push(format!(
-                "Taylor vortices: the Taylor number Re·√(h/R) reaches {:.1}, above the critical {CRITICAL_TAYLOR}; the \
-                 laminar Couette flow the model assumes becomes cellular and the friction loss rises",
-                self.taylor_max
-            ));
+            w.push(Warning::TaylorVortices { taylor: self.taylor_max, critical: CRITICAL_TAYLOR });
         }
         if self.h_min_m < ROUGHNESS_FILM_M {
-            w.push(format!(
-                "the minimum film thickness {:.3} µm is below about {:.0} µm, the order of the combined surface roughness of \
-                 journal and pad: mixed lubrication (asperity contact), which the smooth-film model does not describe",
-                self.h_min_m * 1e6,
-                ROUGHNESS_FILM_M * 1e6
-            ));
+            w.push(Warning::MixedLubrication { h_min_m: self.h_min_m, roughness_m: ROUGHNESS_FILM_M });
         }
         if !(MIN_CLEARANCE_RATIO..=MAX_CLEARANCE_RATIO).contains(&self.clearance_ratio) {
-            w.push(format!(
-                "clearance ratio Cb/R = {:.2e} is outside {MIN_CLEARANCE_RATIO:.0e}–{MAX_CLEARANCE_RATIO:.0e} (built bearings: \
-                 about 0.5–3 ‰)",
-                self.clearance_ratio
-            ));
+            w.push(Warning::UnusualClearance {
+                ratio: self.clearance_ratio,
+                usual: [MIN_CLEARANCE_RATIO, MAX_CLEARANCE_RATIO],
+            });
         }
         if self.pivot_deflection_cb > 1.0 {
-            w.push(format!(
-                "pad {}'s pivot deflects by {:.1} times the assembled clearance, and the journal moves as far: no built \
-                 bearing allows that (its linear pivot spring, its seat in the housing and the film's small-displacement \
-                 kinematics are far outside their range); check the pivot stiffness against the load",
-                self.pivot_pad, self.pivot_deflection_cb
-            ));
+            w.push(Warning::PivotDeflection { pad: self.pivot_pad, clearances: self.pivot_deflection_cb });
         }
         w
     }
@@ -156,18 +137,19 @@ mod tests {
     #[test]
     fn each_check_fires_on_its_own_side_of_its_limit() {
         assert!(regime(900.0, 40.0, 20e-6, 1.5e-3).warnings().is_empty());
-        let turbulent = regime(1001.0, 60.0, 20e-6, 1.5e-3).warnings();
+        let text = |w: Vec<Warning>| w.iter().map(ToString::to_string).collect::<Vec<_>>();
+        let turbulent = text(regime(1001.0, 60.0, 20e-6, 1.5e-3).warnings());
         assert_eq!(turbulent.len(), 1, "{turbulent:?}");
         assert!(turbulent[0].starts_with("turbulent film") && turbulent[0].contains("1001 (pad 2)"), "{turbulent:?}");
-        let taylor = regime(999.0, 41.4, 20e-6, 1.5e-3).warnings();
+        let taylor = text(regime(999.0, 41.4, 20e-6, 1.5e-3).warnings());
         assert!(taylor.len() == 1 && taylor[0].starts_with("Taylor vortices"), "{taylor:?}");
-        let thin = regime(1.0, 0.1, 0.99e-6, 1.5e-3).warnings();
+        let thin = text(regime(1.0, 0.1, 0.99e-6, 1.5e-3).warnings());
         assert!(thin.len() == 1 && thin[0].contains("0.990 µm"), "{thin:?}");
         for ratio in [1.9e-4, 1.01e-2] {
             let w = regime(1.0, 0.1, 20e-6, ratio).warnings();
-            assert!(w.len() == 1 && w[0].starts_with("clearance ratio"), "{ratio}: {w:?}");
+            assert!(matches!(w[..], [Warning::UnusualClearance { ratio: r, .. }] if r == ratio), "{ratio}: {w:?}");
         }
-        let deflected = Regime { pivot_deflection_cb: 1.01, ..regime(1.0, 0.1, 20e-6, 1.5e-3) }.warnings();
+        let deflected = text(Regime { pivot_deflection_cb: 1.01, ..regime(1.0, 0.1, 20e-6, 1.5e-3) }.warnings());
         assert!(
             deflected.len() == 1 && deflected[0].starts_with("pad 1's pivot deflects by 1.0 times"),
             "{deflected:?}"

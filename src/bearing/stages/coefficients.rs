@@ -6,16 +6,18 @@
 use std::sync::Arc;
 
 use crate::bearing::film::coordinates::{Coord, PadStructure};
-use crate::bearing::report::error::SolveError;
 use crate::bearing::film::flex::modal_properties;
-use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::{Cancel, Progress};
 use crate::bearing::solution::Solution;
-use crate::model::Case;
-
 use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
 use crate::bearing::stages::films::StructureInputs;
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::outcome::Published;
+use crate::bearing::stages::request::Request;
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 use crate::bearing::stages::thermal::{ThermalInputs, ThermalStage};
-use crate::bearing::stages::{Ctx, Poll, Progress, Request, Stage, StageId};
+use crate::model::Case;
 
 /// The inputs of the full coefficients.
 #[derive(Debug, Clone, PartialEq)]
@@ -75,10 +77,30 @@ impl Stage for CoefficientsStage {
         Some(CoefficientsInputs::of(&req.case))
     }
 
-    fn poll(&mut self, inputs: &CoefficientsInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
-        let film = if inputs.thermal.is_some() { ctx.output::<ThermalStage>()? } else { ctx.output::<EquilibriumStage>()? };
+    /// The thermal loop's state for a THD case, the isothermal equilibrium otherwise.
+    fn needs(req: &Request) -> &'static [StageId] {
+        if ThermalInputs::of(&req.case).is_some() {
+            &[StageId::Thermal]
+        } else {
+            &[StageId::Equilibrium]
+        }
+    }
+
+    fn poll(
+        &mut self,
+        inputs: &CoefficientsInputs,
+        ctx: &mut Ctx<'_>,
+        _cancel: &dyn Cancel,
+    ) -> Result<Poll<Arc<Solution>>, SolveError> {
+        let film =
+            if inputs.thermal.is_some() { ctx.output::<ThermalStage>()? } else { ctx.output::<EquilibriumStage>()? };
         let mut s = Solution::clone(film);
         s.full.m = pad_inertia(ctx.case(), &s);
         Ok(Progress::Done(Arc::new(s)))
+    }
+
+    fn publish(&mut self, output: &Arc<Solution>, _req: &Request) -> Option<Published> {
+        let out: Arc<Solution> = output.clone();
+        Some(out)
     }
 }

@@ -1,5 +1,6 @@
-//! The equilibrium stage: the isothermal static equilibrium and the full linearisation
-//! ([`step_operating_point`]), resumable between frames.
+//! The equilibrium stage: the isothermal static equilibrium — with the Hertz pivots' load iteration when
+//! the pads have them ([`pivots::solve`]) — and its solution with the full linearisation, resumable between
+//! frames.
 //!
 //! Suspension is a return value: when the caller asks to pause ([`Cancel::suspend`]) the solve returns
 //! its iterate, kept here under the inputs it works towards, and the next poll resumes from it; after
@@ -8,17 +9,19 @@
 
 use std::sync::Arc;
 
-use crate::bearing::equilibrium::EquilibriumParams;
+use crate::bearing::equilibrium::{pivots, step_equilibrium, Equilibrium, EquilibriumParams, Resume};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::report::error::SolveError;
-use crate::bearing::solution::assemble::{solve_operating_point, step_operating_point};
-use crate::bearing::film::model::OperatingPoint;
-use crate::bearing::report::progress::{Cancel, NoSuspend};
+use crate::bearing::report::progress::{Cancel, NoSuspend, Progress};
 use crate::bearing::report::SolveReport;
+use crate::bearing::solution::assemble::assemble_solution;
 use crate::bearing::solution::Solution;
+use crate::bearing::stages::cache::Cached;
+use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage, StructureInputs};
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::request::{Request, Start};
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 use crate::model::{Case, Lubricant, Operating, Physics, ViscosityLaw};
-
-use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage};
-use crate::bearing::stages::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
 
 /// Suspensions of one equilibrium before it must run to the end.
 pub const MAX_SUSPENSIONS: usize = 40;
@@ -48,7 +51,8 @@ impl EquilibriumInputs {
     /// Exhaustive over the case and its sub-structs (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing: _, lubricant, operating, mesh: _, physics, thermal: _, hydraulics: _, limits: _ } = case;
+        let Case { title: _, bearing: _, lubricant, operating, mesh: _, physics, thermal: _, hydraulics: _, limits: _ } =
+            case;
         let Lubricant {
             name: _,
             viscosity,
@@ -66,7 +70,7 @@ impl EquilibriumInputs {
             excitation_ratio: _, // the reduction's
         } = operating;
         let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _ } = physics; // kept whole below (pad_modes: the films')
-        let structure = crate::bearing::stages::films::StructureInputs::of(case);
+        let structure = StructureInputs::of(case);
         Self {
             films: FilmsInputs::of(case),
             stiffness_n_per_m: structure.stiffness_n_per_m,
@@ -105,7 +109,7 @@ impl Suspensions {
     /// The final report covers the whole solve: earlier parts' work first.
     fn merge_into(self, r: &mut SolveReport) {
         r.add_earlier(self.report);
-        r.method = format!("{} (resumed {} times, one part per frame)", r.method, self.suspensions);
+        r.resumed_parts = self.suspensions;
     }
 }
 
@@ -127,8 +131,14 @@ impl Stage for EquilibriumStage {
         Some(EquilibriumInputs::of(&req.case))
     }
 
-    fn poll(&mut self, inputs: &EquilibriumInputs, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
+    fn poll(
+        &mut self,
+        inputs: &EquilibriumInputs,
+        ctx: &mut Ctx<'_>,
+        cancel: &dyn Cancel,
+    ) -> Result<Poll<Arc<Solution>>, SolveError> {
         let case = ctx.case().clone();
+        let cold = ctx.request().start == Start::Cold;
         let model = ctx.output_mut::<FilmsStage>()?;
         install_structure(model, &case)?;
         let op = OperatingPoint::isothermal(&case);
@@ -136,30 +146,56 @@ impl Stage for EquilibriumStage {
         let may_suspend = resumed.as_ref().is_none_or(|r| r.suspensions < MAX_SUSPENSIONS);
         let no_suspend = NoSuspend(cancel);
         let cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
-        let warm = self.warm.get(&inputs.films).cloned();
+        let warm = if cold { None } else { self.warm.get(&inputs.films).cloned() };
         let start = resumed.as_ref().map(|r| r.coordinates.clone()).or(warm);
-        let params = EquilibriumParams { placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads), ..EquilibriumParams::default() };
-        let attempt = match step_operating_point(model, &case, &op, start.as_deref(), params, cancel) {
+        let params = EquilibriumParams {
+            placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads),
+            ..EquilibriumParams::default()
+        };
+        let attempt = match solve(model, &case, &op, start.as_deref(), params, cancel) {
             // A failed warm start retries cold before giving up.
             Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled) => {
-                self.warm = Cached::default();
-                solve_operating_point(model, &case, &op, None, cancel).map(Progress::Done)
+                self.warm.clear();
+                solve(model, &case, &op, None, EquilibriumParams::default(), &NoSuspend(cancel))
             }
             r => r,
         };
-        let mut sol = match attempt? {
-            Progress::Done(s) => s,
+        let (eq, contacts) = match attempt? {
+            Progress::Done(found) => found,
             Progress::Suspended(r) => {
                 let mut so_far = resumed.unwrap_or_default();
                 so_far.add(r.report);
-                self.suspended.put(inputs.clone(), Suspensions { coordinates: r.coordinates, placed_pads: r.placed_pads, ..so_far });
+                self.suspended.put(
+                    inputs.clone(),
+                    Suspensions { coordinates: r.coordinates, placed_pads: r.placed_pads, ..so_far },
+                );
                 return Ok(Progress::Suspended(0.5));
             }
         };
+        let mut sol = assemble_solution(model, &case, &op, &eq, contacts.as_ref());
         if let Some(so_far) = resumed {
             so_far.merge_into(&mut sol.report);
         }
         self.warm.put(inputs.films.clone(), sol.coordinates.clone());
         Ok(Progress::Done(Arc::new(sol)))
     }
+}
+
+/// The equilibrium of an operating point: with Hertz pivots, their load iteration run to the end (a few
+/// warm-started equilibria); otherwise resumable when `cancel` asks to pause ([`Cancel::suspend`]).
+fn solve(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    start: Option<&[f64]>,
+    params: EquilibriumParams,
+    cancel: &dyn Cancel,
+) -> Result<Progress<(Equilibrium, Option<pivots::HertzPivots>), Resume>, SolveError> {
+    if pivots::has_contacts(case) {
+        return pivots::solve(model, case, op, start, params, &NoSuspend(cancel)).map(Progress::Done);
+    }
+    Ok(match step_equilibrium(model, op, params, start, cancel)? {
+        Progress::Done(eq) => Progress::Done((eq, None)),
+        Progress::Suspended(r) => Progress::Suspended(r),
+    })
 }

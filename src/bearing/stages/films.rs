@@ -8,14 +8,16 @@
 //! are read too ([`FlexInputs`]), and only then — a rigid case's films ignore them.
 
 use crate::bearing::film::coordinates::{pad_dofs, PadDof, PadStructure};
-use crate::bearing::report::error::SolveError;
 use crate::bearing::film::flex::modal_properties;
 use crate::bearing::film::model::BearingModel;
+use crate::bearing::report::error::SolveError;
 use crate::model::{Bearing, Case, MeshSpec, Orifice, Pad, Physics};
 use crate::physics::hertz::PivotContact;
 
-use crate::bearing::stages::{Ctx, Poll, Progress, Request, Stage, StageId};
-use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::progress::{Cancel, Progress};
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::request::Request;
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 
 /// What shapes one pad's film.
 #[derive(Debug, Clone, PartialEq)]
@@ -106,7 +108,7 @@ impl PadFilmInputs {
             massless: _,                           // structure (coefficients)
             youngs_modulus_pa: _,
             poisson_ratio: _, // FlexInputs, when the pads bend
-            pivot_contact: _,  // whether one is given: dofs (its values: StructureInputs)
+            pivot_contact: _, // whether one is given: dofs (its values: StructureInputs)
             orifices,
         } = pad;
         Self {
@@ -125,7 +127,8 @@ impl FilmsInputs {
     /// Exhaustive over the case, the bearing and the mesh (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _, limits: _ } = case;
+        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _, limits: _ } =
+            case;
         let Physics { cavitation: _, touchdown_film_m: _, pad_modes } = physics; // the equilibrium's; the modes
         let Bearing { journal_radius_m, length_m, assembled_clearance_m, pads } = bearing;
         let MeshSpec {
@@ -222,6 +225,7 @@ pub struct FilmsStage;
 impl Stage for FilmsStage {
     const LABEL: &'static str = "meshes and films";
     const NEEDS: &'static [StageId] = &[];
+    const KEEP_MANY: bool = false;
     type Inputs = FilmsInputs;
     type Output = BearingModel;
 
@@ -229,7 +233,12 @@ impl Stage for FilmsStage {
         Some(FilmsInputs::of(&req.case))
     }
 
-    fn poll(&mut self, _inputs: &FilmsInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<BearingModel>, SolveError> {
+    fn poll(
+        &mut self,
+        _inputs: &FilmsInputs,
+        ctx: &mut Ctx<'_>,
+        _cancel: &dyn Cancel,
+    ) -> Result<Poll<BearingModel>, SolveError> {
         Ok(Progress::Done(BearingModel::new(ctx.case())?))
     }
 }

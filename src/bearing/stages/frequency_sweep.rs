@@ -2,15 +2,15 @@
 
 use std::sync::Arc;
 
-use crate::bearing::solution::coefficients::{reduce, ReducedCoefficients};
 use crate::bearing::report::error::SolveError;
-use crate::bearing::report::progress::Cancel;
-
+use crate::bearing::report::progress::{Cancel, Progress};
+use crate::bearing::solution::coefficients::reduce;
 use crate::bearing::stages::coefficients::{CoefficientsInputs, CoefficientsStage};
-use crate::bearing::stages::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
-
-/// Reduced coefficients at each excitation ratio ω/Ω of a frequency sweep.
-pub type FrequencySweep = Vec<(f64, ReducedCoefficients)>;
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::outcome::Published;
+use crate::bearing::stages::request::Request;
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
+use crate::bearing::stages::sweeps::FrequencySweep;
 
 /// The inputs of the frequency sweep.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,10 +30,18 @@ impl Stage for FrequencySweepStage {
     type Output = Arc<FrequencySweep>;
 
     fn inputs(req: &Request) -> Option<FrequencySweepInputs> {
-        Some(FrequencySweepInputs { coefficients: CoefficientsInputs::of(&req.case), ratios: req.frequency_ratios.clone() })
+        Some(FrequencySweepInputs {
+            coefficients: CoefficientsInputs::of(&req.case),
+            ratios: req.frequency_ratios.clone(),
+        })
     }
 
-    fn poll(&mut self, inputs: &FrequencySweepInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<Arc<FrequencySweep>>, SolveError> {
+    fn poll(
+        &mut self,
+        inputs: &FrequencySweepInputs,
+        ctx: &mut Ctx<'_>,
+        _cancel: &dyn Cancel,
+    ) -> Result<Poll<Arc<FrequencySweep>>, SolveError> {
         let s = ctx.output::<CoefficientsStage>()?;
         let w = s.derived.speed_rad_s;
         Ok(Progress::Done(Arc::new(inputs.ratios.iter().map(|&r| (r, reduce(&s.full, r * w))).collect())))

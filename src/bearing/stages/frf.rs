@@ -12,16 +12,18 @@ use std::sync::Arc;
 
 use web_time::Instant;
 
-use crate::bearing::report::error::SolveError;
-use crate::bearing::frf::model::FrfModel;
 use crate::bearing::film::model::OperatingPoint;
-use crate::bearing::report::progress::Cancel;
-use crate::model::hydraulics::{Hydraulics, Port};
-
+use crate::bearing::frf::model::FrfModel;
+use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::{Cancel, Progress};
 use crate::bearing::stages::coefficients::pad_inertia;
 use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
 use crate::bearing::stages::films::{FilmsStage, StructureInputs};
-use crate::bearing::stages::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::outcome::Published;
+use crate::bearing::stages::request::Request;
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
+use crate::model::hydraulics::{Hydraulics, Port};
 
 /// The inputs of the linearisation for the ports.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,15 +39,29 @@ impl FrfInputs {
     /// `None` without `[hydraulics]`. Exhaustive over the hydraulics (no `..`).
     #[must_use]
     pub fn of(case: &crate::model::Case) -> Option<Self> {
-        let Hydraulics { supply_pressure_pa: _, return_pressure_pa: _, valve: _, ports, rig: _ } = case.hydraulics.as_ref()?;
+        let Hydraulics { supply_pressure_pa: _, return_pressure_pa: _, valve: _, ports, rig: _ } =
+            case.hydraulics.as_ref()?;
         let port_pads = ports
             .iter()
             .map(|port| {
-                let Port { sign: _, pads, line_length_m: _, line_diameter_m: _, oil_bulk_modulus_pa: _, air_fraction: _, wall_compliance_per_pa: _, modes: _ } = port;
+                let Port {
+                    sign: _,
+                    pads,
+                    line_length_m: _,
+                    line_diameter_m: _,
+                    oil_bulk_modulus_pa: _,
+                    air_fraction: _,
+                    wall_compliance_per_pa: _,
+                    modes: _,
+                } = port;
                 pads.clone()
             })
             .collect();
-        Some(Self { equilibrium: EquilibriumInputs::of(case), density_kg_per_m3: StructureInputs::of(case).density_kg_per_m3, port_pads })
+        Some(Self {
+            equilibrium: EquilibriumInputs::of(case),
+            density_kg_per_m3: StructureInputs::of(case).density_kg_per_m3,
+            port_pads,
+        })
     }
 }
 
@@ -62,7 +78,12 @@ impl Stage for FrfStage {
         FrfInputs::of(&req.case)
     }
 
-    fn poll(&mut self, inputs: &FrfInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<Arc<FrfModel>>, SolveError> {
+    fn poll(
+        &mut self,
+        inputs: &FrfInputs,
+        ctx: &mut Ctx<'_>,
+        _cancel: &dyn Cancel,
+    ) -> Result<Poll<Arc<FrfModel>>, SolveError> {
         let case = ctx.case().clone();
         let sol = Arc::clone(ctx.output::<EquilibriumStage>()?);
         let model = ctx.output_mut::<FilmsStage>()?;

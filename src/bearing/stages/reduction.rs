@@ -4,13 +4,15 @@
 
 use std::sync::Arc;
 
-use crate::bearing::solution::coefficients::reduce;
 use crate::bearing::report::error::SolveError;
-use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::progress::{Cancel, Progress};
+use crate::bearing::solution::coefficients::reduce;
 use crate::bearing::solution::Solution;
-
 use crate::bearing::stages::coefficients::{CoefficientsInputs, CoefficientsStage};
-use crate::bearing::stages::{Ctx, Poll, Progress, Published, Request, Stage, StageId};
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::outcome::Published;
+use crate::bearing::stages::request::Request;
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 
 /// The inputs of the reduced solution.
 #[derive(Debug, Clone, PartialEq)]
@@ -33,17 +35,26 @@ impl Stage for ReductionStage {
     type Output = Arc<Solution>;
 
     fn inputs(req: &Request) -> Option<ReductionInputs> {
-        Some(ReductionInputs { coefficients: CoefficientsInputs::of(&req.case), excitation_ratio: req.case.operating.excitation_ratio })
+        Some(ReductionInputs {
+            coefficients: CoefficientsInputs::of(&req.case),
+            excitation_ratio: req.case.operating.excitation_ratio,
+        })
     }
 
-    fn poll(&mut self, inputs: &ReductionInputs, ctx: &mut Ctx<'_>, _cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
+    fn poll(
+        &mut self,
+        inputs: &ReductionInputs,
+        ctx: &mut Ctx<'_>,
+        _cancel: &dyn Cancel,
+    ) -> Result<Poll<Arc<Solution>>, SolveError> {
         let mut s = Solution::clone(ctx.output::<CoefficientsStage>()?);
         s.reduced = reduce(&s.full, inputs.excitation_ratio * s.derived.speed_rad_s);
         Ok(Progress::Done(Arc::new(s)))
     }
 
     fn publish(&mut self, output: &Arc<Solution>, req: &Request) -> Option<Published> {
-        let fresh = self.published.as_ref().is_none_or(|(case, from, _)| *case != req.case || !Arc::ptr_eq(from, output));
+        let fresh =
+            self.published.as_ref().is_none_or(|(case, from, _)| *case != req.case || !Arc::ptr_eq(from, output));
         if fresh {
             let mut s = Solution::clone(output);
             s.title.clone_from(&req.case.title);

@@ -1,9 +1,18 @@
 //! Execution counters: what reruns on which edit; suspension and resumption.
 
-use super::*;
+use std::sync::Arc;
+
 use crate::bearing::film::model::BearingModel;
-use crate::bearing::report::progress::NoCancel;
-use crate::model::load_case;
+use crate::bearing::report::progress::{Cancel, NoCancel};
+use crate::bearing::solution::Solution;
+use crate::bearing::stages::equilibrium::MAX_SUSPENSIONS;
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::outcome::Step;
+use crate::bearing::stages::registry::Stages;
+use crate::bearing::stages::request::{Request, Start};
+use crate::bearing::stages::stage::{Ctx, Solver};
+use crate::bearing::stages::{coefficients, equilibrium, thermal};
+use crate::model::{load_case, Case};
 
 fn case(set: &[&str]) -> Case {
     let text = include_str!("../../../cases/fillon-a.toml");
@@ -20,7 +29,8 @@ fn with_sweep(case: Case) -> Request {
         case,
         wanted: vec![StageId::Reduction, StageId::FrequencySweep],
         frequency_ratios: RATIOS.to_vec(),
-        speeds_rpm: Vec::new(),
+        speeds_rad_s: Vec::new(),
+        start: Start::Warm,
     }
 }
 
@@ -40,12 +50,7 @@ fn the_frf_stage_reads_the_ports_pads_only() {
         let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
         load_case(include_str!("../../../cases/test-rig-pub5.toml"), &set).unwrap().1
     };
-    let req = |case: Case| Request {
-        case,
-        wanted: vec![StageId::Reduction, StageId::Frf],
-        frequency_ratios: Vec::new(),
-        speeds_rpm: Vec::new(),
-    };
+    let req = |case: Case| Request::of(case, &[StageId::Reduction, StageId::Frf]);
     let mut s = Stages::new();
     let first = s.run(&req(rig(&[])), &NoCancel).unwrap();
     let model = first.get::<crate::bearing::frf::model::FrfModel>(StageId::Frf).unwrap();
@@ -62,8 +67,8 @@ fn the_frf_stage_reads_the_ports_pads_only() {
     }
     s.run(&req(rig(&["operating.load_n=500"])), &NoCancel).unwrap();
     assert_eq!((s.runs(StageId::Equilibrium), s.runs(StageId::Frf)), (2, 2));
-    // The CLI's model (the stage run alone) is the app's, to round-off.
-    let alone = crate::bearing::frf::model::FrfModel::new(&rig(&[])).unwrap();
+    // The CLI's model (the stage alone, on fresh stages) is the app's, to round-off.
+    let alone = Stages::new().frf(&rig(&[]), &NoCancel).unwrap();
     let dk = (&alone.dynamics.k - &model.dynamics.k).norm() / model.dynamics.k.norm();
     let df =
         (&alone.dynamics.coupling.force - &model.dynamics.coupling.force).norm() / model.dynamics.coupling.force.norm();
@@ -136,7 +141,7 @@ fn pad_density_reruns_only_what_depends_on_inertia() {
     assert_eq!(light.full.k, heavy.full.k);
     assert_eq!(light.full.c, heavy.full.c);
     // The same inertia as a solve from scratch of the heavy case.
-    let fresh = crate::bearing::solve_case(&case(&["bearing.pads.density_kg_per_m3=15600"])).unwrap();
+    let fresh = crate::bearing::stages::registry::solve_case(&case(&["bearing.pads.density_kg_per_m3=15600"])).unwrap();
     for (a, b) in fresh.full.m.iter().flatten().zip(heavy.full.m.iter().flatten()) {
         assert!((a - b).abs() <= 1e-12 * m_max, "{a} vs {b}");
     }
@@ -154,7 +159,7 @@ fn pivot_stiffness_reruns_the_equilibrium_on_the_same_films() {
     // The stiffer spring moves the pivots less, and the result is the one of a solve from scratch.
     let pivot = |s: &Solution| s.pads.iter().map(|p| p.pivot_displacement_m.unwrap().abs()).fold(0.0, f64::max);
     assert!(pivot(&b) < 0.5 * pivot(&a), "{} vs {}", pivot(&b), pivot(&a));
-    let fresh = crate::bearing::solve_case(&stiff).unwrap();
+    let fresh = crate::bearing::stages::registry::solve_case(&stiff).unwrap();
     let rel = |x: f64, y: f64| ((x - y) / y).abs();
     assert!(
         rel(b.eccentricity_ratio, fresh.eccentricity_ratio) < 1e-6,
@@ -186,7 +191,7 @@ fn pad_modes_are_computed_once_per_pad_shape_and_kept_across_operating_edits() {
     let mut s = Stages::new();
     let first = s.run(&Request::solution(flexible(&[])), &NoCancel).unwrap().solution().unwrap();
     // The staged solution is the one-shot solve (the modal masses reach the reduced coefficients).
-    let fresh = crate::bearing::solve_case(&flexible(&[])).unwrap();
+    let fresh = crate::bearing::stages::registry::solve_case(&flexible(&[])).unwrap();
     assert_eq!(first.eccentricity_ratio.to_bits(), fresh.eccentricity_ratio.to_bits());
     assert_eq!(first.full.m, fresh.full.m);
     assert_eq!(first.reduced.k_n_per_m, fresh.reduced.k_n_per_m);
@@ -259,7 +264,8 @@ fn a_suspended_equilibrium_resumes_from_its_iterate_and_reaches_the_same_solutio
     let pads = parts.pads.len();
     assert!(equilibrium_steps > pads, "the solve was split: {equilibrium_steps} steps for {pads} pads");
     assert_eq!(s.runs(StageId::Equilibrium), 1);
-    assert!(parts.report.method.contains("resumed"), "{}", parts.report.method);
+    assert!(parts.report.resumed_parts > 0, "{}", parts.report.method_text());
+    assert!(parts.report.method_text().contains("resumed"), "{}", parts.report.method_text());
     assert!(
         parts.report.iterations + pads >= equilibrium_steps,
         "the report counts every part: {}",
@@ -278,12 +284,8 @@ fn a_suspended_equilibrium_resumes_from_its_iterate_and_reaches_the_same_solutio
 }
 
 fn speed_request(case: Case) -> Request {
-    Request {
-        case,
-        wanted: vec![StageId::SpeedSweep],
-        frequency_ratios: Vec::new(),
-        speeds_rpm: vec![2000.0, 3000.0, 4000.0],
-    }
+    let speeds_rad_s = [2000.0, 3000.0, 4000.0].map(|n| crate::units::RPM.to_si(n)).to_vec();
+    Request { speeds_rad_s, ..Request::of(case, &[StageId::SpeedSweep]) }
 }
 
 #[test]
@@ -305,7 +307,7 @@ fn suspended_speed_sweep_points_resume_and_match_whole_ones() {
     assert_eq!(parts.len(), 3);
     for (a, b) in parts.iter().zip(whole.iter()) {
         let (ea, eb) = (a.result.as_ref().unwrap().eccentricity_ratio, b.result.as_ref().unwrap().eccentricity_ratio);
-        assert!(((ea - eb) / eb).abs() < 1e-6, "{} rpm: {ea} vs {eb}", a.speed_rpm);
+        assert!(((ea - eb) / eb).abs() < 1e-6, "{} rad/s: {ea} vs {eb}", a.speed_rad_s);
     }
 }
 
@@ -321,15 +323,16 @@ fn speed_sweep_runs_point_by_point_and_is_cached() {
             Step::Pending { .. } => {}
         }
     };
-    // films, three sweep points, done: the sweep does not wait for the equilibrium at the case's speed.
-    assert_eq!(steps, 5);
-    assert_eq!(runs(&s), [1, 0, 0, 0, 0, 0, 1]);
+    // Three sweep points, done: the sweep does not wait for the equilibrium at the case's speed, and its
+    // nested stages build their own films.
+    assert_eq!(steps, 4);
+    assert_eq!(runs(&s), [0, 0, 0, 0, 0, 0, 1]);
     let sweep = out.speed_sweep().unwrap();
     assert_eq!(sweep.len(), 3);
     let e: Vec<f64> = sweep.iter().map(|p| p.result.as_ref().unwrap().eccentricity_ratio).collect();
     assert!(e[0] > e[1] && e[1] > e[2], "eccentricity falls with speed: {e:?}");
     // The 4000 rpm point is the case's own solution.
-    let own = crate::bearing::solve_case(&req.case).unwrap();
+    let own = crate::bearing::stages::registry::solve_case(&req.case).unwrap();
     assert!(
         ((e[2] - own.eccentricity_ratio) / own.eccentricity_ratio).abs() < 1e-6,
         "{} vs {}",
@@ -343,7 +346,7 @@ fn speed_sweep_runs_point_by_point_and_is_cached() {
 }
 
 #[test]
-fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
+fn thermal_stage_runs_the_loop_one_outer_iteration_per_step_and_is_cached() {
     let thd = |extra: &[&str]| {
         let mut set = vec!["thermal.model=\"thd\""];
         set.extend_from_slice(extra);
@@ -360,45 +363,46 @@ fn thermal_stage_runs_after_the_equilibrium_and_is_cached() {
             Step::Pending { .. } => {}
         }
     };
-    assert_eq!(runs(&s), [1, 1, 1, 1, 1, 0, 0]);
+    // The isothermal equilibrium is the loop's first outer iteration: no equilibrium stage of its own.
+    assert_eq!(runs(&s), [1, 0, 1, 1, 1, 0, 0]);
     let sol = o.solution().unwrap();
     let t = sol.thermal.as_ref().expect("thermal results");
     assert!(t.report.converged && t.t_max_film_c > 40.0);
     assert_eq!(thermal_steps, t.report.outer_iterations, "one step per outer iteration");
     assert!(thermal_steps > 2);
-    // The same state as the loop run in one go.
+    // The same state as the thermal loop run in one go on its own model.
     let mut m = BearingModel::new(&req.case).unwrap();
-    let whole = crate::bearing::solve_point(&mut m, &mut None, &req.case, None, &NoCancel).unwrap();
-    let w = whole.thermal.as_ref().unwrap();
-    assert!((w.t_max_film_c - t.t_max_film_c).abs() < 1e-3, "{} vs {}", w.t_max_film_c, t.t_max_film_c);
+    crate::bearing::stages::films::install_structure(&mut m, &req.case).unwrap();
+    let mut tm = crate::bearing::thermal::ThermalModel::new(&req.case, &m).unwrap();
+    let whole = crate::bearing::thermal::solve_thd(
+        &mut m,
+        &mut tm,
+        &req.case,
+        crate::bearing::thermal::ThermalParams::default(),
+        None,
+        &NoCancel,
+    )
+    .unwrap();
+    let w_max = whole.pads.iter().flat_map(|p| p.film_c.iter().copied()).fold(f64::NEG_INFINITY, f64::max);
+    assert!((w_max - t.t_max_film_c).abs() < 1e-9, "{w_max} vs {}", t.t_max_film_c);
+    assert_eq!(whole.report.outer_iterations, t.report.outer_iterations);
     assert!(sol
         .pads
         .iter()
         .all(|p| p.field.film_temperature_c.is_some() && p.field.pad_surface_temperature_c.is_some()));
-    // The headline report is the whole solve's: every equilibrium of the loop and its time, plus (through
-    // the stages) the isothermal start; not the last equilibrium's.
-    let (r, wr) = (&sol.report, &whole.report);
-    assert_eq!(
-        (wr.iterations, wr.film_solves, wr.seconds),
-        (w.report.equilibrium_iterations, w.report.film_solves, w.report.seconds)
-    );
-    assert!(
-        wr.inner_iterations == w.report.inner_iterations && wr.factorizations > w.report.equilibrium_factorizations
-    );
-    assert!(r.seconds > t.report.seconds, "{} s vs the loop's {} s", r.seconds, t.report.seconds);
-    assert!(
-        r.iterations > t.report.equilibrium_iterations && r.film_solves > t.report.film_solves,
-        "{r:?} vs {:?}",
-        t.report
-    );
+    // The headline report is the whole loop's: every equilibrium of it and its time, not the last one's.
+    let r = &sol.report;
+    assert_eq!((r.iterations, r.film_solves), (t.report.equilibrium_iterations, t.report.film_solves));
+    assert!(r.factorizations > t.report.equilibrium_factorizations);
+    assert_eq!(r.seconds, t.report.seconds);
     // A thermal setting reruns only the thermal stage (and those after it).
     req.case = thd(&["thermal.convection_w_per_m2_k=150"]);
     s.run(&req, &NoCancel).unwrap();
-    assert_eq!(runs(&s), [1, 1, 2, 2, 2, 0, 0]);
+    assert_eq!(runs(&s), [1, 0, 2, 2, 2, 0, 0]);
     // The excitation ratio reruns only the reduction.
     req.case = thd(&["thermal.convection_w_per_m2_k=150", "operating.excitation_ratio=0.5"]);
     s.run(&req, &NoCancel).unwrap();
-    assert_eq!(runs(&s), [1, 1, 2, 2, 3, 0, 0]);
+    assert_eq!(runs(&s), [1, 0, 2, 2, 3, 0, 0]);
 }
 
 /// The web stepper with a spent budget: each THD outer iteration's equilibrium is split into parts (one
@@ -431,27 +435,37 @@ fn a_suspended_thermal_loop_splits_its_equilibria_and_reaches_the_same_state() {
 fn every_stage_reads_only_stages_registered_before_it() {
     for (i, s) in StageId::ALL.iter().enumerate() {
         assert_eq!(s.index(), i);
-        for n in s.needs() {
+        for n in s.declared() {
             assert!(n.index() < i, "{s:?} reads {n:?}, registered after it");
         }
     }
-    // What a wanted stage pulls in: the reduction reads films, equilibrium, thermal (when it applies) and
-    // coefficients; the speed sweep only the films.
-    let needed = |w: &[StageId]| -> Vec<StageId> {
-        Stages::needed(w).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect()
+    // What a wanted stage pulls in for a request: the reduction of an isothermal case reads the films, the
+    // equilibrium and the coefficients; of a THD case the thermal loop instead of the equilibrium; the speed
+    // sweep runs nested stages and reads none.
+    let needed = |req: &Request| -> Vec<StageId> {
+        Stages::needed(req).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect()
     };
     use StageId::*;
-    assert_eq!(needed(&[Reduction]), vec![Films, Equilibrium, Thermal, Coefficients, Reduction]);
-    assert_eq!(needed(&[SpeedSweep]), vec![Films, SpeedSweep]);
+    let iso = case(&[]);
+    let thd = case(&["thermal.model=\"thd\""]);
+    assert_eq!(needed(&Request::solution(iso.clone())), vec![Films, Equilibrium, Coefficients, Reduction]);
+    assert_eq!(needed(&Request::solution(thd.clone())), vec![Films, Thermal, Coefficients, Reduction]);
+    assert_eq!(
+        needed(&Request::of(thd, &[Reduction, Frf])),
+        vec![Films, Equilibrium, Thermal, Coefficients, Reduction, Frf]
+    );
+    assert_eq!(needed(&Request::of(iso, &[SpeedSweep])), vec![SpeedSweep]);
 }
 
 #[test]
 fn a_stage_reads_only_what_it_declared_and_only_when_current() {
     let mut s = Stages::new();
     let req = Request::solution(case(&[]));
-    let refusal = |reader: StageId, s: &mut Stages| -> String {
-        let ctx = Ctx { slots: &mut s.slots, req: &req, reader };
-        match reader {
+    let reader = |id: StageId| crate::bearing::stages::stage::Reader { label: id.label(), needs: id.declared() };
+    let nested = || -> Box<dyn Solver> { Box::new(Stages::new()) };
+    let refusal = |id: StageId, s: &mut Stages| -> String {
+        let ctx = Ctx { slots: &mut s.slots, req: &req, reader: reader(id), nested };
+        match id {
             StageId::Films => ctx.output::<equilibrium::EquilibriumStage>().map(|_| ()),
             StageId::Coefficients => ctx.output::<thermal::ThermalStage>().map(|_| ()),
             _ => ctx.output::<coefficients::CoefficientsStage>().map(|_| ()),
@@ -468,6 +482,6 @@ fn a_stage_reads_only_what_it_declared_and_only_when_current() {
     assert!(refusal(StageId::Coefficients, &mut s).contains("does not apply"));
     // An edit that changes the coefficients' inputs makes the old output unreadable.
     let edited = Request::solution(case(&["operating.load_n=8000"]));
-    let ctx = Ctx { slots: &mut s.slots, req: &edited, reader: StageId::Reduction };
+    let ctx = Ctx { slots: &mut s.slots, req: &edited, reader: reader(StageId::Reduction), nested };
     assert!(ctx.output::<coefficients::CoefficientsStage>().is_err());
 }

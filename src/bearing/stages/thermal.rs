@@ -1,20 +1,24 @@
-//! The thermal stage (THD cases): the thermal loop around the equilibrium ([`ThdRun`]), warm-started from
-//! the isothermal equilibrium, one outer iteration per poll — or, when the caller asks to pause
-//! ([`Cancel::suspend`], the web build's frame budget), the part of its equilibrium that fits. The pad solids and thermal systems
-//! ([`ThermalModel`]) are kept under the films and pad-mesh inputs they are built from.
+//! The thermal stage (THD cases): the thermal loop ([`ThdRun`]) — equilibrium and temperatures together,
+//! its first outer iteration the isothermal equilibrium — one outer iteration per poll, or, when the caller
+//! asks to pause ([`Cancel::suspend`], the web build's frame budget), the part of its equilibrium that fits.
+//! A warm request starts it from the last converged state on the same films and, if that run fails, once
+//! more from a centred journal. The pad solids and thermal systems ([`ThermalModel`]) are kept under the
+//! films and pad-mesh inputs they are built from.
 
 use std::sync::Arc;
 
 use crate::bearing::report::error::SolveError;
+use crate::bearing::report::progress::{Cancel, Progress};
 use crate::bearing::solution::assemble::assemble_thd_solution;
-use crate::bearing::report::progress::Cancel;
 use crate::bearing::solution::Solution;
+use crate::bearing::stages::cache::Cached;
+use crate::bearing::stages::equilibrium::EquilibriumInputs;
+use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage};
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::request::{Request, Start};
+use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 use crate::bearing::thermal::{ThdRun, ThermalModel, ThermalParams};
 use crate::model::{Case, Lubricant, MeshSpec, Operating, PadFilmBc, Thermal, ThermalModelKind};
-
-use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
-use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage};
-use crate::bearing::stages::{Cached, Ctx, Poll, Progress, Request, Stage, StageId};
 
 /// Outer iterations a THD loop typically needs (for the progress fraction only).
 const THERMAL_ITERATIONS_EXPECTED: f64 = 10.0;
@@ -46,8 +50,10 @@ impl ThermalInputs {
     /// Exhaustive over the case and its sub-structs (no `..`); `None` for an isothermal case.
     #[must_use]
     pub fn of(case: &Case) -> Option<Self> {
-        let Case { title: _, bearing, lubricant, operating, mesh, physics: _, thermal, hydraulics: _, limits: _ } = case;
-        let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } = lubricant;
+        let Case { title: _, bearing, lubricant, operating, mesh, physics: _, thermal, hydraulics: _, limits: _ } =
+            case;
+        let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } =
+            lubricant;
         let Operating {
             speed_rad_s: _,
             load: _,
@@ -84,7 +90,8 @@ impl ThermalInputs {
             housing_temperature_c: _,
         } = thermal;
         // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
-        let pad_elastic = (*pad_expansion_per_k != 0.0).then(|| bearing.pads.iter().map(|p| [p.youngs_modulus_pa, p.poisson_ratio]).collect());
+        let pad_elastic = (*pad_expansion_per_k != 0.0)
+            .then(|| bearing.pads.iter().map(|p| [p.youngs_modulus_pa, p.poisson_ratio]).collect());
         (*model == ThermalModelKind::Thd).then(|| Self {
             equilibrium: EquilibriumInputs::of(case),
             solids: PadSolidsInputs {
@@ -101,16 +108,24 @@ impl ThermalInputs {
     }
 }
 
+/// A loop under way: the run, and whether it started from a previous state (a failure then retries cold).
+struct Running {
+    run: ThdRun,
+    warm: bool,
+}
+
 #[derive(Default)]
 pub struct ThermalStage {
     solids: Cached<PadSolidsInputs, ThermalModel>,
     /// A loop under way, under the inputs it works towards (a failed run is dropped).
-    run: Cached<ThermalInputs, ThdRun>,
+    run: Cached<ThermalInputs, Running>,
+    /// Last converged coordinates, under the films they were solved on.
+    warm: Cached<FilmsInputs, Vec<f64>>,
 }
 
 impl Stage for ThermalStage {
     const LABEL: &'static str = "thermal (THD) loop";
-    const NEEDS: &'static [StageId] = &[StageId::Films, StageId::Equilibrium];
+    const NEEDS: &'static [StageId] = &[StageId::Films];
     type Inputs = ThermalInputs;
     type Output = Arc<Solution>;
 
@@ -118,28 +133,42 @@ impl Stage for ThermalStage {
         ThermalInputs::of(&req.case)
     }
 
-    fn poll(&mut self, inputs: &ThermalInputs, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<Arc<Solution>>, SolveError> {
+    fn poll(
+        &mut self,
+        inputs: &ThermalInputs,
+        ctx: &mut Ctx<'_>,
+        cancel: &dyn Cancel,
+    ) -> Result<Poll<Arc<Solution>>, SolveError> {
         let case = ctx.case().clone();
-        let (start, start_report) = ctx.output::<EquilibriumStage>().map(|s| (s.coordinates.clone(), s.report.clone()))?;
+        let cold = ctx.request().start == Start::Cold;
         let model = ctx.output_mut::<FilmsStage>()?;
         install_structure(model, &case)?;
-        if self.solids.get(&inputs.solids).is_none() {
-            self.solids.put(inputs.solids.clone(), ThermalModel::new(&case, model)?);
-        }
-        let tm = self.solids.get_mut(&inputs.solids).ok_or_else(|| SolveError::Invalid("no thermal model".into()))?;
-        let mut run = match self.run.take(inputs) {
-            Some(run) => run,
-            None => ThdRun::new(model, tm, &case, ThermalParams::default(), Some(&start)),
+        let tm = self.solids.get_or_try_insert(&inputs.solids, || ThermalModel::new(&case, model))?;
+        let mut running = match self.run.take(inputs) {
+            Some(r) => r,
+            None => {
+                let start = if cold { None } else { self.warm.get(&inputs.solids.films).cloned() };
+                let warm = start.is_some();
+                Running { run: ThdRun::new(model, tm, &case, ThermalParams::default(), start.as_deref()), warm }
+            }
         };
-        let Some(state) = run.step(model, tm, &case, cancel)? else {
-            #[allow(clippy::cast_precision_loss)]
-            let fraction = (run.outer_iterations() as f64 / THERMAL_ITERATIONS_EXPECTED).min(0.95);
-            self.run.put(inputs.clone(), run);
-            return Ok(Progress::Suspended(fraction));
+        let state = match running.run.step(model, tm, &case, cancel) {
+            Ok(Some(state)) => state,
+            Ok(None) => {
+                #[allow(clippy::cast_precision_loss)]
+                let fraction = (running.run.outer_iterations() as f64 / THERMAL_ITERATIONS_EXPECTED).min(0.95);
+                self.run.put(inputs.clone(), running);
+                return Ok(Progress::Suspended(fraction));
+            }
+            // A failed warm start retries from a centred journal (the next poll starts it).
+            Err(e) if running.warm && !matches!(e, SolveError::Cancelled) => {
+                self.warm.clear();
+                return Ok(Progress::Suspended(0.0));
+            }
+            Err(e) => return Err(e),
         };
-        let mut solution = assemble_thd_solution(model, &case, &state);
-        // The isothermal start is part of this result's work.
-        solution.report.add_work(&start_report);
+        let solution = assemble_thd_solution(model, &case, &state);
+        self.warm.put(inputs.solids.films.clone(), solution.coordinates.clone());
         Ok(Progress::Done(Arc::new(solution)))
     }
 }

@@ -16,7 +16,9 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 use crate::bearing::frf::model::FrfModel;
 use crate::bearing::solution::{PadField, PadFlex, PadSolidField, Solution};
-use crate::bearing::stages::{FrequencySweep, Outcome, Published, SpeedPoint, StageId};
+use crate::bearing::stages::id::StageId;
+use crate::bearing::stages::outcome::{Outcome, Published};
+use crate::bearing::stages::sweeps::{FrequencySweep, SpeedPoint};
 
 /// A published output by its type.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -203,10 +205,9 @@ mod tests {
             ],
         );
         let req = Request {
-            case: c,
-            wanted: vec![StageId::Reduction, StageId::FrequencySweep, StageId::SpeedSweep],
             frequency_ratios: vec![0.5, 1.0],
-            speeds_rpm: vec![8000.0],
+            speeds_rad_s: vec![crate::units::RPM.to_si(8000.0)],
+            ..Request::of(c, &[StageId::Reduction, StageId::FrequencySweep, StageId::SpeedSweep])
         };
         let back = round_trip(&req);
         let s = back.solution().unwrap();
@@ -226,12 +227,7 @@ mod tests {
     #[test]
     fn an_frf_outcome_round_trips() {
         let c = case(include_str!("../../../cases/test-rig-pub5.toml"), &["mesh.fidelity=\"preview\""]);
-        let req = Request {
-            case: c,
-            wanted: vec![StageId::Reduction, StageId::Frf],
-            frequency_ratios: Vec::new(),
-            speeds_rpm: Vec::new(),
-        };
+        let req = Request::of(c, &[StageId::Reduction, StageId::Frf]);
         let back = round_trip(&req);
         assert!(back.get::<FrfModel>(StageId::Frf).is_some_and(|m| m.dynamics.k.norm() > 0.0));
     }

@@ -21,6 +21,7 @@
 //! pivot moves out along its line, and it is in the films from the loop's first equilibrium
 //! ([`housing_only`]).
 
+use crate::bearing::report::error::ElasticWork;
 use crate::fem::solid8::Elastic;
 use crate::mesh::pad3d::PadMesh;
 use crate::model::{Case, PadKind};
@@ -161,7 +162,7 @@ impl TehdModel {
     /// with the thermal model); `None` when the growth is off.
     ///
     /// # Errors
-    /// [`SolveError::Invalid`] naming the pad if its elastic model fails.
+    /// [`SolveError::PadElastic`] naming the pad if its elastic model fails.
     pub fn new(
         case: &Case,
         model: &BearingModel,
@@ -210,7 +211,7 @@ impl TehdModel {
                 None => {
                     let half = model.pads[k].film.geom.grid.half;
                     let s = GrowthSolver::new(mesh, step, pad.pivot_rad, pivot_from_le, material, half)
-                        .map_err(|e| SolveError::Invalid(format!("pad {k} thermal growth: {e}")))?;
+                        .map_err(|error| SolveError::PadElastic { pad: k, what: ElasticWork::ThermalGrowth, error })?;
                     solvers.push(s);
                     solvers.len() - 1
                 }

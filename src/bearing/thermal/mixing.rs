@@ -15,6 +15,7 @@
 //! ([`crate::bearing::thermal::pad_system::Affine`]), so all the balances together are one small dense linear system in
 //! (T_in per pad, T_j), solved exactly.
 
+use crate::bearing::report::error::SingularSystem;
 use nalgebra::{DMatrix, DVector};
 
 use crate::model::{Case, PadFilmBc};
@@ -81,8 +82,10 @@ pub fn inlet_and_journal(
             b[n] += w * s.mean_film.c0;
         }
     }
-    let x = a.lu().solve(&b).filter(|x| x.iter().all(|v| v.is_finite())).ok_or_else(|| {
-        SolveError::Invalid("the inlet mixing / journal balance is singular (no oil flows through the bearing?)".into())
-    })?;
+    let x = a
+        .lu()
+        .solve(&b)
+        .filter(|x| x.iter().all(|v| v.is_finite()))
+        .ok_or(SolveError::Singular(SingularSystem::InletMixing))?;
     Ok(((0..n).map(|k| x[k]).collect(), x[n]))
 }

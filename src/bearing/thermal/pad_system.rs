@@ -119,7 +119,8 @@ pub struct PadTemperatures {
     pub journal_flux: Affine,
     /// Nodes with a prescribed (inlet) temperature.
     pub inlet_nodes: Vec<usize>,
-    pub warnings: Vec<String>,
+    /// No oil flowed in through the leading edge: its whole edge was held at the inlet temperature.
+    pub no_inflow: bool,
 }
 
 impl PadTemperatures {
@@ -252,12 +253,9 @@ impl PadThermal {
             cond.film_face_exchange(g, &coef, &sys.pattern, pl, &mut sys.values, &mut sys.rhs);
         }
         // Inlet: prescribed temperature where oil flows in through the leading edge.
-        let mut warnings = Vec::new();
         let mut inlet_nodes = FilmEnergy::inflow_nodes(film, &flow);
-        if inlet_nodes.is_empty() {
-            warnings.push(
-                "no oil flows in through the leading edge: its whole edge is held at the inlet temperature".to_string(),
-            );
+        let no_inflow = inlet_nodes.is_empty();
+        if no_inflow {
             inlet_nodes = (0..g.n_nodes()).filter(|&k| g.sites[k] == NodeSite::Leading).collect();
         }
         let mut dirichlet_rows = Vec::with_capacity(inlet_nodes.len());
@@ -338,7 +336,7 @@ impl PadThermal {
             area: sym * area,
             journal_flux,
             inlet_nodes,
-            warnings,
+            no_inflow,
         })
     }
 }

@@ -3,12 +3,29 @@
 //! pads and journal when the case asks for it (TEHD), a load step of the Hertz pivots when the pads have
 //! them ([`HertzPivots`]) — with its budgets, deadline and report.
 
-#[allow(clippy::wildcard_imports)]
-use super::*;
+use crate::bearing::report::error::ThermalSystem;
+use crate::bearing::report::warning::Warning;
+use web_time::Instant;
+
 use crate::bearing::equilibrium::pivots::{self, HertzPivots};
-use crate::bearing::report::progress::Progress;
+use crate::bearing::equilibrium::{Equilibrium, EquilibriumParams};
+use crate::bearing::film::model::{BearingModel, OperatingPoint};
+use crate::bearing::report::error::{Budget, Iteration, SolveError};
+use crate::bearing::report::progress::{Cancel, Progress};
+use crate::bearing::thermal::anderson::{flatten, Anderson};
 use crate::bearing::thermal::growth;
+use crate::bearing::thermal::growth::{Growth, GrowthField, TehdModel, GROWTH_TOL};
+use crate::bearing::thermal::iteration::{
+    equilibrium_params, film_temperatures, load_shares, nodal_viscosity, setup, viscosity_change, warm_equilibrium,
+};
+use crate::bearing::thermal::model::{
+    PadThermalState, ThdState, ThermalConvergence, ThermalModel, ThermalParams, ThermalReport, ANDERSON_DEPTH,
+    LIGHT_PAD_SHARE, MIN_RELAXATION,
+};
+use crate::bearing::thermal::pad_system::PadTemperatures;
 use crate::bearing::thermal::resumable::{equilibrium_part, PendingEquilibrium};
+use crate::model::Case;
+use crate::physics::energy::{BalanceInputs, Exchange, FilmHeat};
 
 mod update;
 /// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
@@ -258,10 +275,7 @@ impl ThdRun {
         for (k, p) in eq.pads.iter().enumerate() {
             if p.unloaded && !self.op.held_pads[k] && !model.pads[k].dofs().is_empty() {
                 self.op.held_pads[k] = true;
-                self.report.warnings.push(format!(
-                    "pad {k} is unloaded: its tilt is held from outer iteration {}",
-                    self.report.outer_iterations
-                ));
+                self.report.warnings.push(Warning::TiltHeld { pad: k, outer_iteration: self.report.outer_iterations });
             }
         }
         if self.t_ok.is_none() && self.t_try.is_none() {
@@ -269,11 +283,7 @@ impl ThdRun {
             for k in 0..n {
                 if self.shares[k] < LIGHT_PAD_SHARE && !model.pads[k].dofs().is_empty() {
                     self.uniform[k] = true;
-                    self.report.warnings.push(format!(
-                        "pad {k} carries {:.1} % of the load: its Reynolds equation uses its mean film viscosity (the \
-                         film and pad temperatures are computed in full)",
-                        100.0 * self.shares[k]
-                    ));
+                    self.report.warnings.push(Warning::MeanViscosity { pad: k, load_percent: 100.0 * self.shares[k] });
                 }
             }
         }
@@ -299,14 +309,11 @@ impl ThdRun {
             && self.pivot_change < pivots::RTOL
         {
             self.report.converged = true;
-            self.report.stop_reason = format!("viscosity change {change:.1e} below {:.0e}", params.viscosity_tol);
-            if self.pivots.is_some() {
-                self.report.stop_reason += &format!(
-                    ", Hertz pivot springs changing by {:.1e} (below {:.0e})",
-                    self.pivot_change,
-                    pivots::RTOL
-                );
-            }
+            self.report.stop_reason = Some(ThermalConvergence {
+                viscosity_change: change,
+                viscosity_tol: params.viscosity_tol,
+                pivot_change: self.pivots.is_some().then_some([self.pivot_change, pivots::RTOL]),
+            });
             self.report.thermal_factorizations = self.factorizations0;
             let report = std::mem::take(&mut self.report);
             if exact {
@@ -371,9 +378,11 @@ impl ThdRun {
         for (k, sol) in sols.iter().enumerate() {
             let s = setup(case, &self.op, k, self.params.stabilisation);
             pad_c.push(if s.exchange == Exchange::Adiabatic {
-                thermal
-                    .pad_bc1(k, &t_new[k], &s.material)
-                    .map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?
+                thermal.pad_bc1(k, &t_new[k], &s.material).map_err(|error| SolveError::PadThermal {
+                    pad: k,
+                    system: ThermalSystem::Conduction,
+                    error,
+                })?
             } else {
                 sol.pad(t_in[k], t_j)
             });
@@ -426,15 +435,17 @@ fn finish(
     let mut worst = 0.0_f64;
     for (k, sol) in sols.iter().enumerate() {
         let s = setup(case, &op, k, params.stabilisation);
-        for w in &sol.warnings {
-            report.warnings.push(format!("pad {k}: {w}"));
+        if sol.no_inflow {
+            report.warnings.push(Warning::NoLeadingEdgeInflow { pad: k });
         }
         let film_c = sol.film(t_in[k], t_j);
         let pad_c = if s.exchange == Exchange::Adiabatic {
             let tp = Instant::now();
-            let r = thermal
-                .pad_bc1(k, &film_c, &s.material)
-                .map_err(|e| SolveError::Invalid(format!("pad {k} conduction: {e}")))?;
+            let r = thermal.pad_bc1(k, &film_c, &s.material).map_err(|error| SolveError::PadThermal {
+                pad: k,
+                system: ThermalSystem::Conduction,
+                error,
+            })?;
             report.pad_conduction_seconds += tp.elapsed().as_secs_f64();
             r
         } else {
@@ -480,8 +491,28 @@ fn finish(
     report.thermal_factorizations =
         thermal.pads.iter().map(|p| p.factorizations).sum::<usize>() - report.thermal_factorizations;
     if report.energy_balance_closure.abs() > 0.01 {
-        report.warnings.push(format!("energy balance closes to {:.2} % only", 100.0 * report.energy_balance_closure));
+        report.warnings.push(Warning::EnergyBalance { closure: report.energy_balance_closure });
     }
     report.seconds = t0.elapsed().as_secs_f64();
     Ok(ThdState { equilibrium: eq, op, pads, journal_temperature_c: t_j, heat, report, growth: None, pivots: None })
+}
+
+/// Solves the THD equilibrium of a case on an existing model (all outer iterations of a [`ThdRun`]).
+///
+/// # Errors
+/// As [`ThdRun::step`].
+pub fn solve_thd(
+    model: &mut BearingModel,
+    thermal: &mut ThermalModel,
+    case: &Case,
+    params: ThermalParams,
+    start: Option<&[f64]>,
+    cancel: &dyn Cancel,
+) -> Result<ThdState, SolveError> {
+    let mut run = ThdRun::new(model, thermal, case, params, start);
+    loop {
+        if let Some(state) = run.step(model, thermal, case, cancel)? {
+            return Ok(state);
+        }
+    }
 }

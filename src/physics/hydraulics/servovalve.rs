@@ -103,7 +103,7 @@ mod tests {
     /// Bernoulli scaling of the flow gain: four times the pressure drop doubles it.
     #[test]
     fn flow_gain_scales_with_the_root_of_the_drop() {
-        let q = 10e-3 / 60.0;
+        let q = crate::units::L_PER_MIN.to_si(10.0);
         let k70 = flow_gain(q, 10.0, 70e5, 70e5, 0.0);
         assert!((k70 - q / 10.0).abs() < 1e-18);
         assert!((flow_gain(q, 10.0, 70e5, 280e5, 0.0) / k70 - 2.0).abs() < 1e-14);

@@ -146,7 +146,7 @@ impl Supports {
 }
 
 /// Failure of the elastic model.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, serde::Deserialize)]
 pub enum ElasticError {
     #[error("element {element} is inverted or degenerate")]
     Element { element: usize },

@@ -123,7 +123,28 @@ pub struct FilmSolveInfo {
     pub cavitated_nodes: usize,
     /// Largest complementarity violation relative to the peak pressure (0 when converged).
     pub complementarity: f64,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<FilmWarning>,
+}
+
+/// What a film solve warns about.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum FilmWarning {
+    /// The cavitation active set still changed after the iteration limit: the set of the last factorisation
+    /// is kept, with the largest complementarity violation (relative).
+    ActiveSetChanging { iterations: usize, changed_nodes: usize, complementarity: f64 },
+}
+
+impl std::fmt::Display for FilmWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::ActiveSetChanging { iterations, changed_nodes, complementarity } => write!(
+                f,
+                "cavitation active set still changing after {iterations} iterations ({changed_nodes} nodes); \
+                 largest complementarity violation {complementarity:.2e} (relative)"
+            ),
+        }
+    }
 }
 
 /// Flows of one pad [m³/s], for the whole pad (symmetry already applied).

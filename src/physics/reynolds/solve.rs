@@ -154,11 +154,11 @@ impl PadFilm {
                 let viol_p = self.p.iter().fold(0.0_f64, |m, &v| m.max(-v)) / p_scale;
                 let viol_r = (0..n).filter(|&i| self.cavitated[i]).fold(0.0_f64, |m, i| m.max(-self.r[i])) / r_scale;
                 info.complementarity = viol_p.max(viol_r);
-                info.warnings.push(format!(
-                    "cavitation active set still changing after {} iterations ({changed} nodes); \
-                     largest complementarity violation {:.2e} (relative)",
-                    info.active_set_iterations, info.complementarity
-                ));
+                info.warnings.push(super::FilmWarning::ActiveSetChanging {
+                    iterations: info.active_set_iterations,
+                    changed_nodes: changed,
+                    complementarity: info.complementarity,
+                });
                 for v in &mut self.p {
                     *v = v.max(0.0);
                 }

@@ -2,9 +2,15 @@
 //! image — Anderson-extrapolated, safeguarded, clamped — and what the loop does when an equilibrium fails
 //! with a proposed field (backtracking, the lightly loaded pads' mean viscosity, the cautious restart).
 
+use crate::bearing::report::error::{Budget, SolveError};
+use crate::bearing::report::warning::Warning;
+use crate::bearing::thermal::anderson::{flatten, unflatten, Anderson};
+use crate::bearing::thermal::model::{
+    ThdState, ThermalModel, ANDERSON_DEPTH, LIGHT_PAD_SHARE, MAX_BACKTRACKS, MIN_RELAXATION, PLAIN_RELAXATION,
+    SAFEGUARD_AFTER, STALL_GAIN, STALL_WINDOW,
+};
 use crate::bearing::thermal::run::ThdRun;
-#[allow(clippy::wildcard_imports)]
-use crate::bearing::thermal::*;
+use crate::model::Case;
 
 /// How far below the coldest oil or surroundings a proposed film temperature may lie [K]: the
 /// discretisation's own undershoot in converged states is far smaller (0.08 K below the supply temperature,
@@ -24,11 +30,11 @@ impl ThdRun {
             } else if it - self.best_change.1 >= STALL_WINDOW {
                 self.plain = true;
                 self.anderson = Anderson::safeguarded(0, PLAIN_RELAXATION, MIN_RELAXATION);
-                self.report.warnings.push(format!(
-                    "the accelerated temperature update stalled (viscosity change {:.1e} at best, outer iteration {}): damped \
-                     fixed-point steps from outer iteration {it}",
-                    self.best_change.0, self.best_change.1
-                ));
+                self.report.warnings.push(Warning::TemperatureUpdateStalled {
+                    best_change: self.best_change.0,
+                    best_iteration: self.best_change.1,
+                    from_iteration: it,
+                });
             }
         }
         let mut next = if safeguarded {
@@ -70,11 +76,11 @@ impl ThdRun {
         if !light.is_empty() {
             for &k in &light {
                 self.uniform[k] = true;
-                self.report.warnings.push(format!(
-                    "pad {k} carries {:.1} % of the load and had no equilibrium tilt with its non-uniform viscosity \
-                     ({e}): it is given its mean film viscosity",
-                    100.0 * self.shares[k]
-                ));
+                self.report.warnings.push(Warning::MeanViscosityAfterFailure {
+                    pad: k,
+                    load_percent: 100.0 * self.shares[k],
+                    error: Box::new(e.clone()),
+                });
             }
             return Ok(None);
         }
@@ -94,7 +100,7 @@ impl ThdRun {
         self.t_try =
             Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
         self.anderson.reset();
-        self.report.warnings.push(format!("equilibrium failed with the updated viscosity field ({e}); step halved"));
+        self.report.warnings.push(Warning::StepHalved { error: Box::new(e.clone()) });
         Ok(None)
     }
 
@@ -106,10 +112,10 @@ impl ThdRun {
     /// the first touchdown when the cautious loop spends the iteration or time budget (compressor bearing with
     /// thermal growth at S = 0.1: 4 map points whose touchdown took 60 s, then the restart ran out of 120 s).
     fn restart_cautiously(&mut self, thermal: &mut ThermalModel, e: &SolveError) {
-        self.report.warnings.push(format!(
-            "the thermal loop reached touchdown at outer iteration {} ({e}): restarted from the isothermal field with safeguarded steps",
-            self.report.outer_iterations
-        ));
+        self.report.warnings.push(Warning::ThermalRestart {
+            outer_iteration: self.report.outer_iterations,
+            error: Box::new(e.clone()),
+        });
         self.restarted_from = Some(e.clone());
         self.t_ok = None;
         self.t_try = None;
