@@ -13,7 +13,7 @@ use super::campbell::{critical_speeds, CriticalSpeed};
 use super::coupling::{assemble, BearingCoefficients};
 use super::critical_map::StiffnessCurve;
 use super::eigen::damped_modes;
-use super::error::RotorError;
+use super::error::{RotorError, RotorWarning};
 use super::reduction::reduce;
 use super::stability::{onset, Onset, SpeedPoint};
 use super::unbalance::{api617_limit_um, response, Orbit};
@@ -60,7 +60,7 @@ pub struct AnalysisReport {
     pub seconds: f64,
     pub bearing_seconds: f64,
     pub eigen_seconds: f64,
-    pub warnings: Vec<String>,
+    pub warnings: Vec<RotorWarning>,
 }
 
 /// Everything an analysis produces.
@@ -108,7 +108,7 @@ impl Analysis {
     pub fn new(rotor: &Rotor, params: AnalysisParams) -> Result<Self, RotorError> {
         let s = &params.speeds_rad_s;
         if s.is_empty() || s.iter().any(|w| !w.is_finite() || *w < 0.0) || s.windows(2).any(|w| w[1] <= w[0]) {
-            return Err(RotorError::Speeds("speeds must be finite, ≥ 0 and strictly ascending".into()));
+            return Err(RotorError::Speeds);
         }
         let mut report = AnalysisReport::default();
         let bearings = BearingSet::new(rotor);
@@ -190,7 +190,7 @@ impl Analysis {
         if let Some(o) = onset {
             self.report.eigen_solutions += o.probes;
         } else if sweep.first().is_some_and(|p| p.min_log_dec() <= 0.0) {
-            self.report.warnings.push("unstable from the first speed of the sweep: the onset lies below it".into());
+            self.report.warnings.push(RotorWarning::UnstableFromFirstSpeed);
         }
         let critical = critical_speeds(&sweep, 1.0, self.params.campbell_modes);
         self.report.bearing_solves = self.bearings.solves;
@@ -227,8 +227,8 @@ fn shaft_model(rotor: &Rotor, bearing_nodes: &[usize], report: &mut AnalysisRepo
             report.shaft_modes = rotor.shaft_modes;
             Ok(r)
         }
-        Err(e @ RotorError::Reduction { .. }) => {
-            report.warnings.push(format!("{e}: the full shaft model is used"));
+        Err(RotorError::Reduction { attached }) => {
+            report.warnings.push(RotorWarning::FullShaftModel { attached });
             Ok(full)
         }
         Err(e) => Err(e),

@@ -30,7 +30,7 @@ pub struct CriticalMap {
 /// The map over `n` stiffnesses from `k_min` to `k_max` (logarithmic), the first `modes` modes.
 ///
 /// # Errors
-/// [`RotorError::Speeds`] for a bad range; [`RotorError::SingularMass`].
+/// [`RotorError::StiffnessRange`] for a bad range; [`RotorError::SingularMass`].
 pub fn critical_map(
     shaft: &ShaftModel,
     bearing_nodes: &[usize],
@@ -40,9 +40,7 @@ pub fn critical_map(
     modes: usize,
 ) -> Result<CriticalMap, RotorError> {
     if !(k_min > 0.0 && k_max > k_min && k_max.is_finite() && n >= 2) {
-        return Err(RotorError::Speeds(format!(
-            "critical-speed map: needs 0 < k_min < k_max and n ≥ 2 (got {k_min:e}, {k_max:e}, {n})"
-        )));
+        return Err(RotorError::StiffnessRange { k_min, k_max, n });
     }
     let idx: Vec<usize> =
         (0..shaft.n_nodes).flat_map(|node| [shaft_index(node, NodeDof::X), shaft_index(node, NodeDof::A)]).collect();
@@ -275,6 +273,6 @@ mod tests {
     #[test]
     fn a_bad_range_is_refused() {
         let shaft = ShaftModel::new(&beam(4)).unwrap();
-        assert!(matches!(critical_map(&shaft, &[0, 4], 1e6, 1e5, 10, 2), Err(RotorError::Speeds(_))));
+        assert!(matches!(critical_map(&shaft, &[0, 4], 1e6, 1e5, 10, 2), Err(RotorError::StiffnessRange { .. })));
     }
 }

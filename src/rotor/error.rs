@@ -25,10 +25,39 @@ pub enum RotorError {
     /// Proportional damping asks for a free–free mode the shaft model does not have.
     #[error("`rotor.damping.modes`: flexible mode {mode} requested, the shaft model has {available}")]
     DampingMode { mode: usize, available: usize },
-    /// The shaft cannot be reduced (component mode synthesis).
-    #[error("shaft reduction: {message}")]
-    Reduction { message: String },
+    /// The shaft cannot be reduced (component mode synthesis): free with only the `attached` nodes held.
+    #[error(
+        "shaft reduction: the shaft is free with only nodes {attached:?} held (interior stiffness singular); use \
+         shaft_modes = 0 (the full model)"
+    )]
+    Reduction { attached: Vec<usize> },
     /// A speed list that cannot be swept.
-    #[error("speeds: {0}")]
-    Speeds(String),
+    #[error("speeds must be finite, ≥ 0 and strictly ascending")]
+    Speeds,
+    /// A critical-speed map over a stiffness range that is not one.
+    #[error("critical-speed map: needs 0 < k_min < k_max and n ≥ 2 (got {k_min:e}, {k_max:e}, {n})")]
+    StiffnessRange { k_min: f64, k_max: f64, n: usize },
+}
+
+/// What a rotor analysis warns about.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum RotorWarning {
+    /// The rotor is unstable already at the first speed of the sweep.
+    UnstableFromFirstSpeed,
+    /// The shaft could not be reduced: the full shaft model is used.
+    FullShaftModel { attached: Vec<usize> },
+}
+
+impl std::fmt::Display for RotorWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::UnstableFromFirstSpeed => {
+                f.write_str("unstable from the first speed of the sweep: the onset lies below it")
+            }
+            Self::FullShaftModel { attached } => {
+                write!(f, "{}: the full shaft model is used", RotorError::Reduction { attached: attached.clone() })
+            }
+        }
+    }
 }

@@ -74,9 +74,7 @@ pub fn reduce(shaft: &ShaftModel, attached: &[usize], modes_per_plane: usize) ->
     let interior: Vec<usize> = (0..n).filter(|i| !boundary.contains(i)).collect();
     let (nb, ni) = (boundary.len(), interior.len());
     let k_ii = pick(&shaft.stiffness, &interior, &interior);
-    let chol = k_ii.clone().cholesky().ok_or_else(|| RotorError::Reduction {
-        message: format!("the shaft is free with only nodes {attached:?} held (interior stiffness singular); use shaft_modes = 0 (the full model)"),
-    })?;
+    let chol = k_ii.clone().cholesky().ok_or_else(|| RotorError::Reduction { attached: attached.to_vec() })?;
     let psi = -chol.solve(&pick(&shaft.stiffness, &interior, &boundary));
     let (phi, modal_rad_s) =
         lowest_modes(&k_ii, &pick(&shaft.mass, &interior, &interior), (2 * modes_per_plane).min(ni))?;

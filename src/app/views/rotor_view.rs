@@ -324,7 +324,7 @@ fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
         r.report.system_dofs
     ));
     for w in &r.report.warnings {
-        ui.label(RichText::new(w).color(LIMIT));
+        ui.label(RichText::new(w.to_string()).color(LIMIT));
     }
 }
 
