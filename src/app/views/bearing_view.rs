@@ -1,11 +1,16 @@
 //! The bearing cross-section: journal, pads with their tilt, pivots, orifices, load, minimum film
-//! thickness, and the mid-plane pressure around each pad — drawn from [`BearingOutline`].
+//! thickness, and the mid-plane pressure around each pad — drawn from [`BearingOutline`]; a pinned result's
+//! outline dashed over it; the scales can be locked across edits. Before the first result: the case's
+//! outline, unsolved.
 
 use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
+use serde::{Deserialize, Serialize};
 
+use super::{View, ViewContext};
 use crate::bearing::limits::{Check, LimitKind};
-use crate::scene::outline::{BearingOutline, OutlineScales, Point};
-use crate::scene::summary::PadRow;
+use crate::bearing::stages::StageId;
+use crate::scene::outline::{self, BearingOutline, OutlineScales, Point};
+use crate::scene::summary::{self, PadRow};
 
 const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
 const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
@@ -15,6 +20,60 @@ const H_MIN: Color32 = Color32::from_rgb(235, 60, 60);
 const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
 /// The pinned result drawn over the live one.
 const PINNED: Color32 = Color32::from_rgb(90, 220, 240);
+
+/// The bearing view.
+#[derive(Debug, Default)]
+pub struct BearingView {
+    pub settings: BearingSettings,
+}
+
+/// What the bearing view keeps between sessions.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct BearingSettings {
+    /// Locked film exaggeration and pressure scale (`None`: chosen per picture).
+    pub outline_lock: Option<OutlineScales>,
+}
+
+impl View for BearingView {
+    fn id(&self) -> &'static str {
+        "bearing"
+    }
+
+    fn label(&self) -> &'static str {
+        "Bearing"
+    }
+
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        let case = cx.shown.map(|s| s.solution.inputs.clone()).or_else(|| cx.case().cloned());
+        let Some(case) = case else { return };
+        let pinned = cx.compare_with_ui(ui, self.needs(), |_| {});
+        let solution = cx.shown.map(|s| s.solution.as_ref());
+        let lock = &mut self.settings.outline_lock;
+        let o = outline::bearing_outline_with(&case, solution, *lock);
+        lock_ui(ui, lock, o.scales());
+        let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
+        let checks = solution.map(|s| crate::bearing::limits::check(&s.inputs.limits, s)).unwrap_or_default();
+        // The pinned outline at the live picture's scales, so the two overlay.
+        let overlay = pinned.map(|(name, p)| {
+            (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales())))
+        });
+        bearing_view_ui(ui, &o, &pads, &checks, cx.stale, overlay.as_ref().map(|(n, o)| (n.as_str(), o)));
+    }
+
+    /// The case's outline, unsolved.
+    fn placeholder_ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        self.ui(ui, cx);
+    }
+
+    fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
+        Some(&mut self.settings)
+    }
+}
 
 /// Maps the bearing frame (metres, y up) to the screen (points, y down).
 #[derive(Debug, Clone, Copy)]

@@ -14,6 +14,8 @@ use egui::{
     Vec2,
 };
 
+use super::{View, ViewContext};
+use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
 use crate::scene::deformation::{deforms, Displacement, PadDeformation, Section};
@@ -73,6 +75,32 @@ impl DeformationView {
             self.textures.clear();
         }
         self.scene.as_ref().map(|(_, _, d)| d)
+    }
+}
+
+impl View for DeformationView {
+    fn id(&self) -> &'static str {
+        "pad_deformation"
+    }
+
+    fn label(&self) -> &'static str {
+        "Pad deformation"
+    }
+
+    /// The solution carries each flexible pad's modes, amplitudes and displacement (the films stage computes
+    /// the modes when `physics.pad_modes > 0`).
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        if let Some(shown) = cx.shown {
+            deformation_view_ui(ui, self, &shown.solution);
+        }
+    }
+
+    fn snapshot_setup(&mut self) -> Option<&'static str> {
+        Some(include_str!("../../../cases/compressor-bearing-flexible.toml"))
     }
 }
 

@@ -10,7 +10,9 @@
 use egui::{Color32, RichText, Ui};
 use egui_plot::{HoverPosition, Legend, Line, Plot, VLine};
 
+use super::{View, ViewContext};
 use crate::bearing::frf_job::{band, FrfModel};
+use crate::bearing::stages::StageId;
 use crate::model::Case;
 use crate::scene::frf::FrfCurves;
 
@@ -59,6 +61,32 @@ impl FrfView {
             self.for_case = Some(case.clone());
             (self.air_fraction, self.line_length_mm, self.valve_hz, self.curves) = (None, None, None, None);
         }
+    }
+}
+
+impl View for FrfView {
+    fn id(&self) -> &'static str {
+        "frf"
+    }
+
+    fn label(&self) -> &'static str {
+        "FRF"
+    }
+
+    /// The solution and the bearing linearised for its injection ports.
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction, StageId::Frf]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        let Some(shown) = cx.shown else { return };
+        if let Some(FrfAction::ExportCsv(csv)) = frf_ui(ui, self, &shown.solution.inputs, shown.frf.as_deref()) {
+            cx.export("frf", "CSV", "csv", csv.into_bytes());
+        }
+    }
+
+    fn snapshot_setup(&mut self) -> Option<&'static str> {
+        Some(include_str!("../../../cases/test-rig-pub5.toml"))
     }
 }
 

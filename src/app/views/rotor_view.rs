@@ -15,7 +15,10 @@ use std::sync::Arc;
 use egui::{Color32, RichText, Stroke, Ui};
 use egui_plot::{HLine, Legend, Line, LineStyle, Plot, Points, VLine};
 
+use super::{View, ViewContext};
+use crate::app::frame_probe::Job;
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
+use crate::bearing::stages::StageId;
 use crate::model::rotor::{CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
 use crate::rotor::critical_map::map_over_curves;
@@ -110,6 +113,44 @@ impl Default for RotorView {
             progress: None,
             map: None,
         }
+    }
+}
+
+/// The rotor of the view's snapshot: a shaft 1000 mm long, Ø 50 mm, in 10 elements; a 20 kg disk at mid-span;
+/// bearings given by numbers at both ends (no bearing solve: the analysis is quick).
+const SNAPSHOT_ROTOR: &str = "title = \"Two-bearing shaft (bearings by numbers)\"\n[rotor]\n\
+    [[rotor.section]]\nlength_mm = 1000.0\nouter_diameter_mm = 50.0\nelements = 10\n\
+    [[rotor.disk]]\nnode = 5\nmass_kg = 20.0\n\
+    [[rotor.bearing]]\nnode = 0\nk_n_per_m = [[1e7, 0.0, 0.0, 1e7]]\nc_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]\n\
+    [[rotor.bearing]]\nnode = 10\nk_n_per_m = [[1e7, 0.0, 0.0, 1e7]]\nc_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]\n";
+
+impl View for RotorView {
+    fn id(&self) -> &'static str {
+        "rotor"
+    }
+
+    fn label(&self) -> &'static str {
+        "Rotor"
+    }
+
+    /// Nothing of the edited case: the view analyses its rotor file in the background.
+    fn needs(&self) -> &'static [StageId] {
+        &[]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        if let Some(save) = rotor_ui(ui, self) {
+            cx.export_as(save.name, "Rotor (TOML)", "toml", save.text.into_bytes());
+        }
+    }
+
+    fn busy(&self) -> Option<Job> {
+        (!self.is_idle()).then_some(Job::Rotor)
+    }
+
+    fn snapshot_setup(&mut self) -> Option<&'static str> {
+        self.open_file("two-bearing-shaft.toml", None, SNAPSHOT_ROTOR);
+        None
     }
 }
 
