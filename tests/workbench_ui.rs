@@ -26,6 +26,7 @@ use tiltpad::scene::field::{FieldKind, PadMap};
 use tiltpad::scene::field_compare::difference_maps;
 use tiltpad::scene::summary::sig4;
 use tiltpad::scene::sweep::SweepSpec;
+use tiltpad::units::{MPA, RPM, UM};
 
 const SIZE: [f32; 2] = [1400.0, 860.0];
 
@@ -146,7 +147,7 @@ fn field_view_shows_pressure_of_all_pads_with_flowlines_and_a_hover_readout() {
     snapshot(&mut h, "fields_pressure_all_pads");
     // Hover over the loaded pad (pad 3, the fourth map): the readout names the pad and a pressure.
     let s = h.state().shown.clone().unwrap().solution;
-    let p_max_mpa = s.pads[3].p_max_pa * 1e-6;
+    let p_max_mpa = MPA.from_si(s.pads[3].p_max_pa);
     h.get_by_label_contains("Hover over a pad");
     let below = h.get_by_label_contains("Rotation: left to right").rect();
     // Sweep the cursor over the maps (rows of pads under the note) until it is over pad 3.
@@ -324,7 +325,7 @@ fn deformation_view_shows_the_loaded_pad_and_its_modes() {
     h.get_by_label_contains(&format!("mode 2 at {} Hz", tiltpad::scene::summary::sig4(modes[1].frequency_hz)));
     h.get_by_label("Automatic exaggeration");
     snapshot(&mut h, "deformation_compressor_pad3");
-    let peak_um = 1e6 * pad.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let peak_um = UM.from_si(pad.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs())));
     let anchor = h.get_by_label("Automatic exaggeration").rect();
     let mut found = None;
     'sweep: for row in 0..12 {
@@ -368,7 +369,7 @@ fn deformation_view_switches_to_the_thermal_growth_of_a_tehd_solve_at_1280x720()
     h.run_steps(3);
     let s = h.state().shown.clone().unwrap().solution;
     let pad = &s.pads[3];
-    let peak = |v: &[f64]| v.iter().fold(0.0_f64, |m, x| m.max(x.abs())) * 1e6;
+    let peak = |v: &[f64]| UM.from_si(v.iter().fold(0.0_f64, |m, x| m.max(x.abs())));
     let mechanical_um = peak(&pad.elastic_displacement_m);
     let thermal_um = peak(&pad.thermal_growth.as_ref().expect("TEHD pads carry their growth").film_radial_m);
     let total: Vec<f64> = pad
@@ -566,8 +567,7 @@ fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_o
     wait_for_rotor(&mut h);
     h.get_by_label_contains("representative shaft, not the thesis' rotor");
     let full = rotor(&h).result().unwrap().clone();
-    let onset_full =
-        full.onset.as_ref().expect("an onset inside the view's sweep").speed_rad_s * 30.0 / std::f64::consts::PI;
+    let onset_full = RPM.from_si(full.onset.as_ref().expect("an onset inside the view's sweep").speed_rad_s);
     h.get_by_label_contains(&format!("Onset of instability: {onset_full:.0} rpm"));
     assert!(!full.critical_speeds.is_empty(), "the 1× line crosses a forward mode");
     snapshot(&mut h, "rotor_campbell");
@@ -585,12 +585,7 @@ fn rotor_view_analyses_the_compressor_rotor_and_reduced_coefficients_raise_the_o
     snapshot(&mut h, "rotor_critical_map");
     h.get_by_label("reduced 2×2").click();
     wait_for_rotor(&mut h);
-    let reduced = rotor(&h)
-        .result()
-        .unwrap()
-        .onset
-        .as_ref()
-        .map_or(f64::INFINITY, |o| o.speed_rad_s * 30.0 / std::f64::consts::PI);
+    let reduced = rotor(&h).result().unwrap().onset.as_ref().map_or(f64::INFINITY, |o| RPM.from_si(o.speed_rad_s));
     assert!(
         reduced > onset_full,
         "reduced coefficients overestimate the stable range: full {onset_full:.0}, reduced {reduced:.0} rpm"
@@ -689,7 +684,7 @@ fn colour_scale(h: &Harness<'_, WorkbenchApp>) -> (String, String) {
 
 /// The largest pressure of a result, as the field view's colour range reaches it [MPa].
 fn p_max_mpa(s: &tiltpad::bearing::Solution) -> f64 {
-    PadMap::all(s, FieldKind::Pressure).iter().map(|m| m.max).fold(0.0, f64::max) * 1e-6
+    MPA.from_si(PadMap::all(s, FieldKind::Pressure).iter().map(|m| m.max).fold(0.0, f64::max))
 }
 
 /// Pin the 9000 rpm result, solve 6000 rpm: the results panel lists both with their difference; the
@@ -728,7 +723,7 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     let pinned = PadMap::all(&fast, FieldKind::Pressure);
     let (_, (lo, hi)) = difference_maps(&live, &pinned).unwrap();
     assert!(hi > 0.0 && lo == -hi);
-    assert_eq!(colour_scale(&h), (sig4(lo * 1e-6), sig4(hi * 1e-6)));
+    assert_eq!(colour_scale(&h), (sig4(MPA.from_si(lo)), sig4(MPA.from_si(hi))));
     h.get_by_label_contains("Colour scale: Δ Pressure [MPa]");
     snapshot(&mut h, "compare_fields_difference_1280x720");
 

@@ -7,6 +7,7 @@ use super::presets::PRESETS;
 use super::views::{compare_panel, limits_view, results_panel, ViewContext};
 use super::{Pending, Status, WorkbenchApp};
 use crate::scene::{export, summary};
+use crate::units::MS;
 
 #[cfg(not(target_arch = "wasm32"))]
 const FRAME_TIME_MEANING: &str = "Time to build a frame on the UI thread; the solver runs on its own thread.";
@@ -62,7 +63,7 @@ impl WorkbenchApp {
         }
         self.drive_solver();
         let t4 = web_time::Instant::now();
-        let ms = |a: web_time::Instant, b: web_time::Instant| (b - a).as_secs_f64() * 1e3;
+        let ms = |a: web_time::Instant, b: web_time::Instant| MS.from_si((b - a).as_secs_f64());
         self.frame_parts_ms = [ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4)];
         if !self.is_idle() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
@@ -184,8 +185,8 @@ impl WorkbenchApp {
                     ui.label(
                         RichText::new(format!(
                             "UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)",
-                            self.frame_time_s * 1e3,
-                            peak * 1e3
+                            MS.from_si(self.frame_time_s),
+                            MS.from_si(peak)
                         ))
                         .weak(),
                     )

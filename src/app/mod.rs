@@ -355,7 +355,7 @@ impl eframe::App for WorkbenchApp {
             let [edit, results, view, solver] = self.frame_parts_ms;
             log::info!(
                 "slow frame: {:.1} ms ({}): menu and editor {edit:.1}, results {results:.1}, view {view:.1}, solver events {solver:.1} ms",
-                dt * 1e3,
+                crate::units::MS.from_si(dt),
                 if self.worker.busy() { "solving" } else { "idle" }
             );
         }

@@ -11,6 +11,7 @@ use crate::bearing::limits::{Check, LimitKind};
 use crate::bearing::stages::StageId;
 use crate::scene::outline::{self, BearingOutline, OutlineScales, Point};
 use crate::scene::summary::{self, PadRow};
+use crate::units::{MPA, UM};
 
 const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
 const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
@@ -131,7 +132,7 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
 pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineScales) {
     let mut locked = lock.is_some();
     let text = match lock {
-        Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, l.pressure_scale_pa * 1e-6),
+        Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, MPA.from_si(l.pressure_scale_pa)),
         None => "Lock scales".to_string(),
     };
     if ui
@@ -163,7 +164,7 @@ pub fn bearing_view_ui(
                 Color32::from_rgb(255, 160, 60),
                 format!(
                     "Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)",
-                    outline.pressure_scale_pa * 1e-6
+                    MPA.from_si(outline.pressure_scale_pa)
                 ),
             );
         }
@@ -260,7 +261,7 @@ pub fn bearing_view_ui(
             painter.text(
                 b + away * 30.0,
                 Align2::CENTER_CENTER,
-                format!("{:.1} µm{below}", h * 1e6),
+                format!("{:.1} µm{below}", UM.from_si(h)),
                 FontId::proportional(11.0),
                 H_MIN,
             );

@@ -28,6 +28,7 @@ use crate::scene::field_compare::{
 };
 use crate::scene::flowlines::{arrow_phase, arrowheads, orifice_sites, pad_flowlines, Flowline, FlowlineParams};
 use crate::scene::summary::sig4;
+use crate::units::MM;
 
 /// The pad field view.
 #[derive(Default)]
@@ -575,7 +576,7 @@ impl PanelDraw<'_> {
                         of,
                         pad: map.pad,
                         theta_deg,
-                        z_mm: z * 1e3,
+                        z_mm: MM.from_si(z),
                         value: v * kind.unit().1,
                         cavitated: map.cavitated_at(s, z),
                     });

@@ -26,6 +26,7 @@ use crate::rotor::eigen::Whirl;
 use crate::scene::rotor::{
     map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem,
 };
+use crate::units::{MM, RPM};
 
 use super::rotor_edit::{edit_ui, RotorEdit, SaveRequest, Selected};
 
@@ -156,10 +157,10 @@ impl View for RotorView {
 
 /// The view's speeds [rad/s] for `rotor`.
 fn speeds(rotor: &Rotor) -> Vec<f64> {
-    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| b * 30.0 / std::f64::consts::PI) * MAX_FACTOR;
+    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| RPM.from_si(b)) * MAX_FACTOR;
     #[allow(clippy::cast_precision_loss)]
     (0..SPEEDS)
-        .map(|i| (FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64) * std::f64::consts::PI / 30.0)
+        .map(|i| RPM.to_si(FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64))
         .collect()
 }
 
@@ -346,11 +347,11 @@ pub fn first_mode_at_top_speed(r: &AnalysisResult, rotor: &Rotor) -> Option<(f64
         .speeds
         .iter()
         .min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?;
-    s.point.modes.modes.first().map(|m| (s.point.speed_rad_s * 30.0 / std::f64::consts::PI, m.frequency_hz()))
+    s.point.modes.modes.first().map(|m| (RPM.from_si(s.point.speed_rad_s), m.frequency_hz()))
 }
 
 fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
-    let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
+    let rpm = |w: f64| RPM.from_si(w);
     let onset =
         r.onset.as_ref().map_or_else(|| "none in the sweep".to_string(), |o| format!("{:.0} rpm", rpm(o.speed_rad_s)));
     let critical: Vec<String> = r.critical_speeds.iter().map(|c| format!("{:.0}", rpm(c.speed_rad_s))).collect();
@@ -485,7 +486,7 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
     let last = r.speeds.len().saturating_sub(1);
     view.speed_index = view.speed_index.min(last);
     let index_rpm: Vec<f64> =
-        (0..r.speeds.len()).map(|i| r.speeds[i].point.speed_rad_s * 30.0 / std::f64::consts::PI).collect();
+        (0..r.speeds.len()).map(|i| RPM.from_si(r.speeds[i].point.speed_rad_s)).collect();
     ui.horizontal(|ui| {
         ui.add(
             egui::Slider::new(&mut view.speed_index, 0..=last)
@@ -519,7 +520,7 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
         ui.label("No mode at this speed.");
         return;
     };
-    let z_mm: Vec<f64> = s.z_m.iter().map(|z| z * 1e3).collect();
+    let z_mm: Vec<f64> = s.z_m.iter().map(|z| MM.from_si(*z)).collect();
     let color = whirl_color(s.whirl);
     let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
     plot("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
