@@ -342,11 +342,14 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
 /// as `√(k/m)` says (a heavily damped mode at low speed may not).
 #[must_use]
 pub fn first_mode_at_top_speed(r: &AnalysisResult, rotor: &Rotor) -> Option<(f64, f64)> {
-    let top = rotor.operating_range.map_or(f64::INFINITY, |[_, b]| b);
-    let s = r
-        .speeds
-        .iter()
-        .min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?;
+    let s = match rotor.operating_range {
+        Some([_, top]) => r
+            .speeds
+            .iter()
+            .min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?,
+        // (Measured from an infinite top, every speed would tie and the first be taken.)
+        None => r.speeds.last()?,
+    };
     s.point.modes.modes.first().map(|m| (RPM.from_si(s.point.speed_rad_s), m.frequency_hz()))
 }
 
