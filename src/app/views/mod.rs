@@ -41,4 +41,5 @@ views! {
     frf_view::FrfView,
     rotor_view::RotorView,
     sweep_view::SweepView,
+    pivot_loads::PivotLoadView,
 }
