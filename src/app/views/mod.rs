@@ -43,3 +43,51 @@ views! {
     sweep_view::SweepView,
     pivot_loads::PivotLoadView,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::state::Persisted;
+    use crate::app::WorkbenchApp;
+
+    #[test]
+    fn every_view_has_its_own_id_and_label() {
+        let views = all();
+        let ids: std::collections::BTreeSet<&str> = views.iter().map(|v| v.id()).collect();
+        let labels: std::collections::BTreeSet<&str> = views.iter().map(|v| v.label()).collect();
+        assert_eq!((ids.len(), labels.len()), (views.len(), views.len()));
+        // Ids are stored between sessions and name snapshot files: plain lower-case words.
+        assert!(ids.iter().all(|id| id.chars().all(|c| c.is_ascii_lowercase() || c == '_')), "{ids:?}");
+    }
+
+    #[test]
+    fn settings_read_back_and_settings_that_do_not_read_leave_them_unchanged() {
+        for mut v in all() {
+            let id = v.id();
+            let Some(settings) = v.settings() else { continue };
+            let json = settings.to_json().expect("settings write as JSON");
+            assert!(settings.read_json(&json), "{id}: {json}");
+            assert!(!settings.read_json("{\"not\": json"), "{id}");
+            assert_eq!(settings.to_json().as_deref(), Some(json.as_str()), "{id}");
+        }
+    }
+
+    /// Stored settings are restored view by view: a partial entry fills in defaults, an entry that does not
+    /// read (an older layout) leaves the view's defaults, and the rest of the stored state stays.
+    #[test]
+    fn the_app_restores_each_views_settings_and_keeps_the_defaults_of_unreadable_ones() {
+        use super::coefficients_view::{CoefficientAxis, CoefficientsView};
+        use super::field_view::{FieldSettings, FieldView, PadChoice};
+        let mut persisted =
+            Persisted { view: "PadDeformation".into(), case_name: "kept".into(), ..Persisted::default() };
+        persisted.view_settings.insert("fields".into(), r#"{"flowlines": false, "pads": {"One": 2}}"#.into());
+        persisted.view_settings.insert("coefficients".into(), r#"{"axis": "Sideways"}"#.into());
+        persisted.view_settings.insert("gone".into(), "{}".into());
+        let app = WorkbenchApp::with_state(&egui::Context::default(), persisted);
+        let fields = &app.view::<FieldView>().unwrap().settings;
+        assert_eq!(*fields, FieldSettings { flowlines: false, pads: PadChoice::One(2), ..FieldSettings::default() });
+        assert_eq!(app.view::<CoefficientsView>().unwrap().settings.axis, CoefficientAxis::FrequencyRatio);
+        assert_eq!(app.open_view().id(), "pad_deformation");
+        assert_eq!(app.persisted.case_name, "kept");
+    }
+}
