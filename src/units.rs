@@ -47,6 +47,12 @@ pub const RPM: Unit = unit("rpm", TAU / 60.0);
 pub const HZ_ANGULAR: Unit = unit("Hz", TAU);
 /// Degrees, in rad.
 pub const DEG: Unit = unit("°", TAU / 360.0);
+/// Milliradians (pad tilt), in rad.
+pub const MRAD: Unit = unit("mrad", 1e-3);
+
+// Time.
+/// Milliseconds (solve and frame times), in s.
+pub const MS: Unit = unit("ms", 1e-3);
 
 // Lengths.
 pub const MM: Unit = unit("mm", 1e-3);

@@ -6,6 +6,7 @@ use egui::{Key, KeyboardShortcut, Modifiers};
 use super::files::{encode_png, FileEvent};
 use super::presets::PRESETS;
 use super::save_dialog::{SaveDialog, SaveOutcome};
+use super::views::rotor_view::RotorView;
 use super::{Pending, WorkbenchApp};
 
 const UNDO: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::Z);
@@ -16,8 +17,7 @@ const OPEN: KeyboardShortcut = KeyboardShortcut::new(Modifiers::COMMAND, Key::O)
 
 impl WorkbenchApp {
     pub(super) fn export_name(&self, what: &str, ext: &str) -> String {
-        let stem = self.doc.name.trim_end_matches(".toml");
-        format!("{stem}-{what}.{ext}")
+        super::views::view::export_name(&self.doc.name, what, ext)
     }
 
     /// Runs an action that replaces the case, asking first when there are unsaved changes.
@@ -113,8 +113,10 @@ impl WorkbenchApp {
         match e {
             FileEvent::Opened { name, path, text } => self.request(Pending::Replace { name, path, text }),
             FileEvent::OpenedRotor { name, path, text } => {
-                self.rotor.open_file(&name, Some(&path), &text);
-                self.persisted.view = super::state::View::Rotor;
+                if let Some(rotor) = self.view_mut::<RotorView>() {
+                    rotor.open_file(&name, Some(&path), &text);
+                }
+                self.open::<RotorView>();
                 self.notice = Some(format!("Opened rotor {}", path.display()));
             }
             FileEvent::SavedCase { name, path, saved, text } => {
@@ -177,7 +179,7 @@ impl WorkbenchApp {
         let rgba: Vec<u8> = cropped.pixels.iter().flat_map(|c| c.to_array()).collect();
         match encode_png(cropped.width(), cropped.height(), &rgba) {
             Ok(bytes) => {
-                let name = self.export_name(&self.persisted.view.label().to_lowercase().replace(' ', "-"), "png");
+                let name = self.export_name(&self.open_view().label().to_lowercase().replace(' ', "-"), "png");
                 self.files.export(&name, "PNG image", "png", bytes);
             }
             Err(e) => self.notice = Some(format!("PNG export failed: {e}")),

@@ -4,14 +4,10 @@ use egui::{Color32, RichText, Ui};
 
 use super::editor::editor_ui;
 use super::presets::PRESETS;
-use super::state::{CoefficientAxis, PadChoice, View};
-use super::views::{
-    bearing_view, coefficients_view, compare_panel, deformation_view, field_view, frf_view, limits_view, results_panel,
-    sweep_view,
-};
+use super::views::{compare_panel, limits_view, results_panel, ViewContext};
 use super::{Pending, Status, WorkbenchApp};
-use crate::scene::field::FieldKind;
-use crate::scene::{export, outline, plots, summary};
+use crate::scene::{export, summary};
+use crate::units::MS;
 
 #[cfg(not(target_arch = "wasm32"))]
 const FRAME_TIME_MEANING: &str = "Time to build a frame on the UI thread; the solver runs on its own thread.";
@@ -67,7 +63,7 @@ impl WorkbenchApp {
         }
         self.drive_solver();
         let t4 = web_time::Instant::now();
-        let ms = |a: web_time::Instant, b: web_time::Instant| (b - a).as_secs_f64() * 1e3;
+        let ms = |a: web_time::Instant, b: web_time::Instant| MS.from_si((b - a).as_secs_f64());
         self.frame_parts_ms = [ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4)];
         if !self.is_idle() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
@@ -189,8 +185,8 @@ impl WorkbenchApp {
                     ui.label(
                         RichText::new(format!(
                             "UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)",
-                            self.frame_time_s * 1e3,
-                            peak * 1e3
+                            MS.from_si(self.frame_time_s),
+                            MS.from_si(peak)
                         ))
                         .weak(),
                     )
@@ -238,60 +234,36 @@ impl WorkbenchApp {
         }
     }
 
+    /// The tabs of the views, and the open one.
     fn central_ui(&mut self, ui: &mut Ui) {
+        let open = self.open_index();
         ui.horizontal_wrapped(|ui| {
-            for v in View::ALL {
-                ui.selectable_value(&mut self.persisted.view, v, v.label());
+            for (i, v) in self.views.iter().enumerate() {
+                if ui.selectable_label(i == open, v.label()).clicked() {
+                    self.persisted.view = v.id().to_string();
+                }
             }
         });
         ui.separator();
         self.view_rect = Some(ui.available_rect_before_wrap());
-        let stale = self.result_is_stale();
-        match self.persisted.view {
-            View::Bearing => {
-                let case = self
-                    .shown
-                    .as_ref()
-                    .map(|s| s.solution.inputs.clone())
-                    .or_else(|| self.doc.validation().as_ref().ok().cloned());
-                if let Some(case) = case {
-                    let pinned = self.compare_with_ui(ui, crate::scene::request::SOLUTION);
-                    let solution = self.shown.as_ref().map(|s| s.solution.as_ref());
-                    let o = outline::bearing_outline_with(&case, solution, self.persisted.outline_lock);
-                    bearing_view::lock_ui(ui, &mut self.persisted.outline_lock, o.scales());
-                    let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
-                    let checks = solution
-                        .map(|s| crate::bearing::solution::limits::check(&s.inputs.limits, s))
-                        .unwrap_or_default();
-                    // The pinned outline at the live picture's scales, so the two overlay.
-                    let overlay = pinned.map(|(name, p)| {
-                        (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales())))
-                    });
-                    bearing_view::bearing_view_ui(
-                        ui,
-                        &o,
-                        &pads,
-                        &checks,
-                        stale,
-                        overlay.as_ref().map(|(n, o)| (n.as_str(), o)),
-                    );
-                }
-            }
-            View::Fields => self.fields_ui(ui),
-            View::Coefficients => self.coefficients_ui(ui),
-            View::Frf => self.frf_ui(ui),
-            View::PadDeformation => match self.shown.clone() {
-                Some(shown) => deformation_view::deformation_view_ui(ui, &mut self.deformation, &shown.solution),
-                None => {
-                    ui.label("Waiting for the first result…");
-                }
-            },
-            View::Rotor => {
-                if let Some(save) = super::views::rotor_view::rotor_ui(ui, &mut self.rotor) {
-                    self.files.export(&save.name, "Rotor (TOML)", "toml", save.text.into_bytes());
-                }
-            }
-            View::Sweep => self.sweep_ui(ui),
+        let open = self.open_index();
+        let mut cx = ViewContext {
+            shown: self.shown.as_ref(),
+            doc: &self.doc,
+            stale: self.result_is_stale(),
+            pins: &self.persisted.pins,
+            compare_with: &mut self.persisted.compare_with,
+            pinned: &mut self.pinned,
+            exports: Vec::new(),
+        };
+        let view = &mut self.views[open];
+        if cx.shown.is_none() && !view.needs().is_empty() {
+            view.placeholder_ui(ui, &mut cx);
+        } else {
+            view.ui(ui, &mut cx);
+        }
+        for e in cx.exports {
+            self.files.export(&e.name, e.description, e.extension, e.bytes);
         }
     }
 
@@ -303,132 +275,5 @@ impl WorkbenchApp {
                 self.persisted.compare_with = Some(pin.name.clone());
             }
         }
-    }
-
-    fn fields_ui(&mut self, ui: &mut Ui) {
-        let Some(shown) = self.shown.clone() else {
-            ui.label("Waiting for the first result…");
-            return;
-        };
-        let available = FieldKind::available(&shown.solution);
-        let n_pads = shown.solution.pads.len();
-        // The chosen field when this result has it (a THD field after switching to isothermal: pressure);
-        // the selector names what is drawn.
-        let drawn = if available.contains(&self.persisted.field) { self.persisted.field } else { FieldKind::Pressure };
-        // Wrapped: at 1280×720 with both side panels open the row is wider than the view.
-        ui.horizontal_wrapped(|ui| {
-            let label = ui.label("Field");
-            egui::ComboBox::from_id_salt("field-kind")
-                .selected_text(drawn.label())
-                .show_ui(ui, |ui| {
-                    for k in FieldKind::ALL {
-                        let ok = available.contains(&k);
-                        ui.add_enabled_ui(ok, |ui| ui.selectable_value(&mut self.persisted.field, k, k.label()))
-                            .response
-                            .on_disabled_hover_text("Needs the thermal model: not part of this result.")
-                            .on_hover_text(k.meaning());
-                    }
-                })
-                .response
-                .labelled_by(label.id);
-            let label = ui.label("Pads");
-            let text = match self.persisted.pads {
-                PadChoice::All => "all side by side".to_string(),
-                PadChoice::One(k) => format!("pad {k}"),
-            };
-            egui::ComboBox::from_id_salt("field-pads")
-                .selected_text(text)
-                .show_ui(ui, |ui| {
-                    ui.selectable_value(&mut self.persisted.pads, PadChoice::All, "all side by side");
-                    for k in 0..n_pads {
-                        ui.selectable_value(&mut self.persisted.pads, PadChoice::One(k), format!("pad {k}"));
-                    }
-                })
-                .response
-                .labelled_by(label.id);
-            ui.checkbox(&mut self.persisted.flowlines, "Flowlines")
-                .on_hover_text("Streamlines of the mean film velocity: seeded on the leading edge and around each orifice (a source when injecting, a sink when not); they stop where the film cavitates.");
-        });
-        if let PadChoice::One(k) = self.persisted.pads {
-            if k >= n_pads {
-                self.persisted.pads = PadChoice::All;
-            }
-        }
-        let kind = if available.contains(&self.persisted.field) { self.persisted.field } else { drawn };
-        let pinned = self.compare_with_ui(ui, crate::scene::request::SOLUTION);
-        let p = &mut self.persisted;
-        let opts = field_view::FieldOptions {
-            kind,
-            pads: p.pads,
-            flowlines: p.flowlines,
-            locks: &mut p.field_locks,
-            pinned: pinned.as_ref().map(|(name, s)| (name.as_str(), &s.solution, p.field_compare)),
-        };
-        field_view::field_view_ui(ui, &mut self.field_cache, &shown.solution, opts);
-    }
-
-    fn frf_ui(&mut self, ui: &mut Ui) {
-        let Some((case, model)) = self.shown.as_ref().map(|s| (s.solution.inputs.clone(), s.frf.clone())) else {
-            ui.label("Waiting for the first result…");
-            return;
-        };
-        if let Some(frf_view::FrfAction::ExportCsv(csv)) = frf_view::frf_ui(ui, &mut self.frf, &case, model.as_deref())
-        {
-            self.files.export(&self.export_name("frf", "csv"), "CSV", "csv", csv.into_bytes());
-        }
-    }
-
-    fn sweep_ui(&mut self, ui: &mut Ui) {
-        let text = self.doc.validation().is_ok().then(|| self.doc.text().ok()).flatten();
-        let current = self.shown.as_ref().map(|s| s.solution.clone());
-        if let Some(sweep_view::SweepAction::ExportCsv(csv)) =
-            sweep_view::sweep_view_ui(ui, &mut self.sweep, &mut self.persisted.sweep, text, current.as_deref())
-        {
-            self.files.export(&self.export_name("sweep", "csv"), "CSV", "csv", csv.into_bytes());
-        }
-    }
-
-    fn coefficients_ui(&mut self, ui: &mut Ui) {
-        ui.horizontal(|ui| {
-            ui.label("Against");
-            ui.selectable_value(
-                &mut self.persisted.axis,
-                CoefficientAxis::FrequencyRatio,
-                "excitation frequency ratio ω/Ω",
-            );
-            ui.selectable_value(&mut self.persisted.axis, CoefficientAxis::Speed, "speed (background sweep)");
-        });
-        let Some(shown) = self.shown.clone() else {
-            ui.label("Waiting for the first result…");
-            return;
-        };
-        let axis = self.persisted.axis;
-        let plot_of = |shown: &super::Shown| {
-            let sol = &shown.solution;
-            match axis {
-                CoefficientAxis::FrequencyRatio => shown
-                    .frequency_sweep
-                    .as_ref()
-                    .map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
-                CoefficientAxis::Speed => {
-                    shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced))))
-                }
-            }
-        };
-        let pinned = self
-            .compare_with_ui(ui, View::Coefficients.needs(axis))
-            .and_then(|(name, p)| plot_of(&p).map(|plot| (name, plot)));
-        let sol = &shown.solution;
-        match plot_of(&shown) {
-            Some(p) => coefficients_view::coefficient_plots_ui(ui, &p, pinned.as_ref().map(|(n, p)| (n.as_str(), p))),
-            None => {
-                ui.horizontal(|ui| {
-                    ui.spinner();
-                    ui.label("Sweeping in the background…");
-                });
-            }
-        }
-        ui.separator();
-        coefficients_view::matrix_table_ui(ui, &plots::matrix_table(&sol.full));
     }
 }

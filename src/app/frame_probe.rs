@@ -13,6 +13,7 @@ use std::fmt;
 use web_time::Instant;
 
 use crate::bearing::stages::StageId;
+use crate::units::MS;
 
 /// Frames per console line while one job lasts.
 pub const FRAMES_PER_REPORT: usize = 60;
@@ -68,11 +69,11 @@ impl fmt::Display for Summary {
             "frame probe: {} — {} frames, interval p50 {:.1} ms, p95 {:.1} ms, max {:.1} ms; work p95 {:.1} ms, max {:.1} ms",
             self.job,
             self.frames,
-            1e3 * self.interval_p50_s,
-            1e3 * self.interval_p95_s,
-            1e3 * self.interval_max_s,
-            1e3 * self.work_p95_s,
-            1e3 * self.work_max_s
+            MS.from_si(self.interval_p50_s),
+            MS.from_si(self.interval_p95_s),
+            MS.from_si(self.interval_max_s),
+            MS.from_si(self.work_p95_s),
+            MS.from_si(self.work_max_s)
         )
     }
 }

@@ -1,11 +1,11 @@
 //! The workbench: an eframe app that edits a case, solves it in the background and shows the result.
 //!
 //! Layout: a menu bar; the editor on the left; the results panel on the right; a status bar; the views
-//! (bearing cross-section, pad fields with flowlines, coefficients, pad deformation, FRFs, rotor) in the
-//! centre.
+//! (bearing cross-section, pad fields with flowlines, coefficients, pad deformation, FRFs, rotor, sweep …:
+//! the list in [`views`]) in the centre, one tab each.
 //!
 //! State is split by lifetime: [`state::Persisted`] (the case and view settings, saved by eframe between
-//! sessions) and the runtime state in [`WorkbenchApp`] (worker, shown result, caches, dialogs).
+//! sessions) and the runtime state in [`WorkbenchApp`] (worker, shown result, dialogs) and its views.
 //!
 //! Solving is declarative: every frame the app derives the [`Request`] the screen needs from the current
 //! case and view; when it differs from the last one submitted, the worker gets it (cancelling the running
@@ -44,11 +44,13 @@ use crate::model::{parse_case_file, Case, Fidelity};
 use document::Document;
 use files::Files;
 use state::Persisted;
-use views::field_view::FieldCache;
+use views::View;
 use worker::{Event, Worker};
 
 /// Per-frame time the web build may spend solving [s].
 const WEB_SOLVE_BUDGET_S: f64 = 0.012;
+/// What the results panel shows: the solution at the operating point (asked for whatever view is open).
+const RESULTS_PANEL_NEEDS: &[StageId] = &[StageId::Reduction];
 
 /// The result on screen.
 #[derive(Clone)]
@@ -88,11 +90,8 @@ pub struct WorkbenchApp {
     pub status: Status,
     /// A value is being dragged in the editor.
     dragging: bool,
-    field_cache: FieldCache,
-    pub frf: views::frf_view::FrfView,
-    pub deformation: views::deformation_view::DeformationView,
-    pub rotor: views::rotor_view::RotorView,
-    pub sweep: views::sweep_view::SweepView,
+    /// Every view ([`views::all`]); the open one is named by `persisted.view`.
+    views: Vec<Box<dyn View>>,
     /// Results of the pins the views compare with (kept or re-solved, never persisted).
     pinned: pinned::PinnedResults,
     pending: Option<Pending>,
@@ -140,6 +139,14 @@ impl WorkbenchApp {
             None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true)
                 .with_source(text),
         };
+        let mut views = views::all();
+        for v in &mut views {
+            let id = v.id();
+            if let (Some(json), Some(settings)) = (persisted.view_settings.get(id), v.settings()) {
+                // Settings of an older layout leave the view's defaults.
+                settings.read_json(json);
+            }
+        }
         Self {
             persisted,
             doc,
@@ -149,11 +156,7 @@ impl WorkbenchApp {
             shown: None,
             status: Status::Idle,
             dragging: false,
-            field_cache: FieldCache::default(),
-            frf: views::frf_view::FrfView::default(),
-            deformation: views::deformation_view::DeformationView::default(),
-            rotor: views::rotor_view::RotorView::default(),
-            sweep: views::sweep_view::SweepView::default(),
+            views,
             pinned: pinned::PinnedResults::new(ctx.clone()),
             pending: None,
             save_dialog: None,
@@ -191,17 +194,60 @@ impl WorkbenchApp {
         self.view_rect
     }
 
-    /// Nothing is being solved (the edited case or a pin the views compare with) and no result is pending.
+    /// Nothing is being solved (the edited case, a pin the views compare with, the open view's own work)
+    /// and no result is pending.
     #[must_use]
     pub fn is_idle(&self) -> bool {
-        !self.worker.busy() && !self.pinned.busy()
+        !self.worker.busy() && !self.pinned.busy() && self.open_view().busy().is_none()
     }
 
-    /// What the frame probe files this frame under.
+    /// The open view.
+    #[must_use]
+    pub fn open_view(&self) -> &dyn View {
+        self.views[self.open_index()].as_ref()
+    }
+
+    /// Where the open view is in the list (`persisted.view` not listed: the first).
+    fn open_index(&self) -> usize {
+        self.views.iter().position(|v| state::names_view(&self.persisted.view, v.id())).unwrap_or(0)
+    }
+
+    /// Opens the view of type `V`.
+    pub fn open<V: View>(&mut self) {
+        if let Some(v) = self.views.iter().find(|v| v.as_ref().as_any().is::<V>()) {
+            self.persisted.view = v.id().to_string();
+        }
+    }
+
+    /// The view of type `V` (`None`: not in the list).
+    #[must_use]
+    pub fn view<V: View>(&self) -> Option<&V> {
+        self.views.iter().find_map(|v| v.as_ref().as_any().downcast_ref::<V>())
+    }
+
+    /// The view of type `V`, to change (`None`: not in the list).
+    pub fn view_mut<V: View>(&mut self) -> Option<&mut V> {
+        self.views.iter_mut().find_map(|v| v.as_mut().as_any_mut().downcast_mut::<V>())
+    }
+
+    /// Opens the view `id` as the UI test that walks the list snapshots it: the view sets itself up
+    /// ([`View::snapshot_setup`]) and the case it names replaces the document. `false`: no such view.
+    pub fn open_for_snapshot(&mut self, id: &str) -> bool {
+        let Some(view) = self.views.iter_mut().find(|v| v.id() == id) else { return false };
+        self.persisted.view = id.to_string();
+        if let Some(text) = view.snapshot_setup() {
+            self.load_text("snapshot case", None, text);
+            self.notice = None;
+        }
+        true
+    }
+
+    /// What the frame probe files this frame under: the open view's own work first (a sweep, a rotor
+    /// analysis), then the edited case's solve, a pin's, another view's work.
     fn probe_job(&self) -> frame_probe::Job {
         use frame_probe::Job;
-        if self.sweep.job.as_ref().is_some_and(|j| !j.done()) {
-            Job::Sweep
+        if let Some(job) = self.open_view().busy() {
+            job
         } else if self.worker.busy() {
             let thd =
                 self.submitted.as_ref().is_some_and(|r| r.case.thermal.model == crate::model::ThermalModelKind::Thd);
@@ -214,10 +260,8 @@ impl WorkbenchApp {
             }
         } else if self.pinned.busy() {
             Job::Pin
-        } else if !self.rotor.is_idle() {
-            Job::Rotor
         } else {
-            Job::Idle
+            self.views.iter().find_map(|v| v.busy()).unwrap_or(Job::Idle)
         }
     }
 
@@ -225,7 +269,7 @@ impl WorkbenchApp {
     fn wanted_request(&self) -> Option<Request> {
         let case = self.doc.validation().as_ref().ok()?;
         let case = if self.dragging && self.persisted.preview_while_dragging { preview(case) } else { case.clone() };
-        Some(crate::scene::request::request(case, [self.persisted.view.needs(self.persisted.axis)]))
+        Some(crate::scene::request::request(case, [RESULTS_PANEL_NEEDS, self.open_view().needs()]))
     }
 
     /// Submits the wanted request when it changed, and takes in the worker's events.
@@ -311,7 +355,7 @@ impl eframe::App for WorkbenchApp {
             let [edit, results, view, solver] = self.frame_parts_ms;
             log::info!(
                 "slow frame: {:.1} ms ({}): menu and editor {edit:.1}, results {results:.1}, view {view:.1}, solver events {solver:.1} ms",
-                dt * 1e3,
+                crate::units::MS.from_si(dt),
                 if self.worker.busy() { "solving" } else { "idle" }
             );
         }
@@ -334,6 +378,12 @@ impl eframe::App for WorkbenchApp {
         self.persisted.case_name.clone_from(&self.doc.name);
         self.persisted.case_path.clone_from(&self.doc.path);
         self.persisted.case_saved = !self.doc.is_dirty();
+        for v in &mut self.views {
+            let id = v.id();
+            if let Some(json) = v.settings().and_then(|s| s.to_json()) {
+                self.persisted.view_settings.insert(id.to_string(), json);
+            }
+        }
         eframe::set_value(storage, eframe::APP_KEY, &self.persisted);
     }
 }

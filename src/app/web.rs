@@ -30,14 +30,16 @@ pub fn start() {
                     let mut app = super::WorkbenchApp::new(cc);
                     // `?probe&sweep`: the sweep view opens and runs its sweep at once (measures frames while sweeping).
                     if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "sweep") {
-                        app.persisted.view = super::state::View::Sweep;
-                        app.sweep.job = app.doc.text().ok().and_then(|t| {
-                            super::sweep_job::SweepJob::start(t, &app.persisted.sweep, &cc.egui_ctx).ok()
-                        });
+                        app.open::<super::views::sweep_view::SweepView>();
+                        let text = app.doc.text().ok();
+                        if let (Some(text), Some(sweep)) = (text, app.view_mut::<super::views::sweep_view::SweepView>())
+                        {
+                            sweep.job = super::sweep_job::SweepJob::start(text, &sweep.spec, &cc.egui_ctx).ok();
+                        }
                     }
                     // `?probe&rotor`: the rotor view opens (its analysis starts at once).
                     if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "rotor") {
-                        app.persisted.view = super::state::View::Rotor;
+                        app.open::<super::views::rotor_view::RotorView>();
                     }
                     app.probe = probe;
                     if let Some(k) = preset {

@@ -353,8 +353,8 @@ mod tests {
         let scale = growth.film_radial_m.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         eprintln!(
             "thermal film-face growth of pad {loaded}: peak {:.3} µm; mechanical peak {:.3} µm",
-            scale * 1e6,
-            p.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs())) * 1e6
+            crate::units::UM.from_si(scale),
+            crate::units::UM.from_si(p.elastic_displacement_m.iter().fold(0.0_f64, |m, v| m.max(v.abs())))
         );
         assert!(scale > 1e-7, "the heated pad grows: {scale}");
         let [m, t, total] = Displacement::ALL.map(|d| PadDeformation::new(&s, loaded, None, d).unwrap());

@@ -9,6 +9,7 @@
 //! ([`FieldKind::nodal`] is the one place that maps a kind to the solver's nodal data).
 
 use crate::bearing::solution::{PadField, Solution};
+use crate::units::{MPA, UM};
 
 use super::colormap::ColorMap;
 
@@ -40,8 +41,8 @@ impl FieldKind {
     #[must_use]
     pub fn unit(self) -> (&'static str, f64) {
         match self {
-            Self::Pressure => ("MPa", 1e-6),
-            Self::FilmThickness => ("µm", 1e6),
+            Self::Pressure => (MPA.symbol, MPA.from_si(1.0)),
+            Self::FilmThickness => (UM.symbol, UM.from_si(1.0)),
             Self::FilmTemperature | Self::PadTemperature => ("°C", 1.0),
         }
     }

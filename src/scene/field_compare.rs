@@ -15,6 +15,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::field::{FieldKind, PadMap};
+use crate::units::MM;
 
 /// A locked colour range of one field kind [SI].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -76,10 +77,10 @@ pub fn difference_maps(live: &[PadMap], pinned: &[PadMap]) -> Result<(Vec<PadMap
         if !(same(a.arc_length_m(), b.arc_length_m()) && same(a.length_m(), b.length_m())) {
             return Err(Mismatch::PadSize {
                 pad: a.pad,
-                live_arc_mm: a.arc_length_m() * 1e3,
-                pinned_arc_mm: b.arc_length_m() * 1e3,
-                live_len_mm: a.length_m() * 1e3,
-                pinned_len_mm: b.length_m() * 1e3,
+                live_arc_mm: MM.from_si(a.arc_length_m()),
+                pinned_arc_mm: MM.from_si(b.arc_length_m()),
+                live_len_mm: MM.from_si(a.length_m()),
+                pinned_len_mm: MM.from_si(b.length_m()),
             });
         }
         let values: Vec<f64> = if a.s_m == b.s_m && a.z_m == b.z_m {

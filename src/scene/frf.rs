@@ -9,6 +9,7 @@ use nalgebra::Complex;
 use serde::Serialize;
 
 use crate::bearing::frf::model::FrfSweep;
+use crate::units::{BAR, UM};
 
 type C64 = Complex<f64>;
 
@@ -55,6 +56,7 @@ pub fn unwrapped_phase_deg(values: &[C64]) -> Vec<f64> {
     out
 }
 
+/// A curve of `values` (SI) shown in `unit`, `scale` times the SI magnitude (from [`crate::units`]).
 fn curve(name: String, unit: &'static str, group: &'static str, scale: f64, values: &[C64]) -> Curve {
     Curve {
         name,
@@ -78,11 +80,17 @@ impl FrfCurves {
         let np = pts.first().map_or(0, |p| p.g2.len());
         let name = |k: usize| port_names.get(k).copied().unwrap_or(PORTS[k.min(1)]);
         for k in 0..np {
-            curves.push(curve(format!("G2_{}", name(k)), "bar/V", "G2", 1e-5, &get(&|p| p.g2[k])));
+            curves.push(curve(format!("G2_{}", name(k)), "bar/V", "G2", BAR.from_si(1.0), &get(&|p| p.g2[k])));
         }
         for k in 0..np {
             for (a, ax) in AXES.iter().enumerate() {
-                curves.push(curve(format!("G3_{}_{ax}", name(k)), "N/bar", "G3", 1e5, &get(&|p| p.g3[k][a])));
+                curves.push(curve(
+                    format!("G3_{}_{ax}", name(k)),
+                    "N/bar",
+                    "G3",
+                    BAR.to_si(1.0),
+                    &get(&|p| p.g3[k][a]),
+                ));
             }
         }
         for (a, ax) in AXES.iter().enumerate() {
@@ -92,9 +100,9 @@ impl FrfCurves {
             let col =
                 |f: &dyn Fn(&crate::bearing::frf::dynamics::ShakerPoint) -> C64| sh.iter().map(f).collect::<Vec<_>>();
             curves.push(curve("C".into(), "N/V", "rig", 1.0, &col(&|p| p.calibration)));
-            curves.push(curve("H_pseudo".into(), "µm/V", "rig", 1e6, &col(&|p| p.pseudo)));
-            curves.push(curve("H_chain".into(), "µm/N", "rig", 1e6, &col(&|p| p.chain)));
-            curves.push(curve("H_direct".into(), "µm/N", "rig", 1e6, &col(&|p| p.direct)));
+            curves.push(curve("H_pseudo".into(), "µm/V", "rig", UM.from_si(1.0), &col(&|p| p.pseudo)));
+            curves.push(curve("H_chain".into(), "µm/N", "rig", UM.from_si(1.0), &col(&|p| p.chain)));
+            curves.push(curve("H_direct".into(), "µm/N", "rig", UM.from_si(1.0), &col(&|p| p.direct)));
         }
         Self {
             frequency_hz: pts.iter().map(|p| p.frequency_hz).collect(),

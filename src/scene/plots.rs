@@ -7,12 +7,7 @@
 
 use crate::bearing::solution::coefficients::{FullCoefficients, ReducedCoefficients};
 use crate::bearing::stages::SpeedPoint;
-use crate::units::RPM;
-
-/// Display factor from N/m to MN/m.
-pub const STIFFNESS_MN_PER_M: f64 = 1e-6;
-/// Display factor from N·s/m to kN·s/m.
-pub const DAMPING_KNS_PER_M: f64 = 1e-3;
+use crate::units::{Unit, KNS_PER_M, MN_PER_M, RPM};
 /// Names of the four entries, in the order of the series.
 pub const ENTRIES: [&str; 4] = ["xx", "xy", "yx", "yy"];
 
@@ -37,8 +32,9 @@ pub struct CoefficientPlot {
     pub failures: Vec<(f64, String)>,
 }
 
-fn entries(m: [[f64; 2]; 2], scale: f64) -> [f64; 4] {
-    [m[0][0] * scale, m[0][1] * scale, m[1][0] * scale, m[1][1] * scale]
+/// The four entries of `m` (SI) in `unit`.
+fn entries(m: [[f64; 2]; 2], unit: Unit) -> [f64; 4] {
+    [m[0][0], m[0][1], m[1][0], m[1][1]].map(|v| unit.from_si(v))
 }
 
 fn build(
@@ -55,8 +51,8 @@ fn build(
             })
             .collect()
     };
-    let k = |c: &ReducedCoefficients| entries(c.k_n_per_m, STIFFNESS_MN_PER_M);
-    let c = |c: &ReducedCoefficients| entries(c.c_ns_per_m, DAMPING_KNS_PER_M);
+    let k = |c: &ReducedCoefficients| entries(c.k_n_per_m, MN_PER_M);
+    let c = |c: &ReducedCoefficients| entries(c.c_ns_per_m, KNS_PER_M);
     CoefficientPlot {
         x_label,
         stiffness: series("K", &k),

@@ -1,25 +1,12 @@
-//! The request the open views need: each view declares the stages whose results it shows (the constants
-//! below, chosen by `View::needs` next to the view's label in `app::state`), and [`request`] joins them
-//! into one [`Request`] with the grids its sweeps run over. Adding a view that needs a new stage: list the
-//! stage in the view's needs; the stage runs (with every stage it reads) while the view is open.
+//! The request the open views need: each view declares the stages whose results it shows (`View::needs` in
+//! the view's file under `app/views/`), and [`request`] joins them into one [`Request`] with the grids its
+//! sweeps run over. Adding a view that needs a new stage: list the stage in the view's needs; the stage
+//! runs (with every stage it reads) while the view is open.
 
 use crate::bearing::stages::{Request, StageId, Start};
 use crate::model::Case;
 
 use super::plots::{frequency_ratios, sweep_speeds};
-
-/// The solution at the case's operating point (cross-section, fields, results panel).
-pub const SOLUTION: &[StageId] = &[StageId::Reduction];
-/// The pad deformation: the solution carries each flexible pad's modes, amplitudes and displacement (the
-/// films stage computes the modes when `physics.pad_modes > 0`).
-pub const DEFORMATION: &[StageId] = &[StageId::Reduction];
-/// Coefficients against the excitation-frequency ratio.
-pub const FREQUENCY_PLOTS: &[StageId] = &[StageId::Reduction, StageId::FrequencySweep];
-/// Coefficients against the running speed.
-pub const SPEED_PLOTS: &[StageId] = &[StageId::Reduction, StageId::SpeedSweep];
-
-/// The FRFs: the solution and the bearing linearised for its injection ports.
-pub const FRF: &[StageId] = &[StageId::Reduction, StageId::Frf];
 
 /// Frequency ratios ω/Ω of the frequency sweep: from, to, points.
 pub const RATIOS: (f64, f64, usize) = (0.0, 3.0, 31);
@@ -53,10 +40,13 @@ mod tests {
     #[test]
     fn the_request_joins_the_views_needs_with_their_grids() {
         let case = load_case(include_str!("../../cases/fillon-a.toml"), &[]).unwrap().1;
-        let r = request(case.clone(), [SOLUTION]);
+        let solution: &[StageId] = &[StageId::Reduction];
+        let r = request(case.clone(), [solution]);
         assert_eq!(r.wanted, vec![StageId::Reduction]);
         assert!(r.frequency_ratios.is_empty() && r.speeds_rad_s.is_empty());
-        let r = request(case.clone(), [SOLUTION, FREQUENCY_PLOTS, SPEED_PLOTS]);
+        let frequency: &[StageId] = &[StageId::Reduction, StageId::FrequencySweep];
+        let speed: &[StageId] = &[StageId::SpeedSweep, StageId::Reduction];
+        let r = request(case.clone(), [solution, frequency, speed]);
         assert_eq!(r.wanted, vec![StageId::Reduction, StageId::FrequencySweep, StageId::SpeedSweep]);
         assert_eq!(r.frequency_ratios.len(), RATIOS.2);
         assert_eq!(r.speeds_rad_s.len(), SPEED_POINTS);

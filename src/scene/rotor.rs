@@ -22,8 +22,7 @@ use crate::rotor::campbell::track_modes;
 use crate::rotor::critical_map::CriticalSpeedMap;
 use crate::rotor::eigen::Whirl;
 use crate::rotor::stability::SpeedPoint;
-
-const RPM_PER_RAD_S: f64 = 30.0 / std::f64::consts::PI;
+use crate::units::{HZ_ANGULAR, MM, RPM, UM};
 
 /// One curve against speed: points `[speed_rpm, value]`.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,8 +62,8 @@ pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> Mode
         let (mut f, mut d) = (Vec::new(), Vec::new());
         for (i, p) in sweep.iter().enumerate() {
             if let Some(m) = t.mode(&sweep, i) {
-                let rpm = p.speed_rad_s * RPM_PER_RAD_S;
-                f.push([rpm, m.imag_rad_s / std::f64::consts::TAU]);
+                let rpm = RPM.from_si(p.speed_rad_s);
+                f.push([rpm, HZ_ANGULAR.from_si(m.imag_rad_s)]);
                 d.push([rpm, m.log_dec]);
             }
         }
@@ -73,8 +72,8 @@ pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> Mode
         frequency_hz.push(Curve { name: name.clone(), whirl: t.whirl, points: f });
         log_dec.push(Curve { name, whirl: t.whirl, points: d });
     }
-    let first = result.speeds.first().map_or(0.0, |s| s.point.speed_rad_s * RPM_PER_RAD_S);
-    let last = result.speeds.last().map_or(0.0, |s| s.point.speed_rad_s * RPM_PER_RAD_S);
+    let first = result.speeds.first().map_or(0.0, |s| RPM.from_si(s.point.speed_rad_s));
+    let last = result.speeds.last().map_or(0.0, |s| RPM.from_si(s.point.speed_rad_s));
     ModeCurves {
         frequency_hz,
         log_dec,
@@ -82,10 +81,10 @@ pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> Mode
         critical: result
             .critical_speeds
             .iter()
-            .map(|c| [c.speed_rad_s * RPM_PER_RAD_S, c.order * c.speed_rad_s / std::f64::consts::TAU])
+            .map(|c| [RPM.from_si(c.speed_rad_s), HZ_ANGULAR.from_si(c.order * c.speed_rad_s)])
             .collect(),
-        onset_rpm: result.onset.as_ref().map(|o| o.speed_rad_s * RPM_PER_RAD_S),
-        operating_rpm: rotor.operating_range.map(|[a, b]| [a * RPM_PER_RAD_S, b * RPM_PER_RAD_S]),
+        onset_rpm: result.onset.as_ref().map(|o| RPM.from_si(o.speed_rad_s)),
+        operating_rpm: rotor.operating_range.map(|[a, b]| [RPM.from_si(a), RPM.from_si(b)]),
     }
 }
 
@@ -109,7 +108,7 @@ pub fn mode_shape(result: &AnalysisResult, rotor: &Rotor, speed: usize, index: u
     let s = result.speeds.get(speed)?;
     let m = s.point.modes.modes.get(index)?;
     Some(ModeShape {
-        speed_rpm: s.point.speed_rad_s * RPM_PER_RAD_S,
+        speed_rpm: RPM.from_si(s.point.speed_rad_s),
         frequency_hz: m.frequency_hz(),
         log_dec: m.log_dec,
         whirl: m.whirl,
@@ -147,8 +146,8 @@ pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
             let (mut a, mut p) = (Vec::new(), Vec::new());
             for s in &result.speeds {
                 if let Some(o) = s.orbits.iter().find(|o| o.node == node) {
-                    let rpm = s.point.speed_rad_s * RPM_PER_RAD_S;
-                    a.push([rpm, o.major_pp_m * 1e6]);
+                    let rpm = RPM.from_si(s.point.speed_rad_s);
+                    a.push([rpm, UM.from_si(o.major_pp_m)]);
                     p.push([rpm, o.x_phase_rad.to_degrees()]);
                 }
             }
@@ -159,7 +158,7 @@ pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
         .speeds
         .iter()
         .filter(|s| s.api617_limit_um.is_finite())
-        .map(|s| [s.point.speed_rad_s * RPM_PER_RAD_S, s.api617_limit_um])
+        .map(|s| [RPM.from_si(s.point.speed_rad_s), s.api617_limit_um])
         .collect();
     UnbalanceBode { nodes, api617_um }
 }
@@ -183,7 +182,7 @@ pub fn map_drawing(m: &CriticalSpeedMap, rotor: &Rotor) -> MapDrawing {
                 .stiffness_n_per_m
                 .iter()
                 .zip(&m.map.frequencies_rad_s)
-                .filter_map(|(k, f)| f.get(mode).map(|w| [k.log10(), w * RPM_PER_RAD_S]))
+                .filter_map(|(k, f)| f.get(mode).map(|w| [k.log10(), RPM.from_si(*w)]))
                 .collect()
         })
         .collect();
@@ -194,7 +193,7 @@ pub fn map_drawing(m: &CriticalSpeedMap, rotor: &Rotor) -> MapDrawing {
                 .iter()
                 .map(|p| (p.0, if d == 0 { p.1 } else { p.2 }))
                 .filter(|(_, k)| *k > 0.0)
-                .map(|(w, k)| [k.log10(), w * RPM_PER_RAD_S])
+                .map(|(w, k)| [k.log10(), RPM.from_si(w)])
                 .collect();
             if !points.is_empty() {
                 let node = rotor.bearings.get(b).map_or(0, |p| p.node);
@@ -202,7 +201,7 @@ pub fn map_drawing(m: &CriticalSpeedMap, rotor: &Rotor) -> MapDrawing {
             }
         }
     }
-    let crossings = m.crossings.iter().map(|c| [c.stiffness_n_per_m.log10(), c.speed_rad_s * RPM_PER_RAD_S]).collect();
+    let crossings = m.crossings.iter().map(|c| [c.stiffness_n_per_m.log10(), RPM.from_si(c.speed_rad_s)]).collect();
     MapDrawing { modes, bearings, crossings }
 }
 
@@ -234,12 +233,12 @@ pub struct RotorSketch {
 /// The sketch of `rotor`.
 #[must_use]
 pub fn sketch(rotor: &Rotor) -> RotorSketch {
-    let z: Vec<f64> = rotor.node_positions().iter().map(|z| z * 1e3).collect();
+    let z: Vec<f64> = rotor.node_positions().iter().map(|z| MM.from_si(*z)).collect();
     let sections: Vec<[f64; 4]> = rotor
         .elements
         .iter()
         .enumerate()
-        .map(|(i, e)| [z[i], z[i + 1], e.outer_diameter_m * 1e3, e.inner_diameter_m * 1e3])
+        .map(|(i, e)| [z[i], z[i + 1], MM.from_si(e.outer_diameter_m), MM.from_si(e.inner_diameter_m)])
         .collect();
     let mut items: Vec<(f64, SketchItem, usize)> =
         rotor.disks.iter().map(|d| (z[d.node], SketchItem::Disk, d.node)).collect();
@@ -297,7 +296,7 @@ c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
 
     fn analysed() -> (Rotor, AnalysisResult) {
         let rotor = parse_rotor_file(JEFFCOTT).unwrap().resolve(&|_| Err("no cases".into())).unwrap();
-        let speeds = (0..=20).map(|i| f64::from(i) * 300.0 / RPM_PER_RAD_S).collect();
+        let speeds = (0..=20).map(|i| RPM.to_si(f64::from(i) * 300.0)).collect();
         let r = run(&rotor, AnalysisParams::new(speeds)).unwrap();
         (rotor, r)
     }
@@ -310,7 +309,7 @@ c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
         let f1 = &c.frequency_hz[0];
         assert_eq!(f1.points.len(), r.speeds.len());
         let (w, _) = nth_mode(&r.speeds[7].point, Whirl::Forward, 0).unwrap();
-        assert!((f1.points[7][1] - w / std::f64::consts::TAU).abs() < 1e-12);
+        assert!((f1.points[7][1] - HZ_ANGULAR.from_si(w)).abs() < 1e-12);
         assert!(!c.critical.is_empty());
         for [rpm, hz] in &c.critical {
             assert!((hz - rpm / 60.0).abs() < 1e-9 * hz, "{rpm} rpm, {hz} Hz");

@@ -5,6 +5,7 @@
 //! number.
 
 use crate::bearing::solution::Solution;
+use crate::units::{KNS_PER_M, L_PER_MIN, MN_PER_M, MPA, MPA_S, MRAD, MS, UM};
 
 /// One labelled value.
 #[derive(Debug, Clone, PartialEq)]
@@ -45,8 +46,6 @@ pub struct Summary {
     pub warnings: Vec<String>,
 }
 
-const M3S_TO_L_MIN: f64 = 60_000.0;
-
 fn row(label: &'static str, value: String, unit: &'static str, meaning: &'static str) -> Row {
     Row { label, value, unit, meaning }
 }
@@ -85,9 +84,9 @@ pub fn summary(s: &Solution) -> Summary {
                 "°",
                 "Angle from the load direction to the journal displacement, positive in the direction of rotation. Zero for a symmetric load-on-pad tilting-pad bearing.",
             ),
-            row("Journal x, y", format!("{:.2}, {:.2}", s.journal_position_m[0] * 1e6, s.journal_position_m[1] * 1e6), "µm", "Journal centre displacement in the bearing frame (y up)."),
-            row("h_min", format!("{:.2}", s.h_min_m * 1e6), "µm", "Smallest film thickness on any pad: the margin against metal contact."),
-            row("p_max", format!("{:.3}", s.p_max_pa * 1e-6), "MPa", "Largest film pressure on any pad (babbitt fatigue limit is typically a few MPa)."),
+            row("Journal x, y", format!("{:.2}, {:.2}", UM.from_si(s.journal_position_m[0]), UM.from_si(s.journal_position_m[1])), "µm", "Journal centre displacement in the bearing frame (y up)."),
+            row("h_min", format!("{:.2}", UM.from_si(s.h_min_m)), "µm", "Smallest film thickness on any pad: the margin against metal contact."),
+            row("p_max", format!("{:.3}", MPA.from_si(s.p_max_pa)), "MPa", "Largest film pressure on any pad (babbitt fatigue limit is typically a few MPa)."),
             match &s.thermal {
                 Some(t) => row(
                     "T_max",
@@ -113,17 +112,17 @@ pub fn summary(s: &Solution) -> Summary {
                 "–",
                 "S = µ N L D / W (R/Cb)², with the film viscosity and the assembled clearance: the bearing's duty in one number (large S = lightly loaded).",
             ),
-            row("Film viscosity", sig4(s.derived.film_viscosity_pa_s * 1e3), "mPa·s", "Viscosity of the isothermal film, from the lubricant's law at the film temperature."),
+            row("Film viscosity", sig4(MPA_S.from_si(s.derived.film_viscosity_pa_s)), "mPa·s", "Viscosity of the isothermal film, from the lubricant's law at the film temperature."),
         ],
     };
     let flows = Group {
         title: "Flows",
         rows: vec![
-            row("Leading edges in", format!("{:.3}", f.leading_edges_in * M3S_TO_L_MIN), "l/min", "Oil drawn into the films at the pads' leading edges."),
-            row("Orifices in", format!("{:.3}", f.orifices_in * M3S_TO_L_MIN), "l/min", "Net flow injected through the orifices (negative: oil leaves through the holes)."),
-            row("Trailing edges out", format!("{:.3}", f.trailing_edges_out * M3S_TO_L_MIN), "l/min", "Oil carried out at the trailing edges (partly carried over to the next pad)."),
-            row("Sides out", format!("{:.3}", f.sides_out * M3S_TO_L_MIN), "l/min", "Side leakage at the axial ends: this is the flow the supply must replace."),
-            row("Into cavitation", format!("{:.3}", f.to_cavitation * M3S_TO_L_MIN), "l/min", "Net flow from the full film into cavitated (ruptured) regions; negative where more oil re-enters the full film at reformation than leaves it at rupture."),
+            row("Leading edges in", format!("{:.3}", L_PER_MIN.from_si(f.leading_edges_in)), "l/min", "Oil drawn into the films at the pads' leading edges."),
+            row("Orifices in", format!("{:.3}", L_PER_MIN.from_si(f.orifices_in)), "l/min", "Net flow injected through the orifices (negative: oil leaves through the holes)."),
+            row("Trailing edges out", format!("{:.3}", L_PER_MIN.from_si(f.trailing_edges_out)), "l/min", "Oil carried out at the trailing edges (partly carried over to the next pad)."),
+            row("Sides out", format!("{:.3}", L_PER_MIN.from_si(f.sides_out)), "l/min", "Side leakage at the axial ends: this is the flow the supply must replace."),
+            row("Into cavitation", format!("{:.3}", L_PER_MIN.from_si(f.to_cavitation)), "l/min", "Net flow from the full film into cavitated (ruptured) regions; negative where more oil re-enters the full film at reformation than leaves it at rupture."),
             row("Mass balance", small(f.mass_balance_error), "–", "(in − out) / throughput of the discrete solution: should be round-off small."),
         ],
     };
@@ -140,25 +139,25 @@ pub fn summary(s: &Solution) -> Summary {
             ),
             row(
                 "Kxx, Kxy",
-                format!("{}, {}", sig4(k[0][0] * 1e-6), sig4(k[0][1] * 1e-6)),
+                format!("{}, {}", sig4(MN_PER_M.from_si(k[0][0])), sig4(MN_PER_M.from_si(k[0][1]))),
                 "MN/m",
                 "Stiffness: force in x per displacement in x, y.",
             ),
             row(
                 "Kyx, Kyy",
-                format!("{}, {}", sig4(k[1][0] * 1e-6), sig4(k[1][1] * 1e-6)),
+                format!("{}, {}", sig4(MN_PER_M.from_si(k[1][0])), sig4(MN_PER_M.from_si(k[1][1]))),
                 "MN/m",
                 "Stiffness: force in y per displacement in x, y.",
             ),
             row(
                 "Cxx, Cxy",
-                format!("{}, {}", sig4(c[0][0] * 1e-3), sig4(c[0][1] * 1e-3)),
+                format!("{}, {}", sig4(KNS_PER_M.from_si(c[0][0])), sig4(KNS_PER_M.from_si(c[0][1]))),
                 "kN·s/m",
                 "Damping: force in x per velocity in x, y.",
             ),
             row(
                 "Cyx, Cyy",
-                format!("{}, {}", sig4(c[1][0] * 1e-3), sig4(c[1][1] * 1e-3)),
+                format!("{}, {}", sig4(KNS_PER_M.from_si(c[1][0])), sig4(KNS_PER_M.from_si(c[1][1]))),
                 "kN·s/m",
                 "Damping: force in y per velocity in x, y.",
             ),
@@ -171,7 +170,7 @@ pub fn summary(s: &Solution) -> Summary {
             row("Iterations", format!("{} outer, {} pad", r.iterations, r.inner_iterations), "", "Journal Newton iterations and pad (inner) iterations, over the whole solve (THD: every equilibrium of the thermal loop and its isothermal start)."),
             row("Film solves", format!("{} ({} factorisations)", r.film_solves, r.factorizations), "", "Reynolds solves and sparse numeric factorisations (THD: with the film-energy and pad-conduction factorisations)."),
             row("Residual", format!("{} (pads {})", small(r.residual), small(r.pad_residual)), "–", "Final force residual relative to the force scale, and the largest pad residual."),
-            row("Solve time", format!("{:.0}", r.seconds * 1e3), "ms", "Wall time of the whole solve (THD: the isothermal start and the thermal loop)."),
+            row("Solve time", format!("{:.0}", MS.from_si(r.seconds)), "ms", "Wall time of the whole solve (THD: the isothermal start and the thermal loop)."),
             row("Film nodes", s.derived.film_nodes.to_string(), "", "Finite-element nodes over all pads (mesh fidelity)."),
         ],
     };
@@ -180,12 +179,12 @@ pub fn summary(s: &Solution) -> Summary {
         .iter()
         .map(|p| PadRow {
             index: p.index,
-            tilt_mrad: p.tilt_rad.map(|t| t * 1e3),
-            h_min_um: p.h_min_m * 1e6,
-            p_max_mpa: p.p_max_pa * 1e-6,
+            tilt_mrad: p.tilt_rad.map(|t| MRAD.from_si(t)),
+            h_min_um: UM.from_si(p.h_min_m),
+            p_max_mpa: MPA.from_si(p.p_max_pa),
             load_n: p.force_n[0].hypot(p.force_n[1]),
             orifice_flow_l_min: (!p.orifice_flows_m3_per_s.is_empty())
-                .then(|| p.orifice_flows_m3_per_s.iter().sum::<f64>() * M3S_TO_L_MIN),
+                .then(|| L_PER_MIN.from_si(p.orifice_flows_m3_per_s.iter().sum::<f64>())),
             cavitated_percent: 100.0 * p.cavitated_fraction,
             unloaded: p.unloaded,
         })
@@ -215,7 +214,7 @@ fn thermal_group(t: &crate::bearing::solution::ThermalResult) -> Group {
             row("Heat to oil, conducted", format!("{}, {}", sig4(t.heat_carried_by_oil_w), sig4(t.heat_conducted_w)), "W", "Friction power leaves as enthalpy of the oil and by conduction into pads and journal."),
             row("Energy balance", small(t.energy_balance_closure), "–", "(power − heat to oil − heat conducted) / power: the discrete energy balance, should be small."),
             row("Thermal loop", rep.outer_iterations.to_string(), "iterations", "Outer iterations of equilibrium + temperatures until the viscosity field converged."),
-            row("Thermal loop time", format!("{:.0}", rep.seconds * 1e3), "ms", "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing)."),
+            row("Thermal loop time", format!("{:.0}", MS.from_si(rep.seconds)), "ms", "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing)."),
             row("Viscosity change", rep.viscosity_change.last().map_or_else(|| "—".into(), |v| format!("{v:.1e}")), "–", "Largest nodal relative viscosity change of the last outer iteration (converged below 1e-4)."),
         ],
     }

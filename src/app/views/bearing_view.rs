@@ -1,11 +1,17 @@
 //! The bearing cross-section: journal, pads with their tilt, pivots, orifices, load, minimum film
-//! thickness, and the mid-plane pressure around each pad — drawn from [`BearingOutline`].
+//! thickness, and the mid-plane pressure around each pad — drawn from [`BearingOutline`]; a pinned result's
+//! outline dashed over it; the scales can be locked across edits. Before the first result: the case's
+//! outline, unsolved.
 
 use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
+use serde::{Deserialize, Serialize};
 
+use super::{View, ViewContext};
 use crate::bearing::solution::limits::{Check, LimitKind};
-use crate::scene::outline::{BearingOutline, OutlineScales, Point};
-use crate::scene::summary::PadRow;
+use crate::bearing::stages::StageId;
+use crate::scene::outline::{self, BearingOutline, OutlineScales, Point};
+use crate::scene::summary::{self, PadRow};
+use crate::units::{MPA, UM};
 
 const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
 const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
@@ -15,6 +21,60 @@ const H_MIN: Color32 = Color32::from_rgb(235, 60, 60);
 const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
 /// The pinned result drawn over the live one.
 const PINNED: Color32 = Color32::from_rgb(90, 220, 240);
+
+/// The bearing view.
+#[derive(Debug, Default)]
+pub struct BearingView {
+    pub settings: BearingSettings,
+}
+
+/// What the bearing view keeps between sessions.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct BearingSettings {
+    /// Locked film exaggeration and pressure scale (`None`: chosen per picture).
+    pub outline_lock: Option<OutlineScales>,
+}
+
+impl View for BearingView {
+    fn id(&self) -> &'static str {
+        "bearing"
+    }
+
+    fn label(&self) -> &'static str {
+        "Bearing"
+    }
+
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        let case = cx.shown.map(|s| s.solution.inputs.clone()).or_else(|| cx.case().cloned());
+        let Some(case) = case else { return };
+        let pinned = cx.compare_with_ui(ui, self.needs(), |_| {});
+        let solution = cx.shown.map(|s| s.solution.as_ref());
+        let lock = &mut self.settings.outline_lock;
+        let o = outline::bearing_outline_with(&case, solution, *lock);
+        lock_ui(ui, lock, o.scales());
+        let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
+        let checks = solution.map(|s| crate::bearing::solution::limits::check(&s.inputs.limits, s)).unwrap_or_default();
+        // The pinned outline at the live picture's scales, so the two overlay.
+        let overlay = pinned.map(|(name, p)| {
+            (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales())))
+        });
+        bearing_view_ui(ui, &o, &pads, &checks, cx.stale, overlay.as_ref().map(|(n, o)| (n.as_str(), o)));
+    }
+
+    /// The case's outline, unsolved.
+    fn placeholder_ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        self.ui(ui, cx);
+    }
+
+    fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
+        Some(&mut self.settings)
+    }
+}
 
 /// Maps the bearing frame (metres, y up) to the screen (points, y down).
 #[derive(Debug, Clone, Copy)]
@@ -72,7 +132,7 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
 pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineScales) {
     let mut locked = lock.is_some();
     let text = match lock {
-        Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, l.pressure_scale_pa * 1e-6),
+        Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, MPA.from_si(l.pressure_scale_pa)),
         None => "Lock scales".to_string(),
     };
     if ui
@@ -104,7 +164,7 @@ pub fn bearing_view_ui(
                 Color32::from_rgb(255, 160, 60),
                 format!(
                     "Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)",
-                    outline.pressure_scale_pa * 1e-6
+                    MPA.from_si(outline.pressure_scale_pa)
                 ),
             );
         }
@@ -201,7 +261,7 @@ pub fn bearing_view_ui(
             painter.text(
                 b + away * 30.0,
                 Align2::CENTER_CENTER,
-                format!("{:.1} µm{below}", h * 1e6),
+                format!("{:.1} µm{below}", UM.from_si(h)),
                 FontId::proportional(11.0),
                 H_MIN,
             );

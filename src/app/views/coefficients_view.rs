@@ -1,13 +1,106 @@
 //! Reduced stiffness and damping against ω/Ω or speed (from a background sweep), the case's own point
-//! marked, and the full coefficient matrices as a table.
+//! marked, a pinned result's curves overlaid, and the full coefficient matrices as a table.
 
 use egui::{Color32, Grid, RichText, ScrollArea, Ui};
 use egui_plot::{GridInput, GridMark, Legend, Line, LineStyle, MarkerShape, Plot, Points, VLine};
+use serde::{Deserialize, Serialize};
 
+use super::{View, ViewContext};
+use crate::app::Shown;
+use crate::bearing::stages::StageId;
 use crate::number::tick;
 use crate::scene::field::nice_ticks;
+use crate::scene::plots::{self, CoefficientPlot, MatrixTable};
 
-use crate::scene::plots::{CoefficientPlot, MatrixTable};
+/// The coefficient view.
+#[derive(Debug, Default)]
+pub struct CoefficientsView {
+    pub settings: CoefficientSettings,
+}
+
+/// What the coefficient view keeps between sessions.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct CoefficientSettings {
+    pub axis: CoefficientAxis,
+}
+
+/// Abscissa of the coefficient plots.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub enum CoefficientAxis {
+    #[default]
+    FrequencyRatio,
+    Speed,
+}
+
+impl CoefficientsView {
+    fn axis_ui(&mut self, ui: &mut Ui) {
+        let axis = &mut self.settings.axis;
+        ui.horizontal(|ui| {
+            ui.label("Against");
+            ui.selectable_value(axis, CoefficientAxis::FrequencyRatio, "excitation frequency ratio ω/Ω");
+            ui.selectable_value(axis, CoefficientAxis::Speed, "speed (background sweep)");
+        });
+    }
+
+    /// The plot of `shown` against the chosen axis (`None`: its sweep is still running).
+    fn plot(&self, shown: &Shown) -> Option<CoefficientPlot> {
+        let sol = &shown.solution;
+        match self.settings.axis {
+            CoefficientAxis::FrequencyRatio => shown
+                .frequency_sweep
+                .as_ref()
+                .map(|f| plots::frequency_plot(f, Some((sol.inputs.operating.excitation_ratio, sol.reduced)))),
+            CoefficientAxis::Speed => {
+                shown.speed_sweep.as_ref().map(|p| plots::speed_plot(p, Some((sol.derived.speed_rpm, sol.reduced))))
+            }
+        }
+    }
+}
+
+impl View for CoefficientsView {
+    fn id(&self) -> &'static str {
+        "coefficients"
+    }
+
+    fn label(&self) -> &'static str {
+        "Coefficients"
+    }
+
+    fn needs(&self) -> &'static [StageId] {
+        match self.settings.axis {
+            CoefficientAxis::FrequencyRatio => &[StageId::Reduction, StageId::FrequencySweep],
+            CoefficientAxis::Speed => &[StageId::Reduction, StageId::SpeedSweep],
+        }
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        self.axis_ui(ui);
+        let Some(shown) = cx.shown else { return };
+        let pinned =
+            cx.compare_with_ui(ui, self.needs(), |_| {}).and_then(|(name, p)| self.plot(&p).map(|plot| (name, plot)));
+        match self.plot(shown) {
+            Some(p) => coefficient_plots_ui(ui, &p, pinned.as_ref().map(|(n, p)| (n.as_str(), p))),
+            None => {
+                ui.horizontal(|ui| {
+                    ui.spinner();
+                    ui.label("Sweeping in the background…");
+                });
+            }
+        }
+        ui.separator();
+        matrix_table_ui(ui, &plots::matrix_table(&shown.solution.full));
+    }
+
+    fn placeholder_ui(&mut self, ui: &mut Ui, _cx: &mut ViewContext<'_>) {
+        self.axis_ui(ui);
+        super::view::waiting_ui(ui);
+    }
+
+    fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
+        Some(&mut self.settings)
+    }
+}
 
 const COLORS: [Color32; 4] = [
     Color32::from_rgb(86, 180, 233),

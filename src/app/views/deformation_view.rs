@@ -14,17 +14,19 @@ use egui::{
     Vec2,
 };
 
+use super::{View, ViewContext};
+use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
 use crate::scene::deformation::{deforms, Displacement, PadDeformation, Section};
 use crate::scene::field::PadMap;
 use crate::scene::summary::sig4;
+use crate::units::{MM, UM};
 
 use super::field_view::colour_bar;
 
 /// Texture size of a rasterised map.
 const RASTER: (usize, usize) = (200, 140);
-const MICRONS: f64 = 1e6;
 
 /// Which film maps are shown.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -76,6 +78,32 @@ impl DeformationView {
     }
 }
 
+impl View for DeformationView {
+    fn id(&self) -> &'static str {
+        "pad_deformation"
+    }
+
+    fn label(&self) -> &'static str {
+        "Pad deformation"
+    }
+
+    /// The solution carries each flexible pad's modes, amplitudes and displacement (the films stage computes
+    /// the modes when `physics.pad_modes > 0`).
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        if let Some(shown) = cx.shown {
+            deformation_view_ui(ui, self, &shown.solution);
+        }
+    }
+
+    fn snapshot_setup(&mut self) -> Option<&'static str> {
+        Some(include_str!("../../../cases/compressor-bearing-flexible.toml"))
+    }
+}
+
 /// The deforming pads of a solution (bending modes or thermal growth), and the most loaded of them.
 fn flexible_pads(solution: &Solution) -> (Vec<usize>, Option<usize>) {
     let pads: Vec<usize> = solution.pads.iter().filter(|p| deforms(p)).map(|p| p.index).collect();
@@ -116,7 +144,7 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     let modes: Vec<String> = scene
         .modes
         .iter()
-        .map(|m| format!("mode {} at {} Hz ({} µm)", m.mode + 1, sig4(m.frequency_hz), sig4(m.amplitude_m * MICRONS)))
+        .map(|m| format!("mode {} at {} Hz ({} µm)", m.mode + 1, sig4(m.frequency_hz), sig4(UM.from_si(m.amplitude_m))))
         .collect();
     let retained = if modes.is_empty() {
         "no bending modes (rigid pads)".to_string()
@@ -146,11 +174,11 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     hover = hover.or(maps_ui(ui, view, &painter, maps_rect, &scene, range, hover_pos));
     hover = hover.or(gallery_ui(ui, view, &painter, gallery_rect, &scene, hover_pos));
     let line = match hover {
-        Some(h) => format!("{}: {:.3} µm", h.what, h.value_m * MICRONS),
+        Some(h) => format!("{}: {:.3} µm", h.what, UM.from_si(h.value_m)),
         None => "Hover over the section, a map or a mode to read the value in µm.".into(),
     };
     ui.horizontal(|ui| {
-        ui.label(format!("Colour scale: {kind} u from {} to {} µm", sig4(range.0 * MICRONS), sig4(range.1 * MICRONS)));
+        ui.label(format!("Colour scale: {kind} u from {} to {} µm", sig4(UM.from_si(range.0)), sig4(UM.from_si(range.1))));
         ui.separator();
         ui.label(line);
     });
@@ -159,7 +187,7 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
             "Radial displacement of the pad, positive away from the journal: mechanical (the solved bending-mode amplitudes), \
              thermal (the pad's growth from its temperature, TEHD; the journal's uniform growth is not the pad's) or their \
              total. Pad thickness {:.2} mm. Film h − u: the film at the same pad positions without the shown displacement.",
-            scene.thickness_m * 1e3
+            MM.from_si(scene.thickness_m)
         ))
         .small(),
     );
@@ -344,7 +372,7 @@ fn map_ui(
     let s = f64::from((pos.x - r.left()) / r.width()) * arc;
     let z = map.z_m[0] + f64::from((r.bottom() - pos.y) / r.height()) * len;
     map.sample(s, z).map(|v| Hover {
-        what: format!("{title} at θ = {:.1}°, z = {:+.1} mm", map.theta_deg(s).rem_euclid(360.0), z * 1e3),
+        what: format!("{title} at θ = {:.1}°, z = {:+.1} mm", map.theta_deg(s).rem_euclid(360.0), MM.from_si(z)),
         value_m: v,
     })
 }
@@ -374,7 +402,7 @@ fn maps_ui(
     let u_title = format!("Film-face radial displacement u ({})", scene.shown.label().to_lowercase());
     let u = MapSpec { map: &scene.displacement, name: "u", title: &u_title, range };
     let mut hover = map_ui(ui, view, painter, upper, &u, hover_pos);
-    colour_bar(painter, bar(upper), ColorMap::Viridis, "u [µm]", MICRONS, range, text);
+    colour_bar(painter, bar(upper), ColorMap::Viridis, "u [µm]", UM.from_si(1.0), range, text);
     match view.films {
         FilmMaps::SideBySide => {
             let h =
@@ -386,12 +414,12 @@ fn maps_ui(
             let rigid = MapSpec { map: &scene.film_rigid, name: "h-rigid", title: "Film h − u, without u", range: h };
             hover = hover.or(map_ui(ui, view, painter, left, &flexible, hover_pos));
             hover = hover.or(map_ui(ui, view, painter, right, &rigid, hover_pos));
-            colour_bar(painter, bar(lower), ColorMap::Viridis, "h [µm]", MICRONS, h, text);
+            colour_bar(painter, bar(lower), ColorMap::Viridis, "h [µm]", UM.from_si(1.0), h, text);
         }
         FilmMaps::Difference => {
             let difference = MapSpec { map: &scene.displacement, name: "u", title: "Film h − (h − u)", range };
             hover = hover.or(map_ui(ui, view, painter, lower, &difference, hover_pos));
-            colour_bar(painter, bar(lower), ColorMap::Viridis, "Δh [µm]", MICRONS, range, text);
+            colour_bar(painter, bar(lower), ColorMap::Viridis, "Δh [µm]", UM.from_si(1.0), range, text);
         }
     }
     hover
@@ -428,7 +456,7 @@ fn gallery_ui(
             "Mode {}: {} Hz, amplitude {} µm",
             tile.mode + 1,
             sig4(tile.frequency_hz),
-            sig4(tile.amplitude_m * MICRONS)
+            sig4(UM.from_si(tile.amplitude_m))
         );
         let range = symmetric(tile.shape.min, tile.shape.max);
         let upper = Rect::from_min_max(r.min, Pos2::new(r.right(), r.top() + r.height() * 0.6));

@@ -16,7 +16,10 @@ use egui::{
     Vec2,
 };
 
-use crate::app::state::PadChoice;
+use serde::{Deserialize, Serialize};
+
+use super::{View, ViewContext};
+use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
 use crate::scene::colormap::ColorMap;
 use crate::scene::field::{common_range, nice_ticks, FieldKind, PadMap};
@@ -25,6 +28,129 @@ use crate::scene::field_compare::{
 };
 use crate::scene::flowlines::{arrow_phase, arrowheads, orifice_sites, pad_flowlines, Flowline, FlowlineParams};
 use crate::scene::summary::sig4;
+use crate::units::MM;
+
+/// The pad field view.
+#[derive(Default)]
+pub struct FieldView {
+    pub settings: FieldSettings,
+    cache: FieldCache,
+}
+
+/// What the pad field view keeps between sessions.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct FieldSettings {
+    pub field: FieldKind,
+    pub pads: PadChoice,
+    pub flowlines: bool,
+    /// How the view compares with a pin.
+    pub compare: FieldCompare,
+    /// Locked colour ranges (one per field kind).
+    pub locks: Vec<FieldScaleLock>,
+}
+
+impl Default for FieldSettings {
+    fn default() -> Self {
+        Self {
+            field: FieldKind::Pressure,
+            pads: PadChoice::All,
+            flowlines: true,
+            compare: FieldCompare::SideBySide,
+            locks: Vec::new(),
+        }
+    }
+}
+
+/// Which pads the field view shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub enum PadChoice {
+    #[default]
+    All,
+    One(usize),
+}
+
+impl View for FieldView {
+    fn id(&self) -> &'static str {
+        "fields"
+    }
+
+    fn label(&self) -> &'static str {
+        "Pad fields"
+    }
+
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        let Some(shown) = cx.shown else { return };
+        let solution = shown.solution.clone();
+        let settings = &mut self.settings;
+        let available = FieldKind::available(&solution);
+        let n_pads = solution.pads.len();
+        // The chosen field when this result has it (a THD field after switching to isothermal: pressure);
+        // the selector names what is drawn.
+        let drawn = if available.contains(&settings.field) { settings.field } else { FieldKind::Pressure };
+        // Wrapped: at 1280×720 with both side panels open the row is wider than the view.
+        ui.horizontal_wrapped(|ui| {
+            let label = ui.label("Field");
+            egui::ComboBox::from_id_salt("field-kind")
+                .selected_text(drawn.label())
+                .show_ui(ui, |ui| {
+                    for k in FieldKind::ALL {
+                        let ok = available.contains(&k);
+                        ui.add_enabled_ui(ok, |ui| ui.selectable_value(&mut settings.field, k, k.label()))
+                            .response
+                            .on_disabled_hover_text("Needs the thermal model: not part of this result.")
+                            .on_hover_text(k.meaning());
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            let label = ui.label("Pads");
+            let text = match settings.pads {
+                PadChoice::All => "all side by side".to_string(),
+                PadChoice::One(k) => format!("pad {k}"),
+            };
+            egui::ComboBox::from_id_salt("field-pads")
+                .selected_text(text)
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(&mut settings.pads, PadChoice::All, "all side by side");
+                    for k in 0..n_pads {
+                        ui.selectable_value(&mut settings.pads, PadChoice::One(k), format!("pad {k}"));
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+            ui.checkbox(&mut settings.flowlines, "Flowlines")
+                .on_hover_text("Streamlines of the mean film velocity: seeded on the leading edge and around each orifice (a source when injecting, a sink when not); they stop where the film cavitates.");
+        });
+        if let PadChoice::One(k) = settings.pads {
+            if k >= n_pads {
+                settings.pads = PadChoice::All;
+            }
+        }
+        let kind = if available.contains(&settings.field) { settings.field } else { drawn };
+        let compare = &mut settings.compare;
+        let pinned = cx.compare_with_ui(ui, &[StageId::Reduction], |ui| {
+            ui.selectable_value(compare, FieldCompare::SideBySide, "side by side");
+            ui.selectable_value(compare, FieldCompare::Difference, "difference map");
+        });
+        let opts = FieldOptions {
+            kind,
+            pads: settings.pads,
+            flowlines: settings.flowlines,
+            locks: &mut settings.locks,
+            pinned: pinned.as_ref().map(|(name, s)| (name.as_str(), &s.solution, settings.compare)),
+        };
+        field_view_ui(ui, &mut self.cache, &solution, opts);
+    }
+
+    fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
+        Some(&mut self.settings)
+    }
+}
 
 /// Texture width and height of a rasterised pad.
 const RASTER: (usize, usize) = (240, 160);
@@ -450,7 +576,7 @@ impl PanelDraw<'_> {
                         of,
                         pad: map.pad,
                         theta_deg,
-                        z_mm: z * 1e3,
+                        z_mm: MM.from_si(z),
                         value: v * kind.unit().1,
                         cavitated: map.cavitated_at(s, z),
                     });

@@ -10,9 +10,12 @@
 use egui::{Color32, RichText, Ui};
 use egui_plot::{HoverPosition, Legend, Line, Plot, VLine};
 
+use super::{View, ViewContext};
 use crate::bearing::frf::model::{band, FrfModel};
+use crate::bearing::stages::StageId;
 use crate::model::Case;
 use crate::scene::frf::FrfCurves;
+use crate::units::{BAR, HZ_ANGULAR, MM, RPM};
 
 const COLORS: [Color32; 12] = [
     Color32::from_rgb(86, 180, 233),
@@ -62,14 +65,40 @@ impl FrfView {
     }
 }
 
+impl View for FrfView {
+    fn id(&self) -> &'static str {
+        "frf"
+    }
+
+    fn label(&self) -> &'static str {
+        "FRF"
+    }
+
+    /// The solution and the bearing linearised for its injection ports.
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction, StageId::Frf]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        let Some(shown) = cx.shown else { return };
+        if let Some(FrfAction::ExportCsv(csv)) = frf_ui(ui, self, &shown.solution.inputs, shown.frf.as_deref()) {
+            cx.export("frf", "CSV", "csv", csv.into_bytes());
+        }
+    }
+
+    fn snapshot_setup(&mut self) -> Option<&'static str> {
+        Some(include_str!("../../../cases/test-rig-pub5.toml"))
+    }
+}
+
 /// The case with the sliders applied to its hydraulics.
 fn adjusted(case: &Case, air: f64, length_mm: f64, valve_hz: f64) -> Case {
     let mut c = case.clone();
     if let Some(h) = c.hydraulics.as_mut() {
-        h.valve.natural_frequency_rad_s = valve_hz * std::f64::consts::TAU;
+        h.valve.natural_frequency_rad_s = HZ_ANGULAR.to_si(valve_hz);
         for p in &mut h.ports {
             p.air_fraction = air;
-            p.line_length_m = length_mm * 1e-3;
+            p.line_length_m = MM.to_si(length_mm);
         }
     }
     c
@@ -100,8 +129,8 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case, model: Option<&FrfMo
     view.follow(case);
     let (air0, len0, hz0) = (
         h.ports[0].air_fraction,
-        h.ports[0].line_length_m * 1e3,
-        h.valve.natural_frequency_rad_s / std::f64::consts::TAU,
+        MM.from_si(h.ports[0].line_length_m),
+        HZ_ANGULAR.from_si(h.valve.natural_frequency_rad_s),
     );
     let mut air = view.air_fraction.unwrap_or(air0);
     let mut len = view.line_length_mm.unwrap_or(len0);
@@ -127,9 +156,9 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case, model: Option<&FrfMo
                 let names: Vec<&str> = h.ports.iter().map(|p| if p.sign > 0.0 { "A" } else { "B" }).collect();
                 let title = format!(
                     "{:.0} rpm, ε = {:.3}, supply {:.0} bar",
-                    case.operating.speed_rad_s * 60.0 / std::f64::consts::TAU,
+                    RPM.from_si(case.operating.speed_rad_s),
                     model.eccentricity_ratio,
-                    h.supply_pressure_pa / 1e5
+                    BAR.from_si(h.supply_pressure_pa)
                 );
                 view.curves = Some((adj.clone(), FrfCurves::new(&s, &names, title)));
             }

@@ -5,6 +5,9 @@ use egui::{Color32, Grid, RichText, Ui};
 
 use crate::scene::summary::Summary;
 
+/// Widest column of a result group [points]: about 28 monospace characters.
+const VALUE_WIDTH: f32 = 220.0;
+
 /// Draws the summary; `hide_timings` replaces wall-clock times (for reproducible screenshots).
 pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
     for group in &summary.groups {
@@ -13,7 +16,11 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
                 for row in &group.rows {
                     ui.label(row.label).on_hover_text(row.meaning);
                     let value = if hide_timings && row.unit == "ms" { "—".to_string() } else { row.value.clone() };
-                    ui.label(RichText::new(value).monospace()).on_hover_text(row.meaning);
+                    // A long value (the method of a Hertz-pivot solve) wraps instead of widening the panel.
+                    ui.scope(|ui| {
+                        ui.set_max_width(VALUE_WIDTH);
+                        ui.add(egui::Label::new(RichText::new(value).monospace()).wrap()).on_hover_text(row.meaning);
+                    });
                     ui.label(row.unit);
                     ui.end_row();
                 }

@@ -15,7 +15,10 @@ use std::sync::Arc;
 use egui::{Color32, RichText, Stroke, Ui};
 use egui_plot::{HLine, Legend, Line, LineStyle, Plot, Points, VLine};
 
+use super::{View, ViewContext};
+use crate::app::frame_probe::Job;
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
+use crate::bearing::stages::StageId;
 use crate::model::rotor::{CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
 use crate::rotor::critical_map::map_over_curves;
@@ -23,6 +26,7 @@ use crate::rotor::eigen::Whirl;
 use crate::scene::rotor::{
     map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem,
 };
+use crate::units::{MM, RPM};
 
 use super::rotor_edit::{edit_ui, RotorEdit, SaveRequest, Selected};
 
@@ -113,12 +117,50 @@ impl Default for RotorView {
     }
 }
 
+/// The rotor of the view's snapshot: a shaft 1000 mm long, Ø 50 mm, in 10 elements; a 20 kg disk at mid-span;
+/// bearings given by numbers at both ends (no bearing solve: the analysis is quick).
+const SNAPSHOT_ROTOR: &str = "title = \"Two-bearing shaft (bearings by numbers)\"\n[rotor]\n\
+    [[rotor.section]]\nlength_mm = 1000.0\nouter_diameter_mm = 50.0\nelements = 10\n\
+    [[rotor.disk]]\nnode = 5\nmass_kg = 20.0\n\
+    [[rotor.bearing]]\nnode = 0\nk_n_per_m = [[1e7, 0.0, 0.0, 1e7]]\nc_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]\n\
+    [[rotor.bearing]]\nnode = 10\nk_n_per_m = [[1e7, 0.0, 0.0, 1e7]]\nc_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]\n";
+
+impl View for RotorView {
+    fn id(&self) -> &'static str {
+        "rotor"
+    }
+
+    fn label(&self) -> &'static str {
+        "Rotor"
+    }
+
+    /// Nothing of the edited case: the view analyses its rotor file in the background.
+    fn needs(&self) -> &'static [StageId] {
+        &[]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        if let Some(save) = rotor_ui(ui, self) {
+            cx.export_as(save.name, "Rotor (TOML)", "toml", save.text.into_bytes());
+        }
+    }
+
+    fn busy(&self) -> Option<Job> {
+        (!self.is_idle()).then_some(Job::Rotor)
+    }
+
+    fn snapshot_setup(&mut self) -> Option<&'static str> {
+        self.open_file("two-bearing-shaft.toml", None, SNAPSHOT_ROTOR);
+        None
+    }
+}
+
 /// The view's speeds [rad/s] for `rotor`.
 fn speeds(rotor: &Rotor) -> Vec<f64> {
-    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| b * 30.0 / std::f64::consts::PI) * MAX_FACTOR;
+    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| RPM.from_si(b)) * MAX_FACTOR;
     #[allow(clippy::cast_precision_loss)]
     (0..SPEEDS)
-        .map(|i| (FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64) * std::f64::consts::PI / 30.0)
+        .map(|i| RPM.to_si(FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64))
         .collect()
 }
 
@@ -300,16 +342,19 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
 /// as `√(k/m)` says (a heavily damped mode at low speed may not).
 #[must_use]
 pub fn first_mode_at_top_speed(r: &AnalysisResult, rotor: &Rotor) -> Option<(f64, f64)> {
-    let top = rotor.operating_range.map_or(f64::INFINITY, |[_, b]| b);
-    let s = r
-        .speeds
-        .iter()
-        .min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?;
-    s.point.modes.modes.first().map(|m| (s.point.speed_rad_s * 30.0 / std::f64::consts::PI, m.frequency_hz()))
+    let s = match rotor.operating_range {
+        Some([_, top]) => r
+            .speeds
+            .iter()
+            .min_by(|a, b| (a.point.speed_rad_s - top).abs().total_cmp(&(b.point.speed_rad_s - top).abs()))?,
+        // (Measured from an infinite top, every speed would tie and the first be taken.)
+        None => r.speeds.last()?,
+    };
+    s.point.modes.modes.first().map(|m| (RPM.from_si(s.point.speed_rad_s), m.frequency_hz()))
 }
 
 fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
-    let rpm = |w: f64| w * 30.0 / std::f64::consts::PI;
+    let rpm = |w: f64| RPM.from_si(w);
     let onset =
         r.onset.as_ref().map_or_else(|| "none in the sweep".to_string(), |o| format!("{:.0} rpm", rpm(o.speed_rad_s)));
     let critical: Vec<String> = r.critical_speeds.iter().map(|c| format!("{:.0}", rpm(c.speed_rad_s))).collect();
@@ -444,7 +489,7 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
     let last = r.speeds.len().saturating_sub(1);
     view.speed_index = view.speed_index.min(last);
     let index_rpm: Vec<f64> =
-        (0..r.speeds.len()).map(|i| r.speeds[i].point.speed_rad_s * 30.0 / std::f64::consts::PI).collect();
+        (0..r.speeds.len()).map(|i| RPM.from_si(r.speeds[i].point.speed_rad_s)).collect();
     ui.horizontal(|ui| {
         ui.add(
             egui::Slider::new(&mut view.speed_index, 0..=last)
@@ -478,7 +523,7 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
         ui.label("No mode at this speed.");
         return;
     };
-    let z_mm: Vec<f64> = s.z_m.iter().map(|z| z * 1e3).collect();
+    let z_mm: Vec<f64> = s.z_m.iter().map(|z| MM.from_si(*z)).collect();
     let color = whirl_color(s.whirl);
     let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
     plot("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))

@@ -8,7 +8,10 @@
 use egui::{Color32, ComboBox, DragValue, RichText, Ui};
 use egui_plot::{Legend, Line, MarkerShape, Plot, Points, VLine};
 
+use super::{View, ViewContext};
+use crate::app::frame_probe::Job;
 use crate::app::sweep_job::SweepJob;
+use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
 use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
 use crate::study::COLUMNS;
@@ -20,11 +23,48 @@ const OVER_LIMIT: Color32 = Color32::from_rgb(235, 70, 60);
 const SOMMERFELD_CHART: [&str; 5] =
     ["eccentricity_ratio", "kxx_n_per_m", "kyy_n_per_m", "cxx_ns_per_m", "cyy_ns_per_m"];
 
-/// The view's runtime state (the spec itself is persisted with the view settings).
+/// The sweep view: its spec (kept between sessions) and the sweep run from it.
 #[derive(Default)]
 pub struct SweepView {
+    /// The input, its range and the outputs.
+    pub spec: SweepSpec,
     pub job: Option<SweepJob>,
     pub error: Option<String>,
+}
+
+impl View for SweepView {
+    fn id(&self) -> &'static str {
+        "sweep"
+    }
+
+    fn label(&self) -> &'static str {
+        "Sweep"
+    }
+
+    /// The solution of the edited case, marked on the plots.
+    fn needs(&self) -> &'static [StageId] {
+        &[StageId::Reduction]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        let current = cx.shown.map(|s| s.solution.clone());
+        if let Some(SweepAction::ExportCsv(csv)) = sweep_view_ui(ui, self, cx.case_text(), current.as_deref()) {
+            cx.export("sweep", "CSV", "csv", csv.into_bytes());
+        }
+    }
+
+    /// The controls: a sweep starts from the case text, not from its solution.
+    fn placeholder_ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        self.ui(ui, cx);
+    }
+
+    fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
+        Some(&mut self.spec)
+    }
+
+    fn busy(&self) -> Option<Job> {
+        self.job.as_ref().is_some_and(|j| !j.done()).then_some(Job::Sweep)
+    }
 }
 
 /// What the view asks the app to do.
@@ -115,10 +155,10 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
 pub fn sweep_view_ui(
     ui: &mut Ui,
     view: &mut SweepView,
-    spec: &mut SweepSpec,
     text: Option<String>,
     current: Option<&Solution>,
 ) -> Option<SweepAction> {
+    let spec = &mut view.spec;
     let key_x = |key: &str| text.as_deref().and_then(|t| key_value(t, key));
     let run = controls_ui(ui, spec);
     let current_x = view.job.as_ref().and_then(|j| key_x(&j.spec.key)).or_else(|| key_x(&spec.key));
