@@ -134,8 +134,10 @@ pub fn load_for_sommerfeld(case: &Case, s: f64) -> f64 {
 /// The bearing's case is invalid.
 pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>, CaseError> {
     let (_, base) = load_case(&bearing.text, &bearing.set)?;
-    let mut model = BearingModel::new(&base)
-        .map_err(|e| CaseError::Inconsistent { key: "bearing".into(), message: e.to_string() })?;
+    let mut model = BearingModel::new(&base).map_err(|e| CaseError::Inconsistent {
+        key: "bearing".into(),
+        reason: crate::model::error::Inconsistency::NotBuildable { reason: e.to_string() },
+    })?;
     let mut thermal = None;
     let mut points = Vec::new();
     for &s in &spec.sommerfeld {
