@@ -409,6 +409,7 @@ fn check_overlap(pads: &[Pad]) -> Result<(), CaseError> {
 
 fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseError> {
     let o = &file.operating;
+    let speed = key!("operating.speed_rpm").value(Some(o.speed_rpm))?;
     let load = match (o.load_n, o.eccentricity_ratio) {
         (Some(_), Some(_)) => {
             return Err(inconsistent("operating.eccentricity_ratio", Inconsistency::LoadAndEccentricity));
@@ -433,8 +434,8 @@ fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseEr
     if o.eccentricity_angle_deg.is_some() && o.eccentricity_ratio.is_none() {
         return Err(inconsistent("operating.eccentricity_angle_deg", Inconsistency::EccentricityAngleWithoutRatio));
     }
-    let speed = key!("operating.speed_rpm").value(Some(o.speed_rpm))?;
     let supply = key!("operating.supply_temperature_c").value(Some(o.supply_temperature_c))?;
+    let film = key!("operating.film_temperature_c").value_in(file, o.film_temperature_c)?;
     let pressure = key!("operating.injection_pressure_bar");
     let injection = match &o.injection_pressure_bar {
         None => vec![pressure.value(None)?; n_pads],
@@ -453,7 +454,7 @@ fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseEr
         speed_rad_s: speed,
         load,
         supply_temperature_c: supply,
-        film_temperature_c: key!("operating.film_temperature_c").value_in(file, o.film_temperature_c)?,
+        film_temperature_c: film,
         injection_pressure_pa: injection,
         injection_temperature_c: key!("operating.injection_temperature_c").value_in(file, o.injection_temperature_c)?,
         excitation_ratio: key!("operating.excitation_ratio").value(o.excitation_ratio)?,
@@ -462,7 +463,11 @@ fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseEr
 
 fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseError> {
     let m = &file.mesh;
+    let nx = key!("mesh.circumferential_elements").count_in(file, m.circumferential_elements)?;
     let nz = key!("mesh.axial_elements").count_in(file, m.axial_elements)?;
+    let no = key!("mesh.orifice_elements").count_in(file, m.orifice_elements)?;
+    let nr = key!("mesh.pad_radial_elements").count_in(file, m.pad_radial_elements)?;
+    let max_nodes = key!("mesh.max_nodes").count(m.max_nodes)?;
     let all_mid = bearing.pads.iter().flat_map(|p| &p.orifices).all(|o| o.axial_m.abs() < 1e-12);
     let half = match m.half_model {
         Some(true) if !all_mid => return Err(inconsistent("mesh.half_model", Inconsistency::HalfModelOffMidPlane)),
@@ -479,12 +484,12 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     }
     Ok(MeshSpec {
         fidelity: m.fidelity.unwrap_or_default(),
-        circumferential_elements: key!("mesh.circumferential_elements").count_in(file, m.circumferential_elements)?,
+        circumferential_elements: nx,
         axial_elements: nz,
-        orifice_elements: key!("mesh.orifice_elements").count_in(file, m.orifice_elements)?,
+        orifice_elements: no,
         half_model: half,
-        pad_radial_elements: key!("mesh.pad_radial_elements").count_in(file, m.pad_radial_elements)?,
-        max_nodes: key!("mesh.max_nodes").count(m.max_nodes)?,
+        pad_radial_elements: nr,
+        max_nodes,
     })
 }
 

@@ -435,15 +435,15 @@ impl<F> KeySpec<F> {
         }
     }
 
-    /// The key's whole number for `file`: the value given (checked against `[lo, hi]`), else the row's
-    /// default (a fixed count, or one that follows other values of the file).
+    /// The key's whole number for `file`: the value given, else the row's default (a fixed count, or one
+    /// that follows other values of the file), checked against `[lo, hi]` either way.
     ///
     /// # Errors
     /// A value outside `[lo, hi]`, naming the key; an absent key without a default.
     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     pub fn count_in(&self, file: &F, given: Option<usize>) -> Result<usize, CaseError> {
         match (given, self.default) {
-            (None, Fallback::Follows { value, .. }) => Ok(value(file).round().max(0.0) as usize),
+            (None, Fallback::Follows { value, .. }) => self.count(Some(value(file).round().max(0.0) as usize)),
             _ => self.count(given),
         }
     }
