@@ -272,12 +272,8 @@ fn defaults_and_units_come_from_the_key_table() {
     assert_eq!((pad.density_kg_per_m3, pad.youngs_modulus_pa, pad.poisson_ratio), (7800.0, 200e9, 0.3));
     assert!((c.physics.touchdown_film_m - 0.01 * 102e-6).abs() < 1e-18, "1 % of the assembled clearance");
     assert_eq!(c.operating.injection_pressure_pa, vec![0.0; 5]);
-    match c.operating.load {
-        tiltpad::model::LoadSpec::Force { angle_rad, .. } => {
-            assert!((angle_rad - 1.5 * std::f64::consts::PI).abs() < 1e-15)
-        }
-        other => panic!("{other:?}"),
-    }
+    let tiltpad::model::LoadSpec::Force { angle_rad, .. } = c.operating.load else { panic!("{:?}", c.operating.load) };
+    assert!((angle_rad - 1.5 * std::f64::consts::PI).abs() < 1e-15, "270°");
     // The rig's valve: 120 Hz, 5 L/min at 70 bar, K_c 0.012 L/(min·bar), leakage 0.3 L/min.
     let rig = std::fs::read_to_string(common::case_path("test-rig-pub5.toml")).unwrap();
     let (_, c) = load_case(&rig, &[]).unwrap();
