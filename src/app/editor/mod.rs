@@ -4,7 +4,7 @@
 //! The rows are the case's key table ([`crate::model::schema::KEYS`]): each row with an editor entry is drawn
 //! in its group, in table order, by its widget ([`rows::row_ui`]), which reads and writes the value under the
 //! row's key. A new key therefore appears here without code. What is left here is the editor's own code,
-//! listed in [`HOOKS`]: rows whose widget is `Custom` (lists with one value per pad, choices that change other
+//! listed in `HOOKS`: rows whose widget is `Custom` (lists with one value per pad, choices that change other
 //! keys), the entries of arrays of tables (orifices, injection lines), and rows that are not keys (how the
 //! pad clearance or the journal position is given).
 

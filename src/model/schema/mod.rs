@@ -15,23 +15,29 @@
 //! `bearing.pad.<i>.<name>` takes the row of `bearing.pads.<name>` ([`spec`] maps both).
 //!
 //! # Adding a key
-//! 1. **One row** in the section's file here, e.g. in `thermal.rs`:
+//! 1. **One row** in the section's file here, e.g. the THD loop's iteration budget in `thermal.rs`:
 //!    ```text
-//!    KeySpec::integer("thermal.max_iterations", units::COUNT, 10, 10_000)
-//!        .default(Fallback::Count(300))
+//!    Key::integer("thermal.max_iterations", COUNT, 10, 100_000)
 //!        .typical(100.0, 1000.0)
-//!        .edit(Thermal, "Iteration budget", Widget::Optional(0))
+//!        .default(Fallback::Count(300))
+//!        .edit(Thermal, "Iteration budget", Optional(0))
 //!        .when(thd)
-//!        .meaning("Outer iterations the THD loop may take before it stops and says so."),
+//!        .meaning("Outer iterations the THD loop may take … raise it there."),
 //!    ```
-//!    The range check and its error message, the default, the unit conversion, the `tiltpad schema` entry and
-//!    the editor row (with its tooltip) follow from it; no editor code, no range or default anywhere else.
-//! 2. **The key in the file format**: a field of its serde table in [`super::file`] (a declaration,
-//!    `pub max_iterations: Option<usize>`, with the serde attributes of its neighbours).
-//! 3. **The value the solver reads**: a field of the SI case in [`super::case`] and its one line in
-//!    [`super::resolve`], which reads everything from the row: `max_iterations: key!("thermal.max_iterations")
-//!    .count(t.max_iterations)?`.
-//! 4. The physics that reads it.
+//!    The range check and its error message (`` `thermal.max_iterations` = 5 is out of range: allowed an
+//!    integer in [10, 100000] ``), the default, the unit conversion, the `tiltpad schema` entry and the editor
+//!    row (checkbox, drag value, tooltip, shown with the thermal model only) follow from it: no editor code,
+//!    no range or default written anywhere else.
+//! 2. **The key in the file format**: its field in the serde table of [`super::file`], a declaration
+//!    (`pub max_iterations: Option<usize>`, with its neighbours' serde attributes).
+//! 3. **The value the solver reads**: its field in the SI case ([`super::case`], `pub max_iterations: usize`)
+//!    and one line in [`super::resolve`] that takes range, default and unit from the row:
+//!    `max_iterations: key!("thermal.max_iterations").count(t.max_iterations)?`.
+//! 4. The physics that reads it (here `ThermalParams { max_iterations: case.thermal.max_iterations, .. }`
+//!    where the stages build the THD loop; a stage that lists the SI fields it reads names the new one).
+//!
+//! Steps 2 and 3 are declarations the compiler checks (`key!` finds the row while building); what a key is
+//! — its unit, range, default, meaning and editor row — is written once, in step 1.
 //!
 //! A unit test sets every numeric key just outside its range and checks that validation rejects it with the
 //! row's interval, and that every row's default lies inside its range; another checks that every key a shipped
