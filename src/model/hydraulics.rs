@@ -25,7 +25,7 @@ use crate::key;
 pub struct HydraulicsFile {
     /// Supply pressure at the valve's P port.
     pub supply_pressure_bar: f64,
-    /// Return (tank) pressure, default 0.
+    /// Return (tank) pressure.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub return_pressure_bar: Option<f64>,
     pub valve: ValveFile,

@@ -181,3 +181,34 @@ fn the_editor_reads_and_writes_every_row_by_its_key() {
     }
     assert!(written > 80, "only {written} editor rows");
 }
+
+/// The file's choice enums default (`#[default]`, what validation takes for an absent key) to their rows'
+/// default words (what `tiltpad schema` and the editor show); so do the rotor file's.
+#[test]
+fn the_file_enums_default_to_their_rows_word() {
+    use crate::model::file::{CavitatedFilmFile, Cavitation, Fidelity, PadFilmBcFile, PadKindFile, ThermalModelKind};
+    use crate::model::rotor::CoefficientModel;
+    use crate::model::shaft::BeamTheory;
+    fn word<T: serde::Serialize + Default>() -> String {
+        toml::Value::try_from(T::default()).unwrap().as_str().unwrap().to_string()
+    }
+    let case = [
+        ("bearing.pads.kind", word::<PadKindFile>()),
+        ("mesh.fidelity", word::<Fidelity>()),
+        ("physics.cavitation", word::<Cavitation>()),
+        ("thermal.model", word::<ThermalModelKind>()),
+        ("thermal.pad_film_bc", word::<PadFilmBcFile>()),
+        ("thermal.cavitated_film", word::<CavitatedFilmFile>()),
+    ];
+    for (key, w) in &case {
+        assert!(matches!(spec(key).unwrap().default, Fallback::Word(d) if d == *w), "{key}: the enum defaults to {w}");
+    }
+    let rotor = [("rotor.beam_theory", word::<BeamTheory>()), ("rotor.coefficients", word::<CoefficientModel>())];
+    for (key, w) in rotor {
+        let row = crate::model::rotor_schema::ROTOR_KEYS.iter().find(|k| k.key == key).unwrap();
+        assert!(matches!(row.default, Fallback::Word(d) if d == w), "{key}: the enum defaults to {w}");
+    }
+    // Every choice row with a default word has been compared.
+    let words = KEYS.iter().filter(|k| matches!(k.default, Fallback::Word(_))).count();
+    assert_eq!(words, case.len());
+}
