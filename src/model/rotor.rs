@@ -145,7 +145,7 @@ pub struct SectionTable {
 }
 
 fn one() -> usize {
-    1
+    rotor_key!("rotor.section[].elements").count(None).unwrap_or_default()
 }
 
 /// `[[rotor.disk]]`
