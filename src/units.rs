@@ -85,6 +85,35 @@ pub const G: Unit = unit("g", 1e-3);
 /// Gram-millimetres (unbalance), in kg·m.
 pub const G_MM: Unit = unit("g·mm", 1e-6);
 
+// Hydraulics.
+/// Litres per minute and bar (a valve's flow–pressure coefficient), in m³/(s·Pa).
+pub const L_PER_MIN_BAR: Unit = unit("L/(min·bar)", 1e-3 / 60.0 / 1e5);
+/// Per gigapascal (a compliance), in 1/Pa.
+pub const PER_GPA: Unit = unit("1/GPa", 1e-9);
+
+// Values written in their SI unit (a factor of one): the case keys name their unit all the same, so every key
+// has a `Unit` and its row says how it is written.
+/// A pure number (ratios, fractions, coefficients).
+pub const ONE: Unit = unit("–", 1.0);
+/// A count (pads, elements, modes): no unit.
+pub const COUNT: Unit = unit("", 1.0);
+/// Mesh nodes (a budget).
+pub const NODES: Unit = unit("nodes", 1.0);
+/// Temperature: °C inside as well.
+pub const CELSIUS: Unit = unit("°C", 1.0);
+pub const N: Unit = unit("N", 1.0);
+pub const N_PER_M: Unit = unit("N/m", 1.0);
+pub const NS_PER_M: Unit = unit("N·s/m", 1.0);
+pub const KG: Unit = unit("kg", 1.0);
+pub const KG_M2: Unit = unit("kg·m²", 1.0);
+pub const KG_PER_M3: Unit = unit("kg/m³", 1.0);
+pub const PA_S: Unit = unit("Pa·s", 1.0);
+pub const PER_K: Unit = unit("1/K", 1.0);
+pub const J_PER_KG_K: Unit = unit("J/(kg·K)", 1.0);
+pub const W_PER_M_K: Unit = unit("W/(m·K)", 1.0);
+pub const W_PER_M2_K: Unit = unit("W/(m²·K)", 1.0);
+pub const VOLT: Unit = unit("V", 1.0);
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -99,5 +128,8 @@ mod tests {
         assert_eq!(BAR.to_si(2.0), 2e5);
         assert!((DEG.to_si(180.0) - std::f64::consts::PI).abs() < 1e-15);
         assert!((UM.from_si(1e-4) - 100.0).abs() < 1e-9);
+        // 1 L/(min·bar) is a litre per minute per 1e5 Pa.
+        assert!((L_PER_MIN_BAR.to_si(6e6) - 1e-3).abs() < 1e-15);
+        assert_eq!(PER_GPA.to_si(2.0), 2e-9);
     }
 }

@@ -208,3 +208,79 @@ fn massless_pads_are_an_explicit_option() {
     let e = err(&["bearing.pads.massless=true", "bearing.pads.density_kg_per_m3=7800"]);
     assert_names(&e, "bearing.pads.density_kg_per_m3", &["massless"]);
 }
+
+/// Values that do not fit together come back as a typed [`Inconsistency`] with the numbers of the
+/// condition, so a caller can match the condition rather than parse the text (which stays as it was).
+#[test]
+fn inconsistencies_are_typed_with_their_numbers() {
+    use tiltpad::model::error::Inconsistency;
+    let reason = |e: CaseError| match e {
+        CaseError::Inconsistent { reason, .. } => reason,
+        other => panic!("expected an inconsistency, got {other:?}"),
+    };
+    match reason(err(&["bearing.pads.pivot_deg=[60.0, 100.0, 204.0, 276.0, 348.0]"])) {
+        // Pad 0 (pivot 60°, offset 0.6 of a 60° arc) spans 24°–84°; pad 1 starts at 100 − 36 = 64°.
+        Inconsistency::PadsOverlap { first: 0, second: 1, first_from_deg, first_to_deg, second_from_deg } => {
+            assert!((first_from_deg - 24.0).abs() < 1e-9 && (first_to_deg - 84.0).abs() < 1e-9, "{first_from_deg}");
+            assert!((second_from_deg - 64.0).abs() < 1e-9, "{second_from_deg}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // A 5 mm orifice on a 60° arc of a 50.8 mm journal (53.20 mm of arc) fits between 2.5/53.20 and 1 − that.
+    let e = err(&["bearing.pads.orifice=[{position_frac = 0.02, diameter_mm = 5.0, length_mm = 5.0}]"]);
+    match reason(e) {
+        Inconsistency::OrificeOffArc { arc_length_mm, lowest, highest, position_frac, .. } => {
+            let arc = 60_f64.to_radians() * 50.8;
+            assert!((arc_length_mm - arc).abs() < 1e-9, "{arc_length_mm}");
+            assert!((lowest - 2.5 / arc).abs() < 1e-12 && (highest - (1.0 - 2.5 / arc)).abs() < 1e-12, "{lowest}");
+            assert_eq!(position_frac, 0.02);
+        }
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(reason(err(&["operating.eccentricity_ratio=0.5"])), Inconsistency::LoadAndEccentricity);
+    let e = err(&["bearing.pads.massless=true", "bearing.pads.density_kg_per_m3=7800"]);
+    assert_eq!(reason(e), Inconsistency::MasslessWithDensity);
+    assert_eq!(
+        reason(err(&["operating.injection_pressure_bar=[1.0, 2.0]"])),
+        Inconsistency::PerPadValues { given: 2, pads: 5 }
+    );
+    let e = err(&["bearing.pads.preload=0.2"]);
+    assert_eq!(reason(e), Inconsistency::PadGeometryTwice { given: vec!["preload".into(), "bore_radius_mm".into()] });
+}
+
+/// Absent keys take their rows' defaults, and every value is converted to SI by its row's unit: the
+/// numbers here are the documented defaults and the unit factors written out.
+#[test]
+fn defaults_and_units_come_from_the_key_table() {
+    let removed = [
+        "thermal.model=\"thd\"",
+        "thermal.pad_conductivity_w_per_m_k=",
+        "thermal.convection_w_per_m2_k=",
+        "thermal.carry_over=",
+        "bearing.pads.density_kg_per_m3=",
+        "bearing.pads.youngs_modulus_gpa=",
+        "bearing.pads.poisson_ratio=",
+        "operating.load_angle_deg=",
+        "operating.injection_pressure_bar=",
+    ];
+    let (_, c) = load_case(&base(), &removed.map(String::from)).unwrap();
+    assert_eq!(c.thermal.pad_conductivity_w_per_m_k, 45.0);
+    assert_eq!(c.thermal.convection_w_per_m2_k, 100.0);
+    assert_eq!(c.thermal.carry_over, 0.8);
+    assert_eq!(c.thermal.ambient_temperature_c, 50.0, "the supply temperature");
+    let pad = &c.bearing.pads[0];
+    assert_eq!((pad.density_kg_per_m3, pad.youngs_modulus_pa, pad.poisson_ratio), (7800.0, 200e9, 0.3));
+    assert!((c.physics.touchdown_film_m - 0.01 * 102e-6).abs() < 1e-18, "1 % of the assembled clearance");
+    assert_eq!(c.operating.injection_pressure_pa, vec![0.0; 5]);
+    let tiltpad::model::LoadSpec::Force { angle_rad, .. } = c.operating.load else { panic!("{:?}", c.operating.load) };
+    assert!((angle_rad - 1.5 * std::f64::consts::PI).abs() < 1e-15, "270°");
+    // The rig's valve: 120 Hz, 5 L/min at 70 bar, K_c 0.012 L/(min·bar), leakage 0.3 L/min.
+    let rig = std::fs::read_to_string(common::case_path("test-rig-pub5.toml")).unwrap();
+    let (_, c) = load_case(&rig, &[]).unwrap();
+    let v = c.hydraulics.unwrap().valve;
+    assert!((v.natural_frequency_rad_s - 240.0 * std::f64::consts::PI).abs() < 1e-9);
+    assert!((v.rated_flow_m3_s - 5e-3 / 60.0).abs() < 1e-18);
+    assert!((v.rated_drop_pa - 70e5).abs() < 1e-6);
+    assert!((v.flow_pressure_coefficient - 0.012e-3 / 60.0 / 1e5).abs() < 1e-24);
+    assert!((v.leakage_m3_s - 0.3e-3 / 60.0).abs() < 1e-18);
+}

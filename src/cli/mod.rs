@@ -360,15 +360,16 @@ pub fn run(command: Command) -> Result<()> {
             frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
         }
         Command::Schema { rotor, json } => {
-            let keys = if rotor { crate::model::rotor_schema::ROTOR_KEYS } else { crate::model::schema::KEYS };
+            use crate::model::{rotor_schema::ROTOR_KEYS, schema};
             match json {
                 Some(out) => {
-                    let mut text = serde_json::to_string_pretty(&crate::model::schema::json_table_of(keys))?;
+                    let table = if rotor { schema::json_table_of(ROTOR_KEYS) } else { schema::json_table() };
+                    let mut text = serde_json::to_string_pretty(&table)?;
                     text.push('\n');
                     write_atomic(&out, text.as_bytes())?;
                     rows::announce(&out);
                 }
-                None => print!("{}", crate::model::schema::text_table_of(keys)),
+                None => print!("{}", if rotor { schema::text_table_of(ROTOR_KEYS) } else { schema::text_table() }),
             }
             Ok(())
         }

@@ -77,7 +77,7 @@ pub struct Pad {
     pub poisson_ratio: f64,
     /// Hertz contact of the pivot (its radial stiffness follows the pad's load); then
     /// `pivot_stiffness_n_per_m` is `None`.
-    pub pivot_contact: Option<crate::physics::hertz::PivotContact>,
+    pub pivot_contact: Option<PivotContact>,
     pub orifices: Vec<Orifice>,
 }
 
@@ -97,6 +97,35 @@ impl Pad {
     pub fn trailing_edge_rad(&self) -> f64 {
         self.leading_edge_rad + self.arc_rad
     }
+}
+
+/// The pivot's contact geometry.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactKind {
+    /// Cylinder in a cylindrical seat (line contact along the pad's length).
+    Rocker,
+    /// Sphere in a spherical socket (point contact).
+    Ball,
+}
+
+/// A pivot's Hertz contact: geometry and materials [SI]. Its law (approach and stiffness under a load) is
+/// in `physics::hertz`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PivotContact {
+    pub kind: ContactKind,
+    /// Radius of the convex body (rocker back, ball) R₁ [m].
+    pub pivot_radius_m: f64,
+    /// Radius of the concave seat R₂ > R₁ [m].
+    pub seat_radius_m: f64,
+    /// Contact length of a rocker [m] (unused for a ball).
+    pub length_m: f64,
+    /// Convex body's E₁ [Pa] and ν₁ (the pad's material).
+    pub pivot_youngs_modulus_pa: f64,
+    pub pivot_poisson_ratio: f64,
+    /// Seat's E₂ [Pa] and ν₂ (the housing's material).
+    pub seat_youngs_modulus_pa: f64,
+    pub seat_poisson_ratio: f64,
 }
 
 /// An injection orifice (capillary) through a pad.
@@ -164,7 +193,7 @@ impl Operating {
     /// Journal speed [rev/s].
     #[must_use]
     pub fn speed_rev_s(&self) -> f64 {
-        self.speed_rad_s / std::f64::consts::TAU
+        crate::units::HZ_ANGULAR.from_si(self.speed_rad_s)
     }
 }
 
@@ -235,7 +264,7 @@ pub struct Thermal {
 
 /// The pad arc the levels' circumferential counts are set for (the 60–80° pads of the shipped
 /// tilting-pad bearings) [rad].
-pub const LEVEL_ARC_RAD: f64 = 80.0 * std::f64::consts::PI / 180.0;
+pub const LEVEL_ARC_RAD: f64 = 80.0 * crate::units::DEG.si;
 
 impl Fidelity {
     /// Default element counts (circumferential per pad of up to [`LEVEL_ARC_RAD`], axial over the full

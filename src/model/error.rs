@@ -1,8 +1,10 @@
-//! Errors raised while reading, overriding or validating a case.
+//! Errors raised while reading, overriding or validating a case (and a rotor file).
 //!
 //! Every variant names the key (dotted path as written in the case file, e.g. `bearing.pads.preload`),
 //! and where it makes sense the offending value and the allowed range, so a message can be shown next to
-//! the field it concerns.
+//! the field it concerns. Values that are each fine but do not fit together are an [`Inconsistency`], one
+//! variant per condition with the numbers it is about, so a caller can match the condition (an editor that
+//! offers to move an orifice back onto its pad, a batch that counts overlapping pads) rather than its text.
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -26,8 +28,8 @@ pub enum CaseError {
     #[error("`{key}` = {value} is out of range: allowed {allowed}")]
     OutOfRange { key: String, value: f64, allowed: String },
     /// Values that are each fine but contradict one another (overlapping pads, orifice outside its pad, …).
-    #[error("`{key}`: {message}")]
-    Inconsistent { key: String, message: String },
+    #[error("`{key}`: {reason}")]
+    Inconsistent { key: String, reason: Inconsistency },
     /// The meshes would need more nodes than the budget `mesh.max_nodes` allows (refused before anything is
     /// allocated; see [`crate::model::budget`]).
     #[error(
@@ -46,9 +48,123 @@ pub enum CaseError {
         largest_pad_film: usize,
         orifices: usize,
     },
-    /// A `--set key=value` override that cannot be applied.
-    #[error("override `{text}`: {message}")]
-    BadOverride { text: String, message: String },
+    /// A `--set key=value` override (or an editor's edit) that cannot be applied.
+    #[error("override `{text}`: {problem}")]
+    BadOverride { text: String, problem: OverrideProblem },
+}
+
+/// Why values that are each valid do not fit together: one variant per condition, with its numbers.
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
+pub enum Inconsistency {
+    // ------------------------------------------------------------------------------------------ pads
+    #[error("the pad count belongs in [bearing.pads], not in a per-pad entry")]
+    PadCountInPadEntry,
+    #[error("{entries} per-pad entries for {pads} pads (bearing.pads.count)")]
+    PadEntries { entries: usize, pads: usize },
+    /// A per-pad list (pivot angles, injection pressures) whose length is not the pad count.
+    #[error("{given} values for {pads} pads (give one value, or one per pad)")]
+    PerPadValues { given: usize, pads: usize },
+    #[error(
+        "pads {first} and {second} overlap: pad {first} spans {first_from_deg:.2}°–{first_to_deg:.2}°, pad {second} \
+         starts at {second_from_deg:.2}°"
+    )]
+    PadsOverlap { first: usize, second: usize, first_from_deg: f64, first_to_deg: f64, second_from_deg: f64 },
+    #[error("a fixed sector has no pivot")]
+    FixedSectorPivot,
+    #[error("massless pads have no density: remove it, or set massless = false")]
+    MasslessWithDensity,
+    /// More than one of preload, clearance_um and bore_radius_mm in one table (`given`: the keys given).
+    #[error("give one of preload, clearance_um, bore_radius_mm, not {}", .given.join(" and "))]
+    PadGeometryTwice { given: Vec<String> },
+    #[error("gives preload {preload:.4} (1 − Cb/Cp); allowed [-1, 1)")]
+    PreloadOutOfRange { preload: f64 },
+    #[error(
+        "orifice outside its pad: an orifice of {diameter_mm:.3} mm at {position_frac} of a {arc_deg}° arc (arc \
+         length {arc_length_mm:.3} mm) crosses the pad edge; allowed position_frac in ({lowest:.4}, {highest:.4})"
+    )]
+    OrificeOffArc { diameter_mm: f64, position_frac: f64, arc_deg: f64, arc_length_mm: f64, lowest: f64, highest: f64 },
+    #[error(
+        "orifice outside its pad: a {diameter_mm:.3} mm orifice at axial_frac {axial_frac} crosses the pad's axial end"
+    )]
+    OrificeOffLength { diameter_mm: f64, axial_frac: f64 },
+    #[error("orifice overlaps orifice {other} of the same pad")]
+    OrificesOverlap { other: usize },
+    #[error("describes a pivot contact: give bearing.pads.pivot_contact (\"rocker\" or \"ball\") too, or remove it")]
+    ContactWithoutKind,
+    #[error("give either a pivot contact or pivot_stiffness_n_per_m, not both")]
+    ContactAndStiffness,
+    #[error("the seat ({seat_mm:.4} mm) must be larger than the pivot radius ({pivot_mm:.4} mm)")]
+    SeatNotLarger { seat_mm: f64, pivot_mm: f64 },
+    // ------------------------------------------------------------------------------------- lubricant
+    #[error("give either a second viscosity point or the coefficient, not both")]
+    ViscosityPointAndCoefficient,
+    #[error("the two viscosity points need different temperatures")]
+    ViscosityPointsAtOneTemperature,
+    #[error("the two points give η = {eta_per_k:.4} /K; viscosity must fall with temperature (η in [0, 1] /K)")]
+    ViscosityRises { eta_per_k: f64 },
+    // ------------------------------------------------------------------------------------- operating
+    #[error("give either load_n (find the position) or eccentricity_ratio (find the load), not both")]
+    LoadAndEccentricity,
+    #[error("with a prescribed eccentricity use eccentricity_angle_deg")]
+    LoadAngleWithEccentricity,
+    #[error("only meaningful with eccentricity_ratio")]
+    EccentricityAngleWithoutRatio,
+    // ------------------------------------------------------------------------------ mesh and thermal
+    #[error("the half model needs every orifice on the mid-plane (axial_frac = 0.5)")]
+    HalfModelOffMidPlane,
+    #[error("only used with pad_film_bc = \"bc2\"")]
+    OnlyWithBc2,
+    // ------------------------------------------------------------------------------------ hydraulics
+    #[error("must be below the supply pressure")]
+    ReturnNotBelowSupply,
+    #[error("{ports} ports: a four-way valve has one or two (A, B)")]
+    PortCount { ports: usize },
+    /// A valve port (`A` or `B`) named by two lines.
+    #[error("port {port} used twice")]
+    PortTwice { port: char },
+    #[error("feeds no pad")]
+    PortFeedsNoPad,
+    #[error("pad {pad} does not exist (pads 0 to {last})")]
+    NoSuchPad { pad: usize, last: usize },
+    #[error("pad {pad} is fed by two ports")]
+    PadFedTwice { pad: usize },
+    // ----------------------------------------------------------------------------------------- rotor
+    #[error("{modes:?}: two increasing flexible-mode numbers in [1, 20]")]
+    DampingModes { modes: [usize; 2] },
+    #[error("give both rotor.min_speed_rpm and rotor.max_speed_rpm, or neither")]
+    SpeedRangeHalf,
+    /// The rotor file names a bearing case the caller could not read (`reason`: the caller's words).
+    #[error("cannot read `{name}`: {reason}")]
+    CaseUnreadable { name: String, reason: String },
+    /// The rotor file names a bearing case that is itself invalid.
+    #[error("`{name}`: {error}")]
+    CaseInvalid { name: String, error: Box<CaseError> },
+    #[error("{rows} rows; needs {expected} (one per entry of speeds_rpm, or one row without speeds_rpm)")]
+    CoefficientRows { rows: usize, expected: usize },
+    #[error("give either `case` or `k_n_per_m` and `c_ns_per_m`")]
+    CaseOrNumbers,
+    // ------------------------------------------------------------------------------------ any layer
+    /// A valid case the solver's model cannot be built for (`reason`: the solver's error, as text: the model
+    /// layer cannot hold the solver's types).
+    #[error("the solver cannot build the case: {reason}")]
+    NotBuildable { reason: String },
+}
+
+/// Why a `key=value` override cannot be applied.
+#[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]
+pub enum OverrideProblem {
+    #[error("expected key=value")]
+    NoEquals,
+    #[error("empty key")]
+    EmptyKey,
+    #[error("`{array}` has {len} entries; index {index} is out of range")]
+    IndexOutOfRange { array: String, len: usize, index: usize },
+    #[error("`{path}` is not a table")]
+    EntryNotATable { path: String },
+    #[error("an override must end at a value, not a whole table")]
+    WholeTable,
+    #[error("`{path}` is a value, not a table")]
+    ValueNotATable { path: String },
 }
 
 fn hint_suffix(hint: &str) -> String {
@@ -72,6 +188,16 @@ impl CaseError {
             | Self::Inconsistent { key, .. } => Some(key),
             Self::NodeBudget { .. } => Some("mesh.max_nodes"),
         }
+    }
+
+    /// An [`CaseError::Inconsistent`] at `key`.
+    pub(crate) fn inconsistent(key: impl Into<String>, reason: Inconsistency) -> Self {
+        Self::Inconsistent { key: key.into(), reason }
+    }
+
+    /// A [`CaseError::MissingKey`] at `key`.
+    pub(crate) fn missing(key: impl Into<String>, meaning: impl Into<String>) -> Self {
+        Self::MissingKey { key: key.into(), meaning: meaning.into() }
     }
 }
 
@@ -97,6 +223,10 @@ impl Range {
     pub const fn open(lo: f64, hi: f64) -> Self {
         Self { lo, hi, open_lo: true, open_hi: true }
     }
+    /// `[lo, hi)`.
+    pub const fn open_hi(lo: f64, hi: f64) -> Self {
+        Self { lo, hi, open_lo: false, open_hi: true }
+    }
 
     /// The interval as validation messages and `tiltpad schema` write it, e.g. `(0, 10000]`.
     #[must_use]
@@ -106,10 +236,20 @@ impl Range {
         format!("{l}{}, {}{r}", fmt_bound(self.lo), fmt_bound(self.hi))
     }
 
-    pub fn check(&self, key: &str, value: f64) -> Result<f64, CaseError> {
+    /// Whether `value` is finite and inside.
+    #[must_use]
+    pub fn contains(&self, value: f64) -> bool {
         let below = if self.open_lo { value <= self.lo } else { value < self.lo };
         let above = if self.open_hi { value >= self.hi } else { value > self.hi };
-        if !value.is_finite() || below || above {
+        value.is_finite() && !below && !above
+    }
+
+    /// `value` if it is inside, else [`CaseError::OutOfRange`] naming `key`, the value and the interval.
+    ///
+    /// # Errors
+    /// The value is outside the interval, NaN or infinite.
+    pub fn check(&self, key: &str, value: f64) -> Result<f64, CaseError> {
+        if !self.contains(value) {
             return Err(CaseError::OutOfRange {
                 key: key.to_string(),
                 value,

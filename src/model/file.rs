@@ -3,6 +3,8 @@
 //! This is the persisted, editable form of a case (the workbench edits it, `--set` overrides it). It is
 //! converted to SI exactly once, by [`CaseFile::resolve`](super::resolve), which also validates every value.
 //! Optional keys are `Option`s so that a file round-trips without inventing values the user never wrote.
+//! Each key's unit, allowed values, default and meaning are its row in [`super::schema`]; the comments here
+//! only say what a field is.
 //!
 //! Layout (see `cases/*.toml` for complete examples):
 //!
@@ -90,14 +92,14 @@ pub enum OneOrMany {
 }
 
 /// Pad data (`[bearing.pads]` for all pads, `[[bearing.pad]]` for one pad). Every value optional here;
-/// resolution takes the per-pad value, else the common one, else the documented default.
+/// resolution takes the per-pad value, else the common one, else the key's default.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct PadFile {
     /// Number of pads (only in `[bearing.pads]`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub count: Option<usize>,
-    /// `tilting` (default) or `fixed`.
+    /// `tilting` or `fixed`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub kind: Option<PadKindFile>,
     /// Pad arc β.
@@ -128,17 +130,17 @@ pub struct PadFile {
     /// Transverse pivot stiffness (across the pivot line, e.g. a rocker's tangential contact); absent = rigid.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pivot_transverse_stiffness_n_per_m: Option<f64>,
-    /// Pad material density (default 7800, steel).
+    /// Pad material density.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub density_kg_per_m3: Option<f64>,
     /// Pads without inertia (zero mass and moment of inertia), as databook coefficients assume; no
     /// density may be given with it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub massless: Option<bool>,
-    /// Pad material Young's modulus (used by pad flexibility; default 200 GPa).
+    /// Pad material Young's modulus (used by pad flexibility).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub youngs_modulus_gpa: Option<f64>,
-    /// Pad material Poisson ratio (default 0.3).
+    /// Pad material Poisson ratio.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub poisson_ratio: Option<f64>,
     /// Pivot from a Hertz contact instead of a given stiffness: `rocker` (cylinder in a cylindrical seat) or
@@ -151,10 +153,10 @@ pub struct PadFile {
     /// Radius of the housing's concave seat (larger than the pivot radius).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pivot_seat_radius_mm: Option<f64>,
-    /// Rocker contact length (default: the bearing length).
+    /// Rocker contact length.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pivot_length_mm: Option<f64>,
-    /// Seat (housing) material Young's modulus (default 200 GPa) and Poisson ratio (default 0.3).
+    /// Seat (housing) material Young's modulus and Poisson ratio.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pivot_seat_youngs_modulus_gpa: Option<f64>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -170,7 +172,7 @@ pub struct PadFile {
 pub struct OrificeFile {
     /// Circumferential position of the centre as a fraction of the pad arc from the leading edge.
     pub position_frac: f64,
-    /// Axial position of the centre as a fraction of the length (0.5 = mid-plane, the default).
+    /// Axial position of the centre as a fraction of the length (0.5 = mid-plane).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub axial_frac: Option<f64>,
     /// Orifice diameter d0.
@@ -212,28 +214,28 @@ pub struct OperatingFile {
     /// Static load magnitude on the journal (give this, or `eccentricity_ratio`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load_n: Option<f64>,
-    /// Load direction from +x, counter-clockwise (270 = downward). Default 270.
+    /// Load direction from +x, counter-clockwise (270 = downward).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub load_angle_deg: Option<f64>,
     /// Prescribed journal eccentricity ratio e/Cb ("given eccentricity, find load").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub eccentricity_ratio: Option<f64>,
-    /// Direction of the prescribed journal displacement (default 270).
+    /// Direction of the prescribed journal displacement.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub eccentricity_angle_deg: Option<f64>,
     /// Oil supply temperature.
     pub supply_temperature_c: f64,
-    /// Film temperature used by the isothermal model (default: the supply temperature).
+    /// Film temperature used by the isothermal model.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub film_temperature_c: Option<f64>,
     /// Injection (orifice entry) pressure: one value for all pads or one per pad. Default 0 (orifices open to
     /// ambient: they act as sinks).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub injection_pressure_bar: Option<OneOrMany>,
-    /// Temperature of the injected oil (default: the supply temperature).
+    /// Temperature of the injected oil.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub injection_temperature_c: Option<f64>,
-    /// Excitation-to-running frequency ratio ω/Ω for the reduced coefficients (default 1, synchronous).
+    /// Excitation-to-running frequency ratio ω/Ω for the reduced coefficients (1: synchronous).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub excitation_ratio: Option<f64>,
 }
@@ -298,7 +300,7 @@ pub struct PhysicsFile {
     /// contact through their roughness). Default: 1 % of the assembled clearance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub touchdown_film_um: Option<f64>,
-    /// Bending modes per tilting pad beyond the rigid tilt (pad flexibility); 0 (default) = rigid pads.
+    /// Bending modes per tilting pad beyond the rigid tilt (pad flexibility); 0 = rigid pads.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_modes: Option<usize>,
 }
@@ -341,25 +343,25 @@ pub enum CavitatedFilmFile {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct ThermalFile {
-    /// `isothermal` (default) or `thd`.
+    /// `isothermal` or `thd`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub model: Option<ThermalModelKind>,
-    /// Film–pad exchange: `bc1` (default), `bc2`, `bc3`.
+    /// Film–pad exchange: `bc1`, `bc2`, `bc3`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_film_bc: Option<PadFilmBcFile>,
     /// Exchange coefficient H_oil-pad for `bc2` (required there).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub h_oil_pad_w_per_m2_k: Option<f64>,
-    /// Free-convection coefficient H∞ on the pads' free faces (default 100).
+    /// Free-convection coefficient H∞ on the pads' free faces.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub convection_w_per_m2_k: Option<f64>,
-    /// Temperature T∞ around the pads (default: the supply temperature).
+    /// Temperature T∞ around the pads.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ambient_temperature_c: Option<f64>,
-    /// Pad material thermal conductivity (default 45, steel).
+    /// Pad material thermal conductivity.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_conductivity_w_per_m_k: Option<f64>,
-    /// Hot-oil carry-over λ in the groove mixing balance (default 0.8).
+    /// Hot-oil carry-over λ in the groove mixing balance.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub carry_over: Option<f64>,
     /// Given leading-edge oil temperature (else from the groove mixing balance).
@@ -368,22 +370,22 @@ pub struct ThermalFile {
     /// Given journal temperature (else from zero net heat flux to the journal).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub journal_temperature_c: Option<f64>,
-    /// Cavitated zones: `striated` (default) or `full_film`.
+    /// Cavitated zones: `striated` or `full_film`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cavitated_film: Option<CavitatedFilmFile>,
-    /// Pad thermal expansion coefficient [10⁻⁶/K] (default 0: no thermal growth of the pads).
+    /// Pad thermal expansion coefficient (0: no thermal growth of the pads).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_expansion_ppm_per_k: Option<f64>,
-    /// Journal thermal expansion coefficient [10⁻⁶/K] (default 0: no journal growth).
+    /// Journal thermal expansion coefficient (0: no journal growth).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub journal_expansion_ppm_per_k: Option<f64>,
-    /// Temperature at which the clearances are given (default: the supply temperature).
+    /// Temperature at which the clearances are given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub reference_temperature_c: Option<f64>,
-    /// Housing (and pivot) thermal expansion coefficient [10⁻⁶/K] (default 0: no housing growth).
+    /// Housing (and pivot) thermal expansion coefficient (0: no housing growth).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub housing_expansion_ppm_per_k: Option<f64>,
-    /// Housing temperature (default: the supply temperature).
+    /// Housing temperature.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub housing_temperature_c: Option<f64>,
 }

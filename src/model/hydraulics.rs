@@ -16,14 +16,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::error::{CaseError, Range};
-
-const BAR: f64 = 1e5;
-/// 1 L/min in m³/s.
-const L_PER_MIN: f64 = 1e-3 / 60.0;
-
-/// Largest number of acoustic modes per line.
-pub const MAX_MODES: usize = 50;
+use super::error::{CaseError, Inconsistency};
+use crate::key;
 
 /// `[hydraulics]` as written.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -31,7 +25,7 @@ pub const MAX_MODES: usize = 50;
 pub struct HydraulicsFile {
     /// Supply pressure at the valve's P port.
     pub supply_pressure_bar: f64,
-    /// Return (tank) pressure, default 0.
+    /// Return (tank) pressure.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub return_pressure_bar: Option<f64>,
     pub valve: ValveFile,
@@ -136,99 +130,75 @@ pub struct Rig {
     pub support_damping_ns_per_m: f64,
 }
 
-fn inconsistent(key: &str, message: impl Into<String>) -> CaseError {
-    CaseError::Inconsistent { key: key.to_string(), message: message.into() }
-}
-
-/// Validates `[hydraulics]` against a bearing of `n_pads` pads and converts it to SI.
+/// Validates `[hydraulics]` against a bearing of `n_pads` pads and converts it to SI (ranges, defaults and
+/// units from the rows of [`super::schema`]).
 ///
 /// # Errors
 /// The first value out of range or inconsistent (a pad fed twice or missing, ports named twice), by key.
 pub fn resolve_hydraulics(h: &HydraulicsFile, n_pads: usize) -> Result<Hydraulics, CaseError> {
-    let supply = Range::positive(1000.0).check("hydraulics.supply_pressure_bar", h.supply_pressure_bar)? * BAR;
-    let ret =
-        Range::closed(0.0, 1000.0).check("hydraulics.return_pressure_bar", h.return_pressure_bar.unwrap_or(0.0))? * BAR;
+    let supply = key!("hydraulics.supply_pressure_bar").value(Some(h.supply_pressure_bar))?;
+    let ret = key!("hydraulics.return_pressure_bar").value(h.return_pressure_bar)?;
     if ret >= supply {
-        return Err(inconsistent("hydraulics.return_pressure_bar", "must be below the supply pressure"));
+        return Err(CaseError::inconsistent("hydraulics.return_pressure_bar", Inconsistency::ReturnNotBelowSupply));
     }
     let v = &h.valve;
     let valve = Valve {
-        natural_frequency_rad_s: Range::positive(1e5)
-            .check("hydraulics.valve.natural_frequency_hz", v.natural_frequency_hz)?
-            * std::f64::consts::TAU,
-        damping_ratio: Range::positive(10.0).check("hydraulics.valve.damping_ratio", v.damping_ratio)?,
-        rated_flow_m3_s: Range::positive(1e4).check("hydraulics.valve.rated_flow_l_per_min", v.rated_flow_l_per_min)?
-            * L_PER_MIN,
-        rated_drop_pa: Range::positive(1000.0).check("hydraulics.valve.rated_drop_bar", v.rated_drop_bar)? * BAR,
-        full_scale_v: Range::positive(1000.0).check("hydraulics.valve.full_scale_v", v.full_scale_v.unwrap_or(10.0))?,
-        flow_pressure_coefficient: Range::closed(0.0, 1000.0).check(
-            "hydraulics.valve.flow_pressure_coefficient_l_per_min_bar",
-            v.flow_pressure_coefficient_l_per_min_bar.unwrap_or(0.0),
-        )? * L_PER_MIN
-            / BAR,
-        leakage_m3_s: Range::closed(0.0, 1e4)
-            .check("hydraulics.valve.leakage_l_per_min", v.leakage_l_per_min.unwrap_or(0.0))?
-            * L_PER_MIN,
+        natural_frequency_rad_s: key!("hydraulics.valve.natural_frequency_hz").value(Some(v.natural_frequency_hz))?,
+        damping_ratio: key!("hydraulics.valve.damping_ratio").value(Some(v.damping_ratio))?,
+        rated_flow_m3_s: key!("hydraulics.valve.rated_flow_l_per_min").value(Some(v.rated_flow_l_per_min))?,
+        rated_drop_pa: key!("hydraulics.valve.rated_drop_bar").value(Some(v.rated_drop_bar))?,
+        full_scale_v: key!("hydraulics.valve.full_scale_v").value(v.full_scale_v)?,
+        flow_pressure_coefficient: key!("hydraulics.valve.flow_pressure_coefficient_l_per_min_bar")
+            .value(v.flow_pressure_coefficient_l_per_min_bar)?,
+        leakage_m3_s: key!("hydraulics.valve.leakage_l_per_min").value(v.leakage_l_per_min)?,
     };
     if h.port.is_empty() || h.port.len() > 2 {
-        return Err(inconsistent(
-            "hydraulics.port",
-            format!("{} ports: a four-way valve has one or two (A, B)", h.port.len()),
-        ));
+        return Err(CaseError::inconsistent("hydraulics.port", Inconsistency::PortCount { ports: h.port.len() }));
     }
     let mut fed = vec![false; n_pads];
     let mut ports = Vec::with_capacity(h.port.len());
     for (i, p) in h.port.iter().enumerate() {
         let key = |name: &str| format!("hydraulics.port[{i}].{name}");
+        let conflict = |name: &str, reason| Err(CaseError::inconsistent(key(name), reason));
         if h.port[..i].iter().any(|q| q.valve_port == p.valve_port) {
-            return Err(inconsistent(&key("valve_port"), format!("port {:?} used twice", p.valve_port)));
+            let port = if p.valve_port == ValvePort::A { 'A' } else { 'B' };
+            return conflict("valve_port", Inconsistency::PortTwice { port });
         }
         if p.pads.is_empty() {
-            return Err(inconsistent(&key("pads"), "feeds no pad"));
+            return conflict("pads", Inconsistency::PortFeedsNoPad);
         }
         for &k in &p.pads {
             match fed.get_mut(k) {
-                None => {
-                    return Err(inconsistent(
-                        &key("pads"),
-                        format!("pad {k} does not exist (pads 0 to {})", n_pads.saturating_sub(1)),
-                    ))
-                }
-                Some(true) => return Err(inconsistent(&key("pads"), format!("pad {k} is fed by two ports"))),
+                None => return conflict("pads", Inconsistency::NoSuchPad { pad: k, last: n_pads.saturating_sub(1) }),
+                Some(true) => return conflict("pads", Inconsistency::PadFedTwice { pad: k }),
                 Some(f) => *f = true,
             }
         }
-        let modes = p.modes.unwrap_or(4);
-        if !(1..=MAX_MODES).contains(&modes) {
-            return Err(CaseError::OutOfRange {
-                key: key("modes"),
-                value: modes as f64,
-                allowed: format!("an integer in [1, {MAX_MODES}]"),
-            });
-        }
+        let number = |row: &crate::model::schema::KeySpec, given: Option<f64>| {
+            row.value_at(&key(row.key.rsplit('.').next().unwrap_or(row.key)), given)
+        };
         ports.push(Port {
             sign: if p.valve_port == ValvePort::A { 1.0 } else { -1.0 },
             pads: p.pads.clone(),
-            line_length_m: Range::positive(1e5).check(&key("line_length_mm"), p.line_length_mm)? * 1e-3,
-            line_diameter_m: Range::positive(1000.0).check(&key("line_diameter_mm"), p.line_diameter_mm)? * 1e-3,
-            oil_bulk_modulus_pa: Range::positive(100.0)
-                .check(&key("bulk_modulus_gpa"), p.bulk_modulus_gpa.unwrap_or(1.5))?
-                * 1e9,
-            air_fraction: Range::closed(0.0, 0.5).check(&key("air_fraction"), p.air_fraction.unwrap_or(0.0))?,
-            wall_compliance_per_pa: Range::closed(0.0, 1000.0)
-                .check(&key("wall_compliance_per_gpa"), p.wall_compliance_per_gpa.unwrap_or(0.0))?
-                * 1e-9,
-            modes,
+            line_length_m: number(key!("hydraulics.port[].line_length_mm"), Some(p.line_length_mm))?,
+            line_diameter_m: number(key!("hydraulics.port[].line_diameter_mm"), Some(p.line_diameter_mm))?,
+            oil_bulk_modulus_pa: number(key!("hydraulics.port[].bulk_modulus_gpa"), p.bulk_modulus_gpa)?,
+            air_fraction: number(key!("hydraulics.port[].air_fraction"), p.air_fraction)?,
+            wall_compliance_per_pa: number(
+                key!("hydraulics.port[].wall_compliance_per_gpa"),
+                p.wall_compliance_per_gpa,
+            )?,
+            modes: key!("hydraulics.port[].modes").count_at(&key("modes"), p.modes)?,
         });
     }
     let rig = match &h.rig {
         None => None,
         Some(r) => Some(Rig {
-            mass_kg: Range::positive(1e6).check("hydraulics.rig.mass_kg", r.mass_kg)?,
-            support_stiffness_n_per_m: Range::closed(0.0, 1e12)
-                .check("hydraulics.rig.support_stiffness_n_per_m", r.support_stiffness_n_per_m)?,
-            support_damping_ns_per_m: Range::closed(0.0, 1e9)
-                .check("hydraulics.rig.support_damping_ns_per_m", r.support_damping_ns_per_m.unwrap_or(0.0))?,
+            mass_kg: key!("hydraulics.rig.mass_kg").value(Some(r.mass_kg))?,
+            support_stiffness_n_per_m: key!("hydraulics.rig.support_stiffness_n_per_m")
+                .value(Some(r.support_stiffness_n_per_m))?,
+            support_damping_ns_per_m: key!("hydraulics.rig.support_damping_ns_per_m")
+                .value(r.support_damping_ns_per_m)?,
         }),
     };
     Ok(Hydraulics { supply_pressure_pa: supply, return_pressure_pa: ret, valve, ports, rig })

@@ -31,12 +31,16 @@
 //!   Lubrication Technology 103(1), 1981, p. 150). So 20 MPa stays a screening value, stated as such; a
 //!   design review replaces it by the bearing maker's figure for its lining.
 //! - `max_reynolds` = 1000: the low end of the 1000–1500 laminar–turbulent transition reported for
-//!   journal bearings ([`crate::bearing::solution::regime::LAMINAR_REYNOLDS`]); above it the laminar model this solver
-//!   uses underestimates loss and temperature.
+//!   journal bearings (the regime check's laminar limit, `bearing::solution::regime::LAMINAR_REYNOLDS`); above it the
+//!   laminar model this solver uses underestimates loss and temperature.
+//!
+//! The values, ranges and units are the rows of [`super::schema`] (`limits.*`); this module is the file
+//! table and its SI form.
 
 use serde::{Deserialize, Serialize};
 
-use super::error::{CaseError, Range};
+use super::error::CaseError;
+use crate::key;
 
 /// `[limits]` as written: every value optional (default: the convention in the module doc).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
@@ -78,70 +82,28 @@ pub struct Limits {
 }
 
 impl Default for Limits {
-    /// The conventions of the module doc.
+    /// The conventions of the module doc (the rows' defaults).
     fn default() -> Self {
-        Self {
-            min_film_thickness_m: DEFAULT_MIN_FILM_UM * 1e-6,
-            max_pad_temperature_c: DEFAULT_MAX_PAD_TEMPERATURE_C,
-            max_specific_load_pa: DEFAULT_MAX_SPECIFIC_LOAD_MPA * 1e6,
-            max_peak_pressure_pa: DEFAULT_MAX_PEAK_PRESSURE_MPA * 1e6,
-            max_reynolds: DEFAULT_MAX_REYNOLDS,
-        }
+        resolve_limits(&LimitsFile::default()).unwrap_or(Self {
+            min_film_thickness_m: 0.0,
+            max_pad_temperature_c: f64::INFINITY,
+            max_specific_load_pa: f64::INFINITY,
+            max_peak_pressure_pa: f64::INFINITY,
+            max_reynolds: f64::INFINITY,
+        })
     }
 }
-
-pub const DEFAULT_MIN_FILM_UM: f64 = 10.0;
-pub const DEFAULT_MAX_PAD_TEMPERATURE_C: f64 = 120.0;
-pub const DEFAULT_MAX_SPECIFIC_LOAD_MPA: f64 = 3.5;
-pub const DEFAULT_MAX_PEAK_PRESSURE_MPA: f64 = 20.0;
-/// The regime check's laminar limit ([`crate::bearing::solution::regime::LAMINAR_REYNOLDS`], a test keeps them equal).
-pub const DEFAULT_MAX_REYNOLDS: f64 = 1000.0;
-
-/// Allowed ranges (also the schema's).
-pub const MIN_FILM_RANGE: Range = Range::positive(1000.0);
-pub const PAD_TEMPERATURE_RANGE: Range = Range::closed(-60.0, 400.0);
-pub const SPECIFIC_LOAD_RANGE: Range = Range::positive(1000.0);
-pub const PEAK_PRESSURE_RANGE: Range = Range::positive(10_000.0);
-pub const REYNOLDS_RANGE: Range = Range::positive(1e7);
 
 /// Validates `[limits]` and converts to SI.
 ///
 /// # Errors
 /// A value outside its range, naming its key.
 pub fn resolve_limits(file: &LimitsFile) -> Result<Limits, CaseError> {
-    let d = Limits::default();
-    let get = |v: Option<f64>, range: Range, key: &str, default: f64, scale: f64| -> Result<f64, CaseError> {
-        v.map_or(Ok(default), |x| Ok(range.check(key, x)? * scale))
-    };
     Ok(Limits {
-        min_film_thickness_m: get(
-            file.min_film_thickness_um,
-            MIN_FILM_RANGE,
-            "limits.min_film_thickness_um",
-            d.min_film_thickness_m,
-            1e-6,
-        )?,
-        max_pad_temperature_c: get(
-            file.max_pad_temperature_c,
-            PAD_TEMPERATURE_RANGE,
-            "limits.max_pad_temperature_c",
-            d.max_pad_temperature_c,
-            1.0,
-        )?,
-        max_specific_load_pa: get(
-            file.max_specific_load_mpa,
-            SPECIFIC_LOAD_RANGE,
-            "limits.max_specific_load_mpa",
-            d.max_specific_load_pa,
-            1e6,
-        )?,
-        max_peak_pressure_pa: get(
-            file.max_peak_pressure_mpa,
-            PEAK_PRESSURE_RANGE,
-            "limits.max_peak_pressure_mpa",
-            d.max_peak_pressure_pa,
-            1e6,
-        )?,
-        max_reynolds: get(file.max_reynolds, REYNOLDS_RANGE, "limits.max_reynolds", d.max_reynolds, 1.0)?,
+        min_film_thickness_m: key!("limits.min_film_thickness_um").value(file.min_film_thickness_um)?,
+        max_pad_temperature_c: key!("limits.max_pad_temperature_c").value(file.max_pad_temperature_c)?,
+        max_specific_load_pa: key!("limits.max_specific_load_mpa").value(file.max_specific_load_mpa)?,
+        max_peak_pressure_pa: key!("limits.max_peak_pressure_mpa").value(file.max_peak_pressure_mpa)?,
+        max_reynolds: key!("limits.max_reynolds").value(file.max_reynolds)?,
     })
 }

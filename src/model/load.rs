@@ -6,7 +6,7 @@
 //! removes the key.
 
 use super::case::Case;
-use super::error::CaseError;
+use super::error::{CaseError, OverrideProblem};
 use super::file::CaseFile;
 
 /// Parses case text, applies overrides and validates.
@@ -66,64 +66,106 @@ pub(crate) fn schema_error(path: &str, message: &str) -> CaseError {
 
 /// Applies one `key=value` override to the raw table.
 fn apply_override(table: &mut toml::Table, text: &str) -> Result<(), CaseError> {
-    let bad = |message: &str| CaseError::BadOverride { text: text.to_string(), message: message.to_string() };
-    let (key, raw) = text.split_once('=').ok_or_else(|| bad("expected key=value"))?;
-    let key = key.trim();
-    let raw = raw.trim();
+    let bad = |problem| CaseError::BadOverride { text: text.to_string(), problem };
+    let (key, raw) = text.split_once('=').ok_or_else(|| bad(OverrideProblem::NoEquals))?;
+    let (key, raw) = (key.trim(), raw.trim());
     if key.is_empty() {
-        return Err(bad("empty key"));
+        return Err(bad(OverrideProblem::EmptyKey));
     }
     // An empty value removes the key (e.g. to switch from `load_n` to `eccentricity_ratio`).
     let value = (!raw.is_empty()).then(|| parse_value(raw));
-    let parts: Vec<&str> = key.split('.').collect();
+    set_path(table, &key.split('.').collect::<Vec<_>>(), value).map_err(bad)
+}
+
+/// Sets (`Some`) or removes (`None`) the value at a dotted path; a numeric segment indexes an array of
+/// tables (`bearing.pad.2.offset`). Missing tables on the way are created.
+fn set_path(table: &mut toml::Table, parts: &[&str], value: Option<toml::Value>) -> Result<(), OverrideProblem> {
+    let Some((last, parents)) = parts.split_last() else { return Err(OverrideProblem::EmptyKey) };
     let mut node = table;
-    for (i, part) in parts.iter().enumerate() {
-        let last = i + 1 == parts.len();
-        if last {
-            match value {
-                Some(v) => {
-                    node.insert((*part).to_string(), v);
-                }
-                None => {
-                    node.remove(*part);
-                }
-            }
-            return Ok(());
-        }
-        // Next segment may index an array of tables (`bearing.pad.2.offset`).
-        let next_is_index = parts[i + 1].parse::<usize>().is_ok();
-        let entry = node.entry((*part).to_string()).or_insert_with(|| {
-            if next_is_index {
+    let mut i = 0;
+    while i < parents.len() {
+        let index = parts[i + 1].parse::<usize>().ok();
+        let entry = node.entry(parts[i].to_string()).or_insert_with(|| {
+            if index.is_some() {
                 toml::Value::Array(Vec::new())
             } else {
                 toml::Value::Table(toml::Table::new())
             }
         });
-        match entry {
-            toml::Value::Table(t) => node = t,
-            toml::Value::Array(a) if next_is_index => {
-                let idx: usize = parts[i + 1].parse().map_err(|_| bad("bad index"))?;
-                if idx >= a.len() {
-                    return Err(bad(&format!(
-                        "`{}` has {} entries; index {idx} is out of range",
-                        parts[..=i].join("."),
-                        a.len()
-                    )));
-                }
-                let rest = &parts[i + 2..];
-                let toml::Value::Table(t) = &mut a[idx] else {
-                    return Err(bad(&format!("`{}.{idx}` is not a table", parts[..=i].join("."))));
-                };
-                if rest.is_empty() {
-                    return Err(bad("an override must end at a value, not a whole table"));
-                }
-                let sub = format!("{}={raw}", rest.join("."));
-                return apply_override(t, &sub).map_err(|_| bad("cannot apply inside the array entry"));
+        match (entry, index) {
+            (toml::Value::Table(t), _) => {
+                node = t;
+                i += 1;
             }
-            _ => return Err(bad(&format!("`{}` is a value, not a table", parts[..=i].join(".")))),
+            (toml::Value::Array(a), Some(index)) => {
+                let array = parts[..=i].join(".");
+                let len = a.len();
+                if i + 1 == parents.len() {
+                    return Err(OverrideProblem::WholeTable);
+                }
+                match a.get_mut(index) {
+                    None => return Err(OverrideProblem::IndexOutOfRange { array, len, index }),
+                    Some(toml::Value::Table(t)) => node = t,
+                    Some(_) => return Err(OverrideProblem::EntryNotATable { path: format!("{array}.{index}") }),
+                }
+                i += 2;
+            }
+            _ => return Err(OverrideProblem::ValueNotATable { path: parts[..=i].join(".") }),
+        }
+    }
+    match value {
+        Some(v) => {
+            node.insert((*last).to_string(), v);
+        }
+        None => {
+            node.remove(*last);
         }
     }
     Ok(())
+}
+
+/// The value at a key in a file's table: `bearing.pads.orifice[1].diameter_mm` (or `…orifice.1…`).
+#[must_use]
+pub fn value_at<'a>(table: &'a toml::Table, key: &str) -> Option<&'a toml::Value> {
+    let dotted = key.replace('[', ".").replace(']', "");
+    let mut parts = dotted.split('.').filter(|p| !p.is_empty());
+    let mut value = table.get(parts.next()?)?;
+    for part in parts {
+        value = match (value, part.parse::<usize>()) {
+            (toml::Value::Array(a), Ok(i)) => a.get(i)?,
+            (toml::Value::Table(t), _) => t.get(part)?,
+            _ => return None,
+        };
+    }
+    Some(value)
+}
+
+impl CaseFile {
+    /// The case as a TOML table (what `to_toml` writes), to read values by key ([`value_at`]).
+    ///
+    /// # Errors
+    /// Only if a value cannot be represented in TOML.
+    pub fn to_table(&self) -> Result<toml::Table, CaseError> {
+        match toml::Value::try_from(self) {
+            Ok(toml::Value::Table(t)) => Ok(t),
+            Ok(_) => Err(CaseError::Syntax { message: "a case file serialises to a table".into() }),
+            Err(e) => Err(CaseError::Syntax { message: e.to_string() }),
+        }
+    }
+
+    /// This case with the value at `key` set (`Some`) or removed (`None`): what `--set key=value` does, for
+    /// editors. `key` may index arrays as validation names them (`bearing.pads.orifice[1].diameter_mm`).
+    ///
+    /// # Errors
+    /// A path through a value or past an array's end, or a value of the wrong type for its key.
+    pub fn with_value(&self, key: &str, value: Option<toml::Value>) -> Result<Self, CaseError> {
+        let mut table = self.to_table()?;
+        let dotted = key.replace('[', ".").replace(']', "");
+        let parts: Vec<&str> = dotted.split('.').filter(|p| !p.is_empty()).collect();
+        set_path(&mut table, &parts, value)
+            .map_err(|problem| CaseError::BadOverride { text: key.to_string(), problem })?;
+        from_table(table)
+    }
 }
 
 /// Parses an override value as TOML (number, bool, array, quoted string), else as a bare string.

@@ -1,10 +1,13 @@
 //! What a user describes: bearing geometry, pads, orifices, lubricant, operating point, mesh and physics
 //! options. Case files are TOML in engineering units ([`file`]); they are validated and converted to SI once
 //! ([`resolve`]) into a [`Case`] that the solver reads; [`budget`] counts the mesh nodes a case would
-//! allocate, so that an oversized one is refused before anything is built. [`schema`] lists every key with
-//! its unit, allowed values and meaning (for `tiltpad schema` and the editor); [`limits`] holds the design limits results are checked against; [`edit`] writes an edited
-//! case back into the user's own file, keeping its comments; [`rotor_sections`] adds and removes a rotor
-//! file's shaft sections, renumbering what sits on its nodes.
+//! allocate, so that an oversized one is refused before anything is built. [`schema`] is the table of every
+//! key — unit, allowed values, default, meaning and editor row, one row per key — that validation, `tiltpad
+//! schema` and the workbench's editor read (its opening comment says how to add a key); [`limits`] holds
+//! the design limits results are checked against; [`edit`] writes an edited case back into the user's own
+//! file, keeping its comments; [`rotor`] is the rotor file (its keys: [`rotor_schema`]), [`shaft`] its
+//! elements' data, and [`rotor_sections`] adds and removes a rotor file's shaft sections, renumbering what
+//! sits on its nodes. Nothing here imports the solver: the layers above read these types.
 
 pub mod budget;
 pub mod case;
@@ -19,6 +22,7 @@ pub mod rotor;
 pub mod rotor_schema;
 pub mod rotor_sections;
 pub mod schema;
+pub mod shaft;
 
 pub use case::{
     Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad,

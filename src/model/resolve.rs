@@ -1,26 +1,23 @@
 //! Conversion of a [`CaseFile`] (engineering units) into a validated SI [`Case`].
 //!
-//! Every check names the key as it is written in the file. Pads are resolved per pad: the value in
-//! `[[bearing.pad]]` entry i, else the common `[bearing.pads]` value, else a documented default, else an
-//! error naming the common key.
+//! Every check names the key as it is written in the file. A key's allowed range, its default and its unit
+//! are the ones of its row in [`super::schema`] (`key!("…")` finds the row while compiling); what is left
+//! here are the rules between keys (pads that overlap, an orifice off its pad, exactly one of preload,
+//! clearance and bore) and the ranges that depend on other values. Pads are resolved per pad: the value in
+//! `[[bearing.pad]]` entry i, else the common `[bearing.pads]` value, else the row's default, else an error
+//! naming the common key.
 
 use std::f64::consts::{PI, TAU};
 
-use super::budget::{DEFAULT_MAX_NODES, MAX_NODES_RANGE};
 use super::case::{Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal};
-use super::error::{CaseError, Range};
+use super::error::{CaseError, Inconsistency, Range};
 use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
+use super::schema::{KeySpec, MAX_CLEARANCE_RATIO, MAX_TOUCHDOWN_RATIO};
+use crate::key;
+use crate::units::DEG;
 
 mod contact;
 mod lubricant;
-
-const MM: f64 = 1e-3;
-const UM: f64 = 1e-6;
-const BAR: f64 = 1e5;
-/// Largest pad count the solver accepts.
-pub const MAX_PADS: usize = 24;
-/// Most bending modes per pad (the thesis finds the first one carries almost all of the effect).
-pub const MAX_PAD_MODES: usize = 3;
 
 impl CaseFile {
     /// Validates every value and converts to SI.
@@ -33,25 +30,16 @@ impl CaseFile {
         let operating = resolve_operating(self, bearing.pads.len())?;
         let mesh = resolve_mesh(self, &bearing)?;
         let cb = bearing.assembled_clearance_m;
-        let touchdown = match self.physics.touchdown_film_um {
-            Some(v) => Range::open_lo(0.0, 0.5 * cb / UM).check("physics.touchdown_film_um", v)? * UM,
-            None => 0.01 * cb,
+        let touchdown = key!("physics.touchdown_film_um");
+        if let Some(v) = self.physics.touchdown_film_um {
+            Range::open_lo(0.0, touchdown.from_si(MAX_TOUCHDOWN_RATIO * cb)).check(touchdown.key, v)?;
+        }
+        let physics = Physics {
+            cavitation: self.physics.cavitation.unwrap_or_default(),
+            touchdown_film_m: touchdown.value_in(self, self.physics.touchdown_film_um)?,
+            pad_modes: key!("physics.pad_modes").count(self.physics.pad_modes)?,
         };
-        let pad_modes = match self.physics.pad_modes {
-            Some(v) if v > MAX_PAD_MODES => {
-                #[allow(clippy::cast_precision_loss)]
-                let value = v as f64;
-                return Err(CaseError::OutOfRange {
-                    key: "physics.pad_modes".into(),
-                    value,
-                    allowed: format!("an integer in [0, {MAX_PAD_MODES}]"),
-                });
-            }
-            v => v.unwrap_or(0),
-        };
-        let physics =
-            Physics { cavitation: self.physics.cavitation.unwrap_or_default(), touchdown_film_m: touchdown, pad_modes };
-        let thermal = resolve_thermal(self, &operating)?;
+        let thermal = resolve_thermal(self)?;
         let hydraulics = self
             .hydraulics
             .as_ref()
@@ -74,16 +62,17 @@ impl CaseFile {
     }
 }
 
-fn inconsistent(key: &str, message: impl Into<String>) -> CaseError {
-    CaseError::Inconsistent { key: key.to_string(), message: message.into() }
+fn inconsistent(key: impl Into<String>, reason: Inconsistency) -> CaseError {
+    CaseError::inconsistent(key, reason)
 }
 
 fn missing(key: &str, meaning: &str) -> CaseError {
-    CaseError::MissingKey { key: key.to_string(), meaning: meaning.to_string() }
+    CaseError::missing(key, meaning)
 }
 
 /// Resolves one pad field: per-pad entry first, then the common table.
 struct PadSource<'a> {
+    file: &'a CaseFile,
     common: &'a PadFile,
     own: Option<&'a PadFile>,
     index: usize,
@@ -97,33 +86,43 @@ impl PadSource<'_> {
         }
         f(self.common).map(|v| (v, format!("bearing.pads.{name}")))
     }
-    fn common_key(name: &str) -> String {
-        format!("bearing.pads.{name}")
+
+    /// The pad's value of a numeric key in SI: given (per pad, else common) and checked against the row,
+    /// else the row's default (`None` for a key without one).
+    fn si(&self, row: &KeySpec, f: impl Fn(&PadFile) -> Option<f64>) -> Result<Option<f64>, CaseError> {
+        match self.get(pad_name(row), f) {
+            Some((v, key)) => row.value_at(&key, Some(v)).map(Some),
+            None => Ok(row.default_in(self.file).map(|v| row.to_si(v))),
+        }
     }
+}
+
+/// The name of a `bearing.pads.<name>` row inside a pad table.
+fn pad_name(row: &KeySpec) -> &'static str {
+    row.key.strip_prefix("bearing.pads.").unwrap_or(row.key)
 }
 
 fn resolve_bearing(file: &CaseFile) -> Result<Bearing, CaseError> {
     let b = &file.bearing;
-    let radius = Range::positive(1e4).check("bearing.journal_radius_mm", b.journal_radius_mm)? * MM;
-    let length = Range::positive(1e4).check("bearing.length_mm", b.length_mm)? * MM;
-    // Clearance ratio Cb/R up to 5 % (bearings are typically 1–3 ‰).
-    let cb_max_um = 0.05 * radius / UM;
-    let cb = Range::positive(cb_max_um).check("bearing.assembled_clearance_um", b.assembled_clearance_um)? * UM;
+    let radius = key!("bearing.journal_radius_mm").value(Some(b.journal_radius_mm))?;
+    let length = key!("bearing.length_mm").value(Some(b.length_mm))?;
+    let clearance = key!("bearing.assembled_clearance_um");
+    let cb = clearance.to_si(
+        Range::positive(clearance.from_si(MAX_CLEARANCE_RATIO * radius))
+            .check(clearance.key, b.assembled_clearance_um)?,
+    );
 
     let common = &b.pads;
     if let Some(i) = b.pad.iter().position(|p| p.count.is_some()) {
-        return Err(inconsistent(
-            &format!("bearing.pad.{i}.count"),
-            "the pad count belongs in [bearing.pads], not in a per-pad entry",
-        ));
+        return Err(inconsistent(format!("bearing.pad.{i}.count"), Inconsistency::PadCountInPadEntry));
     }
     let n = pad_count(common, &b.pad)?;
     let pivots = pivot_angles(common, &b.pad, n)?;
 
     let mut pads = Vec::with_capacity(n);
-    for (i, &pivot_deg) in pivots.iter().enumerate() {
-        let src = PadSource { common, own: b.pad.get(i), index: i };
-        pads.push(resolve_pad(&src, pivot_deg, radius, length, cb, n)?);
+    for (i, &pivot) in pivots.iter().enumerate() {
+        let src = PadSource { file, common, own: b.pad.get(i), index: i };
+        pads.push(resolve_pad(&src, pivot, radius, length, cb, n)?);
     }
     check_overlap(&pads)?;
     Ok(Bearing { journal_radius_m: radius, length_m: length, assembled_clearance_m: cb, pads })
@@ -134,35 +133,28 @@ fn pad_count(common: &PadFile, per_pad: &[PadFile]) -> Result<usize, CaseError> 
         Some(OneOrMany::Many(v)) => Some(v.len()),
         _ => None,
     };
+    let count = key!("bearing.pads.count");
     let n = common
         .count
         .or(if per_pad.is_empty() { None } else { Some(per_pad.len()) })
         .or(listed)
-        .ok_or_else(|| missing("bearing.pads.count", "number of pads"))?;
-    #[allow(clippy::cast_precision_loss)]
-    if n == 0 || n > MAX_PADS {
-        return Err(CaseError::OutOfRange {
-            key: "bearing.pads.count".into(),
-            value: n as f64,
-            allowed: format!("an integer in [1, {MAX_PADS}]"),
-        });
-    }
+        .ok_or_else(|| missing(count.key, "number of pads"))?;
+    let n = count.count(Some(n))?;
     if !per_pad.is_empty() && per_pad.len() != n {
-        return Err(inconsistent(
-            "bearing.pad",
-            format!("{} per-pad entries for {n} pads (bearing.pads.count)", per_pad.len()),
-        ));
+        return Err(inconsistent("bearing.pad", Inconsistency::PadEntries { entries: per_pad.len(), pads: n }));
     }
     if let Some(m) = listed {
         if m != n {
-            return Err(inconsistent("bearing.pads.pivot_deg", format!("{m} pivot angles for {n} pads")));
+            return Err(inconsistent("bearing.pads.pivot_deg", Inconsistency::PerPadValues { given: m, pads: n }));
         }
     }
     Ok(n)
 }
 
+/// Each pad's pivot angle [rad].
 #[allow(clippy::cast_precision_loss)]
 fn pivot_angles(common: &PadFile, per_pad: &[PadFile], n: usize) -> Result<Vec<f64>, CaseError> {
+    let row = key!("bearing.pads.pivot_deg");
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
         let own = per_pad.get(i).and_then(|p| p.pivot_deg.as_ref());
@@ -179,137 +171,70 @@ fn pivot_angles(common: &PadFile, per_pad: &[PadFile], n: usize) -> Result<Vec<f
                 (first + 360.0 * i as f64 / n as f64, "bearing.pads.pivot_deg".into())
             }
             (None, None) => {
-                return Err(missing("bearing.pads.pivot_deg", "pivot angle(s), degrees from +x counter-clockwise"))
+                return Err(missing(row.key, "pivot angle(s), degrees from +x counter-clockwise"));
             }
         };
-        out.push(Range::closed(-3600.0, 3600.0).check(&key, deg)?);
+        out.push(row.value_at(&key, Some(deg))?);
     }
     Ok(out)
 }
 
 #[allow(clippy::too_many_lines)]
-fn resolve_pad(
-    src: &PadSource<'_>,
-    pivot_deg: f64,
-    radius: f64,
-    length: f64,
-    cb: f64,
-    n: usize,
-) -> Result<Pad, CaseError> {
+fn resolve_pad(src: &PadSource<'_>, pivot: f64, radius: f64, length: f64, cb: f64, n: usize) -> Result<Pad, CaseError> {
     let kind = match src.get("kind", |p| p.kind).map(|(k, _)| k).unwrap_or_default() {
         PadKindFile::Tilting => PadKind::Tilting,
         PadKindFile::Fixed => PadKind::Fixed,
     };
-    let (arc_deg, arc_key) = src
-        .get("arc_deg", |p| p.arc_deg)
-        .ok_or_else(|| missing(&PadSource::common_key("arc_deg"), "pad arc, degrees"))?;
-    let arc_max = if kind == PadKind::Fixed && n == 1 { 360.0 } else { 360.0 / n as f64 };
+    let fixed = kind == PadKind::Fixed;
+    let arc_row = key!("bearing.pads.arc_deg");
+    let (arc_deg, arc_key) =
+        src.get("arc_deg", |p| p.arc_deg).ok_or_else(|| missing(arc_row.key, "pad arc, degrees"))?;
+    #[allow(clippy::cast_precision_loss)]
+    let arc_max = if fixed && n == 1 { 360.0 } else { 360.0 / n as f64 };
     let arc_deg = Range::open_lo(0.0, arc_max).check(&arc_key, arc_deg)?;
-    let arc = arc_deg.to_radians();
+    let arc = arc_row.to_si(arc_deg);
     let full_circle = (arc_deg - 360.0).abs() < 1e-12;
 
+    let offset_row = key!("bearing.pads.offset");
     let offset = match src.get("offset", |p| p.offset) {
-        Some((v, key)) => {
-            if kind == PadKind::Tilting { Range::open(0.0, 1.0) } else { Range::closed(0.0, 1.0) }.check(&key, v)?
-        }
-        None if kind == PadKind::Fixed => 0.5,
-        None => {
-            return Err(missing(
-                &PadSource::common_key("offset"),
-                "pivot offset, fraction of the arc from the leading edge",
-            ))
-        }
+        Some((v, key)) => if fixed { Range::closed(0.0, 1.0) } else { Range::open(0.0, 1.0) }.check(&key, v)?,
+        None if fixed => offset_row.value(None)?,
+        None => return Err(missing(offset_row.key, "pivot offset, fraction of the arc from the leading edge")),
     };
 
     // Exactly one of preload, clearance, bore radius (per pad, else common).
     let cp = pad_clearance(src, radius, cb)?;
     let preload = 1.0 - cb / cp;
 
+    let thickness_row = key!("bearing.pads.thickness_mm");
     let thickness = match src.get("thickness_mm", |p| p.thickness_mm) {
-        Some((v, key)) => Range::positive(1e4).check(&key, v)? * MM,
-        None if kind == PadKind::Fixed => 0.0,
-        None => return Err(missing(&PadSource::common_key("thickness_mm"), "pad thickness, mm")),
+        Some((v, key)) => thickness_row.value_at(&key, Some(v))?,
+        None if fixed => thickness_row.value(None)?,
+        None => return Err(missing(thickness_row.key, "pad thickness, mm")),
     };
-    // Real pivots are 1e7–1e10 N/m; below 1e5 N/m a pad would float millimetres off its seat.
-    let pivot_spring = |name: &str, f: fn(&PadFile) -> Option<f64>| -> Result<Option<f64>, CaseError> {
-        match src.get(name, f) {
-            Some((_, key)) if kind == PadKind::Fixed => Err(inconsistent(&key, "a fixed sector has no pivot")),
-            Some((v, key)) => Ok(Some(Range::closed(1e5, 1e14).check(&key, v)?)),
+    let pivot_spring = |row: &KeySpec, f: fn(&PadFile) -> Option<f64>| -> Result<Option<f64>, CaseError> {
+        match src.get(pad_name(row), f) {
+            Some((_, key)) if fixed => Err(inconsistent(key, Inconsistency::FixedSectorPivot)),
+            Some((v, key)) => row.value_at(&key, Some(v)).map(Some),
             None => Ok(None),
         }
     };
-    let pivot_stiffness = pivot_spring("pivot_stiffness_n_per_m", |p| p.pivot_stiffness_n_per_m)?;
-    let pivot_transverse_stiffness =
-        pivot_spring("pivot_transverse_stiffness_n_per_m", |p| p.pivot_transverse_stiffness_n_per_m)?;
+    let pivot_stiffness = pivot_spring(key!("bearing.pads.pivot_stiffness_n_per_m"), |p| p.pivot_stiffness_n_per_m)?;
+    let pivot_transverse_stiffness = pivot_spring(key!("bearing.pads.pivot_transverse_stiffness_n_per_m"), |p| {
+        p.pivot_transverse_stiffness_n_per_m
+    })?;
     let massless = src.get("massless", |p| p.massless).is_some_and(|(m, _)| m);
-    let density = match src.get("density_kg_per_m3", |p| p.density_kg_per_m3) {
-        Some((_, key)) if massless => {
-            return Err(inconsistent(&key, "massless pads have no density: remove it, or set massless = false"))
-        }
-        Some((v, key)) => Range::positive(3e4).check(&key, v)?,
-        None => 7800.0,
-    };
-    let (youngs, poisson) =
-        material(src, ("youngs_modulus_gpa", |p| p.youngs_modulus_gpa), ("poisson_ratio", |p| p.poisson_ratio))?;
-    let pivot_contact = contact::resolve_contact(src, kind, pivot_stiffness.is_some(), (youngs, poisson), length)?;
+    let density_row = key!("bearing.pads.density_kg_per_m3");
+    if let (true, Some((_, key))) = (massless, src.get("density_kg_per_m3", |p| p.density_kg_per_m3)) {
+        return Err(inconsistent(key, Inconsistency::MasslessWithDensity));
+    }
+    let density = src.si(density_row, |p| p.density_kg_per_m3)?.unwrap_or_default();
+    let youngs = src.si(key!("bearing.pads.youngs_modulus_gpa"), |p| p.youngs_modulus_gpa)?.unwrap_or_default();
+    let poisson = src.si(key!("bearing.pads.poisson_ratio"), |p| p.poisson_ratio)?.unwrap_or_default();
+    let pivot_contact = contact::resolve_contact(src, kind, pivot_stiffness.is_some(), (youngs, poisson))?;
 
-    let pivot = pivot_deg.to_radians();
     let leading_edge = if full_circle { pivot - PI } else { pivot - offset * arc };
-
-    // Orifices: per pad list replaces the common one.
-    let (orifice_files, okey) = match (src.own.and_then(|p| p.orifice.as_ref()), src.common.orifice.as_ref()) {
-        (Some(list), _) => (list.as_slice(), format!("bearing.pad.{}.orifice", src.index)),
-        (None, Some(list)) => (list.as_slice(), "bearing.pads.orifice".to_string()),
-        (None, None) => (&[][..], String::new()),
-    };
-    let mut orifices = Vec::with_capacity(orifice_files.len());
-    for (k, o) in orifice_files.iter().enumerate() {
-        let key = |f: &str| format!("{okey}[{k}].{f}");
-        let d = Range::positive(1e3).check(&key("diameter_mm"), o.diameter_mm)? * MM;
-        let l0 = Range::positive(1e4).check(&key("length_mm"), o.length_mm)? * MM;
-        let frac = Range::open(0.0, 1.0).check(&key("position_frac"), o.position_frac)?;
-        let afrac = Range::open(0.0, 1.0).check(&key("axial_frac"), o.axial_frac.unwrap_or(0.5))?;
-        let s0 = frac * arc * radius;
-        let z0 = (afrac - 0.5) * length;
-        let r = 0.5 * d;
-        if !full_circle && (s0 - r <= 0.0 || s0 + r >= arc * radius) {
-            return Err(inconsistent(
-                &key("position_frac"),
-                format!(
-                    "orifice outside its pad: an orifice of {:.3} mm at {frac} of a {arc_deg}° arc (arc length {:.3} mm) \
-                     crosses the pad edge; allowed position_frac in ({:.4}, {:.4})",
-                    d / MM,
-                    arc * radius / MM,
-                    r / (arc * radius),
-                    1.0 - r / (arc * radius)
-                ),
-            ));
-        }
-        if z0.abs() + r >= 0.5 * length {
-            return Err(inconsistent(
-                &key("axial_frac"),
-                format!(
-                    "orifice outside its pad: a {:.3} mm orifice at axial_frac {afrac} crosses the pad's axial end",
-                    d / MM
-                ),
-            ));
-        }
-        orifices.push(Orifice { angle_rad: leading_edge + frac * arc, axial_m: z0, diameter_m: d, length_m: l0 });
-    }
-    // Orifices on one pad must not overlap one another.
-    for a in 0..orifices.len() {
-        for b in a + 1..orifices.len() {
-            let (oa, ob) = (&orifices[a], &orifices[b]);
-            let ds = (oa.angle_rad - ob.angle_rad) * radius;
-            let dz = oa.axial_m - ob.axial_m;
-            if ds.hypot(dz) < 0.5 * (oa.diameter_m + ob.diameter_m) {
-                return Err(inconsistent(
-                    &format!("{okey}[{b}]"),
-                    format!("orifice overlaps orifice {a} of the same pad"),
-                ));
-            }
-        }
-    }
+    let orifices = resolve_orifices(src, arc, arc_deg, full_circle, leading_edge, radius, length)?;
 
     Ok(Pad {
         kind,
@@ -331,26 +256,73 @@ fn resolve_pad(
     })
 }
 
-/// A key of the pad tables and how to read it.
-type PadKey = (&'static str, fn(&PadFile) -> Option<f64>);
-
-/// An elastic material from a Young's modulus key [GPa] and a Poisson ratio key (steel when absent):
-/// (E [Pa], ν).
-fn material(src: &PadSource<'_>, youngs: PadKey, poisson: PadKey) -> Result<(f64, f64), CaseError> {
-    let e = match src.get(youngs.0, youngs.1) {
-        Some((v, key)) => Range::positive(2000.0).check(&key, v)? * 1e9,
-        None => 200e9,
+/// A pad's orifices: the per-pad list replaces the common one; each must lie on its pad, and no two overlap.
+fn resolve_orifices(
+    src: &PadSource<'_>,
+    arc: f64,
+    arc_deg: f64,
+    full_circle: bool,
+    leading_edge: f64,
+    radius: f64,
+    length: f64,
+) -> Result<Vec<Orifice>, CaseError> {
+    let (orifice_files, okey) = match (src.own.and_then(|p| p.orifice.as_ref()), src.common.orifice.as_ref()) {
+        (Some(list), _) => (list.as_slice(), format!("bearing.pad.{}.orifice", src.index)),
+        (None, Some(list)) => (list.as_slice(), "bearing.pads.orifice".to_string()),
+        (None, None) => (&[][..], String::new()),
     };
-    let nu = match src.get(poisson.0, poisson.1) {
-        Some((v, key)) => Range::open(-1.0, 0.5).check(&key, v)?,
-        None => 0.3,
-    };
-    Ok((e, nu))
+    let diameter_row = key!("bearing.pads.orifice[].diameter_mm");
+    let mut orifices = Vec::with_capacity(orifice_files.len());
+    for (k, o) in orifice_files.iter().enumerate() {
+        let key = |f: &str| format!("{okey}[{k}].{f}");
+        let field =
+            |row: &KeySpec, v: Option<f64>| row.value_at(&key(row.key.rsplit('.').next().unwrap_or(row.key)), v);
+        let d = field(diameter_row, Some(o.diameter_mm))?;
+        let l0 = field(key!("bearing.pads.orifice[].length_mm"), Some(o.length_mm))?;
+        let frac = field(key!("bearing.pads.orifice[].position_frac"), Some(o.position_frac))?;
+        let afrac = field(key!("bearing.pads.orifice[].axial_frac"), o.axial_frac)?;
+        let s0 = frac * arc * radius;
+        let z0 = (afrac - 0.5) * length;
+        let r = 0.5 * d;
+        if !full_circle && (s0 - r <= 0.0 || s0 + r >= arc * radius) {
+            return Err(inconsistent(
+                key("position_frac"),
+                Inconsistency::OrificeOffArc {
+                    diameter_mm: diameter_row.from_si(d),
+                    position_frac: frac,
+                    arc_deg,
+                    arc_length_mm: diameter_row.from_si(arc * radius),
+                    lowest: r / (arc * radius),
+                    highest: 1.0 - r / (arc * radius),
+                },
+            ));
+        }
+        if z0.abs() + r >= 0.5 * length {
+            return Err(inconsistent(
+                key("axial_frac"),
+                Inconsistency::OrificeOffLength { diameter_mm: diameter_row.from_si(d), axial_frac: afrac },
+            ));
+        }
+        orifices.push(Orifice { angle_rad: leading_edge + frac * arc, axial_m: z0, diameter_m: d, length_m: l0 });
+    }
+    // Orifices on one pad must not overlap one another.
+    for a in 0..orifices.len() {
+        for b in a + 1..orifices.len() {
+            let (oa, ob) = (&orifices[a], &orifices[b]);
+            let ds = (oa.angle_rad - ob.angle_rad) * radius;
+            let dz = oa.axial_m - ob.axial_m;
+            if ds.hypot(dz) < 0.5 * (oa.diameter_m + ob.diameter_m) {
+                return Err(inconsistent(format!("{okey}[{b}]"), Inconsistency::OrificesOverlap { other: a }));
+            }
+        }
+    }
+    Ok(orifices)
 }
 
+/// The machined pad clearance Cp [m] from exactly one of preload, clearance_um, bore_radius_mm (the per-pad
+/// table wins as a whole; within one table only one of the three may be given).
 fn pad_clearance(src: &PadSource<'_>, radius: f64, cb: f64) -> Result<f64, CaseError> {
-    // The per-pad table wins as a whole; within one table only one of the three may be given.
-    let pick = |p: &PadFile| -> Result<Option<(f64, &'static str)>, String> {
+    let pick = |p: &PadFile| -> Result<Option<(f64, &'static str)>, Vec<String>> {
         let given: Vec<(f64, &'static str)> = [
             p.preload.map(|v| (v, "preload")),
             p.clearance_um.map(|v| (v, "clearance_um")),
@@ -362,54 +334,35 @@ fn pad_clearance(src: &PadSource<'_>, radius: f64, cb: f64) -> Result<f64, CaseE
         match given.len() {
             0 => Ok(None),
             1 => Ok(Some(given[0])),
-            _ => Err(given.iter().map(|g| g.1).collect::<Vec<_>>().join(" and ")),
+            _ => Err(given.iter().map(|g| g.1.to_string()).collect()),
         }
     };
-    let (prefix, chosen) = {
-        let own = match src.own.map(pick) {
-            Some(Err(both)) => {
-                return Err(inconsistent(
-                    &format!("bearing.pad.{}", src.index),
-                    format!("give one of preload, clearance_um, bore_radius_mm, not {both}"),
+    let twice = |table: String, given| inconsistent(table, Inconsistency::PadGeometryTwice { given });
+    let own_table = format!("bearing.pad.{}", src.index);
+    let (prefix, (value, name)) = match src.own.map(pick).transpose().map_err(|g| twice(own_table.clone(), g))? {
+        Some(Some(v)) => (own_table, v),
+        _ => match pick(src.common).map_err(|g| twice("bearing.pads".into(), g))? {
+            Some(v) => ("bearing.pads".to_string(), v),
+            None => {
+                return Err(missing(
+                    "bearing.pads.preload",
+                    "pad geometry: one of preload, clearance_um or bore_radius_mm",
                 ))
             }
-            Some(Ok(v)) => v,
-            None => None,
-        };
-        match own {
-            Some(v) => (format!("bearing.pad.{}", src.index), v),
-            None => match pick(src.common) {
-                Err(both) => {
-                    return Err(inconsistent(
-                        "bearing.pads",
-                        format!("give one of preload, clearance_um, bore_radius_mm, not {both}"),
-                    ))
-                }
-                Ok(Some(v)) => ("bearing.pads".to_string(), v),
-                Ok(None) => {
-                    return Err(missing(
-                        "bearing.pads.preload",
-                        "pad geometry: one of preload, clearance_um or bore_radius_mm",
-                    ))
-                }
-            },
-        }
+        },
     };
-    let (value, name) = chosen;
     let key = format!("{prefix}.{name}");
     let cp = match name {
-        "preload" => {
-            let m = Range { lo: -1.0, hi: 1.0, open_lo: false, open_hi: true }.check(&key, value)?;
-            cb / (1.0 - m)
-        }
-        "clearance_um" => Range::positive(1e6).check(&key, value)? * UM,
+        "preload" => cb / (1.0 - key!("bearing.pads.preload").value_at(&key, Some(value))?),
+        "clearance_um" => key!("bearing.pads.clearance_um").value_at(&key, Some(value))?,
         _ => {
-            let rp = Range::positive(1e4).check(&key, value)? * MM;
+            let row = key!("bearing.pads.bore_radius_mm");
+            let rp = row.value_at(&key, Some(value))?;
             if rp <= radius {
                 return Err(CaseError::OutOfRange {
                     key,
                     value,
-                    allowed: format!("greater than the journal radius {} mm", radius / MM),
+                    allowed: format!("greater than the journal radius {} mm", row.from_si(radius)),
                 });
             }
             rp - radius
@@ -418,7 +371,7 @@ fn pad_clearance(src: &PadSource<'_>, radius: f64, cb: f64) -> Result<f64, CaseE
     // Preload m = 1 − Cb/Cp must stay in [−1, 1).
     let m = 1.0 - cb / cp;
     if !(-1.0..1.0).contains(&m) {
-        return Err(inconsistent(&key, format!("gives preload {m:.4} (1 − Cb/Cp); allowed [-1, 1)")));
+        return Err(inconsistent(key, Inconsistency::PreloadOutOfRange { preload: m }));
     }
     Ok(cp)
 }
@@ -437,14 +390,17 @@ fn check_overlap(pads: &[Pad]) -> Result<(), CaseError> {
         // Angle from a's leading edge to the next leading edge, counter-clockwise.
         let room = (b.leading_edge_rad - a.leading_edge_rad).rem_euclid(TAU);
         if a.arc_rad > room + 1e-9 {
+            let deg = |rad: f64| DEG.from_si(rad);
+            let from = deg(a.leading_edge_rad).rem_euclid(360.0);
             return Err(inconsistent(
                 "bearing.pads.pivot_deg",
-                format!(
-                    "pads {ia} and {ib} overlap: pad {ia} spans {:.2}°–{:.2}°, pad {ib} starts at {:.2}°",
-                    a.leading_edge_rad.to_degrees().rem_euclid(360.0),
-                    a.leading_edge_rad.to_degrees().rem_euclid(360.0) + a.arc_rad.to_degrees(),
-                    b.leading_edge_rad.to_degrees().rem_euclid(360.0)
-                ),
+                Inconsistency::PadsOverlap {
+                    first: ia,
+                    second: ib,
+                    first_from_deg: from,
+                    first_to_deg: from + deg(a.arc_rad),
+                    second_from_deg: deg(b.leading_edge_rad).rem_euclid(360.0),
+                },
             ));
         }
     }
@@ -453,113 +409,73 @@ fn check_overlap(pads: &[Pad]) -> Result<(), CaseError> {
 
 fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseError> {
     let o = &file.operating;
-    let speed_rpm = Range::closed(0.0, 1e6).check("operating.speed_rpm", o.speed_rpm)?;
-    let angle = |key: &str, v: Option<f64>| -> Result<f64, CaseError> {
-        Ok(Range::closed(-3600.0, 3600.0).check(key, v.unwrap_or(270.0))?.to_radians())
-    };
+    let speed = key!("operating.speed_rpm").value(Some(o.speed_rpm))?;
     let load = match (o.load_n, o.eccentricity_ratio) {
         (Some(_), Some(_)) => {
-            return Err(inconsistent(
-                "operating.eccentricity_ratio",
-                "give either load_n (find the position) or eccentricity_ratio (find the load), not both",
-            ))
+            return Err(inconsistent("operating.eccentricity_ratio", Inconsistency::LoadAndEccentricity));
         }
         (Some(w), None) => LoadSpec::Force {
-            magnitude_n: Range::closed(0.0, 1e10).check("operating.load_n", w)?,
-            angle_rad: angle("operating.load_angle_deg", o.load_angle_deg)?,
+            magnitude_n: key!("operating.load_n").value(Some(w))?,
+            angle_rad: key!("operating.load_angle_deg").value(o.load_angle_deg)?,
         },
         (None, Some(e)) => {
             if o.load_angle_deg.is_some() {
-                return Err(inconsistent(
-                    "operating.load_angle_deg",
-                    "with a prescribed eccentricity use eccentricity_angle_deg",
-                ));
+                return Err(inconsistent("operating.load_angle_deg", Inconsistency::LoadAngleWithEccentricity));
             }
             LoadSpec::Position {
-                eccentricity_ratio: Range::closed(0.0, 10.0).check("operating.eccentricity_ratio", e)?,
-                angle_rad: angle("operating.eccentricity_angle_deg", o.eccentricity_angle_deg)?,
+                eccentricity_ratio: key!("operating.eccentricity_ratio").value(Some(e))?,
+                angle_rad: key!("operating.eccentricity_angle_deg").value(o.eccentricity_angle_deg)?,
             }
         }
         (None, None) => {
-            return Err(missing("operating.load_n", "static load on the journal, N (or eccentricity_ratio)"))
+            return Err(missing("operating.load_n", "static load on the journal, N (or eccentricity_ratio)"));
         }
     };
     if o.eccentricity_angle_deg.is_some() && o.eccentricity_ratio.is_none() {
-        return Err(inconsistent("operating.eccentricity_angle_deg", "only meaningful with eccentricity_ratio"));
+        return Err(inconsistent("operating.eccentricity_angle_deg", Inconsistency::EccentricityAngleWithoutRatio));
     }
-    let t_range = Range::closed(-60.0, 400.0);
-    let supply = t_range.check("operating.supply_temperature_c", o.supply_temperature_c)?;
-    let film = match o.film_temperature_c {
-        Some(t) => t_range.check("operating.film_temperature_c", t)?,
-        None => supply,
-    };
-    let p_range = Range::closed(0.0, 5000.0);
+    let supply = key!("operating.supply_temperature_c").value(Some(o.supply_temperature_c))?;
+    let film = key!("operating.film_temperature_c").value_in(file, o.film_temperature_c)?;
+    let pressure = key!("operating.injection_pressure_bar");
     let injection = match &o.injection_pressure_bar {
-        None => vec![0.0; n_pads],
-        Some(OneOrMany::One(p)) => vec![p_range.check("operating.injection_pressure_bar", *p)? * BAR; n_pads],
+        None => vec![pressure.value(None)?; n_pads],
+        Some(OneOrMany::One(p)) => vec![pressure.value(Some(*p))?; n_pads],
         Some(OneOrMany::Many(v)) => {
             if v.len() != n_pads {
-                return Err(inconsistent(
-                    "operating.injection_pressure_bar",
-                    format!("{} values for {n_pads} pads (give one value, or one per pad)", v.len()),
-                ));
+                return Err(inconsistent(pressure.key, Inconsistency::PerPadValues { given: v.len(), pads: n_pads }));
             }
             v.iter()
                 .enumerate()
-                .map(|(i, p)| p_range.check(&format!("operating.injection_pressure_bar[{i}]"), *p).map(|p| p * BAR))
-                .collect::<Result<_, _>>()?
+                .map(|(i, p)| pressure.value_at(&format!("{}[{i}]", pressure.key), Some(*p)))
+                .collect::<Result<_, CaseError>>()?
         }
     };
-    let injection_t = match o.injection_temperature_c {
-        Some(t) => t_range.check("operating.injection_temperature_c", t)?,
-        None => supply,
-    };
-    let excitation = Range::closed(0.0, 1e3).check("operating.excitation_ratio", o.excitation_ratio.unwrap_or(1.0))?;
     Ok(Operating {
-        speed_rad_s: speed_rpm * TAU / 60.0,
+        speed_rad_s: speed,
         load,
         supply_temperature_c: supply,
         film_temperature_c: film,
         injection_pressure_pa: injection,
-        injection_temperature_c: injection_t,
-        excitation_ratio: excitation,
+        injection_temperature_c: key!("operating.injection_temperature_c").value_in(file, o.injection_temperature_c)?,
+        excitation_ratio: key!("operating.excitation_ratio").value(o.excitation_ratio)?,
     })
 }
 
-#[allow(clippy::cast_precision_loss)]
 fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseError> {
     let m = &file.mesh;
-    let fidelity = m.fidelity.unwrap_or_default();
-    let (nx0, nz0, no0) = fidelity.elements();
-    let count = |key: &str, v: Option<usize>, default: usize, lo: usize, hi: usize| -> Result<usize, CaseError> {
-        let v = v.unwrap_or(default);
-        if v < lo || v > hi {
-            return Err(CaseError::OutOfRange {
-                key: key.into(),
-                value: v as f64,
-                allowed: format!("an integer in [{lo}, {hi}]"),
-            });
-        }
-        Ok(v)
-    };
-    let nx0 = fidelity.circumferential_elements(bearing.longest_arc_rad()).max(nx0);
-    let nx = count("mesh.circumferential_elements", m.circumferential_elements, nx0, 4, 2000)?;
-    let nz = count("mesh.axial_elements", m.axial_elements, nz0, 2, 1000)?;
-    let no = count("mesh.orifice_elements", m.orifice_elements, no0, 2, 64)?;
-    let nr = count("mesh.pad_radial_elements", m.pad_radial_elements, fidelity.pad_radial_elements(), 1, 200)?;
-    let max_nodes = count("mesh.max_nodes", m.max_nodes, DEFAULT_MAX_NODES, MAX_NODES_RANGE.0, MAX_NODES_RANGE.1)?;
+    let nx = key!("mesh.circumferential_elements").count_in(file, m.circumferential_elements)?;
+    let nz = key!("mesh.axial_elements").count_in(file, m.axial_elements)?;
+    let no = key!("mesh.orifice_elements").count_in(file, m.orifice_elements)?;
+    let nr = key!("mesh.pad_radial_elements").count_in(file, m.pad_radial_elements)?;
+    let max_nodes = key!("mesh.max_nodes").count(m.max_nodes)?;
     let all_mid = bearing.pads.iter().flat_map(|p| &p.orifices).all(|o| o.axial_m.abs() < 1e-12);
     let half = match m.half_model {
-        Some(true) if !all_mid => {
-            return Err(inconsistent(
-                "mesh.half_model",
-                "the half model needs every orifice on the mid-plane (axial_frac = 0.5)",
-            ))
-        }
+        Some(true) if !all_mid => return Err(inconsistent("mesh.half_model", Inconsistency::HalfModelOffMidPlane)),
         Some(h) => h,
         None => all_mid,
     };
     if half && nz % 2 != 0 {
+        #[allow(clippy::cast_precision_loss)]
         return Err(CaseError::OutOfRange {
             key: "mesh.axial_elements".into(),
             value: nz as f64,
@@ -567,7 +483,7 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
         });
     }
     Ok(MeshSpec {
-        fidelity,
+        fidelity: m.fidelity.unwrap_or_default(),
         circumferential_elements: nx,
         axial_elements: nz,
         orifice_elements: no,
@@ -577,56 +493,35 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
     })
 }
 
-/// Thermal expansion coefficients [10⁻⁶/K]: 0 (no growth) to 100 (well above any bearing metal's ≈ 10–25).
-const EXPANSION_PPM: Range = Range::closed(0.0, 100.0);
-
-/// `[thermal]`: documented defaults — isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply temperature,
-/// pad conductivity 45 W/(m K) (steel), carry-over λ = 0.8, inlet and journal temperatures computed,
-/// striated cavitated film.
-fn resolve_thermal(file: &CaseFile, operating: &Operating) -> Result<Thermal, CaseError> {
+/// `[thermal]`: the defaults are the rows' (isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply
+/// temperature, pad conductivity 45 W/(m K), carry-over λ = 0.8, inlet and journal temperatures computed,
+/// striated cavitated film, no thermal growth).
+fn resolve_thermal(file: &CaseFile) -> Result<Thermal, CaseError> {
     let t = &file.thermal;
-    let t_range = Range::closed(-60.0, 400.0);
-    let bc = t.pad_film_bc.unwrap_or_default();
-    let pad_film_bc = match (bc, t.h_oil_pad_w_per_m2_k) {
-        (PadFilmBcFile::Bc2, Some(h)) => {
-            PadFilmBc::Bc2 { h_w_per_m2_k: Range::positive(1e8).check("thermal.h_oil_pad_w_per_m2_k", h)? }
-        }
+    let h = key!("thermal.h_oil_pad_w_per_m2_k");
+    let pad_film_bc = match (t.pad_film_bc.unwrap_or_default(), t.h_oil_pad_w_per_m2_k) {
+        (PadFilmBcFile::Bc2, Some(v)) => PadFilmBc::Bc2 { h_w_per_m2_k: h.value(Some(v))? },
         (PadFilmBcFile::Bc2, None) => {
-            return Err(missing(
-                "thermal.h_oil_pad_w_per_m2_k",
-                "film–pad exchange coefficient for pad_film_bc = \"bc2\", W/(m² K)",
-            ))
+            return Err(missing(h.key, "film–pad exchange coefficient for pad_film_bc = \"bc2\", W/(m² K)"));
         }
-        (_, Some(_)) => {
-            return Err(inconsistent("thermal.h_oil_pad_w_per_m2_k", "only used with pad_film_bc = \"bc2\""))
-        }
+        (_, Some(_)) => return Err(inconsistent(h.key, Inconsistency::OnlyWithBc2)),
         (PadFilmBcFile::Bc1, None) => PadFilmBc::Bc1,
         (PadFilmBcFile::Bc3, None) => PadFilmBc::Bc3,
     };
-    let opt_t =
-        |key: &str, v: Option<f64>| -> Result<Option<f64>, CaseError> { v.map(|x| t_range.check(key, x)).transpose() };
     Ok(Thermal {
         model: t.model.unwrap_or_default(),
         pad_film_bc,
-        convection_w_per_m2_k: Range::closed(0.0, 1e6)
-            .check("thermal.convection_w_per_m2_k", t.convection_w_per_m2_k.unwrap_or(100.0))?,
-        ambient_temperature_c: opt_t("thermal.ambient_temperature_c", t.ambient_temperature_c)?
-            .unwrap_or(operating.supply_temperature_c),
-        pad_conductivity_w_per_m_k: Range::positive(1e4)
-            .check("thermal.pad_conductivity_w_per_m_k", t.pad_conductivity_w_per_m_k.unwrap_or(45.0))?,
-        carry_over: Range::closed(0.0, 1.0).check("thermal.carry_over", t.carry_over.unwrap_or(0.8))?,
-        inlet_temperature_c: opt_t("thermal.inlet_temperature_c", t.inlet_temperature_c)?,
-        journal_temperature_c: opt_t("thermal.journal_temperature_c", t.journal_temperature_c)?,
+        convection_w_per_m2_k: key!("thermal.convection_w_per_m2_k").value(t.convection_w_per_m2_k)?,
+        ambient_temperature_c: key!("thermal.ambient_temperature_c").value_in(file, t.ambient_temperature_c)?,
+        pad_conductivity_w_per_m_k: key!("thermal.pad_conductivity_w_per_m_k").value(t.pad_conductivity_w_per_m_k)?,
+        carry_over: key!("thermal.carry_over").value(t.carry_over)?,
+        inlet_temperature_c: key!("thermal.inlet_temperature_c").optional(t.inlet_temperature_c)?,
+        journal_temperature_c: key!("thermal.journal_temperature_c").optional(t.journal_temperature_c)?,
         cavitated_film: t.cavitated_film.unwrap_or_default(),
-        pad_expansion_per_k: 1e-6
-            * EXPANSION_PPM.check("thermal.pad_expansion_ppm_per_k", t.pad_expansion_ppm_per_k.unwrap_or(0.0))?,
-        journal_expansion_per_k: 1e-6
-            * EXPANSION_PPM
-                .check("thermal.journal_expansion_ppm_per_k", t.journal_expansion_ppm_per_k.unwrap_or(0.0))?,
-        reference_temperature_c: opt_t("thermal.reference_temperature_c", t.reference_temperature_c)?,
-        housing_expansion_per_k: 1e-6
-            * EXPANSION_PPM
-                .check("thermal.housing_expansion_ppm_per_k", t.housing_expansion_ppm_per_k.unwrap_or(0.0))?,
-        housing_temperature_c: opt_t("thermal.housing_temperature_c", t.housing_temperature_c)?,
+        pad_expansion_per_k: key!("thermal.pad_expansion_ppm_per_k").value(t.pad_expansion_ppm_per_k)?,
+        journal_expansion_per_k: key!("thermal.journal_expansion_ppm_per_k").value(t.journal_expansion_ppm_per_k)?,
+        reference_temperature_c: key!("thermal.reference_temperature_c").optional(t.reference_temperature_c)?,
+        housing_expansion_per_k: key!("thermal.housing_expansion_ppm_per_k").value(t.housing_expansion_ppm_per_k)?,
+        housing_temperature_c: key!("thermal.housing_temperature_c").optional(t.housing_temperature_c)?,
     })
 }

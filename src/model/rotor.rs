@@ -21,9 +21,17 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::error::{CaseError, Range};
+use super::error::{CaseError, Inconsistency, Range};
+use super::rotor_schema::{rotor_default, rotor_row as row};
+use super::shaft::{BeamSection, BeamTheory};
 use super::Case;
-use crate::rotor::element::{BeamSection, BeamTheory};
+
+/// The row of a rotor-file key, found while compiling (a key without a row fails the build).
+macro_rules! rotor_key {
+    ($key:literal) => {
+        const { row($key) }
+    };
+}
 
 /// Which bearing coefficients enter the rotor equations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -94,13 +102,13 @@ fn is_zero(x: &f64) -> bool {
     *x == 0.0
 }
 fn default_density() -> f64 {
-    7850.0
+    rotor_default(rotor_key!("rotor.density_kg_per_m3"))
 }
 fn default_youngs() -> f64 {
-    211.0
+    rotor_default(rotor_key!("rotor.youngs_modulus_gpa"))
 }
 fn default_poisson() -> f64 {
-    0.3
+    rotor_default(rotor_key!("rotor.poisson_ratio"))
 }
 /// Default shaft reduction (modes per plane), chosen by measurement (docs/PERFORMANCE.md, compressor rotor
 /// on preview bearings): its errors against the full shaft (first damped frequencies ~1e-4 relative, log
@@ -137,7 +145,7 @@ pub struct SectionTable {
 }
 
 fn one() -> usize {
-    1
+    rotor_key!("rotor.section[].elements").count(None).unwrap_or_default()
 }
 
 /// `[[rotor.disk]]`
@@ -325,14 +333,7 @@ impl Rotor {
 }
 
 // ---------------------------------------------------------------------------------------------- validation
-
-const RPM: f64 = std::f64::consts::PI / 30.0;
-/// Largest shaft reduction (modes per plane); more than the interior has keeps them all (exact).
-const MAX_SHAFT_MODES: usize = 400;
-
-fn check(key: &str, value: f64, range: Range) -> Result<f64, CaseError> {
-    range.check(key, value)
-}
+// Ranges, defaults and units are the rows of `super::rotor_schema` (`row("…")`, found while compiling).
 
 fn check_node(key: &str, node: usize, n_nodes: usize) -> Result<usize, CaseError> {
     if node < n_nodes {
@@ -365,38 +366,27 @@ impl RotorFile {
     ///
     /// # Errors
     /// The first invalid value, named by its key.
+    #[allow(clippy::too_many_lines)]
     pub fn resolve(&self, read_case: &dyn Fn(&str) -> Result<String, String>) -> Result<Rotor, CaseError> {
         let r = &self.rotor;
-        let density = check("rotor.density_kg_per_m3", r.density_kg_per_m3, Range::positive(1e5))?;
-        let youngs = check("rotor.youngs_modulus_gpa", r.youngs_modulus_gpa, Range::positive(1e4))? * 1e9;
-        let nu = check("rotor.poisson_ratio", r.poisson_ratio, Range::closed(0.0, 0.5))?;
+        let density = rotor_key!("rotor.density_kg_per_m3").value(Some(r.density_kg_per_m3))?;
+        let youngs = rotor_key!("rotor.youngs_modulus_gpa").value(Some(r.youngs_modulus_gpa))?;
+        let nu = rotor_key!("rotor.poisson_ratio").value(Some(r.poisson_ratio))?;
         if r.section.is_empty() {
-            return Err(CaseError::MissingKey {
-                key: "rotor.section".into(),
-                meaning: "at least one shaft section".into(),
-            });
+            return Err(CaseError::missing("rotor.section", "at least one shaft section"));
         }
         let mut elements = Vec::new();
         for (i, s) in r.section.iter().enumerate() {
             let key = |k: &str| format!("rotor.section[{i}].{k}");
-            let l = check(&key("length_mm"), s.length_mm, Range::positive(1e5))? * 1e-3;
-            let od = check(&key("outer_diameter_mm"), s.outer_diameter_mm, Range::positive(1e4))? * 1e-3;
-            let id = check(
-                &key("inner_diameter_mm"),
-                s.inner_diameter_mm,
-                Range { lo: 0.0, hi: s.outer_diameter_mm, open_lo: false, open_hi: true },
-            )? * 1e-3;
-            if s.elements == 0 || s.elements > 200 {
-                #[allow(clippy::cast_precision_loss)]
-                return Err(CaseError::OutOfRange {
-                    key: key("elements"),
-                    value: s.elements as f64,
-                    allowed: "integer in [1, 200]".into(),
-                });
-            }
+            let l = rotor_key!("rotor.section[].length_mm").value_at(&key("length_mm"), Some(s.length_mm))?;
+            let outer = rotor_key!("rotor.section[].outer_diameter_mm");
+            let od = outer.value_at(&key("outer_diameter_mm"), Some(s.outer_diameter_mm))?;
+            let id = outer
+                .to_si(Range::open_hi(0.0, s.outer_diameter_mm).check(&key("inner_diameter_mm"), s.inner_diameter_mm)?);
+            let n = rotor_key!("rotor.section[].elements").count_at(&key("elements"), Some(s.elements))?;
             #[allow(clippy::cast_precision_loss)]
-            let le = l / s.elements as f64;
-            for _ in 0..s.elements {
+            let le = l / n as f64;
+            for _ in 0..n {
                 elements.push(BeamSection {
                     length_m: le,
                     outer_diameter_m: od,
@@ -416,13 +406,11 @@ impl RotorFile {
                 let key = |k: &str| format!("rotor.disk[{i}].{k}");
                 Ok(Disk {
                     node: check_node(&key("node"), d.node, n_nodes)?,
-                    mass: check(&key("mass_kg"), d.mass_kg, Range::closed(0.0, 1e6))?,
-                    polar: check(&key("polar_inertia_kg_m2"), d.polar_inertia_kg_m2, Range::closed(0.0, 1e6))?,
-                    transverse: check(
-                        &key("transverse_inertia_kg_m2"),
-                        d.transverse_inertia_kg_m2,
-                        Range::closed(0.0, 1e6),
-                    )?,
+                    mass: rotor_key!("rotor.disk[].mass_kg").value_at(&key("mass_kg"), Some(d.mass_kg))?,
+                    polar: rotor_key!("rotor.disk[].polar_inertia_kg_m2")
+                        .value_at(&key("polar_inertia_kg_m2"), Some(d.polar_inertia_kg_m2))?,
+                    transverse: rotor_key!("rotor.disk[].transverse_inertia_kg_m2")
+                        .value_at(&key("transverse_inertia_kg_m2"), Some(d.transverse_inertia_kg_m2))?,
                 })
             })
             .collect::<Result<Vec<_>, CaseError>>()?;
@@ -434,8 +422,9 @@ impl RotorFile {
                 let key = |k: &str| format!("rotor.unbalance[{i}].{k}");
                 Ok(Unbalance {
                     node: check_node(&key("node"), u.node, n_nodes)?,
-                    amount: check(&key("amount_g_mm"), u.amount_g_mm, Range::closed(0.0, 1e9))? * 1e-6,
-                    phase: check(&key("phase_deg"), u.phase_deg, Range::closed(-360.0, 360.0))?.to_radians(),
+                    amount: rotor_key!("rotor.unbalance[].amount_g_mm")
+                        .value_at(&key("amount_g_mm"), Some(u.amount_g_mm))?,
+                    phase: rotor_key!("rotor.unbalance[].phase_deg").value_at(&key("phase_deg"), Some(u.phase_deg))?,
                 })
             })
             .collect::<Result<Vec<_>, CaseError>>()?;
@@ -453,53 +442,47 @@ impl RotorFile {
                 let key = |k: &str| format!("rotor.support[{i}].{k}");
                 Ok(Support {
                     node: check_node(&key("node"), s.node, n_nodes)?,
-                    stiffness: check(&key("stiffness_n_per_m"), s.stiffness_n_per_m, Range::closed(0.0, 1e15))?,
-                    damping: check(&key("damping_ns_per_m"), s.damping_ns_per_m, Range::closed(0.0, 1e12))?,
+                    stiffness: rotor_key!("rotor.support[].stiffness_n_per_m")
+                        .value_at(&key("stiffness_n_per_m"), Some(s.stiffness_n_per_m))?,
+                    damping: rotor_key!("rotor.support[].damping_ns_per_m")
+                        .value_at(&key("damping_ns_per_m"), Some(s.damping_ns_per_m))?,
                 })
             })
             .collect::<Result<Vec<_>, CaseError>>()?;
         let damping = match &r.damping {
             None => None,
             Some(d) => {
-                let ratio = check("rotor.damping.ratio", d.ratio, Range::closed(0.0, 0.5))?;
+                let ratio = rotor_key!("rotor.damping.ratio").value(Some(d.ratio))?;
                 if d.modes[0] == 0 || d.modes[1] <= d.modes[0] || d.modes[1] > 20 {
-                    return Err(CaseError::Inconsistent {
-                        key: "rotor.damping.modes".into(),
-                        message: format!("{:?}: two increasing flexible-mode numbers in [1, 20]", d.modes),
-                    });
+                    return Err(CaseError::inconsistent(
+                        "rotor.damping.modes",
+                        Inconsistency::DampingModes { modes: d.modes },
+                    ));
                 }
                 Some(ModalDamping { ratio, modes: d.modes })
             }
         };
-        let shaft_modes = r.shaft_modes;
-        if shaft_modes > MAX_SHAFT_MODES {
-            #[allow(clippy::cast_precision_loss)]
-            return Err(CaseError::OutOfRange {
-                key: "rotor.shaft_modes".into(),
-                value: shaft_modes as f64,
-                allowed: format!("integer in [0, {MAX_SHAFT_MODES}] (0: full shaft)"),
-            });
+        let shaft_modes = rotor_key!("rotor.shaft_modes");
+        if let Err(CaseError::OutOfRange { key, value, allowed }) = shaft_modes.count(Some(r.shaft_modes)) {
+            return Err(CaseError::OutOfRange { key, value, allowed: format!("{allowed} (0: full shaft)") });
         }
         let operating_range = match (r.min_speed_rpm, r.max_speed_rpm) {
             (Some(lo), Some(hi)) => {
-                let lo = check("rotor.min_speed_rpm", lo, Range::positive(1e6))?;
-                let hi = check("rotor.max_speed_rpm", hi, Range::open_lo(lo, 1e6))?;
-                Some([lo * RPM, hi * RPM])
+                let min = rotor_key!("rotor.min_speed_rpm");
+                let lo = min.check(min.key, lo)?;
+                let top = min.allowed.range().map_or(f64::INFINITY, |r| r.hi);
+                let hi = Range::open_lo(lo, top).check("rotor.max_speed_rpm", hi)?;
+                Some([min.to_si(lo), min.to_si(hi)])
             }
             (None, None) => None,
-            _ => {
-                return Err(CaseError::Inconsistent {
-                    key: "rotor.max_speed_rpm".into(),
-                    message: "give both rotor.min_speed_rpm and rotor.max_speed_rpm, or neither".into(),
-                })
-            }
+            _ => return Err(CaseError::inconsistent("rotor.max_speed_rpm", Inconsistency::SpeedRangeHalf)),
         };
         Ok(Rotor {
             title: self.title.clone().unwrap_or_default(),
             representative: r.representative,
             theory: r.beam_theory,
             coefficients: r.coefficients,
-            shaft_modes,
+            shaft_modes: r.shaft_modes,
             elements,
             disks,
             unbalances,
@@ -522,12 +505,15 @@ fn resolve_bearing(
     let numbers = !b.k_n_per_m.is_empty() || !b.c_ns_per_m.is_empty();
     let support = match (&b.case, numbers) {
         (Some(name), false) => {
-            let text = read_case(name).map_err(|e| CaseError::Inconsistent {
-                key: key("case"),
-                message: format!("cannot read `{name}`: {e}"),
+            let text = read_case(name).map_err(|reason| {
+                CaseError::inconsistent(key("case"), Inconsistency::CaseUnreadable { name: name.clone(), reason })
             })?;
-            let (_, case) = super::load_case(&text, &b.set)
-                .map_err(|e| CaseError::Inconsistent { key: key("case"), message: format!("`{name}`: {e}") })?;
+            let (_, case) = super::load_case(&text, &b.set).map_err(|e| {
+                CaseError::inconsistent(
+                    key("case"),
+                    Inconsistency::CaseInvalid { name: name.clone(), error: Box::new(e) },
+                )
+            })?;
             let name = if b.set.is_empty() { name.clone() } else { format!("{name} [{}]", b.set.join(", ")) };
             BearingSupport::Case { name, case: Box::new(case) }
         }
@@ -536,22 +522,18 @@ fn resolve_bearing(
             let expected = if b.speeds_rpm.is_empty() { 1 } else { b.speeds_rpm.len() };
             for (k, n) in [("k_n_per_m", rows), ("c_ns_per_m", b.c_ns_per_m.len())] {
                 if n != expected {
-                    return Err(CaseError::Inconsistent {
-                        key: key(k),
-                        message: format!(
-                            "{n} rows; needs {expected} (one per entry of speeds_rpm, or one row without speeds_rpm)"
-                        ),
-                    });
+                    return Err(CaseError::inconsistent(key(k), Inconsistency::CoefficientRows { rows: n, expected }));
                 }
             }
-            let mut speeds = Vec::new();
+            let speed = rotor_key!("rotor.bearing[].speeds_rpm");
+            let mut speeds: Vec<f64> = Vec::new();
             for (j, &s) in b.speeds_rpm.iter().enumerate() {
-                let range = speeds.last().map_or(Range::closed(0.0, 1e6), |&p: &f64| Range::open_lo(p / RPM, 1e6));
-                speeds.push(check(&format!("{}[{j}]", key("speeds_rpm")), s, range)? * RPM);
+                let range = speeds.last().map_or(Range::closed(0.0, 1e6), |&p| Range::open_lo(speed.from_si(p), 1e6));
+                speeds.push(speed.to_si(range.check(&format!("{}[{j}]", key("speeds_rpm")), s)?));
             }
             let mat = |row: &[f64; 4], k: &str, j: usize| -> Result<[[f64; 2]; 2], CaseError> {
                 for &v in row {
-                    check(&format!("{}[{j}]", key(k)), v, Range::closed(-1e15, 1e15))?;
+                    Range::closed(-1e15, 1e15).check(&format!("{}[{j}]", key(k)), v)?;
                 }
                 Ok([[row[0], row[1]], [row[2], row[3]]])
             };
@@ -561,12 +543,7 @@ fn resolve_bearing(
                 b.c_ns_per_m.iter().enumerate().map(|(j, r)| mat(r, "c_ns_per_m", j)).collect::<Result<Vec<_>, _>>()?;
             BearingSupport::Numbers(CoefficientTable { speeds, k, c })
         }
-        _ => {
-            return Err(CaseError::Inconsistent {
-                key: key("case"),
-                message: "give either `case` or `k_n_per_m` and `c_ns_per_m`".into(),
-            })
-        }
+        _ => return Err(CaseError::inconsistent(key("case"), Inconsistency::CaseOrNumbers)),
     };
     Ok(BearingPosition { node, support })
 }
@@ -607,7 +584,7 @@ mod tests {
         );
         let missing = format!("{MINIMAL}[[rotor.bearing]]\nnode = 0\ncase = \"b.toml\"\n");
         assert!(
-            matches!(resolve(&missing), Err(CaseError::Inconsistent { key, message }) if key == "rotor.bearing[0].case" && message.contains("no file b.toml"))
+            matches!(resolve(&missing), Err(CaseError::Inconsistent { key, reason: Inconsistency::CaseUnreadable { reason, .. } }) if key == "rotor.bearing[0].case" && reason.contains("no file b.toml"))
         );
         let id = MINIMAL.replace("elements = 4", "elements = 4\ninner_diameter_mm = 50.0");
         assert!(

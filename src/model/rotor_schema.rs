@@ -1,95 +1,144 @@
-//! The rotor-file keys, one table like the case keys' ([`super::schema`]): dotted key, unit, allowed values,
-//! typical range, default and meaning. `tiltpad schema --rotor` prints it. The allowed ranges are the ones
-//! [`super::rotor::RotorFile::resolve`] enforces; a test sets every numeric key just outside its range and
-//! checks that validation rejects it naming the key, the value and the same interval.
+//! The rotor-file keys, one table like the case keys' ([`super::schema`], built the same way): dotted key,
+//! unit, allowed values, typical range, typed default and meaning. `tiltpad schema --rotor` prints it, and
+//! [`super::rotor::RotorFile::resolve`] reads every range, default and unit from it (through [`rotor_row`]); a
+//! test sets every numeric key just outside its range and checks that validation rejects it naming the key,
+//! the value and the same interval. (The rotor file's editor, a view of its own, reads units and tooltips
+//! from here by key; its rows are not drawn from the table.)
 
 use super::error::Range;
-use super::schema::{Allowed, KeySpec};
+use super::rotor::{RotorFile, DEFAULT_SHAFT_MODES};
+use super::schema::{Fallback, KeySpec};
+use crate::units::{COUNT, DEG, GPA, G_MM, KG, KG_M2, KG_PER_M3, MM, NS_PER_M, N_PER_M, ONE, RPM};
 
-const fn num(
-    key: &'static str,
-    unit: &'static str,
-    range: Range,
-    typical: (f64, f64),
-    default: &'static str,
-    meaning: &'static str,
-) -> KeySpec {
-    KeySpec { key, unit, allowed: Allowed::Number(range), typical: Some(typical), default, meaning }
-}
+type Key = KeySpec<RotorFile>;
 
-const fn other(
-    key: &'static str,
-    unit: &'static str,
-    allowed: Allowed,
-    default: &'static str,
-    meaning: &'static str,
-) -> KeySpec {
-    KeySpec { key, unit, allowed, typical: None, default, meaning }
-}
-
-const NODE: Allowed = Allowed::Rule("integer in [0, last node] (nodes counted from 0 at the first section's left end)");
-/// [`DEFAULT_SHAFT_MODES`] as written (a test keeps them equal).
-const SHAFT_MODES_DEFAULT: &str = "8";
+const NODE: &str = "integer in [0, last node] (nodes counted from 0 at the first section's left end)";
+const NONE: Fallback<RotorFile> = Fallback::Rule("none");
 
 /// Every rotor-file key, in file order.
-pub const ROTOR_KEYS: &[KeySpec] = &[
-    other("title", "", Allowed::Text, "empty", "Free text shown with every result."),
-    other("rotor.representative", "", Allowed::Bool, "false", "The rotor's data are not all published (chosen here); every result is marked so."),
-    other("rotor.beam_theory", "", Allowed::Choice(&["timoshenko", "euler_bernoulli"]), "\"timoshenko\"", "Shaft elements with shear deformation and rotary inertia (Nelson & McVaugh), or without."),
-    other(
-        "rotor.coefficients",
-        "",
-        Allowed::Choice(&["full", "reduced"]),
-        "\"full\"",
-        "Bearing cases enter with their full K, C, M over journal and pad coordinates, or synchronously reduced to 2×2 at the running speed (overestimates the stable range).",
-    ),
-    other(
-        "rotor.shaft_modes",
-        "",
-        Allowed::Integer { lo: 0, hi: 400 },
-        SHAFT_MODES_DEFAULT,
-        "Shaft reduction (Craig–Bampton): fixed-interface modes kept per bending plane besides the x, y of the attached nodes; 0 keeps the full finite-element shaft. Time and error per level in docs/PERFORMANCE.md.",
-    ),
-    num("rotor.density_kg_per_m3", "kg/m³", Range::positive(1e5), (2000.0, 9000.0), "7850", "Density of the shaft material."),
-    num("rotor.youngs_modulus_gpa", "GPa", Range::positive(1e4), (70.0, 220.0), "211", "Young's modulus of the shaft material."),
-    num("rotor.poisson_ratio", "–", Range::closed(0.0, 0.5), (0.25, 0.35), "0.3", "Poisson's ratio (the shear modulus of the Timoshenko elements)."),
-    num("rotor.min_speed_rpm", "rpm", Range::positive(1e6), (1000.0, 20000.0), "none", "Lower end of the operating speed range (drawn in the views; give both ends or neither)."),
-    other("rotor.max_speed_rpm", "rpm", Allowed::Rule("(rotor.min_speed_rpm, 1e6]"), "none", "Upper end of the operating speed range."),
-    num("rotor.damping.ratio", "–", Range::closed(0.0, 0.5), (0.0, 0.05), "no damping", "Proportional (Rayleigh) damping: this damping ratio on the two free–free flexible modes named by rotor.damping.modes."),
-    other("rotor.damping.modes", "", Allowed::Rule("two increasing flexible-mode numbers in [1, 20]"), "[1, 2]", "Free–free flexible modes (1 = first) that get the damping ratio."),
-    num("rotor.section[].length_mm", "mm", Range::positive(1e5), (10.0, 2000.0), "", "Length of a shaft section (split into `elements` equal elements)."),
-    num("rotor.section[].outer_diameter_mm", "mm", Range::positive(1e4), (20.0, 500.0), "", "Outer diameter of the section."),
-    other("rotor.section[].inner_diameter_mm", "mm", Allowed::Rule("[0, outer_diameter_mm)"), "0", "Bore of a hollow section."),
-    other("rotor.section[].elements", "", Allowed::Integer { lo: 1, hi: 200 }, "1", "Finite elements in the section; section i ends at node Σ elements."),
-    other("rotor.disk[].node", "", NODE, "", "Node carrying a rigid disk (impeller, coupling hub, collar)."),
-    num("rotor.disk[].mass_kg", "kg", Range::closed(0.0, 1e6), (1.0, 500.0), "", "Mass of the disk."),
-    num("rotor.disk[].polar_inertia_kg_m2", "kg·m²", Range::closed(0.0, 1e6), (0.01, 10.0), "0", "Polar moment of inertia (gyroscopic coupling)."),
-    num("rotor.disk[].transverse_inertia_kg_m2", "kg·m²", Range::closed(0.0, 1e6), (0.01, 10.0), "0", "Transverse (diametral) moment of inertia."),
-    other("rotor.unbalance[].node", "", NODE, "", "Node carrying an unbalance."),
-    num("rotor.unbalance[].amount_g_mm", "g·mm", Range::closed(0.0, 1e9), (10.0, 10000.0), "", "Unbalance m·e."),
-    num("rotor.unbalance[].phase_deg", "deg", Range::closed(-360.0, 360.0), (0.0, 360.0), "0", "Angle of the unbalance from +x at t = 0."),
-    other("rotor.bearing[].node", "", NODE, "", "Node where the bearing (or coefficients given by numbers) acts on the shaft."),
-    other("rotor.bearing[].case", "", Allowed::Text, "— (or k_n_per_m)", "Bearing case file, relative to the rotor file, solved at each speed; the same file at several positions is solved once per speed."),
-    other("rotor.bearing[].set", "", Allowed::Rule("list of \"key=value\" overrides as --set takes them"), "none", "Overrides applied to the bearing case (e.g. \"mesh.fidelity=\\\"preview\\\"\")."),
-    other(
+pub const ROTOR_KEYS: &[Key] = &[
+    Key::text("title").meaning("Free text shown with every result."),
+    Key::flag("rotor.representative")
+        .default(Fallback::Flag(false))
+        .meaning("The rotor's data are not all published (chosen here); every result is marked so."),
+    Key::choice("rotor.beam_theory", &["timoshenko", "euler_bernoulli"])
+        .default(Fallback::Word("timoshenko"))
+        .meaning("Shaft elements with shear deformation and rotary inertia (Nelson & McVaugh), or without."),
+    Key::choice("rotor.coefficients", &["full", "reduced"])
+        .default(Fallback::Word("full"))
+        .meaning("Bearing cases enter with their full K, C, M over journal and pad coordinates, or synchronously reduced to 2×2 at the running speed (overestimates the stable range)."),
+    Key::integer("rotor.shaft_modes", COUNT, 0, 400)
+        .default(Fallback::Count(DEFAULT_SHAFT_MODES))
+        .meaning("Shaft reduction (Craig–Bampton): fixed-interface modes kept per bending plane besides the x, y of the attached nodes; 0 keeps the full finite-element shaft. Time and error per level in docs/PERFORMANCE.md."),
+    Key::number("rotor.density_kg_per_m3", KG_PER_M3, Range::positive(1e5))
+        .typical(2000.0, 9000.0)
+        .or(7850.0)
+        .meaning("Density of the shaft material."),
+    Key::number("rotor.youngs_modulus_gpa", GPA, Range::positive(1e4))
+        .typical(70.0, 220.0)
+        .or(211.0)
+        .meaning("Young's modulus of the shaft material."),
+    Key::number("rotor.poisson_ratio", ONE, Range::closed(0.0, 0.5))
+        .typical(0.25, 0.35)
+        .or(0.3)
+        .meaning("Poisson's ratio (the shear modulus of the Timoshenko elements)."),
+    Key::number("rotor.min_speed_rpm", RPM, Range::positive(1e6))
+        .typical(1000.0, 20000.0)
+        .default(NONE)
+        .meaning("Lower end of the operating speed range (drawn in the views; give both ends or neither)."),
+    Key::rule("rotor.max_speed_rpm", RPM, "(rotor.min_speed_rpm, 1e6]")
+        .default(NONE)
+        .meaning("Upper end of the operating speed range."),
+    Key::number("rotor.damping.ratio", ONE, Range::closed(0.0, 0.5))
+        .typical(0.0, 0.05)
+        .default(Fallback::Rule("no damping"))
+        .meaning("Proportional (Rayleigh) damping: this damping ratio on the two free–free flexible modes named by rotor.damping.modes."),
+    Key::rule("rotor.damping.modes", COUNT, "two increasing flexible-mode numbers in [1, 20]")
+        .default(Fallback::Rule("[1, 2]"))
+        .meaning("Free–free flexible modes (1 = first) that get the damping ratio."),
+    Key::number("rotor.section[].length_mm", MM, Range::positive(1e5))
+        .typical(10.0, 2000.0)
+        .meaning("Length of a shaft section (split into `elements` equal elements)."),
+    Key::number("rotor.section[].outer_diameter_mm", MM, Range::positive(1e4))
+        .typical(20.0, 500.0)
+        .meaning("Outer diameter of the section."),
+    Key::rule("rotor.section[].inner_diameter_mm", MM, "[0, outer_diameter_mm)").or(0.0).meaning("Bore of a hollow section."),
+    Key::integer("rotor.section[].elements", COUNT, 1, 200)
+        .default(Fallback::Count(1))
+        .meaning("Finite elements in the section; section i ends at node Σ elements."),
+    Key::rule("rotor.disk[].node", COUNT, NODE).meaning("Node carrying a rigid disk (impeller, coupling hub, collar)."),
+    Key::number("rotor.disk[].mass_kg", KG, Range::closed(0.0, 1e6)).typical(1.0, 500.0).meaning("Mass of the disk."),
+    Key::number("rotor.disk[].polar_inertia_kg_m2", KG_M2, Range::closed(0.0, 1e6))
+        .typical(0.01, 10.0)
+        .or(0.0)
+        .meaning("Polar moment of inertia (gyroscopic coupling)."),
+    Key::number("rotor.disk[].transverse_inertia_kg_m2", KG_M2, Range::closed(0.0, 1e6))
+        .typical(0.01, 10.0)
+        .or(0.0)
+        .meaning("Transverse (diametral) moment of inertia."),
+    Key::rule("rotor.unbalance[].node", COUNT, NODE).meaning("Node carrying an unbalance."),
+    Key::number("rotor.unbalance[].amount_g_mm", G_MM, Range::closed(0.0, 1e9)).typical(10.0, 10000.0).meaning("Unbalance m·e."),
+    Key::number("rotor.unbalance[].phase_deg", DEG, Range::closed(-360.0, 360.0))
+        .typical(0.0, 360.0)
+        .or(0.0)
+        .meaning("Angle of the unbalance from +x at t = 0."),
+    Key::rule("rotor.bearing[].node", COUNT, NODE)
+        .meaning("Node where the bearing (or coefficients given by numbers) acts on the shaft."),
+    Key::text("rotor.bearing[].case")
+        .default(Fallback::Rule("— (or k_n_per_m)"))
+        .meaning("Bearing case file, relative to the rotor file, solved at each speed; the same file at several positions is solved once per speed."),
+    Key::rule("rotor.bearing[].set", COUNT, "list of \"key=value\" overrides as --set takes them")
+        .default(NONE)
+        .meaning("Overrides applied to the bearing case (e.g. \"mesh.fidelity=\\\"preview\\\"\")."),
+    Key::rule(
         "rotor.bearing[].k_n_per_m",
-        "N/m",
-        Allowed::Rule("rows [xx, xy, yx, yy], each entry in [-1e15, 1e15]; one row per speeds_rpm entry, or one row"),
-        "— (or case)",
-        "Stiffness given by numbers (seals, aerodynamic cross-coupling, coefficients from elsewhere).",
-    ),
-    other("rotor.bearing[].c_ns_per_m", "N·s/m", Allowed::Rule("as k_n_per_m; required with it"), "— (or case)", "Damping given by numbers."),
-    other("rotor.bearing[].speeds_rpm", "rpm", Allowed::Rule("strictly ascending, in [0, 1e6]"), "constant coefficients", "Speeds of the coefficient rows (linear interpolation between, held outside)."),
-    other("rotor.support[].node", "", NODE, "", "Node of an isotropic linear support."),
-    num("rotor.support[].stiffness_n_per_m", "N/m", Range::closed(0.0, 1e15), (1e5, 1e9), "", "Stiffness of the support in x and y."),
-    num("rotor.support[].damping_ns_per_m", "N·s/m", Range::closed(0.0, 1e12), (0.0, 1e5), "0", "Damping of the support in x and y."),
+        N_PER_M,
+        "rows [xx, xy, yx, yy], each entry in [-1e15, 1e15]; one row per speeds_rpm entry, or one row",
+    )
+    .default(Fallback::Rule("— (or case)"))
+    .meaning("Stiffness given by numbers (seals, aerodynamic cross-coupling, coefficients from elsewhere)."),
+    Key::rule("rotor.bearing[].c_ns_per_m", NS_PER_M, "as k_n_per_m; required with it")
+        .default(Fallback::Rule("— (or case)"))
+        .meaning("Damping given by numbers."),
+    Key::rule("rotor.bearing[].speeds_rpm", RPM, "strictly ascending, in [0, 1e6]")
+        .default(Fallback::Rule("constant coefficients"))
+        .meaning("Speeds of the coefficient rows (linear interpolation between, held outside)."),
+    Key::rule("rotor.support[].node", COUNT, NODE).meaning("Node of an isotropic linear support."),
+    Key::number("rotor.support[].stiffness_n_per_m", N_PER_M, Range::closed(0.0, 1e15))
+        .typical(1e5, 1e9)
+        .meaning("Stiffness of the support in x and y."),
+    Key::number("rotor.support[].damping_ns_per_m", NS_PER_M, Range::closed(0.0, 1e12))
+        .typical(0.0, 1e5)
+        .or(0.0)
+        .meaning("Damping of the support in x and y."),
 ];
+
+/// The row of a rotor-file key (its row key, `[]` for array entries), found while compiling:
+/// `const { rotor_row("rotor.poisson_ratio") }`; a key without a row fails the build.
+#[must_use]
+pub const fn rotor_row(key: &str) -> &'static Key {
+    let mut i = 0;
+    while i < ROTOR_KEYS.len() {
+        if super::schema::same_text(ROTOR_KEYS[i].key, key) {
+            return &ROTOR_KEYS[i];
+        }
+        i += 1;
+    }
+    panic!("no row in model::rotor_schema::ROTOR_KEYS for this key")
+}
+
+/// A fixed default of a rotor row (for serde's defaults of the rotor file).
+#[must_use]
+pub fn rotor_default(key: &'static Key) -> f64 {
+    key.default_number().unwrap_or_default()
+}
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::model::error::CaseError;
-    use crate::model::rotor::{parse_rotor_file, DEFAULT_SHAFT_MODES};
+    use crate::model::rotor::parse_rotor_file;
+    use crate::model::schema::Allowed;
 
     /// A rotor with one of every table, written so each numeric key can be set.
     const BASE: &str = r#"
@@ -165,7 +214,7 @@ stiffness_n_per_m = 1e7
         match parse_rotor_file(&too_many).unwrap().resolve(&|_| Err("no cases".into())) {
             Err(CaseError::OutOfRange { key, value, allowed }) => assert_eq!(
                 (key.as_str(), value, allowed.as_str()),
-                ("rotor.shaft_modes", 401.0, "integer in [0, 400] (0: full shaft)")
+                ("rotor.shaft_modes", 401.0, "an integer in [0, 400] (0: full shaft)")
             ),
             other => panic!("{other:?}"),
         }
@@ -173,7 +222,6 @@ stiffness_n_per_m = 1e7
 
     #[test]
     fn every_key_of_the_shipped_rotor_has_a_row() {
-        assert_eq!(SHAFT_MODES_DEFAULT, DEFAULT_SHAFT_MODES.to_string());
         let text = include_str!("../../cases/rotors/compressor-rotor.toml");
         let table: toml::Table = text.parse().unwrap();
         let mut keys = Vec::new();

@@ -121,11 +121,16 @@ pub fn append_section(r: &mut RotorTable, end: ShaftEnd) -> usize {
     });
     #[allow(clippy::cast_precision_loss)]
     let element_mm = s.length_mm / s.elements.max(1) as f64;
+    // As many elements as keep the neighbour's element length, within the allowed counts.
+    let (lo, hi) = match const { super::rotor_schema::rotor_row("rotor.section[].elements") }.allowed {
+        super::schema::Allowed::Integer { lo, hi } => (lo, hi),
+        _ => (1, 1),
+    };
     #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
     let elements = if element_mm > 0.0 && element_mm.is_finite() {
-        (APPENDED_LENGTH_MM / element_mm).round().clamp(1.0, 200.0) as usize
+        ((APPENDED_LENGTH_MM / element_mm).round().max(0.0) as usize).clamp(lo, hi)
     } else {
-        1
+        lo
     };
     s.length_mm = APPENDED_LENGTH_MM;
     s.elements = elements;

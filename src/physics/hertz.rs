@@ -33,33 +33,8 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-/// The pivot's contact geometry.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ContactKind {
-    /// Cylinder in a cylindrical seat (line contact along the pad's length).
-    Rocker,
-    /// Sphere in a spherical socket (point contact).
-    Ball,
-}
-
-/// A pivot's Hertz contact: geometry and materials [SI].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct PivotContact {
-    pub kind: ContactKind,
-    /// Radius of the convex body (rocker back, ball) R₁ [m].
-    pub pivot_radius_m: f64,
-    /// Radius of the concave seat R₂ > R₁ [m].
-    pub seat_radius_m: f64,
-    /// Contact length of a rocker [m] (unused for a ball).
-    pub length_m: f64,
-    /// Convex body's E₁ [Pa] and ν₁ (the pad's material).
-    pub pivot_youngs_modulus_pa: f64,
-    pub pivot_poisson_ratio: f64,
-    /// Seat's E₂ [Pa] and ν₂ (the housing's material).
-    pub seat_youngs_modulus_pa: f64,
-    pub seat_poisson_ratio: f64,
-}
+// The contact's data belong to the case (`model`); this module is its law.
+pub use crate::model::case::{ContactKind, PivotContact};
 
 /// A contact outside the formula's validity.
 #[derive(Debug, Clone, PartialEq, Error, Serialize, Deserialize)]

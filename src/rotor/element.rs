@@ -39,47 +39,11 @@ pub type Mat8 = SMatrix<f64, 8, 8>;
 type Mat4 = SMatrix<f64, 4, 4>;
 type Vec4 = SVector<f64, 4>;
 
-/// Which beam theory the shaft elements use.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum BeamTheory {
-    /// Shear deformation and rotary inertia (Nelson & McVaugh).
-    #[default]
-    Timoshenko,
-    /// Neither shear deformation nor transverse rotary inertia.
-    EulerBernoulli,
-}
-
-/// Section and material of one element [SI].
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct BeamSection {
-    pub length_m: f64,
-    pub outer_diameter_m: f64,
-    pub inner_diameter_m: f64,
-    pub density_kg_per_m3: f64,
-    pub youngs_modulus_pa: f64,
-    pub poisson_ratio: f64,
-}
+// The section's data (and its area, second moment and mass) belong to the rotor file's SI form (`model`);
+// this module is the element built on it.
+pub use crate::model::shaft::{BeamSection, BeamTheory};
 
 impl BeamSection {
-    /// Cross-section area [m²].
-    #[must_use]
-    pub fn area(&self) -> f64 {
-        std::f64::consts::PI / 4.0 * (self.outer_diameter_m.powi(2) - self.inner_diameter_m.powi(2))
-    }
-
-    /// Second moment of area about a diameter [m⁴].
-    #[must_use]
-    pub fn second_moment(&self) -> f64 {
-        std::f64::consts::PI / 64.0 * (self.outer_diameter_m.powi(4) - self.inner_diameter_m.powi(4))
-    }
-
-    /// Mass [kg].
-    #[must_use]
-    pub fn mass(&self) -> f64 {
-        self.density_kg_per_m3 * self.area() * self.length_m
-    }
-
     /// Shear coefficient κ of a (hollow) circular section (Hutchinson's form as given by Cowper):
     /// `κ = 6(1 + ν)(1 + m²)² / ((7 + 6ν)(1 + m²)² + (20 + 12ν) m²)`, m = inner/outer diameter.
     #[must_use]

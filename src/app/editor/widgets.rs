@@ -2,13 +2,12 @@
 //! message in place when the case's first error concerns this key.
 //!
 //! A typed value is taken when the user presses Enter or leaves the field (not at every keystroke, which
-//! would start a solve for each intermediate number). Values are not clamped to their sensible range: a user may type anything, and the validation of the
-//! case (the same checks as the CLI) says what is wrong, next to the field. The sensible range sets the
-//! drag speed and is shown in the tooltip.
+//! would start a solve for each intermediate number). Values are not clamped to their sensible range: a user
+//! may type anything, and the validation of the case (the same checks as the CLI) says what is wrong, next
+//! to the field. The sensible range sets the drag speed and is shown in the tooltip.
 //!
 //! A row's unit, tooltip (physical meaning, typical and allowed values) and drag range come from the case
-//! schema ([`crate::model::schema`]) by key, the same table `tiltpad schema` prints; a row here only adds
-//! its label and display precision.
+//! schema ([`crate::model::schema`]) by key, the same table `tiltpad schema` prints.
 
 use egui::{Color32, DragValue, RichText, Ui};
 
@@ -62,41 +61,6 @@ impl Num<'_> {
         let (lo, hi) = schema_row(self.key).and_then(|s| s.typical).unwrap_or((0.0, 1.0));
         (hi - lo) / 400.0
     }
-}
-
-/// A required number of the case file: how it shows and where it lives.
-#[derive(Clone, Copy)]
-pub struct Field {
-    pub num: Num<'static>,
-    pub get: fn(&CaseFile) -> f64,
-    pub set: fn(&mut CaseFile, f64),
-}
-
-/// An optional number of the case file, with the default that applies when it is absent.
-#[derive(Clone, Copy)]
-pub struct OptField {
-    pub num: Num<'static>,
-    pub default: f64,
-    pub get: fn(&CaseFile) -> Option<f64>,
-    pub set: fn(&mut CaseFile, Option<f64>),
-}
-
-/// Rows for a list of required numbers.
-pub fn fields_ui(ui: &mut Ui, doc: &mut Document, fields: &[Field]) -> EditOutput {
-    let mut out = EditOutput::default();
-    for f in fields {
-        out.merge(number_ui(ui, doc, &f.num, f.get, f.set));
-    }
-    out
-}
-
-/// Rows for a list of optional numbers.
-pub fn opt_fields_ui(ui: &mut Ui, doc: &mut Document, fields: &[OptField]) -> EditOutput {
-    let mut out = EditOutput::default();
-    for f in fields {
-        out.merge(optional_ui(ui, doc, &f.num, f.default, f.get, f.set));
-    }
-    out
 }
 
 /// What the editor did this frame.
@@ -188,11 +152,10 @@ pub fn number_ui(
     ui: &mut Ui,
     doc: &mut Document,
     n: &Num<'_>,
-    get: impl Fn(&CaseFile) -> f64,
+    value: f64,
     set: impl FnOnce(&mut CaseFile, f64),
 ) -> EditOutput {
     let label = label_ui(ui, n.label, &n.tooltip());
-    let value = get(doc.file());
     let out = drag_ui(ui, doc, n, label, value, set);
     ui.label(n.unit());
     ui.end_row();
@@ -200,38 +163,41 @@ pub fn number_ui(
     out
 }
 
-/// An optional number: a checkbox gives it a value; unchecked, the documented default applies.
+/// An optional number: a checkbox gives it a value (starting from `start`); unchecked, the default applies
+/// and `absent` says what it is. `current` is the value now; `get` reads it again after the checkbox changed
+/// the case.
+#[allow(clippy::too_many_arguments)]
 pub fn optional_ui(
     ui: &mut Ui,
     doc: &mut Document,
     n: &Num<'_>,
-    default: f64,
+    current: Option<f64>,
+    (absent, start): (&str, f64),
     get: impl Fn(&CaseFile) -> Option<f64>,
     set: impl Fn(&mut CaseFile, Option<f64>),
 ) -> EditOutput {
-    let current = get(doc.file());
     let mut on = current.is_some();
     let mut out = EditOutput::default();
     let label = ui
         .horizontal(|ui| {
+            let unit = if n.unit().is_empty() { String::new() } else { format!(" {}", n.unit()) };
             if ui
                 .checkbox(&mut on, "")
-                .on_hover_text(format!("Give {} explicitly (unchecked: {} {})", n.label, sig(default, 6), n.unit()))
+                .on_hover_text(format!("Give {} explicitly (unchecked: {absent}{unit})", n.label))
                 .changed()
             {
-                let value = on.then(|| current.unwrap_or(default));
+                let value = on.then(|| current.unwrap_or(start));
                 doc.edit(n.key, false, |f| set(f, value));
                 out.changed = true;
             }
             label_ui(ui, n.label, &n.tooltip())
         })
         .inner;
-    match get(doc.file()) {
+    let shown = if out.changed { get(doc.file()) } else { current };
+    match shown {
         Some(v) => out.merge(drag_ui(ui, doc, n, label, v, |f, x| set(f, Some(x)))),
         None => {
-            let text = absent_meaning(n.key)
-                .map_or_else(|| format!("{} (default)", sig(default, 6)), |m| format!("{m} (default)"));
-            ui.label(RichText::new(text).weak()).labelled_by(label.id);
+            ui.label(RichText::new(format!("{absent} (default)")).weak()).labelled_by(label.id);
         }
     }
     ui.label(n.unit());
@@ -240,24 +206,11 @@ pub fn optional_ui(
     out
 }
 
-/// What leaving out a key means, for keys whose absence is not a default number (the schema's words).
-fn absent_meaning(key: &str) -> Option<&'static str> {
-    match key {
-        "bearing.pads.pivot_stiffness_n_per_m"
-        | "bearing.pads.pivot_transverse_stiffness_n_per_m"
-        | "thermal.inlet_temperature_c"
-        | "thermal.journal_temperature_c" => schema_row(key).map(|s| s.default),
-        _ => None,
-    }
-}
-
 /// An integer count (pads, elements); `note` adds what the editor does on a change to the schema's tooltip.
 pub fn count_ui(
     ui: &mut Ui,
     doc: &mut Document,
-    key: &'static str,
-    text: &str,
-    note: &str,
+    (key, text, note): (&str, &str, &str),
     value: usize,
     set: impl FnOnce(&mut CaseFile, usize),
 ) -> EditOutput {
@@ -309,9 +262,9 @@ pub fn per_pad_ui(
 /// A choice of the case file: its key (for undo grouping and errors) and label; its meaning is the
 /// schema's, or `tip` for a choice that is the editor's own (how a value is given, not a case key).
 #[derive(Debug, Clone, Copy)]
-pub struct Pick {
-    pub key: &'static str,
-    pub label: &'static str,
+pub struct Pick<'a> {
+    pub key: &'a str,
+    pub label: &'a str,
     pub tip: Option<&'static str>,
 }
 
@@ -319,7 +272,7 @@ pub struct Pick {
 pub fn choice_ui<T: PartialEq + Copy>(
     ui: &mut Ui,
     doc: &mut Document,
-    pick: Pick,
+    pick: Pick<'_>,
     current: T,
     options: &[(T, &str)],
     set: impl FnOnce(&mut CaseFile, T),
@@ -348,4 +301,28 @@ pub fn choice_ui<T: PartialEq + Copy>(
     ui.end_row();
     error_row_ui(ui, doc, key);
     out
+}
+
+/// A free-text row (names and titles); an empty text removes the key.
+pub fn text_ui(
+    ui: &mut Ui,
+    doc: &mut Document,
+    (key, label): (&str, &str),
+    current: &str,
+    set: impl FnOnce(&mut CaseFile, Option<String>),
+) -> EditOutput {
+    let tip = key_tooltip(key);
+    let label = ui.label(label).on_hover_text(&tip);
+    let mut text = current.to_string();
+    let changed = ui
+        .add_sized([200.0, 20.0], egui::TextEdit::singleline(&mut text))
+        .labelled_by(label.id)
+        .on_hover_text(&tip)
+        .changed();
+    if changed {
+        doc.edit(key, true, |f| set(f, (!text.is_empty()).then(|| text.clone())));
+    }
+    ui.label("");
+    ui.end_row();
+    EditOutput { changed, ..EditOutput::default() }
 }

@@ -3,43 +3,39 @@
 //! density, specific heat and conductivity.
 
 use super::super::case::{Lubricant, ViscosityLaw};
-use super::super::error::{CaseError, Range};
+use super::super::error::{CaseError, Inconsistency};
 use super::super::file::CaseFile;
 use super::{inconsistent, missing};
+use crate::key;
 
 pub(super) fn resolve_lubricant(file: &CaseFile) -> Result<Lubricant, CaseError> {
     let l = &file.lubricant;
-    let t_range = Range::closed(-60.0, 400.0);
-    let mu1 = Range::positive(100.0).check("lubricant.viscosity_pa_s", l.viscosity_pa_s)?;
-    let t1 = t_range.check("lubricant.viscosity_temperature_c", l.viscosity_temperature_c)?;
+    let mu1 = key!("lubricant.viscosity_pa_s").value(Some(l.viscosity_pa_s))?;
+    let t1 = key!("lubricant.viscosity_temperature_c").value(Some(l.viscosity_temperature_c))?;
+    let coefficient = key!("lubricant.viscosity_coefficient_per_k");
     let eta = match (l.viscosity2_pa_s, l.viscosity2_temperature_c, l.viscosity_coefficient_per_k) {
         (Some(_), Some(_), Some(_)) => {
-            return Err(inconsistent(
-                "lubricant.viscosity_coefficient_per_k",
-                "give either a second viscosity point or the coefficient, not both",
-            ))
+            return Err(inconsistent(coefficient.key, Inconsistency::ViscosityPointAndCoefficient));
         }
         (Some(mu2), Some(t2), None) => {
-            let mu2 = Range::positive(100.0).check("lubricant.viscosity2_pa_s", mu2)?;
-            let t2 = t_range.check("lubricant.viscosity2_temperature_c", t2)?;
+            let mu2 = key!("lubricant.viscosity2_pa_s").value(Some(mu2))?;
+            let t2 = key!("lubricant.viscosity2_temperature_c").value(Some(t2))?;
             if (t2 - t1).abs() < 1.0 {
                 return Err(inconsistent(
                     "lubricant.viscosity2_temperature_c",
-                    "the two viscosity points need different temperatures",
+                    Inconsistency::ViscosityPointsAtOneTemperature,
                 ));
             }
             let eta = (mu1 / mu2).ln() / (t2 - t1);
-            if !(0.0..=1.0).contains(&eta) {
+            if !coefficient.allowed.range().is_some_and(|r| r.contains(eta)) {
                 return Err(inconsistent(
                     "lubricant.viscosity2_pa_s",
-                    format!(
-                        "the two points give η = {eta:.4} /K; viscosity must fall with temperature (η in [0, 1] /K)"
-                    ),
+                    Inconsistency::ViscosityRises { eta_per_k: eta },
                 ));
             }
             eta
         }
-        (None, None, Some(eta)) => Range::closed(0.0, 1.0).check("lubricant.viscosity_coefficient_per_k", eta)?,
+        (None, None, Some(eta)) => coefficient.value(Some(eta))?,
         (Some(_), None, _) => {
             return Err(missing("lubricant.viscosity2_temperature_c", "temperature of the second viscosity point"))
         }
@@ -54,10 +50,8 @@ pub(super) fn resolve_lubricant(file: &CaseFile) -> Result<Lubricant, CaseError>
     Ok(Lubricant {
         name: l.name.clone().unwrap_or_default(),
         viscosity: ViscosityLaw { mu_ref_pa_s: mu1, t_ref_c: t1, eta_per_k: eta },
-        density_kg_per_m3: Range::positive(2e4).check("lubricant.density_kg_per_m3", l.density_kg_per_m3)?,
-        specific_heat_j_per_kg_k: Range::positive(1e5)
-            .check("lubricant.specific_heat_j_per_kg_k", l.specific_heat_j_per_kg_k)?,
-        conductivity_w_per_m_k: Range::positive(1e3)
-            .check("lubricant.conductivity_w_per_m_k", l.conductivity_w_per_m_k)?,
+        density_kg_per_m3: key!("lubricant.density_kg_per_m3").value(Some(l.density_kg_per_m3))?,
+        specific_heat_j_per_kg_k: key!("lubricant.specific_heat_j_per_kg_k").value(Some(l.specific_heat_j_per_kg_k))?,
+        conductivity_w_per_m_k: key!("lubricant.conductivity_w_per_m_k").value(Some(l.conductivity_w_per_m_k))?,
     })
 }

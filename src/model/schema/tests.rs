@@ -115,3 +115,100 @@ fn validation_enforces_the_documented_ranges() {
     }
     assert!(checked > 60, "only {checked} bounds checked");
 }
+
+/// Every default lies in its key's allowed values (a number in its range, a count in its interval, a word
+/// among the choices), so an absent key never resolves to a value the key itself would refuse. (A default
+/// that applies only where the key does not: a fixed sector's thickness 0, no pad body, is exempt.)
+#[test]
+fn every_default_is_an_allowed_value() {
+    let file = crate::model::parse_case_file(include_str!("../../../cases/compressor-bearing.toml"), &[]).unwrap();
+    let mut checked = 0;
+    for k in KEYS.iter().filter(|k| !matches!(k.default, Fallback::Sometimes { .. })) {
+        let value = k.default_in(&file);
+        match (k.allowed, k.default) {
+            (_, Fallback::Word(w)) => {
+                let Allowed::Choice(words) = k.allowed else { panic!("{}: a word default without a choice", k.key) };
+                assert!(words.contains(&w), "{}: default `{w}` is not one of {words:?}", k.key);
+            }
+            (Allowed::Integer { lo, hi }, _) => {
+                if let Some(v) = value {
+                    assert!(v.fract() == 0.0 && (lo as f64..=hi as f64).contains(&v), "{}: default {v}", k.key);
+                }
+            }
+            (a, _) => {
+                if let (Some(r), Some(v)) = (a.range(), value) {
+                    assert!(r.contains(v), "{}: default {v} outside {}", k.key, r.describe());
+                }
+            }
+        }
+        checked += usize::from(value.is_some());
+    }
+    assert!(checked > 40, "only {checked} numeric defaults");
+}
+
+/// A case with every table the editor draws: the test rig (orifices, hydraulics with two lines and a rig).
+fn full_case() -> crate::model::CaseFile {
+    crate::model::parse_case_file(include_str!("../../../cases/test-rig-pub5.toml"), &[]).unwrap()
+}
+
+/// Every editor row's key is a key of the file format: the editor writes it by key (as `--set` does) and
+/// reads the same value back, whatever the row's widget; an indexed row is written in its first entry.
+#[test]
+fn the_editor_reads_and_writes_every_row_by_its_key() {
+    let base = full_case();
+    let mut written = 0;
+    for k in KEYS.iter().filter(|k| k.editor.is_some()) {
+        let key = k.key.replace("[]", "[0]");
+        let value = match k.allowed {
+            Allowed::Choice(words) => toml::Value::String(words[words.len() - 1].into()),
+            Allowed::Bool => toml::Value::Boolean(true),
+            Allowed::Text => toml::Value::String("a name".into()),
+            Allowed::Integer { lo, hi } => toml::Value::Integer(i64::try_from((lo + hi) / 2).unwrap()),
+            Allowed::NumberPerPad(_) | Allowed::Number(_) | Allowed::NumberWhere(..) | Allowed::Rule(_) => {
+                let (lo, hi) = k.typical.unwrap_or((0.0, 1.0));
+                toml::Value::Float(0.25 * lo + 0.75 * hi)
+            }
+        };
+        let edited = base.with_value(&key, Some(value.clone())).unwrap_or_else(|e| panic!("{key}: {e}"));
+        let table = edited.to_table().unwrap();
+        assert_eq!(crate::model::load::value_at(&table, &key), Some(&value), "{key}");
+        // Removing an optional key leaves a file that still reads.
+        if !matches!(k.default, Fallback::Required) {
+            let removed = edited.with_value(&key, None).unwrap_or_else(|e| panic!("{key} removed: {e}"));
+            assert!(crate::model::load::value_at(&removed.to_table().unwrap(), &key).is_none(), "{key}");
+        }
+        written += 1;
+    }
+    assert!(written > 80, "only {written} editor rows");
+}
+
+/// The file's choice enums default (`#[default]`, what validation takes for an absent key) to their rows'
+/// default words (what `tiltpad schema` and the editor show); so do the rotor file's.
+#[test]
+fn the_file_enums_default_to_their_rows_word() {
+    use crate::model::file::{CavitatedFilmFile, Cavitation, Fidelity, PadFilmBcFile, PadKindFile, ThermalModelKind};
+    use crate::model::rotor::CoefficientModel;
+    use crate::model::shaft::BeamTheory;
+    fn word<T: serde::Serialize + Default>() -> String {
+        toml::Value::try_from(T::default()).unwrap().as_str().unwrap().to_string()
+    }
+    let case = [
+        ("bearing.pads.kind", word::<PadKindFile>()),
+        ("mesh.fidelity", word::<Fidelity>()),
+        ("physics.cavitation", word::<Cavitation>()),
+        ("thermal.model", word::<ThermalModelKind>()),
+        ("thermal.pad_film_bc", word::<PadFilmBcFile>()),
+        ("thermal.cavitated_film", word::<CavitatedFilmFile>()),
+    ];
+    for (key, w) in &case {
+        assert!(matches!(spec(key).unwrap().default, Fallback::Word(d) if d == *w), "{key}: the enum defaults to {w}");
+    }
+    let rotor = [("rotor.beam_theory", word::<BeamTheory>()), ("rotor.coefficients", word::<CoefficientModel>())];
+    for (key, w) in rotor {
+        let row = crate::model::rotor_schema::ROTOR_KEYS.iter().find(|k| k.key == key).unwrap();
+        assert!(matches!(row.default, Fallback::Word(d) if d == w), "{key}: the enum defaults to {w}");
+    }
+    // Every choice row with a default word has been compared.
+    let words = KEYS.iter().filter(|k| matches!(k.default, Fallback::Word(_))).count();
+    assert_eq!(words, case.len());
+}

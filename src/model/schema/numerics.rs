@@ -1,0 +1,105 @@
+//! Rows of how the film is modelled and discretised: `[physics]` and `[mesh]`.
+
+use super::Group::{Fidelity, Physics};
+use super::Widget::{Choice, Custom, Optional};
+use super::{Fallback, KeySpec};
+use crate::model::budget::DEFAULT_MAX_NODES;
+use crate::model::file::{CaseFile, OneOrMany};
+use crate::units::{COUNT, DEG, NODES, UM};
+
+type Key = KeySpec;
+
+/// `physics.touchdown_film_um` is at most this fraction of the assembled clearance.
+pub const MAX_TOUCHDOWN_RATIO: f64 = 0.5;
+/// Default of `physics.touchdown_film_um`, as a fraction of the assembled clearance.
+pub const TOUCHDOWN_RATIO: f64 = 0.01;
+
+fn touchdown(f: &CaseFile) -> f64 {
+    TOUCHDOWN_RATIO * f.bearing.assembled_clearance_um
+}
+
+/// The longest pad arc a file gives [rad] (per-pad arcs, else the common one): sets the level's count along
+/// the arc.
+fn longest_arc_rad(f: &CaseFile) -> f64 {
+    let p = &f.bearing.pads;
+    let listed = match &p.pivot_deg {
+        Some(OneOrMany::Many(v)) => v.len(),
+        _ => 0,
+    };
+    let pads = p.count.unwrap_or(f.bearing.pad.len().max(listed)).max(1);
+    let arc = |i: usize| f.bearing.pad.get(i).and_then(|own| own.arc_deg).or(p.arc_deg).unwrap_or(0.0);
+    DEG.to_si((0..pads).map(arc).fold(0.0, f64::max))
+}
+
+#[allow(clippy::cast_precision_loss)]
+fn level_circumferential(f: &CaseFile) -> f64 {
+    f.mesh.fidelity.unwrap_or_default().circumferential_elements(longest_arc_rad(f)) as f64
+}
+#[allow(clippy::cast_precision_loss)]
+fn level_axial(f: &CaseFile) -> f64 {
+    f.mesh.fidelity.unwrap_or_default().elements().1 as f64
+}
+#[allow(clippy::cast_precision_loss)]
+fn level_orifice(f: &CaseFile) -> f64 {
+    f.mesh.fidelity.unwrap_or_default().elements().2 as f64
+}
+#[allow(clippy::cast_precision_loss)]
+fn level_pad_radial(f: &CaseFile) -> f64 {
+    f.mesh.fidelity.unwrap_or_default().pad_radial_elements() as f64
+}
+
+const fn level(value: fn(&CaseFile) -> f64) -> Fallback {
+    Fallback::Follows { text: "from the fidelity", value }
+}
+
+pub(super) const KEYS: &[Key] = &[
+    // [physics]
+    Key::choice("physics.cavitation", &["reynolds", "gumbel"])
+        .default(Fallback::Word("reynolds"))
+        .edit(Physics, "Cavitation", Choice(&["Reynolds (Swift–Stieber)", "Gümbel (half-Sommerfeld)"]))
+        .meaning("Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation)."),
+    Key::rule("physics.touchdown_film_um", UM, "(0, half the assembled clearance]")
+        .typical(0.1, 10.0)
+        .default(Fallback::Follows { text: "1 % of the assembled clearance", value: touchdown })
+        .edit(Physics, "Touchdown film", Optional(2))
+        .meaning("Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (contact through the surface roughness)."),
+    Key::integer("physics.pad_modes", COUNT, 0, 3)
+        .typical(0.0, 3.0)
+        .default(Fallback::Count(0))
+        .edit(Physics, "Pad bending modes", Optional(0))
+        .meaning("Bending modes per tilting pad beyond the rigid tilt (pad flexibility by pseudo-modal reduction of the pad's finite-element model, with E, ν and density of the pads); 0: rigid pads. Each mode adds a coordinate to the equilibrium and a row/column to the full coefficient matrices. The first bending mode carries almost all of the effect."),
+    // [mesh]
+    Key::choice("mesh.fidelity", &["preview", "standard", "reference"])
+        .default(Fallback::Word("standard"))
+        .edit(Fidelity, "Mesh fidelity", Choice(&["preview", "standard", "reference"]))
+        .meaning("Element counts per pad: preview 16×8 (fast, a few % error), standard 36×16, reference 96×48 (for convergence checks); pads longer than 80° get proportionally more along the arc (a 360° bore: 4.5×). Each orifice is refined further."),
+    Key::flag("mesh.half_model")
+        .default(Fallback::Rule("true when every orifice is on the mid-plane"))
+        .edit(Fidelity, "Half model", Custom)
+        .meaning("Model half the pad length with a symmetry plane (half the cost). Automatic: used when every orifice is on the mid-plane, the only case where the film is symmetric."),
+    Key::integer("mesh.circumferential_elements", COUNT, 4, 2000)
+        .typical(2.0, 200.0)
+        .default(level(level_circumferential))
+        .edit(Fidelity, "Circumferential elements", Optional(0))
+        .meaning("Explicit element count along each pad's arc (before orifice refinement), overriding the fidelity level."),
+    Key::integer("mesh.axial_elements", COUNT, 2, 1000)
+        .typical(2.0, 200.0)
+        .default(level(level_axial))
+        .edit(Fidelity, "Axial elements", Optional(0))
+        .meaning("Explicit element count across the full axial length (even with the half model), overriding the fidelity level."),
+    Key::integer("mesh.orifice_elements", COUNT, 2, 64)
+        .typical(2.0, 200.0)
+        .default(level(level_orifice))
+        .edit(Fidelity, "Elements across an orifice", Optional(0))
+        .meaning("Explicit element count across each orifice diameter (local refinement), overriding the fidelity level."),
+    Key::integer("mesh.pad_radial_elements", COUNT, 1, 200)
+        .typical(2.0, 200.0)
+        .default(level(level_pad_radial))
+        .edit(Fidelity, "Pad layers (thermal)", Optional(0))
+        .meaning("Explicit element layers through the pad thickness (pad conduction), overriding the fidelity level."),
+    Key::integer("mesh.max_nodes", NODES, 1_000, 50_000_000)
+        .typical(1e4, 1e7)
+        .default(Fallback::Count(DEFAULT_MAX_NODES))
+        .edit(Fidelity, "Node budget", Optional(0))
+        .meaning("Node budget: the most mesh nodes a solve may allocate (film nodes over all pads plus, with the thermal model, the pad solids' nodes). A case whose meshes would need more is refused before anything is built; memory grows about 2 kB per node and time faster than the node count."),
+];

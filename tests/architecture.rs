@@ -1,0 +1,368 @@
+//! The import picture of `src/`, checked: the layers import only downwards, and the files of `bearing/`
+//! import each other without a circle.
+//!
+//! Each source file is a module; its imports are the module paths it names (`crate::…`, `super::…`,
+//! `self::…`, and the child modules it declares), each resolved to the file that defines it (the longest
+//! prefix that is a file). Test code (`#[cfg(test)] mod … { … }` blocks and `tests.rs` files) and comments
+//! are left out: tests may reach anything.
+//!
+//! Layers, bottom up (a module may import its own layer and those below):
+//! `number`, `fem`, `units` → `mesh` → `model` → `physics` → `bearing` → `rotor`, `study` → `scene` → `io` →
+//! `app`, `cli`.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::Path;
+
+const LAYERS: &[&[&str]] = &[
+    &["number", "fem", "units"],
+    &["mesh"],
+    &["model"],
+    &["physics"],
+    &["bearing"],
+    &["rotor", "study"],
+    &["scene"],
+    &["io"],
+    &["app", "cli"],
+];
+
+type Module = Vec<String>;
+
+/// Every `.rs` file under `src/` by module path (`src/bearing/film/model.rs` → `bearing::film::model`).
+fn modules(root: &Path) -> BTreeMap<Module, String> {
+    let mut out = BTreeMap::new();
+    let mut stack = vec![root.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let rel = path.strip_prefix(root).unwrap().with_extension("");
+                let mut m: Module = rel.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+                if m.last().is_some_and(|s| s == "mod") {
+                    m.pop();
+                }
+                if m == ["lib"] || m == ["main"] {
+                    m.clear();
+                }
+                if m.last().is_some_and(|s| s == "tests") {
+                    continue;
+                }
+                out.insert(m, std::fs::read_to_string(&path).unwrap());
+            }
+        }
+    }
+    out
+}
+
+/// The source without comments and without `#[cfg(test)]` items (a `mod … { … }` block or one item).
+fn code(src: &str) -> String {
+    let no_comments: String = src.lines().map(|l| l.split("//").next().unwrap_or("")).collect::<Vec<_>>().join("\n");
+    let mut out = String::new();
+    let mut rest = no_comments.as_str();
+    while let Some(i) = rest.find("#[cfg(test)]") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i..];
+        // Skip to the end of the item: its braced body (or a `;` before any brace).
+        let open = after.find('{');
+        let semi = after.find(';');
+        match (open, semi) {
+            (Some(o), s) if s.is_none_or(|s| o < s) => {
+                let mut depth = 0;
+                let mut end = after.len();
+                for (k, ch) in after[o..].char_indices() {
+                    match ch {
+                        '{' => depth += 1,
+                        '}' => {
+                            depth -= 1;
+                            if depth == 0 {
+                                end = o + k + 1;
+                                break;
+                            }
+                        }
+                        _ => {}
+                    }
+                }
+                rest = &after[end..];
+            }
+            (_, Some(s)) => rest = &after[s + 1..],
+            _ => rest = "",
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+fn is_ident(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// The paths a file names, as module paths from the crate root (not yet resolved to files).
+fn named_paths(module: &[String], src: &str) -> Vec<Module> {
+    let text = code(src);
+    let children: Vec<String> = text
+        .lines()
+        .filter_map(|l| {
+            let l =
+                l.trim().trim_start_matches("pub(crate) ").trim_start_matches("pub(super) ").trim_start_matches("pub ");
+            l.strip_prefix("mod ").and_then(|r| r.strip_suffix(';')).map(str::to_string)
+        })
+        .collect();
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        if !is_ident(chars[i]) || (i > 0 && (is_ident(chars[i - 1]) || chars[i - 1] == ':' || chars[i - 1] == '.')) {
+            i += 1;
+            continue;
+        }
+        // A path: identifiers separated by `::`, possibly ending in a `{ … }` group.
+        let mut segs: Vec<String> = Vec::new();
+        loop {
+            let s = i;
+            while i < chars.len() && is_ident(chars[i]) {
+                i += 1;
+            }
+            segs.push(chars[s..i].iter().collect());
+            if i + 2 < chars.len()
+                && chars[i] == ':'
+                && chars[i + 1] == ':'
+                && (is_ident(chars[i + 2]) || chars[i + 2] == '{')
+            {
+                i += 2;
+                if chars[i] == '{' {
+                    // A group: each item relative to the prefix.
+                    let mut depth = 0;
+                    let g0 = i;
+                    while i < chars.len() {
+                        if chars[i] == '{' {
+                            depth += 1;
+                        } else if chars[i] == '}' {
+                            depth -= 1;
+                            if depth == 0 {
+                                break;
+                            }
+                        }
+                        i += 1;
+                    }
+                    let group: String = chars[g0 + 1..i.min(chars.len())].iter().collect();
+                    for item in split_top(&group) {
+                        let item = item.trim();
+                        if item.is_empty() || item == "self" || item == "*" {
+                            continue;
+                        }
+                        let mut p = segs.clone();
+                        p.extend(item.split("::").map(|s| s.trim().to_string()).filter(|s| !s.is_empty() && s != "*"));
+                        out.push(p);
+                    }
+                    segs.clear();
+                    break;
+                }
+            } else {
+                break;
+            }
+        }
+        if !segs.is_empty() {
+            out.push(segs);
+        }
+    }
+    // Resolve the relative roots.
+    let mut resolved = Vec::new();
+    for p in out {
+        // `pub(super)`, `pub(crate)`: a visibility, not a path.
+        if p.iter().all(|s| s == "super" || s == "self" || s == "crate") {
+            continue;
+        }
+        let first = p[0].as_str();
+        let abs: Module = match first {
+            "crate" => p[1..].to_vec(),
+            "self" | "super" => {
+                let mut base = module.to_vec();
+                let mut k = 0;
+                if p[0] == "self" {
+                    k = 1;
+                }
+                while k < p.len() && p[k] == "super" {
+                    base.pop();
+                    k += 1;
+                }
+                base.extend(p[k..].iter().cloned());
+                base
+            }
+            name if p.len() > 1 && children.iter().any(|c| c == name) => {
+                let mut base = module.to_vec();
+                base.extend(p.iter().cloned());
+                base
+            }
+            _ => continue,
+        };
+        resolved.push(abs);
+    }
+    resolved
+}
+
+/// Splits a `{ … }` group's content at its top-level commas.
+fn split_top(group: &str) -> Vec<String> {
+    let (mut out, mut cur, mut depth) = (Vec::new(), String::new(), 0);
+    for ch in group.chars() {
+        match ch {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                out.push(std::mem::take(&mut cur));
+                continue;
+            }
+            _ => {}
+        }
+        cur.push(ch);
+    }
+    out.push(cur);
+    out
+}
+
+/// The file-level import graph: module → modules (files) it imports.
+fn graph() -> BTreeMap<Module, BTreeSet<Module>> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let files = modules(&root);
+    let resolve = |p: &Module| -> Option<Module> {
+        (1..=p.len()).rev().map(|n| p[..n].to_vec()).find(|prefix| files.contains_key(prefix))
+    };
+    let mut g = BTreeMap::new();
+    for (m, src) in &files {
+        let mut to = BTreeSet::new();
+        for p in named_paths(m, src) {
+            if let Some(t) = resolve(&p).filter(|t| t != m) {
+                to.insert(t);
+            }
+        }
+        g.insert(m.clone(), to);
+    }
+    g
+}
+
+fn layer(m: &Module) -> Option<usize> {
+    let top = m.first()?;
+    LAYERS.iter().position(|l| l.contains(&top.as_str()))
+}
+
+#[test]
+fn layers_import_only_downwards() {
+    let g = graph();
+    let mut upward = Vec::new();
+    for (from, tos) in &g {
+        for to in tos {
+            if let (Some(a), Some(b)) = (layer(from), layer(to)) {
+                if b > a {
+                    upward.push(format!("{} -> {}", from.join("/"), to.join("/")));
+                }
+            }
+        }
+    }
+    assert!(upward.is_empty(), "imports from a lower layer to a higher one:\n{}", upward.join("\n"));
+}
+
+/// Strongly connected components of the graph restricted to `inside` (Tarjan), those of more than one file.
+fn circles(g: &BTreeMap<Module, BTreeSet<Module>>, inside: &str) -> Vec<Vec<String>> {
+    let nodes: Vec<&Module> = g.keys().filter(|m| m.first().is_some_and(|t| t == inside)).collect();
+    let index_of: BTreeMap<&Module, usize> = nodes.iter().enumerate().map(|(i, m)| (*m, i)).collect();
+    let adj: Vec<Vec<usize>> =
+        nodes.iter().map(|m| g[*m].iter().filter_map(|t| index_of.get(t).copied()).collect()).collect();
+    /// Tarjan's state: index and low-link per node, on-stack flags, the stack, the next index.
+    struct Tarjan {
+        index: Vec<usize>,
+        low: Vec<usize>,
+        on: Vec<bool>,
+        stack: Vec<usize>,
+        next: usize,
+        comps: Vec<Vec<usize>>,
+    }
+    fn visit(v: usize, adj: &[Vec<usize>], t: &mut Tarjan) {
+        t.index[v] = t.next;
+        t.low[v] = t.next;
+        t.next += 1;
+        t.stack.push(v);
+        t.on[v] = true;
+        for &w in &adj[v] {
+            if t.index[w] == usize::MAX {
+                visit(w, adj, t);
+                t.low[v] = t.low[v].min(t.low[w]);
+            } else if t.on[w] {
+                t.low[v] = t.low[v].min(t.index[w]);
+            }
+        }
+        if t.low[v] == t.index[v] {
+            let mut comp = Vec::new();
+            while let Some(w) = t.stack.pop() {
+                t.on[w] = false;
+                comp.push(w);
+                if w == v {
+                    break;
+                }
+            }
+            if comp.len() > 1 {
+                t.comps.push(comp);
+            }
+        }
+    }
+    let n = nodes.len();
+    let mut t = Tarjan {
+        index: vec![usize::MAX; n],
+        low: vec![0; n],
+        on: vec![false; n],
+        stack: Vec::new(),
+        next: 0,
+        comps: Vec::new(),
+    };
+    for v in 0..n {
+        if t.index[v] == usize::MAX {
+            visit(v, &adj, &mut t);
+        }
+    }
+    let mut out = Vec::new();
+    let comps = t.comps;
+    for c in comps {
+        let mut names: Vec<String> = c.iter().map(|&i| nodes[i].join("/")).collect();
+        names.sort();
+        out.push(names);
+    }
+    out
+}
+
+#[test]
+fn the_bearing_files_import_each_other_without_a_circle() {
+    let g = graph();
+    let found = circles(&g, "bearing");
+    assert!(found.is_empty(), "import circles inside bearing/: {found:#?}");
+    // The check sees the imports it should: the stages import the equilibrium, and nothing in bearing/ is
+    // imported by the report folder (the bottom of bearing/).
+    let stages_eq = g[&vec!["bearing".to_string(), "stages".into(), "equilibrium".into()]]
+        .contains(&vec!["bearing".to_string(), "equilibrium".into()]);
+    assert!(stages_eq, "the graph misses a known import");
+    for (m, tos) in &g {
+        if m.starts_with(&["bearing".to_string(), "report".into()]) {
+            for t in tos {
+                assert!(
+                    !t.starts_with(&["bearing".to_string()])
+                        || t.starts_with(&["bearing".to_string(), "report".into()]),
+                    "{} imports {}",
+                    m.join("/"),
+                    t.join("/")
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_checker_finds_a_circle_and_an_upward_import() {
+    // Two files that import each other, and a model file importing the app: both found.
+    let mut g: BTreeMap<Module, BTreeSet<Module>> = BTreeMap::new();
+    let m = |s: &str| -> Module { s.split('/').map(str::to_string).collect() };
+    g.insert(m("bearing/a"), [m("bearing/b")].into());
+    g.insert(m("bearing/b"), [m("bearing/a")].into());
+    assert_eq!(circles(&g, "bearing"), vec![vec!["bearing/a".to_string(), "bearing/b".to_string()]]);
+    assert!(layer(&m("app/x")) > layer(&m("model/y")));
+    let paths =
+        named_paths(&m("bearing/x"), "use crate::bearing::{a::B, c};\nuse super::d::E;\npub(super) fn f() {}\n");
+    assert_eq!(paths, vec![m("bearing/a/B"), m("bearing/c"), m("bearing/d/E")]);
+}
