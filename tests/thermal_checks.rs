@@ -132,3 +132,20 @@ fn thermal_loop_stops_at_its_budgets() {
         other => panic!("expected the time budget, got {other:?}"),
     }
 }
+
+/// The case key `thermal.max_iterations` is the loop's budget: a whole solve through the stages stops at it
+/// and names it; the default lets the same case converge.
+#[test]
+fn the_iteration_budget_is_a_case_key() {
+    use tiltpad::bearing::report::error::{Budget, Iteration};
+    use tiltpad::bearing::{solve_case, SolveError};
+    let set = ["mesh.fidelity=\"preview\"", "thermal.max_iterations=10"];
+    match solve_case(&common::case("fillon-a-tehd.toml", &set)) {
+        Err(SolveError::BudgetExceeded { what: Iteration::Thermal, budget: Budget::Iterations(10), .. }) => {}
+        other => {
+            panic!("expected the budget of 10, got {:?}", other.map(|s| s.thermal.map(|t| t.report.outer_iterations)))
+        }
+    }
+    let s = solve_case(&common::case("fillon-a-tehd.toml", &["mesh.fidelity=\"preview\""])).unwrap();
+    assert!(s.thermal.unwrap().report.outer_iterations > 10);
+}

@@ -260,6 +260,8 @@ pub struct Thermal {
     /// (else the supply temperature).
     pub housing_expansion_per_k: f64,
     pub housing_temperature_c: Option<f64>,
+    /// Outer iterations the THD loop may take.
+    pub max_iterations: usize,
 }
 
 /// The pad arc the levels' circumferential counts are set for (the 60–80° pads of the shipped

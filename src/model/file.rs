@@ -388,4 +388,7 @@ pub struct ThermalFile {
     /// Housing temperature.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub housing_temperature_c: Option<f64>,
+    /// Outer-iteration budget of the THD loop.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_iterations: Option<usize>,
 }

@@ -88,6 +88,7 @@ impl ThermalInputs {
             reference_temperature_c: _,
             housing_expansion_per_k: _,
             housing_temperature_c: _,
+            max_iterations: _, // kept whole below
         } = thermal;
         // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
         let pad_elastic = (*pad_expansion_per_k != 0.0)
@@ -149,7 +150,7 @@ impl Stage for ThermalStage {
             None => {
                 let start = if cold { None } else { self.warm.get(&inputs.solids.films).cloned() };
                 let warm = start.is_some();
-                Running { run: ThdRun::new(model, tm, &case, ThermalParams::default(), start.as_deref()), warm }
+                Running { run: ThdRun::new(model, tm, &case, ThermalParams::of(&case), start.as_deref()), warm }
             }
         };
         let state = match running.run.step(model, tm, &case, cancel) {

@@ -47,7 +47,10 @@ pub const PLAIN_RELAXATION: f64 = 0.4;
 /// tolerance takes about 100 more: a budget of 100 stopped such loops short by construction (Fillon A at
 /// S = 0.1: 20 of the convergence map's points converge in 102–224 iterations). A loop that converges
 /// within 100 is unchanged.
-pub const DEFAULT_MAX_ITERATIONS: usize = 300;
+pub const DEFAULT_MAX_ITERATIONS: usize = match crate::key!("thermal.max_iterations").default {
+    crate::model::schema::Fallback::Count(n) => n,
+    _ => panic!("thermal.max_iterations has a count for its default"),
+};
 /// Halvings of a temperature update whose viscosity field has no equilibrium.
 pub const MAX_BACKTRACKS: usize = 6;
 /// Default time budget of the thermal loop [s]: about a hundred times what a THD solve of a shipped case
@@ -96,6 +99,14 @@ pub struct ThermalParams {
     /// smooth; [`Stabilisation::SupgCrosswind`] lags its capturing term by one outer iteration and can stall
     /// the loop in a ~1e-3 limit cycle).
     pub stabilisation: Stabilisation,
+}
+
+impl ThermalParams {
+    /// The defaults, with the case's iteration budget (`thermal.max_iterations`).
+    #[must_use]
+    pub fn of(case: &Case) -> Self {
+        Self { max_iterations: case.thermal.max_iterations, ..Self::default() }
+    }
 }
 
 impl Default for ThermalParams {

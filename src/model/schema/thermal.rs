@@ -7,7 +7,7 @@ use super::Widget::{Choice, Optional};
 use super::{Fallback, KeySpec, TEMPERATURE};
 use crate::model::error::Range;
 use crate::model::file::{CaseFile, PadFilmBcFile, ThermalModelKind};
-use crate::units::{CELSIUS, ONE, PPM_PER_K, W_PER_M2_K, W_PER_M_K};
+use crate::units::{CELSIUS, COUNT, ONE, PPM_PER_K, W_PER_M2_K, W_PER_M_K};
 
 type Key = KeySpec;
 
@@ -113,4 +113,10 @@ pub(super) const KEYS: &[Key] = &[
         .edit(Thermal, "Housing temperature", Optional(1))
         .when(thd)
         .meaning("TEHD: temperature of the housing and pivots, for their growth (thermal.housing_expansion_ppm_per_k)."),
+    Key::integer("thermal.max_iterations", COUNT, 10, 100_000)
+        .typical(100.0, 1000.0)
+        .default(Fallback::Count(300))
+        .edit(Thermal, "Iteration budget", Optional(0))
+        .when(thd)
+        .meaning("Outer iterations (equilibrium, temperatures, viscosity update) the THD loop may take before it stops and says it did not converge. Shipped cases converge in 10–60; points near touchdown or with lightly loaded pads can need a few hundred. A loop stopped by this budget names it in its error: raise it there."),
 ];
