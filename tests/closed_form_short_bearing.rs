@@ -1,4 +1,4 @@
-//! Plain 360° bearing against the infinitely short bearing (Ocvirk) closed forms (validation.md §2):
+//! Plain 360° bearing against the infinitely short bearing (Ocvirk) closed forms (docs/REFERENCES.md §2):
 //! `D ω µ L³ / (8 c² W) = (1−ε²)² / (ε sqrt(16ε² + π²(1−ε²)))`, `tan φ = π sqrt(1−ε²) / (4ε)`.
 //!
 //! The finite-length solution differs from the short-bearing limit by O((L/D)²): at L/D = 0.1 the

@@ -1,4 +1,4 @@
-//! THD points of the convergence map that used to spend the thermal loop's iteration budget (issue 8): each
+//! THD points of the convergence map that used to spend the thermal loop's iteration budget: each
 //! must now converge with its balances checked (the map's own classification: force, pad and mass
 //! residuals; here also the energy balance and the loop's own viscosity tolerance) or end in a physical error
 //! (where the test says it must converge, a physical error fails too).

@@ -1,4 +1,4 @@
-//! The equilibrium on the loads that used to fail (issue 8): load on a pad of a four-pad bearing, pads that
+//! The equilibrium on the loads that used to fail: load on a pad of a four-pad bearing, pads that
 //! float, every pad floating at the start, soft pivots under a heavy load, the pivot's transverse
 //! coordinate, and a bounded slice of the convergence map (`tiltpad convergence-map` runs the whole map;
 //! docs/VALIDATION.md has its table).
@@ -29,7 +29,7 @@ fn converged(case_file: &str, set: &[&str]) -> Solution {
     s
 }
 
-/// The issue's reproduction: Someya's bearing with the load on a pad (315°) at 3955 N failed with "line
+/// A reported failure, reproduced: Someya's bearing with the load on a pad (315°) at 3955 N failed with "line
 /// search found no decrease". It converges; the two pads beside the loaded one carry load, the opposite
 /// pads float and are reported, and the load is balanced.
 #[test]

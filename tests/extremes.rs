@@ -1,4 +1,4 @@
-//! Numerical stability at the extremes (issue 5): each configuration converges — and then passes the
+//! Numerical stability at the extremes: each configuration converges — and then passes the
 //! conservation and sanity checks — or, where the physics says it cannot, fails with the physical error it
 //! must (touchdown; no stiffness along the load); no NaN, no panic, no hang (the solver's iteration counts
 //! are bounded and asserted).

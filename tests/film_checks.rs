@@ -162,7 +162,7 @@ fn bearing_flows_are_consistent() {
 }
 
 /// Central differences of the film force converge to the analytic stiffness at second order in the step
-/// (model.md §7: "show convergence with step size"), here on a tilting pad's moment and journal force.
+/// (docs/MODEL.md §7: "show convergence with step size"), here on a tilting pad's moment and journal force.
 #[test]
 fn finite_differences_converge_to_analytic_stiffness() {
     let case = common::case("fillon-a.toml", &["mesh.fidelity=\"preview\""]);

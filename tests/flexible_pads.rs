@@ -1,4 +1,4 @@
-//! Flexible pads (model.md §5–§7): bending modes as pad coordinates in the equilibrium and the coefficients.
+//! Flexible pads (docs/MODEL.md §5–§7): bending modes as pad coordinates in the equilibrium and the coefficients.
 //!
 //! - With `physics.pad_modes = 0` nothing changes (same coordinates, same numbers as a case without the key).
 //! - Each retained mode is one more coordinate per tilting pad; the full coefficient matrices grow by them.

@@ -1,6 +1,6 @@
 //! Fillon, Bligoud & Frêne, "Experimental study of tilting-pad journal bearings — comparison with
-//! theoretical thermoelastohydrodynamic results", ASME J. Tribology 114 (1992) — bearing A (validation.md §3),
-//! as modelled in the thesis' Publication 3 (Table 1; model.md §13): four pads, load between pads, 4000 rpm,
+//! theoretical thermoelastohydrodynamic results", ASME J. Tribology 114 (1992) — bearing A (docs/REFERENCES.md §3),
+//! as modelled in the thesis' Publication 3 (Table 1; docs/MODEL.md §13): four pads, load between pads, 4000 rpm,
 //! 10 kN. Measured maximum pad surface temperature 76.5 °C; Fillon's TEHD model 72.9 °C. Publication 3 computes
 //! the shaft temperature as the mean film temperature and reports about 52 °C.
 //!
@@ -84,7 +84,7 @@ fn fillon_a_temperatures_rise_with_speed() {
     }
 }
 
-/// One model for all speeds that meets both of the issue's criteria (docs/THERMAL.md, "Where the heat goes"):
+/// One model for all speeds that meets both Fillon criteria (docs/THERMAL.md, "Where the heat goes"):
 /// TEHD with the film–pad conduction coupled (BC3) instead of BC1's adiabatic film, every other input as in
 /// `fillon-a-tehd.toml` (the shipped `fillon-a-tehd-bc3.toml`), nothing changed per speed. The pad's hottest point rises with speed by more than the
 /// measured 20 K from 1000 to 4000 rpm (24.4 K on the standard mesh) and is within 5 °C of the measured 76.5 °C

@@ -1,8 +1,8 @@
-//! Someya, Journal-Bearing Databook (1988/89), as transcribed in validation.md §1: isothermal, laminar,
+//! Someya, Journal-Bearing Databook (1988/89), as transcribed in docs/REFERENCES.md §1: isothermal, laminar,
 //! Reynolds cavitation, rigid pads, frictionless pivots. Non-dimensional: `S = µ N L D / W (R/Cp)²`,
 //! `K̄ = K Cp / W`, `B̄ = B ω Cp / W`, x along the load, y 90° ahead in the direction of rotation.
 //!
-//! What holds and is asserted (tolerances of the issue):
+//! What holds and is asserted (tolerances set for this comparison):
 //! - Four-pad LBP (§1.1, arc 80°), rows S ≤ 1.59: E within 3 %, K̄xx = K̄yy and B̄xx = B̄yy within 5 %, zero
 //!   cross-coupling — except the entries listed in [`FOUR_PAD_EXCEPTIONS`], skipped by name with their
 //!   mesh-converged deviation (a −4…−6 % bias of K̄ for E = 0.6–0.9, insensitive to pad inertia; E 3.9 % low
@@ -49,7 +49,7 @@ const TWO_GROOVE: [[f64; 11]; 9] = [
     [0.0315, 0.900, 22.7, 13.8, 5.76, 1.24, 1.72, 10.6, 2.03, 2.03, 0.846],
 ];
 
-/// Entries of §1.1 (S, quantity) outside the issue's tolerance, with the measured deviation (standard and
+/// Entries of §1.1 (S, quantity) outside the asserted tolerance, with the measured deviation (standard and
 /// reference meshes agree within 0.3 %). Not asserted; reported in docs/VALIDATION.md.
 const FOUR_PAD_EXCEPTIONS: [(f64, &str, &str); 5] = [
     (1.59, "E", "−3.9 %"),

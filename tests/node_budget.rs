@@ -1,4 +1,4 @@
-//! Bounded memory (issue 8): the node budget `mesh.max_nodes` is checked from the case alone, before any mesh
+//! Bounded memory: the node budget `mesh.max_nodes` is checked from the case alone, before any mesh
 //! is built, and counts exactly what the solver then allocates; the orifice operators are sparse.
 
 mod common;

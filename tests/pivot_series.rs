@@ -1,4 +1,4 @@
-//! Series-spring check (issue 9, model.md §5): a pad on a pivot of radial stiffness `k_p` in series with its
+//! Series-spring check (docs/MODEL.md §5): a pad on a pivot of radial stiffness `k_p` in series with its
 //! film.
 //!
 //! ## The formula
@@ -19,7 +19,7 @@
 //! through `Z_f = K_f + iωC_f`. The statics behave the same way: the pivot gives way by `ξ₀ = W / k_p` and
 //! the journal sinks by as much, so the film — and with it `Z_f` — is the rigid-pivot film. The two solves
 //! below are independent nonlinear equilibria; the check is that the flexible one's reduced stiffness and
-//! damping are the series combination of the rigid one's — within 1 % as issue 9 asks, and in fact to round-off.
+//! damping are the series combination of the rigid one's — within the required 1 %, and in fact to round-off.
 
 mod common;
 
@@ -90,7 +90,7 @@ fn pivot_spring_in_series_with_the_film() {
         // The spring matters: the series impedance is well below the film's in magnitude (its real part
         // need not be: where ωC_f > K_f, Re Z_f² < 0 and Re Z grows as k_p falls — at ω = 2Ω here).
         assert!(series_yy.norm() < 0.9 * zf[1][1].norm());
-        // Issue 9 asks for 1 %; the two solves share the film state exactly (see above), so the formula holds
+        // The requirement is 1 %; the two solves share the film state exactly (see above), so the formula holds
         // to the solver's round-off (measured ≈ 1e-14): asserted at 1e-9.
         assert!(ek.abs() < 1e-9 && ec.abs() < 1e-9, "yy: K {ek:.3e}, C {ec:.3e}");
         assert!(ekx.abs() < 1e-9 && ecx.abs() < 1e-9, "xx: K {ekx:.3e}, C {ecx:.3e}");

@@ -1,4 +1,4 @@
-//! Property-based test over random case files, valid and invalid (issue 5): reading never panics, a rejected
+//! Property-based test over random case files, valid and invalid: reading never panics, a rejected
 //! case names a key that one of its overrides set (or made inconsistent), and an accepted case either solves to finite, balanced results or fails with a typed
 //! error — never NaN, never a panic.
 

@@ -1,4 +1,4 @@
-//! SUPG benchmarks (validation.md §4; model.md §11).
+//! SUPG benchmarks (docs/REFERENCES.md §4; docs/MODEL.md §11).
 //!
 //! - Skew advection on the unit square: Hughes, Mallet & Mizukami, "A new finite element formulation for
 //!   computational fluid dynamics: II. Beyond SUPG", CMAME 54 (1986), after Brooks & Hughes, CMAME 32 (1982).

@@ -1,4 +1,4 @@
-//! Thesis trends of the thermal model on the industrial compressor bearing (Publications 1–2; model.md §12,
+//! Thesis trends of the thermal model on the industrial compressor bearing (Publications 1–2; docs/MODEL.md §12,
 //! §13): THD gives a higher eccentricity and lower reduced stiffness and damping than the isothermal model
 //! (at the supply temperature); leading-edge injection at 20–40 bar lowers the average film temperature.
 //! Every THD solve here must close its energy balance to round-off and converge.

@@ -1,4 +1,4 @@
-//! Mesh convergence of the thermal model (model.md §11), on Fillon bearing A (validation.md §3).
+//! Mesh convergence of the thermal model (docs/MODEL.md §11), on Fillon bearing A (docs/REFERENCES.md §3).
 //!
 //! - Pad conduction through the thickness (BC3, where the pad and film are coupled): the maximum pad
 //!   temperature against the number of graded element layers, measured order.

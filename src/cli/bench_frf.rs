@@ -14,7 +14,7 @@ use crate::bearing::frf::model::band;
 use crate::bearing::{NoCancel, Stages};
 use crate::model::load_case;
 
-/// The target of issue 10: 400 frequencies of all FRFs after the equilibrium.
+/// The target: 400 frequencies of all FRFs after the equilibrium.
 const TARGET_MS: f64 = 20.0;
 
 fn median(mut v: Vec<f64>) -> f64 {

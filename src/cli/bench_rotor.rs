@@ -17,7 +17,7 @@ use crate::model::load_case;
 use crate::model::rotor::{BearingSupport, Rotor, DEFAULT_SHAFT_MODES};
 use crate::rotor::analysis::{run, AnalysisParams, AnalysisResult};
 
-/// The target of issue 11: 50 speeds, bearings included, at preview fidelity.
+/// The target: 50 speeds, bearings included, at preview fidelity.
 const TARGET_S: f64 = 2.0;
 const SPEEDS: &str = "1000:13000:50";
 /// Modes compared per speed.

@@ -1,4 +1,4 @@
-//! `tiltpad frf`: the controllable bearing's frequency responses over a band (model.md §8, §9) — G1, G2,
+//! `tiltpad frf`: the controllable bearing's frequency responses over a band (docs/MODEL.md §8, §9) — G1, G2,
 //! G3, G per port and force component, and with a rig the calibrated-shaker chain — as CSV and JSON.
 
 use std::path::{Path, PathBuf};

@@ -23,12 +23,12 @@
 //!   equals the element's extent along `a` for rectangles and stays meaningful on distorted quads);
 //! - element Péclet number `Pe = |a| h_e / (2D)`;
 //! - `τ = h_e / (2|a|) · ξ(Pe)`, `ξ(Pe) = coth Pe − 1/Pe` (0 for pure diffusion, → 1 for pure advection);
-//!   with linear elements in 1-D this makes the scheme nodally exact (validation.md §4);
+//!   with linear elements in 1-D this makes the scheme nodally exact (docs/REFERENCES.md §4);
 //! - reaction-dominated limit: `τ ≤ 1/c` (where the reaction time is shorter than the advection time across
 //!   the element, the streamline perturbation must not exceed it).
 //!
 //! ## Two additions that plain SUPG needs on the skew-advection benchmark
-//! SUPG is not monotone: on the Hughes–Mallet–Mizukami test (validation.md §4) it overshoots by ~40 % in the
+//! SUPG is not monotone: on the Hughes–Mallet–Mizukami test (docs/REFERENCES.md §4) it overshoots by ~40 % in the
 //! Dirichlet *outflow* boundary layers and undershoots by ~5 % across the internal layer. Hence:
 //! - **Outflow boundary parameter** (after Knobloch, ETNA 32, 2008): on an element with an edge on a Dirichlet
 //!   outflow boundary (outward normal n, a·n > 0), τ is at least the value that makes the scheme nodally exact

@@ -13,7 +13,7 @@
 //!
 //! Film grid (`VTK_QUAD` cells, one per film element, every pad in one piece): point data
 //! `pressure_pa`, `film_thickness_m`, `viscosity_pa_s`, `cavitated` (0/1), `pad`, the mean film velocity
-//! `mean_velocity_m_s` (a 3-vector tangent to the surface: `v̄ = q/h`, model.md §3a) and, from the thermal
+//! `mean_velocity_m_s` (a 3-vector tangent to the surface: `v̄ = q/h`, docs/MODEL.md §3a) and, from the thermal
 //! model, `film_temperature_c` and `pad_surface_temperature_c`. Pad grid (`VTK_HEXAHEDRON` cells between
 //! the solid's layers): `pad_temperature_c` (thermal model), `pad`, and for flexible pads (also isothermal)
 //! the mechanical displacement vector `pad_displacement_m` (Σ q_i ψ_i of the retained modes, bearing frame; the

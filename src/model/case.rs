@@ -216,12 +216,12 @@ pub struct Physics {
     pub cavitation: Cavitation,
     /// Film thickness below which an equilibrium counts as touchdown [m].
     pub touchdown_film_m: f64,
-    /// Bending modes per tilting pad beyond the rigid tilt (pseudo-modal pad flexibility, model.md §5);
+    /// Bending modes per tilting pad beyond the rigid tilt (pseudo-modal pad flexibility, docs/MODEL.md §5);
     /// 0 = rigid pads.
     pub pad_modes: usize,
 }
 
-/// Film–pad heat exchange (model.md §3).
+/// Film–pad heat exchange (docs/MODEL.md §3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum PadFilmBc {

@@ -315,7 +315,7 @@ pub enum ThermalModelKind {
     Thd,
 }
 
-/// Heat exchange between the film and the pad's film-side surface (model.md §3).
+/// Heat exchange between the film and the pad's film-side surface (docs/MODEL.md §3).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "lowercase")]
 pub enum PadFilmBcFile {

@@ -1,5 +1,5 @@
 //! `[hydraulics]`: the controllable bearing's servovalve, its ports and injection lines, and the test rig
-//! (model.md §8, §9) — the file form, its validation and the SI form the frequency responses read.
+//! (docs/MODEL.md §8, §9) — the file form, its validation and the SI form the frequency responses read.
 //!
 //! ```toml
 //! [hydraulics]            # supply_pressure_bar, return_pressure_bar

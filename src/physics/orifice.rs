@@ -5,7 +5,7 @@
 //!
 //! `v_inj(s, z) = g(s, z) (p_inj − p) / (4 µ_inj l0)`,  `g = d0²/4 − (s − s0)² − (z − z0)²` inside, 0 outside,
 //!
-//! which enters the Reynolds equation as `3 g (p − p_inj)/(µ_inj l0)` (model.md §2). With a uniform film
+//! which enters the Reynolds equation as `3 g (p − p_inj)/(µ_inj l0)` (docs/MODEL.md §2). With a uniform film
 //! pressure over the hole, `∫ g dS = π d0⁴/32` and the flow is `q = π d0⁴ (p_inj − p) / (128 µ_inj l0)`.
 
 use std::f64::consts::PI;

@@ -1,4 +1,4 @@
-//! Steady heat conduction in one pad (model.md §4).
+//! Steady heat conduction in one pad (docs/MODEL.md §4).
 //!
 //! ## Equation and boundary conditions
 //! ```text

@@ -1,4 +1,4 @@
-//! Pseudo-modal reduction of a pad on its pivot (model.md §5).
+//! Pseudo-modal reduction of a pad on its pivot (docs/MODEL.md §5).
 //!
 //! ## Problem
 //! ```text

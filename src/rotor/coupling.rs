@@ -3,7 +3,7 @@
 //! ```text
 //! M_s ü + (C_s + Ω G + C_b) u̇ + (K_s + K_b) u = f,   u = [shaft coordinates…, appended pad coordinates…]
 //! ```
-//! A bearing at node n enters either with its **full** coefficients (model.md §7: `K`, `C`, `M` over the
+//! A bearing at node n enters either with its **full** coefficients (docs/MODEL.md §7: `K`, `C`, `M` over the
 //! journal x, y and every active pad coordinate): the journal block adds to node n's x, y; each pad
 //! coordinate is appended to `u` with its row of K, C, M and its couplings to node n's x, y — or with
 //! **reduced** 2×2 `K`, `C` (synchronous: condensed at the running speed Ω), added to node n's x, y only.

@@ -1,4 +1,4 @@
-//! The rotor–bearing system (model.md §10): a finite-element shaft with rigid disks on bearings.
+//! The rotor–bearing system (docs/MODEL.md §10): a finite-element shaft with rigid disks on bearings.
 //!
 //! ```text
 //! M ü + (C + Ω G) u̇ + K u = f(t),   u = [x, y, a, b per shaft node…, appended pad coordinates…]

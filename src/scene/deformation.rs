@@ -2,7 +2,7 @@
 //! unwrapped film-face displacement, the flexible and the rigid film thickness, and a gallery of the retained
 //! mode shapes with their frequencies.
 //!
-//! Mechanical deformation of a flexible pad (model.md §5): the solid's displacement is
+//! Mechanical deformation of a flexible pad (docs/MODEL.md §5): the solid's displacement is
 //! `v(x) = Σ_i q_i ψ_i(x)`, with `q_i` the solved amplitude of `PadDof::Mode(i)` and `ψ_i` the mode's nodal
 //! displacement (polar components u_r, u_θ, u_z per pad node, per unit coordinate). Its radial component on the
 //! film face is `u_m(s, z) = Σ_i q_i φ_i(s, z)` ([`crate::bearing::solution::PadResult::elastic_displacement_m`];

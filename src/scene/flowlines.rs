@@ -1,4 +1,4 @@
-//! Flowlines of the film's mean velocity on a pad (model.md §3a).
+//! Flowlines of the film's mean velocity on a pad (docs/MODEL.md §3a).
 //!
 //! ## What is integrated
 //! The film's mean (across-thickness) velocity is `v̄ = q / h` with the flow rates per unit width

@@ -73,7 +73,7 @@ pub struct BearingOutline {
 }
 
 /// The scales of a drawing: the film exaggeration and the pressure drawn at a third of the radius. A view
-/// that locks them passes them back ([`bearing_outline_with`]) so two pictures compare (issue: without the
+/// that locks them passes them back ([`bearing_outline_with`]) so two pictures compare (otherwise the
 /// lock the exaggeration is chosen per case, and the pressure scale per solution).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct OutlineScales {

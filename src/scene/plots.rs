@@ -2,7 +2,7 @@
 //!
 //! The reduced 2×2 journal coefficients (rows and columns x, y of the bearing frame) as series against
 //! the excitation-frequency ratio ω/Ω (one equilibrium, dynamic condensation of the pad coordinates at each
-//! ω; model.md §7) or against the running speed (one equilibrium per speed, synchronous or at the case's
+//! ω; docs/MODEL.md §7) or against the running speed (one equilibrium per speed, synchronous or at the case's
 //! ω/Ω). Display units: stiffness in MN/m, damping in kN·s/m.
 
 use crate::bearing::solution::coefficients::{FullCoefficients, ReducedCoefficients};

@@ -2,7 +2,7 @@
 //!
 //! One table ([`COLUMNS`]): a column's name and how it is taken from a [`Solution`]. `None` is an empty
 //! cell: temperatures of an isothermal solve, the Sommerfeld number of an unloaded journal. Flows are
-//! whole-bearing flows (model.md §2: leading edges in, trailing edges and sides out, orifices in),
+//! whole-bearing flows (docs/MODEL.md §2: leading edges in, trailing edges and sides out, orifices in),
 //! coefficients the reduced 2×2 ones at the case's excitation ratio (rows and columns x, y).
 
 use crate::bearing::Solution;

@@ -265,7 +265,7 @@ impl Counts {
 }
 
 /// Failures next to a converged point at the same load (one direction step either side): the ones the
-/// issue calls unexplained.
+/// map counts as unexplained.
 #[must_use]
 pub fn failures_beside_converged<'a>(points: &'a [MapPoint], spec: &MapSpec) -> Vec<&'a MapPoint> {
     let step = spec.direction_step_deg;

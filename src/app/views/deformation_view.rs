@@ -127,7 +127,7 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
         ui.label(RichText::new("The pads of this case are rigid").heading());
         ui.label(
             "Set physics.pad_modes to 1–3 (Physics in the editor) to give each tilting pad its lowest bending modes \
-             on the pivot (a 3-D finite-element pad reduced to pseudo-modes, model.md §5), or a pad expansion \
+             on the pivot (a 3-D finite-element pad reduced to pseudo-modes, docs/MODEL.md §5), or a pad expansion \
              coefficient with the THD model for its thermal growth; this view then shows the deformed pads, the \
              film they make and the mode shapes. The shipped cases compressor-bearing-flexible and fillon-a-tehd \
              show it.",

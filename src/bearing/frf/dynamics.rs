@@ -1,5 +1,5 @@
 //! Frequency responses of the controllable bearing: servovalve → injection lines → nozzles → film → pads
-//! and journal, linearised about the static equilibrium (model.md §8, §9).
+//! and journal, linearised about the static equilibrium (docs/MODEL.md §8, §9).
 //!
 //! ## Equations (at s = i 2π f; one valve, ports k with sign σ_k, one line per port)
 //! Unknowns: the valve-end flows `q0`, the nozzle-end pressures `p` (the pads' injection pressures) and the
@@ -58,7 +58,7 @@ pub struct Hydraulics {
     pub truncation: Truncation,
 }
 
-/// The rig's rotor on its support: one vertical DOF (model.md §9).
+/// The rig's rotor on its support: one vertical DOF (docs/MODEL.md §9).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rig {
     /// Effective mass of rotor and tilting frame [kg].
@@ -112,7 +112,7 @@ pub struct FrfPoint {
     pub g: [C64; 2],
 }
 
-/// The calibrated-shaker chain at one frequency (model.md §9), all per volt of control signal except H.
+/// The calibrated-shaker chain at one frequency (docs/MODEL.md §9), all per volt of control signal except H.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShakerPoint {
     pub frequency_hz: f64,
@@ -308,9 +308,9 @@ mod tests {
     /// The first line mode seen through the coupled chain, at the unloaded pad's port (its nozzle discharges
     /// nearly freely, so the line is close to closed–open): 470 Hz for this oil-only line (quarter-wave
     /// 471.3 Hz; measured peak 470 Hz) and, with 1 % air at 5 bar absolute (β_air = 1.4 p), near 100 Hz
-    /// (quarter-wave 99.6 Hz; measured 100 Hz): validation.md §5's 470 → ~110 Hz.
+    /// (quarter-wave 99.6 Hz; measured 100 Hz): docs/REFERENCES.md §5's 470 → ~110 Hz.
     ///
-    /// Not reproduced: the issue expects the air to *damp* the mode too. Here the friction's share of the
+    /// Not reproduced: the expectation that the air *damps* the mode too. Here the friction's share of the
     /// damping ratio, d/(2ω₁), grows 4.7×, but most of the clean line's damping comes from its terminations
     /// (the valve's K_c and the nozzle's restriction), whose share falls with the line's characteristic
     /// impedance ρc₀/A: the half-power damping ratio measured 0.13 (clean) → 0.07 (air), and the peak over

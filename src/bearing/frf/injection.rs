@@ -16,7 +16,7 @@
 //! injection pressure (no perturbation).
 //!
 //! ## Active force (dynamic condensation with a load vector)
-//! With the full coefficients `Z(s) = K + s C + s² M` (K = −∂Q/∂u plus structure, model.md §7) and a set of
+//! With the full coefficients `Z(s) = K + s C + s² M` (K = −∂Q/∂u plus structure, docs/MODEL.md §7) and a set of
 //! *held* coordinates `h` (the journal, when a load cell holds it) and *free* ones `f` (the pads, and the
 //! journal where it moves), the free coordinates obey `Z_ff u_f = B_f p`, and the force on the held ones is
 //!
@@ -159,7 +159,7 @@ pub(crate) mod tests {
 
     /// G3 at zero frequency: the condensed static response equals the finite difference of the film force
     /// between two full static solves (journal held at the equilibrium position, pads re-equilibrated) at
-    /// p_inj ± δ. Measured 4.5e-6 (y; x vanishes by symmetry on both paths) against the 1 % the issue allows.
+    /// p_inj ± δ. Measured 4.5e-6 (y; x vanishes by symmetry on both paths) against the 1 % allowed.
     #[test]
     fn active_force_at_zero_frequency_is_the_static_difference() {
         let p0 = 40.0;

@@ -1,7 +1,7 @@
 //! Dynamic coefficients: full stiffness, damping and inertia over journal and pad coordinates, and their
 //! reduction to the journal at an excitation frequency.
 //!
-//! Full matrices, size `2 + Σ pad dofs` (model.md §7): `K = K_film + K_structural`, `C = C_film`, `M` the pads'
+//! Full matrices, size `2 + Σ pad dofs` (docs/MODEL.md §7): `K = K_film + K_structural`, `C = C_film`, `M` the pads'
 //! rigid-body inertia (zero on the journal block, which belongs to the rotor). The film parts come from the
 //! analytic perturbation of each pad's film at the converged equilibrium.
 //!

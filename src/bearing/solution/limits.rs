@@ -141,11 +141,11 @@ mod tests {
     use super::*;
     use crate::model::limits::LimitsFile;
 
-    /// The issue's example: h_min 6.6 µm, T_max 132 °C, p_max 24 MPa pass without a word today. A real THD
+    /// An example: h_min 6.6 µm, T_max 132 °C, p_max 24 MPa, values that once passed without a word. A real THD
     /// solve of the compressor bearing is within the default limits; with the three values set on it, each
     /// is flagged with its value and limit, and the others are not.
     #[test]
-    fn the_issues_example_is_flagged_by_the_default_limits() {
+    fn an_example_over_three_limits_is_flagged_by_the_default_limits() {
         let mut s = crate::bearing::stages::registry::compressor_preview(&["thermal.model=\"thd\""]);
         let limits = Limits::default();
         assert_eq!(limits.max_reynolds, crate::bearing::solution::regime::LAMINAR_REYNOLDS);

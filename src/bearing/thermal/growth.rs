@@ -1,5 +1,5 @@
 //! Thermal growth of the pads and the journal, fed back into the films inside the THD loop (TEHD,
-//! model.md §5–§7).
+//! docs/MODEL.md §5–§7).
 //!
 //! ## Equations
 //! ```text

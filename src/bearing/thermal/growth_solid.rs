@@ -1,4 +1,4 @@
-//! The pad solid of the thermal growth (TEHD, model.md §5–§7; used by [`crate::bearing::thermal::growth`]): the pad's 3-D
+//! The pad solid of the thermal growth (TEHD, docs/MODEL.md §5–§7; used by [`crate::bearing::thermal::growth`]): the pad's 3-D
 //! temperature strains it, and its film-face radial displacement opens the film.
 //!
 //! ## Equations

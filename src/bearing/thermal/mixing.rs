@@ -1,6 +1,6 @@
 //! The grooves between pads and the journal: the conditions that couple the pads' thermal problems.
 //!
-//! ## Inlet mixing (model.md §3)
+//! ## Inlet mixing (docs/MODEL.md §3)
 //! In the groove ahead of pad k, the oil arriving hot is the previous pad's trailing-edge outflow `Q_te`
 //! (at its flow-weighted temperature) plus any back-flow out of pad k's own leading edge. A fraction λ of it
 //! (capped at the leading-edge inflow `Q_in`) enters pad k; fresh oil at the supply temperature makes up the

@@ -1,5 +1,5 @@
 //! Thermohydrodynamic (THD) equilibrium: the static equilibrium and the thermal fields, iterated until the
-//! viscosity field converges (model.md §6). This file holds the thermal model and its data (per-pad systems,
+//! viscosity field converges (docs/MODEL.md §6). This file holds the thermal model and its data (per-pad systems,
 //! parameters, report); the outer loop is [`run`] ([`ThdRun`]).
 //!
 //! ## Loop

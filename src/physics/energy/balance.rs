@@ -1,4 +1,4 @@
-//! The energy balance of one pad's film (model.md §12: friction power = heat carried away by the oil + heat
+//! The energy balance of one pad's film (docs/MODEL.md §12: friction power = heat carried away by the oil + heat
 //! conducted out).
 //!
 //! Every term is integrated independently of the assembled system:
@@ -6,7 +6,7 @@
 //! ```text
 //! mechanical power in  P = U ∫ (θ µ U/h + (h/2) ∂p/∂s) dA     journal shear (film fraction θ)
 //!                        + ∫ p v_inj dA                         pressure work of the injected oil
-//!                        + ∫ (p v_inj + (4/3) µ v_inj²/h) dA    explicit injection terms of model.md §3
+//!                        + ∫ (p v_inj + (4/3) µ v_inj²/h) dA    explicit injection terms of docs/MODEL.md §3
 //! heat to the oil      H = ρ c_p Σ_edge nodes o_j (T_j − T_ref)  (Reynolds-consistent nodal flows)
 //!                        + ρ c_p Σ_interior o_j (T_j − T_ref)   (flows into/out of ruptured zones, FilmHeat doc)
 //!                        − ρ c_p Σ_j [∫ v⁺ N_j (T_inj − T_ref) + ∫ v⁻ N_j (T_j − T_ref)]

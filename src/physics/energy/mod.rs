@@ -1,4 +1,4 @@
-//! The oil-film energy equation on one pad (model.md §3), stabilised with SUPG.
+//! The oil-film energy equation on one pad (docs/MODEL.md §3), stabilised with SUPG.
 //!
 //! ## Equation
 //! Steady, temperature `T(s, z)` averaged across the film, with the film flow per unit width
@@ -11,15 +11,15 @@
 //! v_inj = g (p_inj − p)/(4 µ_inj l0)                                                  (orifice.rs)
 //! ```
 //!
-//! Choices, each stated because model.md leaves them open:
+//! Choices, each stated because the equation leaves them open (docs/MODEL.md §3.1):
 //! - **Conduction** in conservative form `∇·(κ h ∇T)` (the film-integrated conductive flux is `−κ h ∇T`);
-//!   model.md's `κ h ∇²T` differs by `κ ∇h·∇T`, negligible (and the conservative form keeps the balance).
+//!   the thesis' `κ h ∇²T` differs by `κ ∇h·∇T`, negligible (and the conservative form keeps the balance).
 //! - **Injection**: the enthalpy term uses `v_inj⁺ = max(v_inj, 0)` and the pipe conduction term acts only
 //!   where oil is injected: where the film drains into the hole (`v_inj < 0`) the oil leaves at the film
 //!   temperature, which the advective form already accounts for. `p v_inj` and `(4/3) µ v_inj²/h` are kept
-//!   as model.md writes them for both signs. Note that `Φ` already dissipates the injected oil's pressure
+//!   as the thesis writes them, for both signs. Note that `Φ` already dissipates the injected oil's pressure
 //!   energy (`∫ h³/(12µ)|∇p|² dA = U ∫ (h/2) ∂p/∂s dA + ∫ p v_inj dA` exactly), so the explicit `p v_inj`
-//!   counts that work a second time; it is kept because model.md specifies it, and reported separately.
+//!   counts that work a second time; it is kept because the thesis' equation has it, and reported separately.
 //! - **Cavitated zones** (`cavitated_film = "striated"`): the oil flows as striations. Along each axial row,
 //!   downstream of the rupture (thickness `h_r` there, the rupture placed between the last full-film node
 //!   and the first cavitated one by the pressure's approach to zero, [`FilmEnergy::film_fraction`]), the
@@ -28,7 +28,7 @@
 //!   per-area term of the film (shear heating, conduction, the capacity flux through `h_oil = θ h`, the
 //!   exchange with pad and journal) is scaled by θ. With `"full_film"` θ ≡ 1, as in the thesis.
 //!
-//! ## Heat exchange with pad and journal, `S_loss` (model.md §3; [`Exchange`])
+//! ## Heat exchange with pad and journal, `S_loss` (docs/MODEL.md §3; [`Exchange`])
 //! - BC1: `S_loss = 0` (adiabatic film; the pad takes the film temperature).
 //! - BC2: `S_loss = θ H (T − T_pad)`.
 //! - BC3 (Knight & Barrett, corrected parabola): `T(y) = T_pad + 2(3T − T_j − 2T_pad) y/h + 3(T_j − 2T + T_pad)(y/h)²`
@@ -143,7 +143,7 @@ impl Exchange {
     }
 }
 
-/// The Knight & Barrett profile across the film (model.md §3, corrected): temperature at `y/h = eta` for
+/// The Knight & Barrett profile across the film (docs/MODEL.md §3, corrected): temperature at `y/h = eta` for
 /// mean film temperature `t`, pad surface `t_pad` (y = 0) and journal `t_j` (y = h).
 #[must_use]
 pub fn knight_barrett(t: f64, t_pad: f64, t_j: f64, eta: f64) -> f64 {
@@ -489,7 +489,7 @@ mod tests {
             + 8.0 / 18.0 * knight_barrett(t, tp, tj, 0.5)
             + 5.0 / 18.0 * knight_barrett(t, tp, tj, 0.5 + g);
         assert!((mean - t).abs() < 1e-12, "mean {mean} = T");
-        // The thesis' printed form gives −T_j at y = h (the inconsistency model.md corrects).
+        // The thesis' printed form gives −T_j at y = h (the misprint docs/MODEL.md §3.5 corrects).
         let printed =
             |eta: f64| tp + 2.0 * (3.0 * t - 2.0 * tj - 2.0 * tp) * eta + 3.0 * (tj - 2.0 * t + tp) * eta * eta;
         assert!((printed(1.0) - tj).abs() > 1.0);

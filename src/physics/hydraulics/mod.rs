@@ -1,4 +1,4 @@
-//! Hydraulics of the controllable bearing (model.md §8): the servovalve, the injection lines and the
+//! Hydraulics of the controllable bearing (docs/MODEL.md §8): the servovalve, the injection lines and the
 //! nozzles that couple them to the film, linearised about the static state and evaluated at a complex
 //! frequency `s` (the frequency responses use `s = i 2π f`).
 //!

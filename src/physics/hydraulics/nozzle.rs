@@ -1,7 +1,7 @@
 //! The nozzles at the lines' far ends: the flow into the film, linearised about the static state.
 //!
 //! ## Equation
-//! The flow through the orifices `o` of port `k`'s pads (model.md §2, §8; thesis eq. 2.31) is
+//! The flow through the orifices `o` of port `k`'s pads (docs/MODEL.md §2, §8; thesis eq. 2.31) is
 //! `q_k = Σ_o ∫_S0 (p_k − p) g dS / (4 µ_inj l0)`, with the film pressure `p` depending on the port
 //! pressures, the bearing's coordinates `u` (journal and pads) and their velocities (squeeze). Linearised:
 //!

@@ -1,5 +1,5 @@
 //! One injection line between a valve port (x = 0) and a nozzle (x = l) (thesis §2.2.2 and Appendix C,
-//! model.md §8).
+//! docs/MODEL.md §8).
 //!
 //! ## Equations
 //! Flow `q(x, t)` and pressure `p(x, t)` in a line of area `A`, oil density `ρ`, wave speed `c0 = √(β/ρ)`,
@@ -22,7 +22,7 @@
 //! p(0) = p_l + (ρ/A) (∂/∂t + d) Σ γ_i c0/ω_i                                 (momentum integrated over the line)
 //! ```
 //!
-//! The thesis (eq. C.14) and model.md print the modal equation without the factor `2/l`; that form is not
+//! The thesis (eq. C.14) prints the modal equation without the factor `2/l`; that form is not
 //! dimensionally consistent (its right-hand side has one length too many) and delivers `l/2` times the valve
 //! flow at the nozzle in a steady state. With `2/l` the steady nozzle flow equals the port flow and the
 //! modal sum converges to the distributed solution below (tests).
@@ -187,7 +187,7 @@ mod tests {
     }
 
     /// The exact line's resonances with the nozzle end open are the quarter-wave frequencies
-    /// `(2i − 1) c0 / (4l)` (validation.md §5): the peaks of `|q_l/q0|` found by a golden-section search
+    /// `(2i − 1) c0 / (4l)` (docs/REFERENCES.md §5): the peaks of `|q_l/q0|` found by a golden-section search
     /// on the distributed solution lie within 0.5 % of them (measured: −2.8e-5 for the first, the laminar friction's shift; the test holds them to 1e-4).
     #[test]
     fn open_line_resonates_at_the_quarter_wave_frequencies() {
@@ -212,12 +212,12 @@ mod tests {
             // The modal model has its natural frequencies there by construction.
             assert!((ln.mode_frequency(i) / std::f64::consts::TAU / f_qw - 1.0).abs() < 1e-14);
         }
-        // validation.md §5: oil only, 700 mm: first mode near 470 Hz.
+        // docs/REFERENCES.md §5: oil only, 700 mm: first mode near 470 Hz.
         let f1 = c0 / (4.0 * ln.length);
         assert!((f1 / 470.0 - 1.0).abs() < 0.005, "first quarter-wave mode {f1} Hz");
     }
 
-    /// validation.md §5: about 1 % air at a few bar drops the 700 mm line's first mode near 110 Hz (measured 108.6 Hz at 5 bar gauge, polytropic 1.4).
+    /// docs/REFERENCES.md §5: about 1 % air at a few bar drops the 700 mm line's first mode near 110 Hz (measured 108.6 Hz at 5 bar gauge, polytropic 1.4).
     #[test]
     fn one_percent_air_drops_the_first_mode_near_110_hz() {
         let p_abs = 6e5; // 5 bar gauge

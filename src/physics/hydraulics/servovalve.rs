@@ -1,4 +1,4 @@
-//! The servovalve, linearised about the centred spool (thesis §2.2.1, model.md §8).
+//! The servovalve, linearised about the centred spool (thesis §2.2.1, docs/MODEL.md §8).
 //!
 //! ## Equations
 //! Spool (driven-flow) dynamics, with the spool position `x_V` measured in volts of command (the valve's

@@ -1,4 +1,4 @@
-//! Linear elasticity of a pad solid (model.md §5): stiffness and mass on the pad's 3-D mesh, supports, and
+//! Linear elasticity of a pad solid (docs/MODEL.md §5): stiffness and mass on the pad's 3-D mesh, supports, and
 //! static solutions.
 //!
 //! ## Equation and weak form
@@ -15,7 +15,7 @@
 //! without interpolation. Supports ([`Supports`]) tie each nodal component to the reduced unknowns:
 //! - fixed (clamped test beams; `u_z = 0` on the mid-plane of a half model),
 //! - rigid rotation about an axial line through a point P: the pivot patch moves as `u = δ ẑ × (x − P)`, with
-//!   one shared unknown δ (the pad's tilt) — model.md §5's pivot condition,
+//!   one shared unknown δ (the pad's tilt) — docs/MODEL.md §5's pivot condition,
 //! - free.
 //!
 //! The reduced matrices are `Tᵀ K T`, `Tᵀ M T` with `u = T q`, assembled directly into one sparse pattern

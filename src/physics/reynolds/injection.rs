@@ -1,4 +1,4 @@
-//! The film's linear response to the injection pressure (the influence fields of model.md §8).
+//! The film's linear response to the injection pressure (the influence fields of docs/MODEL.md §8).
 //!
 //! ## Equations
 //! The Reynolds equation is linear in the orifice entry pressures: with the converged factorisation `A`
