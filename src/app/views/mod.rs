@@ -7,7 +7,7 @@
 //!
 //! **Adding a view**: a new file here implementing [`View`] for a `Default` type, and its line in the
 //! list below. The workbench then shows its tab, solves what it needs while it is open, saves its settings,
-//! and `tests/workbench_ui.rs` snapshots it (`tests/snapshots/view_<id>.png`).
+//! and `tests/suite/workbench_ui.rs` snapshots it (`tests/snapshots/view_<id>.png`).
 //!
 //! Parts of views and panels that are not tabs: [`compare_panel`], [`limits_view`], [`results_panel`],
 //! [`rotor_edit`].

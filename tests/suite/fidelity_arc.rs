@@ -4,7 +4,7 @@
 //! tilting pad. Checked on the plain 360° bearing of the short-bearing tests (L/D = 0.1, ε = 0.6, Reynolds
 //! cavitation) against a 720 × 48 mesh; shorter pads keep the level's counts.
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::solve_case;
 use tiltpad::model::load_case;

@@ -3,7 +3,7 @@
 //! residuals; here also the energy balance and the loop's own viscosity tolerance) or end in a physical error
 //! (where the test says it must converge, a physical error fails too).
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::{solve_case, ThermalParams};
 use tiltpad::model::LoadSpec;

@@ -1,6 +1,6 @@
 //! Every validation path: the error names the key, the value and the allowed range; nothing panics.
 
-mod common;
+use crate::common;
 
 use tiltpad::model::{load_case, CaseError};
 

@@ -5,7 +5,7 @@
 //! - Film mesh: the maximum film temperature at the three fidelity levels, measured order against the
 //!   reference mesh.
 
-mod common;
+use crate::common;
 
 fn pad_max(set: &[&str]) -> f64 {
     let s = common::solve("fillon-a.toml", set);

@@ -7,7 +7,7 @@
 //! range ε 0.1–0.8 is asserted at L/D = 0.05 (1 %), together with the measured second-order approach to the
 //! limit as L/D → 0.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

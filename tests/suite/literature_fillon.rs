@@ -7,7 +7,7 @@
 //! The case file holds the published thermal model (BC1, H∞ 100, pad κ 45, carry-over 0.85); nothing here is
 //! adjusted to the measurement.
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::Solution;
 

@@ -1,7 +1,7 @@
 //! Physical checks of the film and bearing solver: orifice flow, mass balance, symmetry, and the analytic
 //! perturbation against finite differences.
 
-mod common;
+use crate::common;
 
 use std::f64::consts::PI;
 

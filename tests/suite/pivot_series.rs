@@ -21,9 +21,7 @@
 //! below are independent nonlinear equilibria; the check is that the flexible one's reduced stiffness and
 //! damping are the series combination of the rigid one's — within the required 1 %, and in fact to round-off.
 
-mod common;
-
-use common::case;
+use crate::common::case;
 use nalgebra::Complex;
 use tiltpad::bearing::film::coordinates::{Coord, PadDof};
 use tiltpad::bearing::solution::coefficients::reduce;

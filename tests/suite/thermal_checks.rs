@@ -1,6 +1,6 @@
 //! Consistency checks of the thermal model's pieces against each other and against exact answers.
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams};
 use tiltpad::bearing::thermal::pad_system::PadThermal;

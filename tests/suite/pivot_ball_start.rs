@@ -9,9 +9,7 @@
 //! - The answer does not depend on the start: cold, and warm-started from the same bearing on rockers (top
 //!   pad loaded) and from a tenth of the load (every pad loaded), the equilibria agree.
 
-mod common;
-
-use common::case;
+use crate::common::case;
 use tiltpad::bearing::equilibrium::pivots::FLOOR;
 use tiltpad::bearing::report::warning::Warning;
 use tiltpad::bearing::{solve_case, NoCancel, Request, Solution, Stages};

@@ -16,9 +16,9 @@
 //! perpendicular-direction terms K̄yx, K̄yy, B̄xy, B̄yy are 5–50 % low for every groove width tried — the
 //! transcription does not give the groove geometry or supply condition that control them.
 
-mod common;
+use crate::common;
 
-use common::{rel, to_load_frame};
+use crate::common::{rel, to_load_frame};
 
 /// §1.1 rows: S, E, Kxx, Bxx (Kyy = Kxx, Byy = Bxx, cross terms 0).
 const FOUR_PAD: [(f64, f64, f64, f64); 12] = [

@@ -3,7 +3,7 @@
 //! must (touchdown; no stiffness along the load); no NaN, no panic, no hang (the solver's iteration counts
 //! are bounded and asserted).
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::report::warning::Warning;
 use tiltpad::bearing::{solve_case, EquilibriumParams, Solution, SolveError};

@@ -7,9 +7,7 @@
 //! - Thesis trend (Publication 2, conclusion 4): flexibility raises the synchronously reduced stiffness and
 //!   lowers the damping — checked on the compressor bearing.
 
-mod common;
-
-use common::{case, solve};
+use crate::common::{case, solve};
 use tiltpad::bearing::film::coordinates::{Coord, PadDof};
 use tiltpad::bearing::{solve_case, Solution};
 

@@ -2,7 +2,7 @@
 //! case names a key that one of its overrides set (or made inconsistent), and an accepted case either solves to finite, balanced results or fails with a typed
 //! error — never NaN, never a panic.
 
-mod common;
+use crate::common;
 
 use proptest::prelude::*;
 use tiltpad::bearing::solve_case;

@@ -6,7 +6,7 @@
 //!   the growth as well as in the viscosity, the journal grows by exactly α_j R (T_j − T_ref), the energy
 //!   balance still closes to round-off, and the closed film runs thinner and hotter than the rigid one.
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::report::warning::Warning;
 use tiltpad::bearing::Solution;

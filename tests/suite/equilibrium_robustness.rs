@@ -3,7 +3,7 @@
 //! coordinate, and a bounded slice of the convergence map (`tiltpad convergence-map` runs the whole map;
 //! docs/VALIDATION.md has its table).
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::report::warning::Warning;
 use tiltpad::bearing::{solve_case, Coord, EquilibriumParams, PadDof, Solution, SolveError};

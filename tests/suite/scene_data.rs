@@ -1,6 +1,6 @@
 //! Scene data from real solves, without any GPU or GUI: what the workbench's views draw.
 
-mod common;
+use crate::common;
 
 use tiltpad::scene::field::{common_range, FieldKind, PadMap};
 use tiltpad::scene::flowlines::{orifice_sites, pad_flowlines, End, FlowlineParams, Seed};

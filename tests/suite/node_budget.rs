@@ -1,7 +1,7 @@
 //! Bounded memory: the node budget `mesh.max_nodes` is checked from the case alone, before any mesh
 //! is built, and counts exactly what the solver then allocates; the orifice operators are sparse.
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::{solve_case, BearingModel, ThermalModel};
 use tiltpad::model::budget::{count, DEFAULT_MAX_NODES};

@@ -2,7 +2,7 @@
 //! standard output, errors on standard error, the schema, ROSS and CSV coefficients, and safe writes on a
 //! read-only directory and a full disk.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

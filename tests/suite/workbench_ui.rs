@@ -216,7 +216,7 @@ fn fidelity_group_shows_the_expected_error_and_time() {
 /// the thermal group in the results.
 #[test]
 fn film_temperature_view_of_a_thermal_solve() {
-    let mut h = solved_app(Some(include_str!("../cases/fillon-a.toml")), |app| {
+    let mut h = solved_app(Some(include_str!("../../cases/fillon-a.toml")), |app| {
         open_fields(app, |f| {
             f.field = FieldKind::FilmTemperature;
             f.pads = PadChoice::All;
@@ -237,7 +237,7 @@ fn film_temperature_view_of_a_thermal_solve() {
 /// orifice. With injection off, the orifice is a sink.
 #[test]
 fn flowlines_show_the_injection_source_and_the_sink() {
-    let rig = include_str!("../cases/test-rig.toml")
+    let rig = include_str!("../../cases/test-rig.toml")
         .replace("injection_pressure_bar = [10.0, 0.0]", "injection_pressure_bar = [17.0, 0.0]");
     let rig: &'static str = Box::leak(rig.into_boxed_str());
     let mut h = solved_app(Some(rig), |app| open_fields(app, |f| f.pads = PadChoice::All));
@@ -291,7 +291,7 @@ fn views_without_their_inputs_say_what_is_missing() {
 
 #[test]
 fn frf_view_shows_the_bode_plots_of_the_rig_and_its_limitations() {
-    let mut h = solved_app(Some(include_str!("../cases/test-rig-pub5.toml")), |app| app.open::<FrfView>());
+    let mut h = solved_app(Some(include_str!("../../cases/test-rig-pub5.toml")), |app| app.open::<FrfView>());
     h.run_steps(3);
     h.get_by_label_contains("Bode — 1000 rpm");
     h.get_by_label_contains("§6.3");
@@ -304,8 +304,9 @@ fn frf_view_shows_the_bode_plots_of_the_rig_and_its_limitations() {
 /// line (the FRF stage reads the ports' pads, so nothing is re-solved: the FRF model stays the same object).
 #[test]
 fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
-    let mut h =
-        solved_app_at([1400.0, 2600.0], Some(include_str!("../cases/test-rig-pub5.toml")), |app| app.open::<FrfView>());
+    let mut h = solved_app_at([1400.0, 2600.0], Some(include_str!("../../cases/test-rig-pub5.toml")), |app| {
+        app.open::<FrfView>()
+    });
     let model = h.state().shown.clone().unwrap().frf.expect("the FRF view asks for the FRF stage");
     h.get_by_label("Hydraulics (controllable bearing)").click();
     h.run_steps(2);
@@ -328,7 +329,7 @@ fn hydraulics_editor_rows_edit_the_lines_without_a_new_solve() {
 #[test]
 fn deformation_view_shows_the_loaded_pad_and_its_modes() {
     let text: &'static str =
-        include_str!("../cases/compressor-bearing-flexible.toml").replace("pad_modes = 1", "pad_modes = 2").leak();
+        include_str!("../../cases/compressor-bearing-flexible.toml").replace("pad_modes = 1", "pad_modes = 2").leak();
     let mut h = solved_app(Some(text), |app| app.open::<DeformationView>());
     h.run_steps(3);
     let s = h.state().shown.clone().unwrap().solution;
@@ -369,7 +370,7 @@ fn deformation_scale(h: &Harness<'_, WorkbenchApp>) -> String {
 /// Snapshot at 1280×720 with "Thermal" selected.
 #[test]
 fn deformation_view_switches_to_the_thermal_growth_of_a_tehd_solve_at_1280x720() {
-    let text: &'static str = include_str!("../cases/compressor-bearing-flexible.toml")
+    let text: &'static str = include_str!("../../cases/compressor-bearing-flexible.toml")
         .replace("fidelity = \"standard\"", "fidelity = \"preview\"")
         .replace(
             "model = \"isothermal\"",
@@ -896,7 +897,7 @@ fn exports_without_a_portal_ask_for_a_name_and_never_overwrite_silently() {
 #[test]
 fn the_field_selector_names_the_drawn_field_after_switching_to_an_isothermal_case() {
     let persisted = Persisted {
-        case_toml: Some(include_str!("../cases/fillon-a.toml").into()),
+        case_toml: Some(include_str!("../../cases/fillon-a.toml").into()),
         case_name: "test case".into(),
         case_saved: true,
         ..Persisted::default()

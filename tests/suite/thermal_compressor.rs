@@ -3,7 +3,7 @@
 //! (at the supply temperature); leading-edge injection at 20–40 bar lowers the average film temperature.
 //! Every THD solve here must close its energy balance to round-off and converge.
 
-mod common;
+use crate::common;
 
 use tiltpad::bearing::Solution;
 

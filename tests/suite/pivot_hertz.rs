@@ -10,9 +10,7 @@
 //! - With the THD model the pivot loads converge inside the thermal loop (one load step per outer
 //!   iteration): the converged state has the same two properties, on the converged viscosity field.
 
-mod common;
-
-use common::case;
+use crate::common::case;
 use tiltpad::bearing::equilibrium::pivots::FLOOR;
 use tiltpad::bearing::film::coordinates::{Coord, PadDof};
 use tiltpad::bearing::solution::coefficients::reduce;
