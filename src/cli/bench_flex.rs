@@ -152,7 +152,7 @@ fn layers_table(text: &str, repeats: usize) -> Result<String> {
     let mut md = format!(
         "\nPad layers at the standard film mesh ({} film nodes), against 8 layers with every layer in the growth solid \
          ({truth_ms:.0} ms): standard fidelity merges every two element layers into one of the growth solid (pad \
-         conduction keeps all; `bearing/tehd.rs`).\n\n\
+         conduction keeps all; `bearing/thermal/growth.rs`).\n\n\
          | pad layers | growth solid layers | time | growth | ε error | K error | C error | T_max error | h_min error |\n\
          |---|---|---|---|---|---|---|---|---|\n",
         truth.derived.film_nodes

@@ -8,7 +8,7 @@ use proptest::prelude::*;
 use tiltpad::bearing::solve_case;
 use tiltpad::model::{load_case, CaseError};
 
-/// The consistent flows of a converged solve balance to round-off (measured up to 3e-13 in tests/extremes.rs).
+/// The consistent flows of a converged solve balance to round-off (measured up to 3e-13 in tests/suite/extremes.rs).
 const MASS_BALANCE: f64 = 1e-12;
 
 /// Values a user might type: sensible, extreme, negative, non-finite.

@@ -1,5 +1,5 @@
 //! Thermal growth of the pads and the journal inside the THD loop (TEHD; docs/MODEL.md §5–§7,
-//! `src/bearing/tehd.rs`), on Fillon bearing A (docs/REFERENCES.md §3) at the preview mesh.
+//! `src/bearing/thermal/growth.rs`), on Fillon bearing A (docs/REFERENCES.md §3) at the preview mesh.
 //!
 //! - Zero expansion coefficients are the THD solve, bit for bit.
 //! - With steel pads (12 × 10⁻⁶/K) and journal (11 × 10⁻⁶/K) from a 20 °C assembly, the loop converges in

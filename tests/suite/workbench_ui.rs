@@ -579,7 +579,7 @@ fn wait_for_rotor(h: &mut Harness<'_, WorkbenchApp>) {
 /// The shipped compressor rotor, analysed once (its bearing cases at preview fidelity): the onset and the
 /// critical speeds as the view states them, and every tab. Choosing reduced coefficients starts a new
 /// analysis with them; that they overestimate the onset is checked through the library
-/// (`tests/rotor_compressor.rs`), so this test solves only once.
+/// (`tests/suite/rotor_compressor.rs`), so this test solves only once.
 #[test]
 fn rotor_view_analyses_the_compressor_rotor_and_shows_every_tab() {
     let mut h = solved_app(None, |app| app.open::<RotorView>());
