@@ -366,3 +366,63 @@ fn the_checker_finds_a_circle_and_an_upward_import() {
         named_paths(&m("bearing/x"), "use crate::bearing::{a::B, c};\nuse super::d::E;\npub(super) fn f() {}\n");
     assert_eq!(paths, vec![m("bearing/a/B"), m("bearing/c"), m("bearing/d/E")]);
 }
+
+/// The paths of `src/` and `tests/` files named in the docs, the README, the shipped cases and the code's
+/// comments, e.g. `src/bearing/thermal/run.rs` or `bearing/solution/regime.rs` (relative to `src/`).
+fn named_files(text: &str) -> Vec<String> {
+    const ROOTS: &[&str] =
+        &["src/", "tests/", "bearing/", "physics/", "model/", "mesh/", "rotor/", "study/", "scene/", "app/", "cli/"];
+    let mut found = Vec::new();
+    for (start, _) in text.match_indices(".rs") {
+        let head = &text[..start];
+        let from = head.rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '/')).map_or(0, |i| i + 1);
+        let path = &text[from..start + 3];
+        let after = text[start + 3..].chars().next();
+        if after.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_') {
+            continue;
+        }
+        if ROOTS.iter().any(|r| path.starts_with(r)) {
+            found.push(path.to_string());
+        }
+    }
+    found
+}
+
+fn files_under(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            files_under(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs" || e == "md" || e == "toml") {
+            out.push(path);
+        }
+    }
+}
+
+#[test]
+fn every_file_the_docs_and_comments_name_exists() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut texts = vec![root.join("README.md")];
+    for dir in ["docs", "cases", "src", "tests"] {
+        files_under(&root.join(dir), &mut texts);
+    }
+    let mut missing = Vec::new();
+    for file in &texts {
+        let text = std::fs::read_to_string(file).unwrap();
+        for named in named_files(&text) {
+            let exists = root.join(&named).exists() || root.join("src").join(&named).exists();
+            if !exists {
+                missing.push(format!("{}: {named}", file.strip_prefix(root).unwrap().display()));
+            }
+        }
+    }
+    assert!(texts.len() > 100, "read {} files", texts.len());
+    assert!(missing.is_empty(), "named files that do not exist:\n{}", missing.join("\n"));
+}
+
+#[test]
+fn the_path_finder_reads_paths_in_prose() {
+    let prose =
+        "the loop (`src/bearing/thermal/run.rs`; bearing/solution/regime.rs) and tests/suite/main.rs, not foo.rsx";
+    assert_eq!(named_files(prose), ["src/bearing/thermal/run.rs", "bearing/solution/regime.rs", "tests/suite/main.rs"]);
+}
