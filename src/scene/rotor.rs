@@ -72,12 +72,14 @@ pub fn mode_curves(result: &AnalysisResult, rotor: &Rotor, ranks: usize) -> Mode
         frequency_hz.push(Curve { name: name.clone(), whirl: t.whirl, points: f });
         log_dec.push(Curve { name, whirl: t.whirl, points: d });
     }
-    let first = result.speeds.first().map_or(0.0, |s| RPM.from_si(s.point.speed_rad_s));
-    let last = result.speeds.last().map_or(0.0, |s| RPM.from_si(s.point.speed_rad_s));
+    // The synchronous line: a whirl at the running speed (rpm on the axis, Hz up the plot).
+    let sync = |w: f64| [RPM.from_si(w), HZ_ANGULAR.from_si(w)];
+    let first = result.speeds.first().map_or(0.0, |s| s.point.speed_rad_s);
+    let last = result.speeds.last().map_or(0.0, |s| s.point.speed_rad_s);
     ModeCurves {
         frequency_hz,
         log_dec,
-        one_x: [[first, first / 60.0], [last, last / 60.0]],
+        one_x: [sync(first), sync(last)],
         critical: result
             .critical_speeds
             .iter()
