@@ -21,7 +21,7 @@
 //! law of the wall for the eddy viscosity, the same closure the eddy diffusivity of the energy equation uses
 //! below (one turbulence model for pressure and heat), and its linearisation of the pressure-driven flow
 //! about the Couette flow is exact for the small pressure gradients of a journal bearing. It is also the
-//! model of the large tilting-pad analyses this module is checked against (Taniguchi et al. 1990). A test
+//! model of Taniguchi et al.'s (1990) analysis of large tilting-pad bearings. A test
 //! integrates Reichardt's law across the film and recovers the three fits within their few per cent.
 //!
 //! ## Transition band
@@ -29,7 +29,7 @@
 //! `k = 12 + γ (k_turbulent − 12)`, `C_f = 1 + γ (C_f,turbulent − 1)` with the intermittency
 //! `γ = t² (3 − 2t)`, `t = (Re − Re_start)/(Re_end − Re_start)` clipped to [0, 1] (continuous with a
 //! continuous derivative, so the equilibrium's Newton iteration sees a smooth film). Below the band γ = 0 and
-//! every coefficient is laminar exactly. `physics.turbulence = "turbulent"` takes γ = 1 everywhere.
+//! every coefficient is laminar exactly. `physics.turbulence = "on"` takes γ = 1 everywhere.
 //!
 //! ## Energy equation: eddy diffusivity
 //! Reichardt's eddy viscosity `ε_m/ν = κ [y⁺ − δ⁺ tanh(y⁺/δ⁺)]` (κ = 0.4, δ⁺ = 10.7, y⁺ from the nearer wall

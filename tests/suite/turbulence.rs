@@ -232,3 +232,44 @@ fn turbulent_adiabatic_slider_heats_as_the_quadrature_and_conserves_energy() {
     }
     assert!(rises[1] > 1.5 * rises[0], "turbulence heats more: {rises:?}");
 }
+
+/// The large five-pad bearing in transition (`cases/large-5pad-transition.toml`, isothermal, preview mesh):
+/// below the band (1800 rpm, Re ≤ 939) `auto` is the laminar solution to the last bit; past it the friction
+/// power rises faster than Ω² (the turbulent bearings' trend: the Couette shear factor grows as Re^0.94),
+/// while the laminar model's rises more slowly than Ω² (the journal's eccentricity falls with speed).
+#[test]
+fn large_bearing_power_rises_faster_than_speed_squared_past_transition() {
+    let solve = |mode: &str, rpm: f64| {
+        crate::common::solve(
+            "large-5pad-transition.toml",
+            &[
+                "mesh.fidelity=\"preview\"",
+                "thermal.model=\"isothermal\"",
+                &format!("physics.turbulence=\"{mode}\""),
+                &format!("operating.speed_rpm={rpm}"),
+            ],
+        )
+    };
+    let (off, auto) = (solve("off", 1800.0), solve("auto", 1800.0));
+    assert!(auto.regime.reynolds_max < 1000.0 && auto.regime.transitional_fraction == 0.0);
+    assert_eq!(off.friction_power_w, auto.friction_power_w);
+    assert_eq!(off.coordinates, auto.coordinates);
+    assert_eq!(off.full, auto.full);
+    let exponent = |mode: &str| {
+        let (a, b) = (solve(mode, 3600.0), solve(mode, 6000.0));
+        let n = (b.friction_power_w / a.friction_power_w).ln() / (6000.0_f64 / 3600.0).ln();
+        println!(
+            "{mode}: friction {:.1} kW at 3600 rpm, {:.1} kW at 6000 rpm: P ∝ Ω^{n:.2}; Re max {:.0}, {:.0} % of the \
+             film past the band's start at 6000 rpm",
+            a.friction_power_w / 1e3,
+            b.friction_power_w / 1e3,
+            b.regime.reynolds_max,
+            100.0 * b.regime.transitional_fraction
+        );
+        n
+    };
+    let (n_off, n_auto) = (exponent("off"), exponent("auto"));
+    // Measured 1.88 (laminar) and 2.62 (auto).
+    assert!(n_off < 2.0 && n_auto > 2.4, "exponents: laminar {n_off:.2}, auto {n_auto:.2}");
+    assert!(solve("auto", 3600.0).report.warnings.iter().all(|w| !w.to_string().starts_with("turbulent film")));
+}
