@@ -406,24 +406,14 @@ impl PadFilm {
                 law.density, law.re_start, law.re_end
             )));
         }
-        let mut any = false;
         let u = inp.surface_speed;
-        let factors: Vec<[Factors; 4]> = self
-            .h
-            .qp
-            .iter()
-            .zip(&self.mu_qp)
-            .map(|(h, mu)| {
-                std::array::from_fn(|k| {
-                    let f = law.factors(law.reynolds(u, h[k], mu[k]));
-                    any |= f.gamma > 0.0;
-                    f
-                })
-            })
-            .collect();
-        if any {
-            self.turb_qp = factors;
+        let (h, mu) = (&self.h.qp, &self.mu_qp);
+        let re = |e: usize, k: usize| law.reynolds(u, h[e][k], mu[e][k]);
+        // A film below the band everywhere keeps the laminar path (and allocates nothing).
+        if !(0..h.len()).any(|e| (0..4).any(|k| law.intermittency(re(e, k)).0 > 0.0)) {
+            return Ok(());
         }
+        self.turb_qp.extend((0..h.len()).map(|e| std::array::from_fn(|k| law.factors(re(e, k)))));
         Ok(())
     }
 
