@@ -273,3 +273,55 @@ fn large_bearing_power_rises_faster_than_speed_squared_past_transition() {
     assert!(n_off < 2.0 && n_auto > 2.4, "exponents: laminar {n_off:.2}, auto {n_auto:.2}");
     assert!(solve("auto", 3600.0).report.warnings.iter().all(|w| !w.to_string().starts_with("turbulent film")));
 }
+
+/// The film's analytic linearisation with turbulent coefficients (the thickness derivative of `h³ G/µ`
+/// through `Re ∝ h`) equals central differences of the generalised forces, on every pad of the large
+/// bearing (turbulent everywhere with `on`; partly in the band with `auto`, whose smooth intermittency the
+/// derivative follows too).
+#[test]
+fn turbulent_linearisation_matches_finite_differences() {
+    use tiltpad::bearing::equilibrium::{solve_equilibrium, EquilibriumParams};
+    use tiltpad::bearing::{BearingModel, NoCancel, OperatingPoint};
+    for mode in ["on", "auto"] {
+        let case = crate::common::case(
+            "large-5pad-transition.toml",
+            &["mesh.fidelity=\"preview\"", "thermal.model=\"isothermal\"", &format!("physics.turbulence=\"{mode}\"")],
+        );
+        let mut model = BearingModel::new(&case).unwrap();
+        let op = OperatingPoint::isothermal(&case);
+        let eq = solve_equilibrium(&mut model, &op, EquilibriumParams::default(), None, &NoCancel).unwrap();
+        let mut worst = 0.0_f64;
+        for k in 0..model.pads.len() {
+            let inp = op.film_inputs(k);
+            let q0 = model.local(k, &eq.u);
+            let pm = &mut model.pads[k];
+            pm.film.set_coordinates(&q0).unwrap();
+            pm.film.solve(&inp, true).unwrap();
+            assert!(mode != "on" || pm.film.turbulence_qp().is_some(), "pad {k} has turbulent points");
+            let lin = pm.film.linearize(&inp);
+            let step = |j: usize| if j == 2 { 1e-7 } else { 1e-4 * case.bearing.assembled_clearance_m };
+            for j in 0..q0.len() {
+                let mut f = [vec![], vec![]];
+                for (side, sign) in [1.0, -1.0].iter().enumerate() {
+                    let mut q = q0.clone();
+                    q[j] += sign * step(j);
+                    pm.film.set_coordinates(&q).unwrap();
+                    pm.film.solve(&inp, true).unwrap();
+                    f[side] = pm.film.generalized_forces();
+                }
+                for (i, (fp, fm)) in f[0].iter().zip(&f[1]).enumerate() {
+                    let fd = -(fp - fm) / (2.0 * step(j));
+                    let scale = lin.stiffness[(i, i)].abs().max(lin.stiffness[(j, j)].abs());
+                    let err = (fd - lin.stiffness[(i, j)]).abs() / scale;
+                    worst = worst.max(err);
+                    assert!(
+                        err < 1e-4,
+                        "{mode} pad {k} K[{i}][{j}]: analytic {:.6e} vs FD {fd:.6e}",
+                        lin.stiffness[(i, j)]
+                    );
+                }
+            }
+        }
+        println!("{mode}: worst |K − K_FD| {worst:.2e} of the diagonal");
+    }
+}
