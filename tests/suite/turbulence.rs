@@ -122,7 +122,7 @@ fn midplane_error(film: &PadFilm, xs: &[f64], ps: &[f64]) -> (f64, f64, f64) {
     for i in 0..g.grid.n_cols() {
         let k = g.grid.node(i, 0);
         let x = R * g.node_theta[k];
-        let j = ((x / B) * (xs.len() - 1) as f64).round() as usize;
+        let j = xs.partition_point(|&v| v < x - 1e-9 * B).min(xs.len() - 1);
         assert!((xs[j] - x).abs() < 1e-9 * B, "node on the quadrature grid");
         err = err.max((film.p[k] - ps[j]).abs() / peak);
         fe_peak = fe_peak.max(film.p[k]);
