@@ -37,7 +37,7 @@ pub(super) fn rel(a: f64, b: f64) -> f64 {
 }
 
 /// Median wall time of `repeats` complete solves [ms], and the last solution.
-fn timed(case: &Case, repeats: usize) -> Result<(f64, Solution)> {
+pub(super) fn timed(case: &Case, repeats: usize) -> Result<(f64, Solution)> {
     let mut times = Vec::with_capacity(repeats);
     let mut last = None;
     for _ in 0..repeats {
@@ -51,7 +51,7 @@ fn timed(case: &Case, repeats: usize) -> Result<(f64, Solution)> {
     Ok((times[times.len() / 2], sol))
 }
 
-fn with_mesh(text: &str, set: &[String]) -> Result<Case> {
+pub(super) fn with_mesh(text: &str, set: &[String]) -> Result<Case> {
     Ok(load_case(text, set)?.1)
 }
 
@@ -86,7 +86,7 @@ pub(super) fn t_rise(s: &Solution) -> Option<f64> {
 }
 
 /// Levels of one case (with extra overrides) against its reference-fine solution.
-fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Vec<LevelRow>> {
+pub(super) fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Vec<LevelRow>> {
     let (nx, nz, no) = Fidelity::Reference.elements();
     let mut fine_set = extra.to_vec();
     fine_set.extend([
@@ -261,7 +261,7 @@ fn svg_plot(rows: &[LevelRow]) -> String {
     s
 }
 
-fn pct(x: f64) -> String {
+pub(super) fn pct(x: f64) -> String {
     if x == 0.0 {
         "—".into()
     } else {
@@ -369,6 +369,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_frf::section(root, repeats)?);
     md.push_str(&super::bench_flex::section(root, repeats.min(3))?);
     md.push_str(&super::bench_rotor::section(root, repeats.min(3))?);
+    md.push_str(&super::bench_turb::section(root, repeats.min(3))?);
     let _ = writeln!(
         md,
         "\n## Notes\n\n\

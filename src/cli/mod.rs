@@ -12,6 +12,7 @@ mod bench_batch;
 mod bench_flex;
 mod bench_frf;
 mod bench_rotor;
+mod bench_turb;
 mod coefficients;
 mod convergence_map;
 pub mod frf;
@@ -231,7 +232,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`, `flex`, `rotor`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -415,7 +416,10 @@ pub fn run(command: Command) -> Result<()> {
                 "## Rotor–bearing analysis",
                 &bench_rotor::section(&root, repeats.max(1))?,
             ),
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor"),
+            Some("turbulence") => {
+                bench::replace_section(&root, "## Turbulence", &bench_turb::section(&root, repeats.clamp(1, 3))?)
+            }
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor, turbulence"),
         },
     }
 }

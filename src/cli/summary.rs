@@ -39,6 +39,22 @@ pub fn summary_text(s: &Solution) -> String {
         L_PER_MIN.from_si(s.flows_m3_per_s.orifices_in),
         L_PER_MIN.from_si(s.flows_m3_per_s.sides_out)
     );
+    let g = &s.regime;
+    let _ = writeln!(
+        o,
+        "  film Reynolds number ρUh/µ up to {:.0} (pad {}); turbulence {}: {:.0} % of the film past the transition band's start {:.0}, {:.0} % past its end {:.0}",
+        g.reynolds_max,
+        g.reynolds_pad,
+        match g.turbulence {
+            crate::model::Turbulence::Off => "off (laminar)",
+            crate::model::Turbulence::Auto => "auto",
+            crate::model::Turbulence::On => "on",
+        },
+        100.0 * g.transitional_fraction,
+        g.transition_reynolds[0],
+        100.0 * g.turbulent_fraction,
+        g.transition_reynolds[1]
+    );
     let _ = writeln!(o, "  pad   tilt [mrad]  h_min [µm]  p_max [MPa]  Fx [N]      Fy [N]");
     for p in &s.pads {
         let _ = writeln!(

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-pub use super::file::{CavitatedFilmFile as CavitatedFilm, Cavitation, Fidelity, ThermalModelKind};
+pub use super::file::{CavitatedFilmFile as CavitatedFilm, Cavitation, Fidelity, ThermalModelKind, Turbulence};
 
 /// A complete, validated case in SI units.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -219,6 +219,10 @@ pub struct Physics {
     /// Bending modes per tilting pad beyond the rigid tilt (pseudo-modal pad flexibility, docs/MODEL.md §5);
     /// 0 = rigid pads.
     pub pad_modes: usize,
+    /// Laminar or turbulent film coefficients (docs/MODEL.md §2.7).
+    pub turbulence: Turbulence,
+    /// Laminar–turbulent transition band of the local film Reynolds number ρ U h / µ: [start, end].
+    pub transition_reynolds: [f64; 2],
 }
 
 /// Film–pad heat exchange (docs/MODEL.md §3).

@@ -290,6 +290,20 @@ pub enum Cavitation {
     Gumbel,
 }
 
+/// Film flow regime: laminar coefficients everywhere, turbulent above the transition band, or turbulent
+/// everywhere (docs/MODEL.md §2.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Turbulence {
+    /// Laminar: the laminar Reynolds and energy equations at every Reynolds number.
+    #[default]
+    Off,
+    /// Laminar below the transition band, Ng–Pan turbulent above it, blended inside it.
+    Auto,
+    /// Ng–Pan turbulent coefficients at every point of the film.
+    On,
+}
+
 /// `[physics]`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
@@ -303,6 +317,15 @@ pub struct PhysicsFile {
     /// Bending modes per tilting pad beyond the rigid tilt (pad flexibility); 0 = rigid pads.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_modes: Option<usize>,
+    /// `off` (laminar), `auto` (turbulent above the transition band) or `on` (turbulent everywhere).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub turbulence: Option<Turbulence>,
+    /// Local film Reynolds number where the transition band starts (laminar below).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub transition_reynolds_start: Option<f64>,
+    /// Local film Reynolds number where the transition band ends (fully turbulent above).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub transition_reynolds_end: Option<f64>,
 }
 
 /// Which film model: isothermal (one viscosity at `operating.film_temperature_c`) or thermohydrodynamic.

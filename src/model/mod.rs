@@ -26,7 +26,7 @@ pub mod shaft;
 
 pub use case::{
     Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad,
-    PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, ViscosityLaw,
+    PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, Turbulence, ViscosityLaw,
 };
 pub use error::CaseError;
 pub use file::CaseFile;

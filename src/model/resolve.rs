@@ -38,6 +38,8 @@ impl CaseFile {
             cavitation: self.physics.cavitation.unwrap_or_default(),
             touchdown_film_m: touchdown.value_in(self, self.physics.touchdown_film_um)?,
             pad_modes: key!("physics.pad_modes").count(self.physics.pad_modes)?,
+            turbulence: self.physics.turbulence.unwrap_or_default(),
+            transition_reynolds: resolve_transition(self)?,
         };
         let thermal = resolve_thermal(self)?;
         let hydraulics = self
@@ -60,6 +62,16 @@ impl CaseFile {
         super::budget::check(&case)?;
         Ok(case)
     }
+}
+
+/// The transition band: each end in its row's range, and the end above the start (a band upside down names
+/// the end key, its value and the interval the start leaves it).
+fn resolve_transition(f: &CaseFile) -> Result<[f64; 2], CaseError> {
+    let start = key!("physics.transition_reynolds_start").value(f.physics.transition_reynolds_start)?;
+    let end_row = key!("physics.transition_reynolds_end");
+    let end = end_row.value(f.physics.transition_reynolds_end)?;
+    Range::open_lo(start, super::schema::MAX_TRANSITION_REYNOLDS).check(end_row.key, end)?;
+    Ok([start, end])
 }
 
 fn inconsistent(key: impl Into<String>, reason: Inconsistency) -> CaseError {

@@ -3,6 +3,8 @@
 //! - [`orifice`]: the injection capillary (Hagen–Poiseuille profile, the `g(x, z)` weight).
 //! - [`reynolds`]: the modified Reynolds equation on one pad, with injection, cavitation (Gümbel or
 //!   Reynolds/Swift–Stieber complementarity), flows, friction and analytic perturbations.
+//! - [`turbulence`]: Ng–Pan turbulent coefficients of the Reynolds and energy equations, with the
+//!   laminar–turbulent transition band.
 //! - [`viscosity`]: the two-point exponential viscosity law.
 //! - [`energy`]: the film energy equation (SUPG) with injection terms and film–pad exchange, and its balance.
 //! - [`pad_elastic`]: linear elasticity of a pad solid (incompatible-mode hexahedra, pivot support, static
@@ -21,4 +23,5 @@ pub mod pad_conduction;
 pub mod pad_elastic;
 pub mod pad_modes;
 pub mod reynolds;
+pub mod turbulence;
 pub mod viscosity;

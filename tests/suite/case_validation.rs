@@ -284,3 +284,16 @@ fn defaults_and_units_come_from_the_key_table() {
     assert!((v.flow_pressure_coefficient - 0.012e-3 / 60.0 / 1e5).abs() < 1e-24);
     assert!((v.leakage_m3_s - 0.3e-3 / 60.0).abs() < 1e-18);
 }
+
+/// The transition band: each end in its range, the end above the start; a band upside down names the end
+/// key, its value and the interval the start leaves it.
+#[test]
+fn transition_band_upside_down() {
+    let e = err(&["physics.transition_reynolds_start=2000", "physics.transition_reynolds_end=1500"]);
+    assert_names(&e, "physics.transition_reynolds_end", &["1500", "(2000, 100000]"]);
+    let e = err(&["physics.transition_reynolds_start=0.5"]);
+    assert_names(&e, "physics.transition_reynolds_start", &["0.5", "[1, 100000]"]);
+    let e = err(&["physics.turbulence=\"sometimes\""]);
+    assert_eq!(e.key(), Some("physics.turbulence"), "{e}");
+    assert!(e.to_string().contains("sometimes"), "{e}");
+}

@@ -29,4 +29,5 @@ mod thermal_checks;
 mod thermal_compressor;
 mod thermal_convergence;
 mod thermal_slider;
+mod turbulence;
 mod workbench_ui;

@@ -166,3 +166,30 @@ fn hertz_pivots_converge_inside_the_thd_loop() {
     }
     assert!((t.t_max_film_c - tl.t_max_film_c).abs() < 1e-3, "T_max {} vs {}", t.t_max_film_c, tl.t_max_film_c);
 }
+
+/// The isothermal limit of THD with Hertz pivots: with a viscosity that does not depend on temperature
+/// (both points of the law at the case's 0.028 Pa·s) the thermal loop's film is the isothermal film, so its
+/// converged state must be the isothermal Hertz solution — the journal, every pad coordinate and every
+/// pivot load — to round-off (the loop stops after three outer iterations, when the Hertz secants have
+/// converged).
+#[test]
+fn hertz_thd_meets_the_isothermal_hertz_solution_in_the_isothermal_limit() {
+    let flat = "lubricant.viscosity2_pa_s=0.028";
+    let iso = solve_case(&case(CASE, &[PREVIEW, flat])).expect("isothermal Hertz");
+    let thd = solve_case(&case(CASE, &[PREVIEW, flat, "thermal.model=\"thd\""])).expect("THD Hertz");
+    let t = thd.thermal.as_ref().expect("thermal result");
+    assert!(t.report.converged, "{:?}", t.report.stop_reason);
+    let scale = iso.coordinates[0].hypot(iso.coordinates[1]);
+    let worst = iso.coordinates.iter().zip(&thd.coordinates).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+    eprintln!(
+        "THD {} outer iterations, {:?} pivot load steps; largest coordinate difference {worst:.3e} (journal {scale:.3e} m)",
+        t.report.outer_iterations, thd.report.pivot_load_iterations
+    );
+    for (k, (a, b)) in iso.pads.iter().zip(&thd.pads).enumerate() {
+        let (la, lb) = (a.pivot_contact.expect("state").load_n, b.pivot_contact.expect("state").load_n);
+        eprintln!("pad {k}: pivot load isothermal {la:.4} N, THD {lb:.4} N");
+        assert!((la - lb).abs() < 1e-8 * LOAD_N, "pad {k}: {la} vs {lb}");
+    }
+    // Measured 2.7e-18 m on a 2.9e-5 m journal displacement: the same film, to round-off.
+    assert!(worst < 1e-10 * scale, "coordinates differ by {worst:.3e} (journal {scale:.3e})");
+}

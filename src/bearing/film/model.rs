@@ -15,6 +15,7 @@ use crate::model::Cavitation;
 use crate::model::{Case, LoadSpec};
 use crate::physics::orifice::LocalOrifice;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm, Viscosity};
+use crate::physics::turbulence::TurbulenceLaw;
 
 use crate::bearing::film::coordinates::{DofMap, PadDof, PadStructure};
 use crate::bearing::film::flex::{pad_modes, ModeCache};
@@ -165,6 +166,8 @@ pub struct OperatingPoint {
     pub injection_pressure: Vec<f64>,
     pub injection_viscosity: f64,
     pub cavitation: Cavitation,
+    /// Laminar or turbulent film coefficients.
+    pub turbulence: TurbulenceLaw,
     pub load: LoadSpec,
     /// Film thickness below which an equilibrium is touchdown [m].
     pub touchdown_film: f64,
@@ -187,6 +190,7 @@ impl OperatingPoint {
             injection_pressure: o.injection_pressure_pa.clone(),
             injection_viscosity: law.at(o.injection_temperature_c),
             cavitation: case.physics.cavitation,
+            turbulence: turbulence_law(case),
             load: o.load,
             touchdown_film: case.physics.touchdown_film_m,
             held_pads: vec![false; case.bearing.pads.len()],
@@ -205,6 +209,14 @@ impl OperatingPoint {
             injection_pressure: self.injection_pressure[k],
             injection_viscosity: self.injection_viscosity,
             cavitation: self.cavitation,
+            turbulence: self.turbulence,
         }
     }
+}
+
+/// The turbulence law of a case's films (docs/MODEL.md §2.7).
+#[must_use]
+pub fn turbulence_law(case: &Case) -> TurbulenceLaw {
+    let [re_start, re_end] = case.physics.transition_reynolds;
+    TurbulenceLaw { mode: case.physics.turbulence, re_start, re_end, density: case.lubricant.density_kg_per_m3 }
 }

@@ -161,9 +161,9 @@ impl std::fmt::Display for Warning {
             ),
             Self::Turbulent { reynolds, pad, limit } => write!(
                 f,
-                "turbulent film: the film Reynolds number ρUh/µ reaches {reynolds:.0} (pad {pad}), past the laminar \
-                 limit of about {limit:.0}–1500; the laminar Reynolds equation used here underestimates friction \
-                 loss, temperature rise and stiffness"
+                "turbulent film: the film Reynolds number ρUh/µ reaches {reynolds:.0} (pad {pad}), past the \
+                 transition band's start {limit:.0}; the laminar Reynolds equation used here (physics.turbulence = \
+                 \"off\") underestimates friction loss, temperature rise and stiffness (\"auto\" models it)"
             ),
             Self::TaylorVortices { taylor, critical } => write!(
                 f,

@@ -238,7 +238,8 @@ pub fn assemble_solution(
     let attitude = if ecc > 1e-12 { wrap_deg((e[1].atan2(e[0]) - load_angle).to_degrees()) } else { 0.0 };
     let n_rev = op.speed_rad_s / TAU;
     let sommerfeld = (wmag > 1e-9).then(|| op.viscosity * n_rev * model.length * 2.0 * r / wmag * (r / cb).powi(2));
-    report.warnings.extend(crate::bearing::solution::regime::Regime::of(case, op.surface_speed, &pads).warnings());
+    let regime = crate::bearing::solution::regime::Regime::of(case, op.surface_speed, &pads);
+    report.warnings.extend(regime.warnings());
     let mut sol = Solution {
         title: case.title.clone(),
         eccentricity_ratio: ecc,
@@ -257,6 +258,7 @@ pub fn assemble_solution(
         reduced,
         coordinates: eq.u.clone(),
         report,
+        regime,
         derived: Derived {
             assembled_clearance_m: cb,
             pad_clearances_m: case.bearing.pads.iter().map(|p| p.clearance_m).collect(),

@@ -51,6 +51,7 @@ pub fn solution_json(s: &Solution) -> Value {
         "pads": pads,
         "coordinates": s.coordinates,
         "report": report_json(&s.report),
+        "regime": s.regime,
         "t_max_film_c": s.thermal.as_ref().map(|t| t.t_max_film_c),
         "t_max_pad_c": s.thermal.as_ref().and_then(|t| t.t_max_pad_c),
         "thermal": s.thermal.as_ref().map(thermal_json),

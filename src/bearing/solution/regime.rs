@@ -5,9 +5,12 @@
 //!
 //! ```text
 //! Re = ρ U h / µ           local film Reynolds number (U = Ω R, h and µ at each film node)
-//!                          laminar below ≈ 1000–1500 (journal bearings): above LAMINAR_REYNOLDS the
-//!                          film is turbulent and the laminar model underestimates friction loss,
-//!                          temperature rise and stiffness
+//!                          laminar below ≈ 1000–1500 (journal bearings): with physics.turbulence = "off",
+//!                          past the transition band's start (physics.transition_reynolds_start, default
+//!                          LAMINAR_REYNOLDS) the film is turbulent and the laminar model used there
+//!                          underestimates friction loss, temperature rise and stiffness (warned); with
+//!                          "auto" or "on" the film model is turbulent there (physics::turbulence), and the
+//!                          report gives the share of the film in and past the band
 //! Ta = Re √(h / R)         Taylor number: above 41.3 (Taylor, small-gap rotating cylinders) the
 //!                          Couette flow develops Taylor vortices, before turbulence
 //! h_min                    below ≈ 1 µm, the order of the combined roughness of journal and pad, the
@@ -22,7 +25,7 @@
 //! The caller passes the case, the surface speed and the pad fields of a solution; the result is plain data
 //! plus the warnings for the solve report.
 
-use crate::model::Case;
+use crate::model::{Case, Turbulence};
 
 use crate::bearing::report::warning::Warning;
 use crate::bearing::solution::result::PadResult;
@@ -39,11 +42,20 @@ pub const MIN_CLEARANCE_RATIO: f64 = 2e-4;
 pub const MAX_CLEARANCE_RATIO: f64 = 1e-2;
 
 /// The regime numbers of a solved film.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Regime {
     /// Largest local film Reynolds number ρ U h / µ, and its pad.
     pub reynolds_max: f64,
     pub reynolds_pad: usize,
+    /// The film model's turbulence setting (`physics.turbulence`) and the transition band [start, end].
+    pub turbulence: Turbulence,
+    pub transition_reynolds: [f64; 2],
+    /// Share of the film nodes whose local Reynolds number lies above the transition band's start (where the
+    /// film is turbulent or in transition; with `turbulence = "off"` the laminar model is used there all the
+    /// same, and the report warns).
+    pub transitional_fraction: f64,
+    /// Share of the film nodes above the band's end (fully turbulent).
+    pub turbulent_fraction: f64,
     /// Largest local Taylor number Re √(h/R).
     pub taylor_max: f64,
     /// Smallest film thickness [m].
@@ -64,19 +76,28 @@ impl Regime {
         let rho = case.lubricant.density_kg_per_m3;
         let r = case.bearing.journal_radius_m;
         let u = surface_speed.abs();
+        let [start, end] = case.physics.transition_reynolds;
         let mut out = Self {
             reynolds_max: 0.0,
             reynolds_pad: 0,
+            turbulence: case.physics.turbulence,
+            transition_reynolds: [start, end],
+            transitional_fraction: 0.0,
+            turbulent_fraction: 0.0,
             taylor_max: 0.0,
             h_min_m: f64::INFINITY,
             clearance_ratio: case.bearing.assembled_clearance_m / r,
             pivot_deflection_cb: 0.0,
             pivot_pad: 0,
         };
+        let (mut nodes, mut above_start, mut above_end) = (0_usize, 0_usize, 0_usize);
         for p in pads {
             let f = &p.field;
             for (&h, &mu) in f.film_thickness_m.iter().zip(&f.viscosity_pa_s) {
                 let re = rho * u * h / mu;
+                nodes += 1;
+                above_start += usize::from(re > start);
+                above_end += usize::from(re >= end);
                 if re > out.reynolds_max {
                     out.reynolds_max = re;
                     out.reynolds_pad = p.index;
@@ -90,6 +111,12 @@ impl Regime {
                 out.pivot_pad = p.index;
             }
         }
+        if nodes > 0 {
+            #[allow(clippy::cast_precision_loss)]
+            let share = |k: usize| k as f64 / nodes as f64;
+            out.transitional_fraction = share(above_start);
+            out.turbulent_fraction = share(above_end);
+        }
         out
     }
 
@@ -97,8 +124,12 @@ impl Regime {
     #[must_use]
     pub fn warnings(&self) -> Vec<Warning> {
         let mut w = Vec::new();
-        if self.reynolds_max > LAMINAR_REYNOLDS {
-            w.push(Warning::Turbulent { reynolds: self.reynolds_max, pad: self.reynolds_pad, limit: LAMINAR_REYNOLDS });
+        // With turbulence modelled (auto, on) the film past the band is what the model describes: no warning.
+        let start = self.transition_reynolds[0];
+        if self.reynolds_max > start {
+            if self.turbulence == Turbulence::Off {
+                w.push(Warning::Turbulent { reynolds: self.reynolds_max, pad: self.reynolds_pad, limit: start });
+            }
         } else if self.taylor_max > CRITICAL_TAYLOR {
             w.push(Warning::TaylorVortices { taylor: self.taylor_max, critical: CRITICAL_TAYLOR });
         }
@@ -126,6 +157,10 @@ mod tests {
         Regime {
             reynolds_max,
             reynolds_pad: 2,
+            turbulence: Turbulence::Off,
+            transition_reynolds: [LAMINAR_REYNOLDS, 1500.0],
+            transitional_fraction: 0.0,
+            turbulent_fraction: 0.0,
             taylor_max,
             h_min_m,
             clearance_ratio,
@@ -141,6 +176,12 @@ mod tests {
         let turbulent = text(regime(1001.0, 60.0, 20e-6, 1.5e-3).warnings());
         assert_eq!(turbulent.len(), 1, "{turbulent:?}");
         assert!(turbulent[0].starts_with("turbulent film") && turbulent[0].contains("1001 (pad 2)"), "{turbulent:?}");
+        // Modelled turbulence is no warning; the band's start is the limit.
+        for mode in [Turbulence::Auto, Turbulence::On] {
+            assert!(Regime { turbulence: mode, ..regime(1001.0, 60.0, 20e-6, 1.5e-3) }.warnings().is_empty());
+        }
+        let later = Regime { transition_reynolds: [1200.0, 1800.0], ..regime(1001.0, 30.0, 20e-6, 1.5e-3) };
+        assert!(later.warnings().is_empty());
         let taylor = text(regime(999.0, 41.4, 20e-6, 1.5e-3).warnings());
         assert!(taylor.len() == 1 && taylor[0].starts_with("Taylor vortices"), "{taylor:?}");
         let thin = text(regime(1.0, 0.1, 0.99e-6, 1.5e-3).warnings());

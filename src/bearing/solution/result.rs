@@ -226,6 +226,9 @@ pub struct Solution {
     /// Global coordinates at equilibrium ([e_x, e_y, pad coordinates…]), for warm starts.
     pub coordinates: Vec<f64>,
     pub report: SolveReport,
+    /// Flow regime: the local film Reynolds number's largest value, the share of the film in and past the
+    /// transition band, and the other validity checks (their warnings are in the report).
+    pub regime: crate::bearing::solution::regime::Regime,
     pub derived: Derived,
     pub inputs: Case,
     /// Thermal results (`None` for the isothermal model).

@@ -69,7 +69,8 @@ impl EquilibriumInputs {
             injection_temperature_c,
             excitation_ratio: _, // the reduction's
         } = operating;
-        let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _ } = physics; // kept whole below (pad_modes: the films')
+        let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _, turbulence: _, transition_reynolds: _ } =
+            physics; // kept whole below (pad_modes: the films'; turbulence: every film solve)
         let structure = StructureInputs::of(case);
         Self {
             films: FilmsInputs::of(case),

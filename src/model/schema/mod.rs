@@ -58,7 +58,7 @@ use super::error::Range;
 pub use row::{Allowed, Editor, Fallback, Group, KeySpec, Widget};
 
 pub use bearing::MAX_CLEARANCE_RATIO;
-pub use numerics::MAX_TOUCHDOWN_RATIO;
+pub use numerics::{MAX_TOUCHDOWN_RATIO, MAX_TRANSITION_REYNOLDS};
 
 /// Temperatures [°C]: from arctic start-up to well above any oil's flash point.
 const TEMPERATURE: Range = Range::closed(-60.0, 400.0);

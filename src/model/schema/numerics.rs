@@ -1,13 +1,18 @@
 //! Rows of how the film is modelled and discretised: `[physics]` and `[mesh]`.
 
+use super::super::error::Range;
 use super::Group::{Fidelity, Physics};
 use super::Widget::{Choice, Custom, Optional};
 use super::{Fallback, KeySpec};
 use crate::model::budget::DEFAULT_MAX_NODES;
 use crate::model::file::{CaseFile, OneOrMany};
-use crate::units::{COUNT, DEG, NODES, UM};
+use crate::units::{COUNT, DEG, NODES, ONE, UM};
 
 type Key = KeySpec;
+
+/// Largest local film Reynolds number a transition band may name (far beyond any oil film; the Ng–Pan
+/// coefficients are fitted up to 10⁵).
+pub const MAX_TRANSITION_REYNOLDS: f64 = 1e5;
 
 /// `physics.touchdown_film_um` is at most this fraction of the assembled clearance.
 pub const MAX_TOUCHDOWN_RATIO: f64 = 0.5;
@@ -58,6 +63,20 @@ pub(super) const KEYS: &[Key] = &[
         .default(Fallback::Word("reynolds"))
         .edit(Physics, "Cavitation", Choice(&["Reynolds (Swift–Stieber)", "Gümbel (half-Sommerfeld)"]))
         .meaning("Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation)."),
+    Key::choice("physics.turbulence", &["off", "auto", "on"])
+        .default(Fallback::Word("off"))
+        .edit(Physics, "Film turbulence", Choice(&["off (laminar)", "auto (above the transition band)", "on (turbulent everywhere)"]))
+        .meaning("Flow regime of the film. off: the laminar Reynolds and energy equations at every Reynolds number (the report warns where the local Reynolds number passes the transition band's start). auto: Ng–Pan turbulent coefficients where the local film Reynolds number ρUh/µ exceeds the transition band, laminar below it, blended inside it; the energy equation gets the matching eddy diffusivity. on: the turbulent coefficients everywhere."),
+    Key::number("physics.transition_reynolds_start", ONE, Range::closed(1.0, MAX_TRANSITION_REYNOLDS))
+        .typical(500.0, 2000.0)
+        .or(1000.0)
+        .edit(Physics, "Transition starts at Re", Optional(0))
+        .meaning("Local film Reynolds number ρUh/µ where the laminar–turbulent transition band starts (with turbulence = \"auto\"): the film is laminar below it. Journal bearings leave the laminar regime at about 1000–1500; the Taylor-vortex onset 41.3·√(R/h) is another common choice."),
+    Key::rule("physics.transition_reynolds_end", ONE, "(transition_reynolds_start, 100000]")
+        .typical(1000.0, 3000.0)
+        .or(1500.0)
+        .edit(Physics, "Transition ends at Re", Optional(0))
+        .meaning("Local film Reynolds number where the transition band ends (with turbulence = \"auto\"): fully turbulent (Ng–Pan) above it; inside the band the coefficients are blended with a smooth intermittency. Must lie above the start."),
     Key::rule("physics.touchdown_film_um", UM, "(0, half the assembled clearance]")
         .typical(0.1, 10.0)
         .default(Fallback::Follows { text: "1 % of the assembled clearance", value: touchdown })

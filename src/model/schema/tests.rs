@@ -186,7 +186,9 @@ fn the_editor_reads_and_writes_every_row_by_its_key() {
 /// default words (what `tiltpad schema` and the editor show); so do the rotor file's.
 #[test]
 fn the_file_enums_default_to_their_rows_word() {
-    use crate::model::file::{CavitatedFilmFile, Cavitation, Fidelity, PadFilmBcFile, PadKindFile, ThermalModelKind};
+    use crate::model::file::{
+        CavitatedFilmFile, Cavitation, Fidelity, PadFilmBcFile, PadKindFile, ThermalModelKind, Turbulence,
+    };
     use crate::model::rotor::CoefficientModel;
     use crate::model::shaft::BeamTheory;
     fn word<T: serde::Serialize + Default>() -> String {
@@ -196,6 +198,7 @@ fn the_file_enums_default_to_their_rows_word() {
         ("bearing.pads.kind", word::<PadKindFile>()),
         ("mesh.fidelity", word::<Fidelity>()),
         ("physics.cavitation", word::<Cavitation>()),
+        ("physics.turbulence", word::<Turbulence>()),
         ("thermal.model", word::<ThermalModelKind>()),
         ("thermal.pad_film_bc", word::<PadFilmBcFile>()),
         ("thermal.cavitated_film", word::<CavitatedFilmFile>()),

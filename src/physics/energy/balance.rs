@@ -147,7 +147,7 @@ impl FilmEnergy {
         if inp.exchange != Exchange::Adiabatic {
             for (e, nodes) in g.elements.iter().enumerate() {
                 for (k, q) in g.qp[e].iter().enumerate() {
-                    let ex = inp.exchange.coefficients(st.h_qp[e][k], st.theta_qp[e][k], inp.oil.conductivity);
+                    let ex = st.exchange_at(e, k, inp.exchange, inp.oil.conductivity);
                     let tq: f64 = (0..4).map(|a| q.n[a] * t[nodes[a]]).sum();
                     let tp: f64 = inp.t_pad.map_or(tq, |tp| (0..4).map(|a| q.n[a] * tp[nodes[a]]).sum());
                     let q_pad = ex.gamma * tq - ex.beta * tp - ex.phi * inp.t_journal;

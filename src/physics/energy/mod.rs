@@ -8,6 +8,8 @@
 //! ∇·(κ h θ ∇T) − ρ c_p q·∇T + Φ − S_loss
 //!   + [ κ (T_inj − T)/l0 + ρ c_p v_inj⁺ (T_inj − T) + p v_inj + (4/3) µ v_inj²/h ]   (inside orifices) = 0
 //! Φ = θ µ U²/h + h³/(12µ) |∇p|²                                                       (viscous dissipation)
+//! turbulent film (physics::turbulence): h³/(12µ) → G_s h³/(12µ), G_z h³/(12µ) per direction in q and Φ,
+//! θ µ U²/h → θ C_f µ U²/h, κ → F_plane κ in the film plane and F_across κ across it (pad/journal exchange)
 //! v_inj = g (p_inj − p)/(4 µ_inj l0)                                                  (orifice.rs)
 //! ```
 //!
@@ -71,6 +73,7 @@ use crate::fem::supg::{
 use crate::fem::GeneralPattern;
 use crate::mesh::grid::NodeSite;
 use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm};
+use crate::physics::turbulence::Factors;
 
 /// Sub-cells per direction for elements cut by an orifice edge (the value the Reynolds solver uses, so the
 /// injected flow is integrated identically; checked by a test).
@@ -212,6 +215,9 @@ pub struct FlowState {
     a: Vec<[[f64; 2]; 4]>,
     /// Dissipation Φ [W/m²].
     phi: Vec<[f64; 4]>,
+    /// Eddy-diffusivity factors (in-plane, across the film) at the quadrature points; empty where the film is
+    /// laminar everywhere (physics::turbulence).
+    eddy: Vec<[[f64; 2]; 4]>,
     inj: NodalInjection,
     /// Consistent nodal outflow `o_j` of the flux field [m³/s] (modelled domain, no symmetry factor).
     pub outflow: Vec<f64>,
@@ -232,10 +238,16 @@ impl FlowState {
     pub fn theta_at(&self, e: usize, k: usize) -> f64 {
         self.theta_qp[e][k]
     }
-    /// Exchange coefficients at quadrature point k of element e.
+    /// Exchange coefficients at quadrature point k of element e (a turbulent film conducts across its
+    /// thickness as if its conductivity were `F_across κ`).
     #[must_use]
     pub fn exchange_at(&self, e: usize, k: usize, exchange: Exchange, kappa: f64) -> ExchangeCoefficients {
-        exchange.coefficients(self.h_qp[e][k], self.theta_qp[e][k], kappa)
+        exchange.coefficients(self.h_qp[e][k], self.theta_qp[e][k], kappa * self.eddy_at(e, k)[1])
+    }
+    /// Eddy-diffusivity factors `[F_plane, F_across]` at quadrature point k of element e (1 laminar).
+    #[must_use]
+    pub fn eddy_at(&self, e: usize, k: usize) -> [f64; 2] {
+        self.eddy.get(e).map_or([1.0, 1.0], |x| x[k])
     }
 }
 
@@ -293,6 +305,7 @@ impl FilmEnergy {
             h_qp: film.h.qp.clone(),
             a: vec![[[0.0; 2]; 4]; ne],
             phi: vec![[0.0; 4]; ne],
+            eddy: Vec::new(),
             inj: NodalInjection {
                 inflow: vec![0.0; self.n_nodes],
                 drain: vec![0.0; self.n_nodes],
@@ -308,6 +321,26 @@ impl FilmEnergy {
             injection_temperature_c: inj.temperature_c,
             theta,
         };
+        // Turbulent film: the Reynolds solve's own Poiseuille and Couette multipliers (so the flux field stays
+        // its consistent flow), and the eddy diffusivity of heat at the same local Reynolds number.
+        let turb = film.turbulence_qp();
+        if let Some(t) = turb {
+            let law = &inp.turbulence;
+            st.eddy = t
+                .iter()
+                .zip(film.h.qp.iter().zip(mu_qp))
+                .map(|(f, (h, mu))| {
+                    std::array::from_fn(|k| {
+                        if f[k].gamma == 0.0 {
+                            return [1.0, 1.0];
+                        }
+                        let re = law.reynolds(u, h[k], mu[k]);
+                        let (plane, across) = law.thermal_factors(re, mu[k] * oil.specific_heat / oil.conductivity);
+                        [plane, across]
+                    })
+                })
+                .collect();
+        }
         for (e, nodes) in g.elements.iter().enumerate() {
             for (k, q) in g.qp[e].iter().enumerate() {
                 let h = film.h.qp[e][k];
@@ -319,13 +352,15 @@ impl FilmEnergy {
                     pz += q.dn_dz[a] * film.p[nodes[a]];
                 }
                 let cp = h * h * h / (12.0 * mu);
-                let qs = -cp * ps + 0.5 * u * th * h;
-                let qz = -cp * pz;
+                let f = turb.map_or(Factors::LAMINAR, |t| t[e][k]);
+                let (cs, cz) = (cp * f.gs, cp * f.gz);
+                let qs = -cs * ps + 0.5 * u * th * h;
+                let qz = -cz * pz;
                 st.theta_qp[e][k] = th;
                 st.a[e][k] = [rc * qs, rc * qz];
-                st.phi[e][k] = th * mu * u * u / h + cp * (ps * ps + pz * pz);
+                st.phi[e][k] = th * f.cf * mu * u * u / h + cs * ps * ps + cz * pz * pz;
                 st.dissipation += g.sym * q.w * st.phi[e][k];
-                st.shear_power += g.sym * q.w * u * (th * mu * u / h + 0.5 * h * ps);
+                st.shear_power += g.sym * q.w * u * (th * f.cf * mu * u / h + 0.5 * h * ps);
                 for a in 0..4 {
                     st.outflow[nodes[a]] += q.w * (qs * q.dn_ds[a] + qz * q.dn_dz[a]);
                 }
@@ -406,8 +441,9 @@ impl FilmEnergy {
             let mut ex = [ExchangeCoefficients::default(); 4];
             for k in 0..4 {
                 let (h, th) = (st.h_qp[e][k], st.theta_qp[e][k]);
-                ex[k] = exchange.coefficients(h, th, oil.conductivity);
-                coef[k] = Adr { d: oil.conductivity * h * th, a: st.a[e][k], c: ex[k].c, f: st.phi[e][k] };
+                let [plane, across] = st.eddy_at(e, k);
+                ex[k] = exchange.coefficients(h, th, oil.conductivity * across);
+                coef[k] = Adr { d: oil.conductivity * plane * h * th, a: st.a[e][k], c: ex[k].c, f: st.phi[e][k] };
             }
             // Injection reaction and source averaged over the element, for τ and the crosswind residual.
             let (c_inj, f_inj) = inj_of[e];

@@ -50,6 +50,7 @@
 
 use crate::fem::{SolverError, SpdSolver};
 use crate::model::Cavitation;
+use crate::physics::turbulence::{Factors, TurbulenceLaw};
 use nalgebra::DMatrix;
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
@@ -93,6 +94,8 @@ pub struct FilmInputs<'a> {
     /// Viscosity of the injected oil [Pa·s].
     pub injection_viscosity: f64,
     pub cavitation: Cavitation,
+    /// Laminar or turbulent Poiseuille and Couette coefficients ([`crate::physics::turbulence`]).
+    pub turbulence: TurbulenceLaw,
 }
 
 /// The film viscosity.
@@ -195,6 +198,8 @@ pub struct PadFilm {
     /// Film thickness at quadrature points and nodes [m].
     pub h: SampledField,
     mu_qp: Vec<[f64; 4]>,
+    /// Turbulence multipliers at the quadrature points of the last solve (empty: laminar film).
+    turb_qp: Vec<[Factors; 4]>,
     /// Pressure [Pa] (non-negative after cavitation).
     pub p: Vec<f64>,
     /// Unclipped pressure of the Gümbel solve.
@@ -227,6 +232,7 @@ impl PadFilm {
             b: vec![0.0; n],
             h: SampledField { qp: vec![[0.0; 4]; ne], node: vec![0.0; n] },
             mu_qp: vec![[0.0; 4]; ne],
+            turb_qp: Vec::new(),
             p: vec![0.0; n],
             p_full: vec![0.0; n],
             cavitated: vec![false; n],
@@ -383,6 +389,39 @@ impl PadFilm {
     pub fn nodal_thickness_delta(&self, dq: &[f64]) -> Vec<f64> {
         let g = &self.geom;
         (0..g.n_nodes()).map(|i| dq.iter().enumerate().map(|(k, d)| d * g.shapes[k].node[i]).sum()).collect()
+    }
+
+    /// The turbulence multipliers at the quadrature points for the current thickness and viscosity; left
+    /// empty for a laminar film (and where every point lies below the transition band), so that the laminar
+    /// solve runs exactly the laminar arithmetic.
+    fn set_turbulence(&mut self, inp: &FilmInputs<'_>) -> Result<(), FilmError> {
+        self.turb_qp.clear();
+        let law = &inp.turbulence;
+        if law.is_laminar() {
+            return Ok(());
+        }
+        if !(law.density > 0.0 && law.density.is_finite() && law.re_start < law.re_end) {
+            return Err(FilmError::Input(format!(
+                "turbulence needs a positive density and a transition band start < end (ρ {}, band {}–{})",
+                law.density, law.re_start, law.re_end
+            )));
+        }
+        let u = inp.surface_speed;
+        let (h, mu) = (&self.h.qp, &self.mu_qp);
+        let re = |e: usize, k: usize| law.reynolds(u, h[e][k], mu[e][k]);
+        // A film below the band everywhere keeps the laminar path (and allocates nothing).
+        if !(0..h.len()).any(|e| (0..4).any(|k| law.intermittency(re(e, k)).0 > 0.0)) {
+            return Ok(());
+        }
+        self.turb_qp.extend((0..h.len()).map(|e| std::array::from_fn(|k| law.factors(re(e, k)))));
+        Ok(())
+    }
+
+    /// Turbulence multipliers at the quadrature points of the last solve; `None` when the film was laminar
+    /// everywhere.
+    #[must_use]
+    pub fn turbulence_qp(&self) -> Option<&[[Factors; 4]]> {
+        (!self.turb_qp.is_empty()).then_some(&self.turb_qp)
     }
 
     fn set_viscosity(&mut self, v: Viscosity<'_>) -> Result<(), FilmError> {

@@ -47,7 +47,9 @@ impl PadFilm {
         let mut le = 0.0;
         let mut te = 0.0;
         let mut side = 0.0;
-        let eval = |e: usize, xi: f64, eta: f64| -> (f64, f64, f64, f64) {
+        // (h, ∂p/∂s, ∂p/∂z, µ/G_s, µ/G_z): the turbulence multipliers enter as an effective viscosity per
+        // direction (element means, like µ).
+        let eval = |e: usize, xi: f64, eta: f64| -> (f64, f64, f64, f64, f64) {
             let r = &g.rects[e];
             let q = r.quad_point(xi, eta, 1.0);
             let nodes = g.elements[e];
@@ -57,19 +59,24 @@ impl PadFilm {
                 ps += q.dn_ds[a] * self.p[nodes[a]];
                 pz += q.dn_dz[a] * self.p[nodes[a]];
             }
+            let (mut gs, mut gz) = (1.0, 1.0);
+            if let Some(t) = self.turb_qp.get(e) {
+                gs = t.iter().map(|f| 0.25 * f.gs).sum();
+                gz = t.iter().map(|f| 0.25 * f.gz).sum();
+            }
             for k in 0..4 {
                 mu += 0.25 * self.mu_qp[e][k];
             }
-            (h, ps, pz, mu)
+            (h, ps, pz, mu / gs, mu / gz)
         };
         if !grid.periodic {
             for j in 0..ncz {
                 for &eta in &gauss {
                     let e0 = j; // column 0
-                    let (h, ps, _, mu) = eval(e0, -1.0, eta);
+                    let (h, ps, _, mu, _) = eval(e0, -1.0, eta);
                     le += 0.5 * g.rects[e0].dz * (-h * h * h / (12.0 * mu) * ps + 0.5 * u * h);
                     let e1 = (ncs - 1) * ncz + j;
-                    let (h, ps, _, mu) = eval(e1, 1.0, eta);
+                    let (h, ps, _, mu, _) = eval(e1, 1.0, eta);
                     te += 0.5 * g.rects[e1].dz * (-h * h * h / (12.0 * mu) * ps + 0.5 * u * h);
                 }
             }
@@ -77,11 +84,11 @@ impl PadFilm {
         for i in 0..ncs {
             for &xi in &gauss {
                 let top = i * ncz + (ncz - 1);
-                let (h, _, pz, mu) = eval(top, xi, 1.0);
+                let (h, _, pz, _, mu) = eval(top, xi, 1.0);
                 side += 0.5 * g.rects[top].ds * (-h * h * h / (12.0 * mu) * pz);
                 if !grid.half {
                     let bot = i * ncz;
-                    let (h, _, pz, mu) = eval(bot, xi, -1.0);
+                    let (h, _, pz, _, mu) = eval(bot, xi, -1.0);
                     side += 0.5 * g.rects[bot].ds * (h * h * h / (12.0 * mu) * pz);
                 }
             }
@@ -89,8 +96,8 @@ impl PadFilm {
         (g.sym * le, g.sym * te, g.sym * side)
     }
 
-    /// Viscous drag on the journal and the power it dissipates, `P = U ∫ (µ U/h + (h/2) ∂p/∂s) dA`
-    /// (full film assumed in cavitated regions, a conservative choice) → (force N, power W).
+    /// Viscous drag on the journal and the power it dissipates, `P = U ∫ (C_f µ U/h + (h/2) ∂p/∂s) dA`
+    /// (C_f = 1 laminar; full film assumed in cavitated regions, a conservative choice) → (force N, power W).
     #[must_use]
     pub fn friction(&self, inp: &FilmInputs<'_>) -> (f64, f64) {
         let g = &self.geom;
@@ -100,7 +107,8 @@ impl PadFilm {
             for (k, q) in g.qp[e].iter().enumerate() {
                 let h = self.h.qp[e][k];
                 let dps: f64 = (0..4).map(|a| q.dn_ds[a] * self.p[nodes[a]]).sum();
-                force += q.w * (self.mu_qp[e][k] * u / h + 0.5 * h * dps);
+                let cf = self.turb_qp.get(e).map_or(1.0, |t| t[k].cf);
+                force += q.w * (cf * self.mu_qp[e][k] * u / h + 0.5 * h * dps);
             }
         }
         (g.sym * force, g.sym * force * u)
