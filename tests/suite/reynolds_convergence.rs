@@ -67,6 +67,7 @@ fn max_error(n: usize) -> f64 {
         injection_pressure: 0.0,
         injection_viscosity: MU,
         cavitation: Cavitation::Reynolds,
+        inlet: tiltpad::physics::reynolds::Inlet::Flooded,
     };
     film.solve(&inp, false).unwrap();
     let g = &film.geom;

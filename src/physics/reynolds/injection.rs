@@ -104,6 +104,7 @@ mod tests {
             injection_pressure: p_inj,
             injection_viscosity: 0.02,
             cavitation,
+            inlet: crate::physics::reynolds::Inlet::Flooded,
         }
     }
 

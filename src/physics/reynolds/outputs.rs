@@ -89,8 +89,9 @@ impl PadFilm {
         (g.sym * le, g.sym * te, g.sym * side)
     }
 
-    /// Viscous drag on the journal and the power it dissipates, `P = U ∫ (µ U/h + (h/2) ∂p/∂s) dA`
-    /// (full film assumed in cavitated regions, a conservative choice) → (force N, power W).
+    /// Viscous drag on the journal and the power it dissipates, `P = U ∫ (θ µ U/h + (h/2) ∂p/∂s) dA`
+    /// → (force N, power W). θ is the mass-conserving solve's film fraction; after a Reynolds or Gümbel
+    /// solve θ ≡ 1 (a full film assumed in cavitated regions, a conservative choice).
     #[must_use]
     pub fn friction(&self, inp: &FilmInputs<'_>) -> (f64, f64) {
         let g = &self.geom;
@@ -100,7 +101,8 @@ impl PadFilm {
             for (k, q) in g.qp[e].iter().enumerate() {
                 let h = self.h.qp[e][k];
                 let dps: f64 = (0..4).map(|a| q.dn_ds[a] * self.p[nodes[a]]).sum();
-                force += q.w * (self.mu_qp[e][k] * u / h + 0.5 * h * dps);
+                let theta: f64 = (0..4).map(|a| q.n[a] * self.theta[nodes[a]]).sum();
+                force += q.w * (theta * self.mu_qp[e][k] * u / h + 0.5 * h * dps);
             }
         }
         (g.sym * force, g.sym * force * u)
