@@ -86,7 +86,7 @@ pub(super) fn t_rise(s: &Solution) -> Option<f64> {
 }
 
 /// Levels of one case (with extra overrides) against its reference-fine solution.
-fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Vec<LevelRow>> {
+pub(super) fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Vec<LevelRow>> {
     let (nx, nz, no) = Fidelity::Reference.elements();
     let mut fine_set = extra.to_vec();
     fine_set.extend([
@@ -261,7 +261,7 @@ fn svg_plot(rows: &[LevelRow]) -> String {
     s
 }
 
-fn pct(x: f64) -> String {
+pub(super) fn pct(x: f64) -> String {
     if x == 0.0 {
         "—".into()
     } else {
@@ -368,6 +368,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_batch::section(root, repeats.min(3))?);
     md.push_str(&super::bench_frf::section(root, repeats)?);
     md.push_str(&super::bench_flex::section(root, repeats.min(3))?);
+    md.push_str(&super::bench_cavitation::section(root, repeats.min(3))?);
     md.push_str(&super::bench_rotor::section(root, repeats.min(3))?);
     let _ = writeln!(
         md,
