@@ -368,6 +368,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_batch::section(root, repeats.min(3))?);
     md.push_str(&super::bench_frf::section(root, repeats)?);
     md.push_str(&super::bench_flex::section(root, repeats.min(3))?);
+    md.push_str(&super::bench_cavitation::section(root, repeats.min(3))?);
     md.push_str(&super::bench_rotor::section(root, repeats.min(3))?);
     md.push_str(&super::bench_turb::section(root, repeats.min(3))?);
     let _ = writeln!(

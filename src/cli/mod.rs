@@ -9,6 +9,7 @@
 mod batch;
 mod bench;
 mod bench_batch;
+mod bench_cavitation;
 mod bench_flex;
 mod bench_frf;
 mod bench_rotor;
@@ -232,7 +233,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`, `cavitation`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -408,6 +409,11 @@ pub fn run(command: Command) -> Result<()> {
                 "## Controllable lubrication",
                 &bench_frf::section(&root, repeats.max(1))?,
             ),
+            Some("cavitation") => bench::replace_section(
+                &root,
+                bench_cavitation::HEADING,
+                &bench_cavitation::section(&root, repeats.clamp(1, 3))?,
+            ),
             Some("flex") => {
                 bench::replace_section(&root, "## Flexible pads", &bench_flex::section(&root, repeats.clamp(1, 3))?)
             }
@@ -419,7 +425,7 @@ pub fn run(command: Command) -> Result<()> {
             Some("turbulence") => {
                 bench::replace_section(&root, "## Turbulence", &bench_turb::section(&root, repeats.clamp(1, 3))?)
             }
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor, turbulence"),
+            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor, turbulence, cavitation"),
         },
     }
 }

@@ -109,6 +109,9 @@ pub enum Inconsistency {
     LoadAngleWithEccentricity,
     #[error("only meaningful with eccentricity_ratio")]
     EccentricityAngleWithoutRatio,
+    /// A starved inlet needs the film fraction, which only the mass-conserving cavitation model computes.
+    #[error("a supply flow (starved pads) needs physics.cavitation = \"jfo\" (mass-conserving cavitation)")]
+    SupplyFlowWithoutJfo,
     // ------------------------------------------------------------------------------ mesh and thermal
     #[error("the half model needs every orifice on the mid-plane (axial_frac = 0.5)")]
     HalfModelOffMidPlane,

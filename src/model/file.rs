@@ -235,6 +235,10 @@ pub struct OperatingFile {
     /// Temperature of the injected oil.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub injection_temperature_c: Option<f64>,
+    /// Oil supply flow of the whole bearing, shared equally by the pads' leading edges (starved lubrication;
+    /// mass-conserving cavitation only). Absent: every pad is flooded.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub supply_flow_l_per_min: Option<f64>,
     /// Excitation-to-running frequency ratio ω/Ω for the reduced coefficients (1: synchronous).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub excitation_ratio: Option<f64>,
@@ -288,6 +292,9 @@ pub enum Cavitation {
     Reynolds,
     /// Gümbel (half-Sommerfeld): solve, then set negative pressures to zero.
     Gumbel,
+    /// Mass-conserving (Jakobsson–Floberg–Olsson, Elrod–Adams): pressure and film fraction complementary,
+    /// with rupture and reformation; the only option that can model a starved inlet.
+    Jfo,
 }
 
 /// Film flow regime: laminar coefficients everywhere, turbulent above the transition band, or turbulent

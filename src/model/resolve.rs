@@ -11,7 +11,7 @@ use std::f64::consts::{PI, TAU};
 
 use super::case::{Bearing, Case, LoadSpec, MeshSpec, Operating, Orifice, Pad, PadFilmBc, PadKind, Physics, Thermal};
 use super::error::{CaseError, Inconsistency, Range};
-use super::file::{CaseFile, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
+use super::file::{CaseFile, Cavitation, OneOrMany, PadFile, PadFilmBcFile, PadKindFile};
 use super::schema::{KeySpec, MAX_CLEARANCE_RATIO, MAX_TOUCHDOWN_RATIO};
 use crate::key;
 use crate::units::DEG;
@@ -462,7 +462,13 @@ fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseEr
                 .collect::<Result<_, CaseError>>()?
         }
     };
+    let supply_flow = key!("operating.supply_flow_l_per_min");
+    let supply_flow_m3_s = supply_flow.optional(o.supply_flow_l_per_min)?;
+    if supply_flow_m3_s.is_some() && file.physics.cavitation != Some(Cavitation::Jfo) {
+        return Err(inconsistent(supply_flow.key, Inconsistency::SupplyFlowWithoutJfo));
+    }
     Ok(Operating {
+        supply_flow_m3_s,
         speed_rad_s: speed,
         load,
         supply_temperature_c: supply,

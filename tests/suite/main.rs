@@ -15,6 +15,7 @@ mod film_checks;
 mod flexible_pads;
 mod literature_fillon;
 mod literature_someya;
+mod mass_conserving;
 mod node_budget;
 mod pivot_ball_start;
 mod pivot_hertz;

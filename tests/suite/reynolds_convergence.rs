@@ -68,6 +68,7 @@ fn max_error(n: usize) -> f64 {
         injection_viscosity: MU,
         cavitation: Cavitation::Reynolds,
         turbulence: tiltpad::physics::turbulence::TurbulenceLaw::LAMINAR,
+        inlet: tiltpad::physics::reynolds::Inlet::Flooded,
     };
     film.solve(&inp, false).unwrap();
     let g = &film.geom;

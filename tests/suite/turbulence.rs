@@ -68,6 +68,7 @@ fn film(u: f64, mu: f64, turbulence: TurbulenceLaw) -> (PadFilm, FilmInputs<'sta
         injection_viscosity: mu,
         cavitation: Cavitation::Reynolds,
         turbulence,
+        inlet: tiltpad::physics::reynolds::Inlet::Flooded,
     };
     film.solve(&inp, false).unwrap();
     assert_eq!(film.cavitated.iter().filter(|c| **c).count(), 0, "a converging slider runs full");

@@ -14,7 +14,7 @@ use crate::model::budget::orifice_zones;
 use crate::model::Cavitation;
 use crate::model::{Case, LoadSpec};
 use crate::physics::orifice::LocalOrifice;
-use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm, Viscosity};
+use crate::physics::reynolds::{FilmGeometry, FilmInputs, Inlet, PadFilm, Viscosity};
 use crate::physics::turbulence::TurbulenceLaw;
 
 use crate::bearing::film::coordinates::{DofMap, PadDof, PadStructure};
@@ -168,12 +168,25 @@ pub struct OperatingPoint {
     pub cavitation: Cavitation,
     /// Laminar or turbulent film coefficients.
     pub turbulence: TurbulenceLaw,
+    /// Oil supply at each pad's leading edge (flooded, or a share of the bearing's supply flow).
+    pub inlet: Vec<Inlet>,
     pub load: LoadSpec,
     /// Film thickness below which an equilibrium is touchdown [m].
     pub touchdown_film: f64,
     /// Pads whose coordinates are held at their start values (an unloaded pad's tilt is not determined by
     /// its film; an outer thermal loop holds it so that the pad does not flip between equivalent states).
     pub held_pads: Vec<bool>,
+}
+
+/// Each pad's leading-edge supply: flooded, or an equal share of the bearing's supply flow (docs/MODEL.md §2.3).
+#[must_use]
+pub fn pad_inlets(case: &Case) -> Vec<Inlet> {
+    let n = case.bearing.pads.len();
+    match case.operating.supply_flow_m3_s {
+        None => vec![Inlet::Flooded; n],
+        #[allow(clippy::cast_precision_loss)]
+        Some(q) => vec![Inlet::Supply { flow_m3_s: q / n as f64 }; n],
+    }
 }
 
 impl OperatingPoint {
@@ -191,6 +204,7 @@ impl OperatingPoint {
             injection_viscosity: law.at(o.injection_temperature_c),
             cavitation: case.physics.cavitation,
             turbulence: turbulence_law(case),
+            inlet: pad_inlets(case),
             load: o.load,
             touchdown_film: case.physics.touchdown_film_m,
             held_pads: vec![false; case.bearing.pads.len()],
@@ -210,6 +224,7 @@ impl OperatingPoint {
             injection_viscosity: self.injection_viscosity,
             cavitation: self.cavitation,
             turbulence: self.turbulence,
+            inlet: self.inlet[k],
         }
     }
 }

@@ -44,6 +44,8 @@ pub struct EquilibriumInputs {
     pub film_temperature_c: f64,
     pub injection_pressure_pa: Vec<f64>,
     pub injection_temperature_c: f64,
+    /// Starved pads: the bearing's oil supply (the pads' inlet film fractions).
+    pub supply_flow_m3_s: Option<f64>,
     pub physics: Physics,
 }
 
@@ -67,6 +69,7 @@ impl EquilibriumInputs {
             film_temperature_c,
             injection_pressure_pa,
             injection_temperature_c,
+            supply_flow_m3_s,
             excitation_ratio: _, // the reduction's
         } = operating;
         let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _, turbulence: _, transition_reynolds: _ } =
@@ -84,6 +87,7 @@ impl EquilibriumInputs {
             film_temperature_c: *film_temperature_c,
             injection_pressure_pa: injection_pressure_pa.clone(),
             injection_temperature_c: *injection_temperature_c,
+            supply_flow_m3_s: *supply_flow_m3_s,
             physics: *physics,
         }
     }

@@ -61,6 +61,7 @@ impl ThermalInputs {
             film_temperature_c: _,
             injection_pressure_pa: _,
             injection_temperature_c: _,
+            supply_flow_m3_s: _,
             excitation_ratio: _, // the rest: EquilibriumInputs
         } = operating;
         let MeshSpec {

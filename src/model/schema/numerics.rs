@@ -59,10 +59,14 @@ const fn level(value: fn(&CaseFile) -> f64) -> Fallback {
 
 pub(super) const KEYS: &[Key] = &[
     // [physics]
-    Key::choice("physics.cavitation", &["reynolds", "gumbel"])
+    Key::choice("physics.cavitation", &["reynolds", "gumbel", "jfo"])
         .default(Fallback::Word("reynolds"))
-        .edit(Physics, "Cavitation", Choice(&["Reynolds (Swift–Stieber)", "Gümbel (half-Sommerfeld)"]))
-        .meaning("Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation)."),
+        .edit(
+            Physics,
+            "Cavitation",
+            Choice(&["Reynolds (Swift–Stieber)", "Gümbel (half-Sommerfeld)", "JFO (mass-conserving)"]),
+        )
+        .meaning("Where the film diverges the pressure would fall below ambient; oil cannot sustain that and the film ruptures. Reynolds (Swift–Stieber): p ≥ 0 with zero flux gradient at the rupture boundary, solved exactly. Gümbel: solve, then clip negative pressures (simpler, violates mass conservation). JFO (Jakobsson–Floberg–Olsson, mass-conserving): pressure and film fraction complementary; the ruptured film carries its oil on as striations and reforms where it meets a pressurised film or an orifice fills it; flows balance to round-off; the only option that can starve a pad (operating.supply_flow_l_per_min)."),
     Key::choice("physics.turbulence", &["off", "auto", "on"])
         .default(Fallback::Word("off"))
         .edit(Physics, "Film turbulence", Choice(&["off (laminar)", "auto (above the transition band)", "on (turbulent everywhere)"]))

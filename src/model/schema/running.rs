@@ -5,7 +5,8 @@ use super::Widget::{Custom, Number, Optional, Text};
 use super::{Fallback, KeySpec, ANGLE, TEMPERATURE};
 use crate::model::error::Range;
 use crate::model::file::CaseFile;
-use crate::units::{BAR, CELSIUS, DEG, J_PER_KG_K, KG_PER_M3, N, ONE, PA_S, PER_K, RPM, W_PER_M_K};
+use crate::model::file::Cavitation;
+use crate::units::{BAR, CELSIUS, DEG, J_PER_KG_K, KG_PER_M3, L_PER_MIN, N, ONE, PA_S, PER_K, RPM, W_PER_M_K};
 
 type Key = KeySpec;
 
@@ -26,6 +27,10 @@ pub(super) fn supply(f: &CaseFile) -> f64 {
     f.operating.supply_temperature_c
 }
 pub(super) const SUPPLY: Fallback = Fallback::Follows { text: "the supply temperature", value: supply };
+
+fn mass_conserving(f: &CaseFile) -> bool {
+    f.physics.cavitation == Some(Cavitation::Jfo)
+}
 
 const VISCOSITY_LAW: Fallback = Fallback::Rule("give a second point or viscosity_coefficient_per_k");
 const LOAD_OR_POSITION: Fallback = Fallback::Rule("give load_n or eccentricity_ratio");
@@ -119,6 +124,12 @@ pub(super) const KEYS: &[Key] = &[
         .or(0.0)
         .edit(Operating, "Injection pressure", Custom)
         .meaning("Pressure at the orifice entry (controllable lubrication). 0: the orifice is open to ambient and acts as a sink where the film pressure is higher. High pressure lifts the pad and reverses the film flow upstream of the orifice."),
+    Key::number("operating.supply_flow_l_per_min", L_PER_MIN, Range::open_lo(0.0, 1e5))
+        .typical(1.0, 500.0)
+        .default(Fallback::Rule("absent: flooded pads (as much oil as the films take)"))
+        .edit(Operating, "Supply flow", Optional(2))
+        .when(mass_conserving)
+        .meaning("Oil fed to the bearing, shared equally by the pads' leading edges (starved lubrication, to cut power loss). A pad offered less than its film drags in at the leading edge runs starved: its film starts partly filled (inlet film fraction = offered / full-inlet flow) and builds pressure later; offered more, it is flooded and the excess drains. Needs physics.cavitation = \"jfo\". Absent: flooded pads."),
     Key::number("operating.excitation_ratio", ONE, Range::closed(0.0, 1e3))
         .typical(0.0, 3.0)
         .or(1.0)

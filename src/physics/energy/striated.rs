@@ -3,6 +3,7 @@
 //! the pressure's Swift–Stieber approach to zero ([`rupture_thickness`]), so the oil a pad hands to the next
 //! one moves continuously with the film.
 
+use crate::model::Cavitation;
 use crate::physics::energy::FilmEnergy;
 use crate::physics::reynolds::PadFilm;
 
@@ -10,7 +11,7 @@ impl FilmEnergy {
     /// Film fraction at the nodes (module documentation): per axial row, θ = min(1, h_r/h) in the cavitated
     /// nodes downstream of a rupture, `h_r` the thickness at the rupture, which lies between the last
     /// full-film node and the first cavitated one ([`rupture_thickness`]); 1 elsewhere, or everywhere when
-    /// `striated` is false.
+    /// `striated` is false. After a mass-conserving (JFO) film solve: that solve's film fraction.
     /// Ambient-pressure boundary nodes carry no information of their own: a trailing-edge node continues its
     /// row (ruptured if the node before it is), and the axial-end rows copy the fraction of their
     /// neighbouring row, so the flux field does not jump at the boundary.
@@ -20,6 +21,11 @@ impl FilmEnergy {
         let mut theta = vec![1.0; g.n_nodes()];
         if !striated {
             return theta;
+        }
+        // The mass-conserving film solve computes the fraction itself (rupture, striations, reformation and
+        // a starved inlet): the energy equation transports that one.
+        if film.solved_with() == Some(Cavitation::Jfo) {
+            return film.theta.clone();
         }
         let grid = &g.grid;
         let (nc, nr) = (grid.n_cols(), grid.n_rows());

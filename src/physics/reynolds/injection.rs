@@ -105,6 +105,7 @@ mod tests {
             injection_viscosity: 0.02,
             cavitation,
             turbulence: crate::physics::turbulence::TurbulenceLaw::LAMINAR,
+            inlet: crate::physics::reynolds::Inlet::Flooded,
         }
     }
 

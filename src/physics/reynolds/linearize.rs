@@ -1,6 +1,8 @@
 //! Film forces and their linearisation about the last solve (Lund's perturbation method):
 //! `Q_k = ∫ p φ_k dA`, `K_kl = −∂Q_k/∂q_l`, `C_kl = −∂Q_k/∂q̇_l`, the perturbation pressures coming from
 //! back-substitutions with the factorisation of the converged solve (exact for a fixed cavitation boundary).
+//! After a mass-conserving solve the factorisation is that of the mixed pressure/film-fraction system and
+//! the Couette and squeeze right-hand sides carry the film fraction (`jfo.rs`).
 
 use crate::model::Cavitation;
 use crate::physics::reynolds::{FilmInputs, FilmLinearization, PadFilm};
@@ -56,9 +58,23 @@ impl PadFilm {
         let m = g.n_dofs();
         let u = inp.surface_speed;
         let gumbel = self.solved_with == Some(Cavitation::Gumbel);
+        let jfo = self.solved_with == Some(Cavitation::Jfo);
         let pg = if gumbel { &self.p_full } else { &self.p };
         let cols = if with_damping { 2 * m } else { m };
         let mut rhs = vec![0.0; n * cols];
+        // Mass-conserving cavitation: the oil's Couette and squeeze terms carry the film fraction (jfo.rs).
+        if jfo {
+            if let Some(state) = self.jfo.as_deref_mut() {
+                for (s, shape) in g.shapes.iter().enumerate() {
+                    let dc = state.couette_derivative(g, u, &shape.qp, &self.theta);
+                    rhs[s * n..(s + 1) * n].copy_from_slice(&dc);
+                    if with_damping {
+                        let ds = state.squeeze_rhs(g, &shape.qp, &self.theta);
+                        rhs[(m + s) * n..(m + s + 1) * n].copy_from_slice(&ds);
+                    }
+                }
+            }
+        }
         for (e, nodes) in g.elements.iter().enumerate() {
             for (k, q) in g.qp[e].iter().enumerate() {
                 let h = self.h.qp[e][k];
@@ -73,16 +89,18 @@ impl PadFilm {
                     Some(t) => (t[k].gs * t[k].es, t[k].gz * t[k].ez),
                     None => (3.0, 3.0),
                 };
+                let couette = if jfo { 0.0 } else { 6.0 * u };
                 for a in 0..4 {
                     // ∂b/∂q_k − (∂A/∂q_k) p, per unit φ_k:
-                    //   6 U ∂N_a/∂s − 3 h²/µ ∇p·∇N_a   (laminar; turbulent: the per-direction coefficients)
-                    let c = q.w * (6.0 * u * q.dn_ds[a] - h * h / mu * (cs * dps * q.dn_ds[a] + cz * dpz * q.dn_dz[a]));
+                    //   6 U ∂N_a/∂s − 3 h²/µ ∇p·∇N_a   (laminar; turbulent: the per-direction coefficients; the
+                    //   Couette part above for the mass-conserving option)
+                    let c = q.w * (couette * q.dn_ds[a] - h * h / mu * (cs * dps * q.dn_ds[a] + cz * dpz * q.dn_dz[a]));
                     // Squeeze: −12 N_a per unit φ_k q̇_k.
                     let d = -12.0 * q.w * q.n[a];
                     for (s, shape) in g.shapes.iter().enumerate() {
                         let phi = shape.qp[e][k];
                         rhs[s * n + nodes[a]] += phi * c;
-                        if with_damping {
+                        if with_damping && !jfo {
                             rhs[(m + s) * n + nodes[a]] += phi * d;
                         }
                     }
@@ -97,6 +115,16 @@ impl PadFilm {
     /// fixed rows zeroed first; under Gümbel cavitation the clipped nodes are zeroed after.
     pub(super) fn back_substitute(&mut self, rhs: &mut [f64]) {
         let n = self.geom.n_nodes();
+        if self.solved_with == Some(Cavitation::Jfo) {
+            if let Some(state) = self.jfo.as_deref_mut() {
+                if state.back_substitute(rhs, &self.cavitated).is_err() {
+                    // The factorisation of the converged solve succeeded, so its solves are finite; a failure
+                    // here can only come from a non-finite right-hand side: no response.
+                    rhs.fill(0.0);
+                }
+                return;
+            }
+        }
         for col in rhs.chunks_mut(n) {
             for i in 0..n {
                 if self.fixed[i] {

@@ -57,11 +57,13 @@ use thiserror::Error;
 
 mod geometry;
 mod injection;
+mod jfo;
 mod linearize;
 mod outputs;
 mod solve;
 pub use geometry::{FilmGeometry, OrificeOperator};
 pub use injection::InjectionResponse;
+pub use jfo::MAX_JFO_ITERATIONS;
 
 /// Largest number of active-set iterations for the Reynolds cavitation condition.
 pub const MAX_ACTIVE_SET_ITERATIONS: usize = 60;
@@ -96,6 +98,19 @@ pub struct FilmInputs<'a> {
     pub cavitation: Cavitation,
     /// Laminar or turbulent Poiseuille and Couette coefficients ([`crate::physics::turbulence`]).
     pub turbulence: TurbulenceLaw,
+    /// Oil supply at the leading edge (read by the mass-conserving cavitation option only).
+    pub inlet: Inlet,
+}
+
+/// Oil supply at a pad's leading edge.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Inlet {
+    /// The leading edge is bathed in oil: the film enters full (film fraction 1).
+    #[default]
+    Flooded,
+    /// The pad is offered this flow [m³/s, whole pad]: the inlet film fraction is the flow over the Couette
+    /// inflow of a full inlet, at most 1 (docs/MODEL.md §2.3).
+    Supply { flow_m3_s: f64 },
 }
 
 /// The film viscosity.
@@ -206,6 +221,11 @@ pub struct PadFilm {
     p_full: Vec<f64>,
     /// Cavitated nodes (active set or clipped).
     pub cavitated: Vec<bool>,
+    /// Film fraction θ at the nodes: the mass-conserving solve's (1 in full film, the oil's share of the gap
+    /// in ruptured zones); 1 everywhere after a Reynolds or Gümbel solve, which do not compute it.
+    pub theta: Vec<f64>,
+    /// The mass-conserving solver (built on its first use).
+    jfo: Option<Box<jfo::JfoState>>,
     fixed: Vec<bool>,
     r: Vec<f64>,
     solved_with: Option<Cavitation>,
@@ -236,6 +256,8 @@ impl PadFilm {
             p: vec![0.0; n],
             p_full: vec![0.0; n],
             cavitated: vec![false; n],
+            theta: vec![1.0; n],
+            jfo: None,
             fixed: vec![false; n],
             r: vec![0.0; n],
             solved_with: None,
@@ -330,7 +352,8 @@ impl PadFilm {
     /// all under the Reynolds condition: `p ≡ 0` solves the complementarity problem exactly when the
     /// right-hand side `b` is non-positive at every free node, and `b` is affine in the coordinate
     /// (`b = c + q_slot d`, only the Couette term depends on the thickness). `None` for Gümbel cavitation
-    /// (whose pressure-free set needs a solve) or when no such coordinate value exists.
+    /// (whose pressure-free set needs a solve), for mass-conserving cavitation (whose film fraction carries oil
+    /// into the pad even without pressure) or when no such coordinate value exists.
     #[must_use]
     pub fn pressure_free_interval(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
         if inp.cavitation != Cavitation::Reynolds {

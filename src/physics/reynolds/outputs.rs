@@ -96,8 +96,9 @@ impl PadFilm {
         (g.sym * le, g.sym * te, g.sym * side)
     }
 
-    /// Viscous drag on the journal and the power it dissipates, `P = U ∫ (C_f µ U/h + (h/2) ∂p/∂s) dA`
-    /// (C_f = 1 laminar; full film assumed in cavitated regions, a conservative choice) → (force N, power W).
+    /// Viscous drag on the journal and the power it dissipates, `P = U ∫ (θ C_f µ U/h + (h/2) ∂p/∂s) dA`
+    /// → (force N, power W). C_f = 1 laminar. θ is the mass-conserving solve's film fraction; after a Reynolds
+    /// or Gümbel solve θ ≡ 1 (a full film assumed in cavitated regions, a conservative choice).
     #[must_use]
     pub fn friction(&self, inp: &FilmInputs<'_>) -> (f64, f64) {
         let g = &self.geom;
@@ -108,7 +109,8 @@ impl PadFilm {
                 let h = self.h.qp[e][k];
                 let dps: f64 = (0..4).map(|a| q.dn_ds[a] * self.p[nodes[a]]).sum();
                 let cf = self.turb_qp.get(e).map_or(1.0, |t| t[k].cf);
-                force += q.w * (cf * self.mu_qp[e][k] * u / h + 0.5 * h * dps);
+                let theta: f64 = (0..4).map(|a| q.n[a] * self.theta[nodes[a]]).sum();
+                force += q.w * (theta * cf * self.mu_qp[e][k] * u / h + 0.5 * h * dps);
             }
         }
         (g.sym * force, g.sym * force * u)

@@ -3,6 +3,7 @@
 //! complementarity problem `p ≥ 0, A p − b ≥ 0, p·(A p − b) = 0` by a warm-started primal–dual active set.
 
 use crate::model::Cavitation;
+use crate::physics::reynolds::jfo::{JfoResult, JfoSolve, JfoState};
 use crate::physics::reynolds::{FilmError, FilmInputs, FilmSolveInfo, PadFilm, MAX_ACTIVE_SET_ITERATIONS};
 
 impl PadFilm {
@@ -78,7 +79,11 @@ impl PadFilm {
         let info = match inp.cavitation {
             Cavitation::Gumbel => self.solve_gumbel()?,
             Cavitation::Reynolds => self.solve_reynolds(warm && self.solved_with == Some(Cavitation::Reynolds))?,
+            Cavitation::Jfo => self.solve_jfo(inp, warm && self.solved_with == Some(Cavitation::Jfo))?,
         };
+        if inp.cavitation != Cavitation::Jfo {
+            self.theta.fill(1.0);
+        }
         self.solved_with = Some(inp.cavitation);
         if self.p.iter().any(|v| !v.is_finite()) {
             return Err(FilmError::Input("pressure is not finite (ill-conditioned film)".into()));
@@ -121,6 +126,62 @@ impl PadFilm {
             *r -= b;
         }
         Ok(FilmSolveInfo { factorizations: 1, active_set_iterations: 1, cavitated_nodes: n_cav, ..Default::default() })
+    }
+
+    /// Mass-conserving cavitation (`jfo.rs`): from the previous solve's sets (`warm`) or the Reynolds
+    /// (Swift–Stieber) active set.
+    fn solve_jfo(&mut self, inp: &FilmInputs<'_>, warm: bool) -> Result<FilmSolveInfo, FilmError> {
+        if let crate::physics::reynolds::Inlet::Supply { flow_m3_s } = inp.inlet {
+            if !(flow_m3_s > 0.0 && flow_m3_s.is_finite()) {
+                return Err(FilmError::Input(format!("supply flow {flow_m3_s} m³/s")));
+            }
+        }
+        let mut start = FilmSolveInfo::default();
+        if !warm {
+            start = self.solve_reynolds(false)?;
+        }
+        if self.jfo.is_none() {
+            self.jfo = Some(Box::new(JfoState::new(&self.geom)?));
+        }
+        let g = &self.geom;
+        let mut f = vec![0.0; g.n_nodes()];
+        if inp.injection_pressure != 0.0 {
+            for o in &g.orifices {
+                for &(i, v) in &o.vector {
+                    f[i] += inp.injection_pressure * v / inp.injection_viscosity;
+                }
+            }
+        }
+        let problem = JfoSolve {
+            geom: g,
+            a_raw: &self.a_raw,
+            f: &f,
+            h_qp: &self.h.qp,
+            squeeze: self.squeeze.as_ref(),
+            surface_speed: inp.surface_speed,
+            inlet: inp.inlet,
+        };
+        let mut out =
+            JfoResult { p: &mut self.p, theta: &mut self.theta, cavitated: &mut self.cavitated, r: &mut self.r };
+        let Some(state) = self.jfo.as_deref_mut() else { unreachable!("built above") };
+        let mut info = state.solve(&problem, &mut out)?;
+        info.factorizations += start.factorizations;
+        info.active_set_iterations += start.active_set_iterations;
+        Ok(info)
+    }
+
+    /// The cavitation model of the last solve (`None` before the first).
+    #[must_use]
+    pub fn solved_with(&self) -> Option<Cavitation> {
+        self.solved_with
+    }
+
+    /// The inlet film fraction and the Couette inflow of a full inlet [m³/s, whole pad] of the last
+    /// mass-conserving solve (`None` after a Reynolds or Gümbel solve).
+    #[must_use]
+    pub fn inlet_state(&self) -> Option<(f64, f64)> {
+        let j = self.jfo.as_deref().filter(|_| self.solved_with == Some(Cavitation::Jfo))?;
+        Some((j.theta_in, j.inlet_capacity(self.geom.sym)))
     }
 
     /// Primal–dual active set for p ≥ 0, λ = A p − b ≥ 0, p λ = 0.
