@@ -36,6 +36,9 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
     let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "design", &designs.keys)?;
     let mut runner = Runner::new(text, args.set.to_vec(), false);
+    for note in runner.replaced(&designs.rows[range.clone()]) {
+        eprintln!("note: {note}");
+    }
     let pb = progress(range.len());
     let mut failed = 0;
     for i in range.clone() {

@@ -280,6 +280,9 @@ fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
 /// I/O and every case error, with the file name.
 pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
     let text = std::fs::read_to_string(path).with_context(|| format!("cannot read case file {}", path.display()))?;
+    for note in crate::model::replaced_keys(&text, set).unwrap_or_default() {
+        eprintln!("note: {note}");
+    }
     load_case(&text, set).with_context(|| format!("invalid case {}", path.display()))
 }
 

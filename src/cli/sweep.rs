@@ -48,6 +48,9 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     // One numeric axis: ParaView steps through its values; otherwise through the point numbers.
     let single = (args.axes.len() == 1).then(|| &args.axes[0]);
     let mut runner = Runner::new(text, args.set.to_vec(), true);
+    for note in runner.replaced(&points) {
+        eprintln!("note: {note}");
+    }
     let pb = progress(points.len());
     let mut failed = 0;
     for (i, point) in points.iter().enumerate() {

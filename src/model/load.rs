@@ -4,6 +4,12 @@
 //! `bearing.pads.preload=0.3`, `bearing.pad.2.offset=0.6`, `operating.injection_pressure_bar=[0,0,20,0,0]`);
 //! the value is parsed as a TOML value, falling back to a string; an empty value (`operating.load_n=`)
 //! removes the key.
+//!
+//! The pad geometry has three alternative keys, [`PAD_GEOMETRY_KEYS`] (preload, pad clearance, pad bore
+//! radius; a file gives exactly one per pad table). Setting one of them, by `--set`, a sweep or batch point
+//! or the editor, replaces the others of the same table: `bearing.pads.preload=0.3` on a case that gives
+//! `bearing.pads.bore_radius_mm` drops the bore radius. [`replaced_keys`] lists what a set of overrides
+//! replaced, so callers can say so.
 
 use super::case::Case;
 use super::error::{CaseError, OverrideProblem};
@@ -30,6 +36,41 @@ pub fn parse_case_file(text: &str, overrides: &[String]) -> Result<CaseFile, Cas
         apply_override(&mut table, o)?;
     }
     from_table(table)
+}
+
+/// The alternative ways to give a pad table's machined clearance: setting one removes the others.
+pub const PAD_GEOMETRY_KEYS: [&str; 3] = ["preload", "clearance_um", "bore_radius_mm"];
+
+/// A key of the case that an override removed because it set an alternative of it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Replaced {
+    /// The key the override set (`bearing.pads.preload`).
+    pub set: String,
+    /// The key it removed (`bearing.pads.bore_radius_mm`).
+    pub removed: String,
+    /// The removed key's value as the case gave it.
+    pub was: toml::Value,
+}
+
+impl std::fmt::Display for Replaced {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} replaces {} = {} (alternative pad-geometry keys)", self.set, self.removed, self.was)
+    }
+}
+
+/// The keys of `text` that `overrides` replaced by setting one of their alternatives ([`PAD_GEOMETRY_KEYS`]),
+/// in the order the overrides are applied.
+///
+/// # Errors
+/// Syntax errors and bad overrides, as [`parse_case_file`].
+pub fn replaced_keys(text: &str, overrides: &[String]) -> Result<Vec<Replaced>, CaseError> {
+    let mut table: toml::Table =
+        text.parse().map_err(|e: toml::de::Error| CaseError::Syntax { message: e.to_string() })?;
+    let mut all = Vec::new();
+    for o in overrides {
+        all.extend(apply_override(&mut table, o)?);
+    }
+    Ok(all)
 }
 
 /// Converts a TOML table into a [`CaseFile`], reporting the full key path of any schema error.
@@ -64,8 +105,8 @@ pub(crate) fn schema_error(path: &str, message: &str) -> CaseError {
     CaseError::WrongType { key: if path.is_empty() { "(case)".into() } else { path }, message: message.to_string() }
 }
 
-/// Applies one `key=value` override to the raw table.
-fn apply_override(table: &mut toml::Table, text: &str) -> Result<(), CaseError> {
+/// Applies one `key=value` override to the raw table; returns the keys it replaced.
+fn apply_override(table: &mut toml::Table, text: &str) -> Result<Vec<Replaced>, CaseError> {
     let bad = |problem| CaseError::BadOverride { text: text.to_string(), problem };
     let (key, raw) = text.split_once('=').ok_or_else(|| bad(OverrideProblem::NoEquals))?;
     let (key, raw) = (key.trim(), raw.trim());
@@ -78,8 +119,13 @@ fn apply_override(table: &mut toml::Table, text: &str) -> Result<(), CaseError> 
 }
 
 /// Sets (`Some`) or removes (`None`) the value at a dotted path; a numeric segment indexes an array of
-/// tables (`bearing.pad.2.offset`). Missing tables on the way are created.
-fn set_path(table: &mut toml::Table, parts: &[&str], value: Option<toml::Value>) -> Result<(), OverrideProblem> {
+/// tables (`bearing.pad.2.offset`). Missing tables on the way are created. Setting one of a pad table's
+/// [`PAD_GEOMETRY_KEYS`] removes the others from that table; the removed keys are returned.
+fn set_path(
+    table: &mut toml::Table,
+    parts: &[&str],
+    value: Option<toml::Value>,
+) -> Result<Vec<Replaced>, OverrideProblem> {
     let Some((last, parents)) = parts.split_last() else { return Err(OverrideProblem::EmptyKey) };
     let mut node = table;
     let mut i = 0;
@@ -113,15 +159,26 @@ fn set_path(table: &mut toml::Table, parts: &[&str], value: Option<toml::Value>)
             _ => return Err(OverrideProblem::ValueNotATable { path: parts[..=i].join(".") }),
         }
     }
+    let mut replaced = Vec::new();
     match value {
         Some(v) => {
+            let in_pad_table = matches!(parents, ["bearing", "pads"] | ["bearing", "pad", _]);
+            if in_pad_table && PAD_GEOMETRY_KEYS.contains(last) {
+                let table = parents.join(".");
+                for other in PAD_GEOMETRY_KEYS.iter().filter(|k| *k != last) {
+                    if let Some(was) = node.remove(*other) {
+                        let (set, removed) = (format!("{table}.{last}"), format!("{table}.{other}"));
+                        replaced.push(Replaced { set, removed, was });
+                    }
+                }
+            }
             node.insert((*last).to_string(), v);
         }
         None => {
             node.remove(*last);
         }
     }
-    Ok(())
+    Ok(replaced)
 }
 
 /// The value at a key in a file's table: `bearing.pads.orifice[1].diameter_mm` (or `…orifice.1…`).

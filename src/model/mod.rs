@@ -30,7 +30,7 @@ pub use case::{
 };
 pub use error::CaseError;
 pub use file::CaseFile;
-pub use load::{load_case, parse_case_file};
+pub use load::{load_case, parse_case_file, replaced_keys, Replaced, PAD_GEOMETRY_KEYS};
 
 /// Name and text of every shipped case (`cases/*.toml`), for tests that must cover them all.
 #[cfg(test)]

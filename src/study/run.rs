@@ -11,7 +11,7 @@ use web_time::Instant;
 
 use crate::bearing::solution::limits::LimitKind;
 use crate::bearing::{NoCancel, Request, Solution, SolveError, Stages, Start};
-use crate::model::{load_case, Case, CaseError};
+use crate::model::{load_case, replaced_keys, Case, CaseError, Replaced};
 
 use super::columns::{outputs, COLUMNS};
 
@@ -151,6 +151,24 @@ impl Runner {
         let mut set = self.base.clone();
         set.extend(overrides.iter().map(|(k, v)| format!("{k}={v}")));
         Ok(load_case(&self.text, &set)?.1)
+    }
+
+    /// What the points' overrides replace in the base case (an alternative pad-geometry key set where the
+    /// case gives another: `bearing.pads.preload` over `bearing.pads.bore_radius_mm`), each once, as notes
+    /// for the user. Points whose overrides do not apply are left out (their rows carry the error).
+    #[must_use]
+    pub fn replaced(&self, points: &[Vec<(String, String)>]) -> Vec<Replaced> {
+        let mut notes: Vec<Replaced> = Vec::new();
+        for point in points {
+            let mut set = self.base.clone();
+            set.extend(point.iter().map(|(k, v)| format!("{k}={v}")));
+            for r in replaced_keys(&self.text, &set).unwrap_or_default() {
+                if !notes.iter().any(|n| n.set == r.set && n.removed == r.removed) {
+                    notes.push(r);
+                }
+            }
+        }
+        notes
     }
 
     /// Solves one point.

@@ -51,8 +51,8 @@ fn preload_must_be_below_one() {
     // allowed down to −1; a pad bore inside the journal is not.
     let e = err(&["bearing.pads.bore_radius_mm=50.7"]);
     assert_names(&e, "bearing.pads.bore_radius_mm", &["greater than the journal radius"]);
-    let e = err(&["bearing.pads.bore_radius_mm=", "bearing.pads.preload=0.2", "bearing.pads.clearance_um=120"]);
-    assert_names(&e, "bearing.pads", &["one of preload, clearance_um, bore_radius_mm"]);
+    // Two alternatives in one table of a file: `inconsistencies_are_typed_with_their_numbers`; overrides
+    // replace one another (`an_alternative_pad_geometry_key_replaces_the_one_the_file_gives`).
 }
 
 #[test]
@@ -244,8 +244,55 @@ fn inconsistencies_are_typed_with_their_numbers() {
         reason(err(&["operating.injection_pressure_bar=[1.0, 2.0]"])),
         Inconsistency::PerPadValues { given: 2, pads: 5 }
     );
-    let e = err(&["bearing.pads.preload=0.2"]);
+    // Two alternatives written in one table of a file are refused (an override replaces instead, below).
+    let both = base().replace("bore_radius_mm = 50.921", "bore_radius_mm = 50.921\npreload = 0.2");
+    let e = load_case(&both, &[]).expect_err("two pad-geometry keys in one table");
     assert_eq!(reason(e), Inconsistency::PadGeometryTwice { given: vec!["preload".into(), "bore_radius_mm".into()] });
+}
+
+/// Setting one of the alternative pad-geometry keys (preload, clearance_um, bore_radius_mm) by an override
+/// replaces the one the file gives, in that table only, and says so. The compressor bearing gives
+/// Rp = 50.921 mm on R = 50.8 mm (Cp = 121 µm) and Cb = 102 µm.
+#[test]
+fn an_alternative_pad_geometry_key_replaces_the_one_the_file_gives() {
+    use tiltpad::model::replaced_keys;
+    let cb = 102e-6;
+    let cp = |set: &[&str]| {
+        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+        let (_, case) = load_case(&base(), &set).unwrap_or_else(|e| panic!("{set:?}: {e}"));
+        case.bearing.pads.iter().map(|p| p.clearance_m).collect::<Vec<_>>()
+    };
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+    assert!(cp(&[]).iter().all(|&c| close(c, 121e-6)), "{:?}", cp(&[]));
+    // Preload m = 0.2: Cp = Cb / (1 − m) = 127.5 µm on every pad.
+    assert!(cp(&["bearing.pads.preload=0.2"]).iter().all(|&c| close(c, cb / 0.8)));
+    assert!(cp(&["bearing.pads.clearance_um=150"]).iter().all(|&c| close(c, 150e-6)));
+    // Back and forth: the last one given wins.
+    let last = cp(&["bearing.pads.preload=0.2", "bearing.pads.bore_radius_mm=50.95"]);
+    assert!(last.iter().all(|&c| close(c, 150e-6)), "{last:?}");
+    let notes = replaced_keys(&base(), &["bearing.pads.preload=0.2".into()]).unwrap();
+    assert_eq!(notes.len(), 1);
+    assert_eq!(
+        notes[0].to_string(),
+        "bearing.pads.preload replaces bearing.pads.bore_radius_mm = 50.921 (alternative pad-geometry keys)"
+    );
+    // Removing a key or setting another key replaces nothing.
+    assert!(replaced_keys(&base(), &["bearing.pads.offset=0.5".into()]).unwrap().is_empty());
+    assert!(replaced_keys(&base(), &["bearing.pads.bore_radius_mm=".into()]).unwrap().is_empty());
+    // A per-pad table replaces within itself; the common table keeps its key for the other pads.
+    let per_pad = base().replace(
+        "[[bearing.pads.orifice]]",
+        "[[bearing.pad]]\nbore_radius_mm = 50.93\n[[bearing.pad]]\n[[bearing.pad]]\n[[bearing.pad]]\n[[bearing.pad]]\n\n[[bearing.pads.orifice]]",
+    );
+    let set = vec!["bearing.pad.0.preload=0.2".to_string()];
+    let notes = replaced_keys(&per_pad, &set).unwrap();
+    assert_eq!(
+        (notes[0].set.as_str(), notes[0].removed.as_str()),
+        ("bearing.pad.0.preload", "bearing.pad.0.bore_radius_mm")
+    );
+    let (_, case) = load_case(&per_pad, &set).unwrap();
+    assert!(close(case.bearing.pads[0].clearance_m, cb / 0.8));
+    assert!(case.bearing.pads[1..].iter().all(|p| close(p.clearance_m, 121e-6)));
 }
 
 /// Absent keys take their rows' defaults, and every value is converted to SI by its row's unit: the

@@ -156,6 +156,48 @@ fn a_sweep_over_two_keys_is_a_grid_on_standard_output() {
     assert!(hv(1) < hv(3) && hv(2) < hv(4), "{:?}", (hv(1), hv(2), hv(3), hv(4)));
 }
 
+/// A preload sweep on cases that give the pad bore radius (compressor) or the pad clearance (Fillon):
+/// each point's preload replaces the file's key, every point solves, and standard error says what was
+/// replaced. The rows are those of the same sweep with the file's key removed by hand, number for number.
+#[test]
+fn a_preload_sweep_replaces_the_bore_radius_or_the_pad_clearance() {
+    for (name, replaced) in [
+        ("compressor-bearing.toml", "bearing.pads.bore_radius_mm = 50.921"),
+        ("fillon-a.toml", "bearing.pads.clearance_um = 148.0"),
+    ] {
+        let o =
+            run(&["sweep", &case(name), "--set", PREVIEW, "--vary", "bearing.pads.preload=0.1:0.5:3", "--csv", "-"]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let note = format!("note: bearing.pads.preload replaces {replaced} (alternative pad-geometry keys)");
+        assert_eq!(stderr(&o).matches(&note).count(), 1, "{name}: {}", stderr(&o));
+        let r = rows(&String::from_utf8_lossy(&o.stdout));
+        assert_eq!(r.len(), 4, "{name}: {r:?}");
+        let (h, err) = (col(&r, "h_min_um"), col(&r, "error"));
+        assert!(r[1..].iter().all(|row| row[err].is_empty()), "{name}: {r:?}");
+        let key = replaced.split(" = ").next().unwrap();
+        let removed = format!("{key}=");
+        let by_hand = run(&[
+            "sweep",
+            &case(name),
+            "--set",
+            PREVIEW,
+            "--set",
+            &removed,
+            "--vary",
+            "bearing.pads.preload=0.1:0.5:3",
+            "--csv",
+            "-",
+        ]);
+        assert!(by_hand.status.success() && !stderr(&by_hand).contains("note:"), "{}", stderr(&by_hand));
+        let by_hand = rows(&String::from_utf8_lossy(&by_hand.stdout));
+        let column = |t: &[Vec<String>]| t[1..].iter().map(|row| row[h].clone()).collect::<Vec<_>>();
+        assert_eq!(column(&r), column(&by_hand), "{name}");
+        // The preload acts: the three points differ.
+        let v: Vec<f64> = column(&r).iter().map(|x| x.parse().unwrap()).collect();
+        assert!((v[0] - v[1]).abs() > 0.5 && (v[1] - v[2]).abs() > 0.5, "{name}: h_min {v:?}");
+    }
+}
+
 #[test]
 fn a_batch_in_three_shards_concatenated_equals_the_whole_batch() {
     let dir = scratch("batch");
