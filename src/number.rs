@@ -70,6 +70,21 @@ fn with_digits(x: f64, n: usize, plain: std::ops::Range<i32>) -> String {
     }
 }
 
+/// Engineering notation for values of an SI unit: the power of 1000 and its prefix that bring `max_abs`
+/// (the largest magnitude to be shown in that unit) into [1, 1000): `eng_prefix(3.0e7)` = (1e6, "M"),
+/// so 3.017e7 N/m reads "30.17 MN/m"; 0 and values in [1, 1000) keep the unit (1, ""). Prefixes from n to G.
+#[must_use]
+pub fn eng_prefix(max_abs: f64) -> (f64, &'static str) {
+    const PREFIXES: [(f64, &str); 7] =
+        [(1e9, "G"), (1e6, "M"), (1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n")];
+    if !(max_abs.is_finite() && max_abs > 0.0) {
+        return (1.0, "");
+    }
+    // Rounded to 4 digits first, so 999.96 shows as "1 k" rather than "1000".
+    let rounded: f64 = format!("{max_abs:.3e}").parse().unwrap_or(max_abs);
+    PREFIXES.into_iter().find(|(f, _)| rounded >= *f).unwrap_or(PREFIXES[6])
+}
+
 /// Drops trailing zeros after a decimal point, and the point itself when nothing follows it.
 fn trim(s: &str) -> String {
     if s.contains('.') {
@@ -99,6 +114,20 @@ mod tests {
         assert_eq!(sig(999_999.7, 4), "1e6");
         assert_eq!(sig(f64::NAN, 4), "NaN");
         assert_eq!(sig(f64::INFINITY, 4), "inf");
+    }
+
+    #[test]
+    fn engineering_prefixes_bring_values_into_one_to_a_thousand() {
+        assert_eq!(eng_prefix(3.017e7), (1e6, "M"));
+        assert_eq!(eng_prefix(65_972.0), (1e3, "k"));
+        assert_eq!(eng_prefix(2516.0), (1e3, "k"));
+        assert_eq!(eng_prefix(999.96), (1e3, "k"));
+        assert_eq!(eng_prefix(1918.0), (1e3, "k"));
+        assert_eq!(eng_prefix(5.0), (1.0, ""));
+        assert_eq!(eng_prefix(0.0021), (1e-3, "m"));
+        assert_eq!(eng_prefix(0.0), (1.0, ""));
+        assert_eq!(eng_prefix(f64::NAN), (1.0, ""));
+        assert_eq!(eng_prefix(4e12), (1e9, "G"));
     }
 
     #[test]

@@ -14,6 +14,54 @@ const FRAME_TIME_MEANING: &str = "Time to build a frame on the UI thread; the so
 #[cfg(target_arch = "wasm32")]
 const FRAME_TIME_MEANING: &str = "Time to build a frame, including the solver steps run in it (the browser has no threads here): one solver stage may take longer than the per-frame budget.";
 
+/// The largest share of the window's width the editor takes (its rows need about 440 points).
+const EDITOR_MAX: f32 = 0.36;
+/// The smallest and largest share of the window's width the results panel takes: its tables scroll
+/// sideways inside it rather than widening it.
+const RESULTS_RANGE: [f32; 2] = [0.25, 0.3];
+
+/// The menu at the end of the tab row that holds the views whose tabs do not fit.
+const MORE_TABS: &str = "More…";
+
+/// The width a tab (a selectable label) of `label` takes in the row, with the spacing after it.
+fn tab_width(ui: &Ui, label: &str) -> f32 {
+    let text = ui.ctx().fonts_mut(|f| {
+        f.layout_no_wrap(label.to_string(), egui::TextStyle::Button.resolve(ui.style()), Color32::WHITE).size().x
+    });
+    text + 2.0 * ui.spacing().button_padding.x + ui.spacing().item_spacing.x
+}
+
+/// The tabs shown in a row of `room` points, in list order: all when they fit; else as many from the first
+/// as fit beside the "More" menu (`more` points wide), the open view's tab (`open`) taking the place of the
+/// last of them when it would not be shown.
+#[must_use]
+pub fn tabs_that_fit(widths: &[f32], open: usize, room: f32, more: f32) -> Vec<usize> {
+    if widths.iter().sum::<f32>() <= room {
+        return (0..widths.len()).collect();
+    }
+    let room = room - more;
+    let mut used = 0.0;
+    let mut shown: Vec<usize> = Vec::new();
+    for (i, w) in widths.iter().enumerate() {
+        if used + w > room {
+            break;
+        }
+        used += w;
+        shown.push(i);
+    }
+    if !shown.contains(&open) && open < widths.len() {
+        while let Some(&last) = shown.last() {
+            if used + widths[open] <= room {
+                break;
+            }
+            used -= widths[last];
+            shown.pop();
+        }
+        shown.push(open);
+    }
+    shown
+}
+
 impl WorkbenchApp {
     pub(super) fn frame_ui(&mut self, ui: &mut Ui) {
         let ctx = ui.ctx().clone();
@@ -27,11 +75,13 @@ impl WorkbenchApp {
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
         // On windows narrower than ~1330 points the side panels start narrower, so the view keeps about half
-        // the width; each can also be collapsed (menu bar) or dragged closed.
+        // the width; each can also be collapsed (menu bar) or dragged closed, and neither can be dragged (or
+        // pushed by a wide table) past about a third of the window: the view keeps at least a third.
         let width = ctx.content_rect().width();
         let doc = &mut self.doc;
         let edit = egui::Panel::left("editor")
             .resizable(true)
+            .max_size(EDITOR_MAX * width)
             .default_size(self.persisted.editor_width.min(0.27 * width))
             .show_collapsible(ui, &mut self.persisted.editor_open, |ui| {
                 egui::ScrollArea::vertical().id_salt("editor-scroll").show(ui, |ui| editor_ui(ui, doc)).inner
@@ -40,11 +90,11 @@ impl WorkbenchApp {
         self.dragging = edit.is_some_and(|e| e.dragging);
         let t1 = web_time::Instant::now();
         let mut results_open = self.persisted.results_open;
-        egui::Panel::right("results").resizable(true).default_size(330.0_f32.min(0.25 * width)).show_collapsible(
-            ui,
-            &mut results_open,
-            |ui| self.results_ui(ui),
-        );
+        egui::Panel::right("results")
+            .resizable(true)
+            .size_range(RESULTS_RANGE[0] * width..=RESULTS_RANGE[1] * width)
+            .default_size(330.0_f32.min(0.25 * width))
+            .show_collapsible(ui, &mut results_open, |ui| self.results_ui(ui));
         self.persisted.results_open = results_open;
         let t2 = web_time::Instant::now();
         egui::CentralPanel::default_margins().show(ui, |ui| self.central_ui(ui));
@@ -153,7 +203,13 @@ impl WorkbenchApp {
 
     fn status_ui(&mut self, ui: &mut Ui) {
         ui.horizontal(|ui| {
+            // One state at a time: an invalid case is not solved, whatever result is still on screen.
+            let invalid = self.doc.validation().is_err();
             match &self.status {
+                Status::Idle if invalid => {
+                    ui.label(RichText::new("Not solved").color(ui.visuals().warn_fg_color))
+                        .on_hover_text("The edited case is invalid; the views show the last valid result.");
+                }
                 Status::Idle => {
                     ui.label(RichText::new("Solved").color(Color32::from_rgb(120, 200, 120)));
                 }
@@ -217,7 +273,8 @@ impl WorkbenchApp {
         );
         let (solution, text) = (shown.solution.clone(), self.doc.text().ok());
         let pins = &mut self.persisted.pins;
-        let action = egui::ScrollArea::vertical()
+        // Both ways: a wide comparison table scrolls inside the panel rather than widening it.
+        let action = egui::ScrollArea::both()
             .id_salt("results-scroll")
             .show(ui, |ui| {
                 let action = compare_panel::compare_ui(ui, pins, &solution, text.as_deref());
@@ -237,11 +294,26 @@ impl WorkbenchApp {
     /// The tabs of the views, and the open one.
     fn central_ui(&mut self, ui: &mut Ui) {
         let open = self.open_index();
-        ui.horizontal_wrapped(|ui| {
-            for (i, v) in self.views.iter().enumerate() {
-                if ui.selectable_label(i == open, v.label()).clicked() {
-                    self.persisted.view = v.id().to_string();
+        // One row whatever the number of views and the panel's width: the tabs that fit, the open view's
+        // always among them, and the others under "More" at the row's end.
+        let labels: Vec<&'static str> = self.views.iter().map(|v| v.label()).collect();
+        let widths: Vec<f32> = labels.iter().map(|l| tab_width(ui, l)).collect();
+        let shown = tabs_that_fit(&widths, open, ui.available_width(), tab_width(ui, MORE_TABS));
+        ui.horizontal(|ui| {
+            for &i in &shown {
+                if ui.selectable_label(i == open, labels[i]).clicked() {
+                    self.persisted.view = self.views[i].id().to_string();
                 }
+            }
+            if shown.len() < labels.len() {
+                ui.menu_button(MORE_TABS, |ui| {
+                    for (i, label) in labels.iter().enumerate().filter(|(i, _)| !shown.contains(i)) {
+                        if ui.button(*label).clicked() {
+                            self.persisted.view = self.views[i].id().to_string();
+                            ui.close();
+                        }
+                    }
+                });
             }
         });
         ui.separator();
@@ -275,5 +347,27 @@ impl WorkbenchApp {
                 self.persisted.compare_with = Some(pin.name.clone());
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tabs_that_fit;
+
+    #[test]
+    fn the_tab_row_keeps_to_one_row_with_the_open_tab_in_it() {
+        let w = [60.0, 80.0, 90.0, 100.0, 40.0, 50.0];
+        // All fit: 420 points.
+        assert_eq!(tabs_that_fit(&w, 5, 420.0, 50.0), [0, 1, 2, 3, 4, 5]);
+        // 300 points: 250 beside the menu hold the first three (230).
+        assert_eq!(tabs_that_fit(&w, 0, 300.0, 50.0), [0, 1, 2]);
+        // The open fifth tab replaces the third.
+        assert_eq!(tabs_that_fit(&w, 4, 300.0, 50.0), [0, 1, 4]);
+        // The open fourth (100) takes the third's place: 60 + 80 + 100 fit in 250.
+        assert_eq!(tabs_that_fit(&w, 3, 300.0, 50.0), [0, 1, 3]);
+        // In 200 points (150 beside the menu) 60 + 100 does not fit: the open tab alone.
+        assert_eq!(tabs_that_fit(&w, 3, 200.0, 50.0), [3]);
+        // No room at all: the open tab alone.
+        assert_eq!(tabs_that_fit(&w, 2, 10.0, 50.0), [2]);
     }
 }

@@ -1,4 +1,8 @@
 //! Web entry: starts the workbench on the page's `<canvas id="tiltpad">` (see `web/index.html`).
+//!
+//! The workbench draws through wgpu, on WebGPU or WebGL2. Before starting, a scratch canvas (not the page's,
+//! whose context type a probe would fix) is asked for either; a browser that offers neither gets a plain
+//! message saying what the page needs and what to try, instead of wgpu's error text.
 
 use wasm_bindgen::JsCast as _;
 
@@ -16,6 +20,11 @@ pub fn start() {
             log::error!("no <canvas id=\"tiltpad\"> on the page");
             return;
         };
+        if let Some(missing) = missing_graphics(&document) {
+            show_message(&document, &missing);
+            log::error!("{missing}");
+            return;
+        }
         // `?case=<shipped case>` opens that case (asking first if the restored one has unsaved changes).
         // `?probe` logs frame times to the console ([`super::frame_probe`]).
         let query = web_sys::window().and_then(|w| w.location().search().ok()).unwrap_or_default();
@@ -53,10 +62,45 @@ pub fn start() {
             match started {
                 Ok(()) => loading.remove(),
                 Err(e) => {
-                    loading.set_text_content(Some(&format!("The workbench failed to start: {e:?}")));
+                    let why = e
+                        .as_string()
+                        .or_else(|| js_sys::Reflect::get(&e, &"message".into()).ok().and_then(|m| m.as_string()));
+                    let text = format!(
+                        "The workbench failed to start{}. {NEEDS}",
+                        why.map_or_else(String::new, |w| format!(" ({w})"))
+                    );
+                    loading.set_text_content(Some(&text));
                     log::error!("failed to start: {e:?}");
                 }
             }
         }
     });
+}
+
+/// What the page needs, said wherever the workbench cannot start.
+const NEEDS: &str = "The workbench draws with WebGPU or WebGL2: use a current Chrome, Edge, Firefox or Safari with \
+    hardware acceleration on (Chrome and Edge: Settings → System → Use graphics acceleration; Firefox: \
+    about:support shows WebGL 2). Without them, the native app and the command line (tiltpad solve, sweep) \
+    compute the same results.";
+
+/// `None` when the browser offers WebGPU or WebGL2; else the message to show.
+fn missing_graphics(document: &web_sys::Document) -> Option<String> {
+    let webgpu = web_sys::window()
+        .and_then(|w| js_sys::Reflect::get(&w, &"navigator".into()).ok())
+        .and_then(|n| js_sys::Reflect::get(&n, &"gpu".into()).ok())
+        .is_some_and(|gpu| !gpu.is_undefined() && !gpu.is_null());
+    let webgl2 = document
+        .create_element("canvas")
+        .ok()
+        .and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
+        .and_then(|c| c.get_context("webgl2").ok().flatten())
+        .is_some();
+    (!webgpu && !webgl2).then(|| format!("This browser offers neither WebGPU nor WebGL2. {NEEDS}"))
+}
+
+/// Replaces the page's loading line with `text` (the canvas stays empty).
+fn show_message(document: &web_sys::Document, text: &str) {
+    if let Some(loading) = document.get_element_by_id("loading") {
+        loading.set_text_content(Some(text));
+    }
 }

@@ -12,8 +12,11 @@
 //! - [`limits`]: design-limit checks as text.
 //! - [`outline`]: the bearing cross-section to scale with an exaggerated clearance.
 //! - [`plots`]: reduced coefficients against frequency ratio or speed, the full-matrix table.
-//! - [`rotor`]: Campbell diagram, stability map, mode shapes, unbalance Bode and the sketch of a rotor analysis.
+//! - [`rotor`]: Campbell diagram, stability map, mode shapes, unbalance Bode (nodes named, the API 617 check in
+//!   words) and the sketch of a rotor analysis.
 //! - [`request`]: the stages the open views need, joined into the request the app sends.
+//! - [`sommerfeld`]: the Sommerfeld chart of a load sweep (ε, attitude, h_min/Cb, reduced K and C against S)
+//!   with the short-bearing reference of a plain 360° bearing.
 //! - [`summary`]: the results panel's rows in display units.
 //! - [`sweep`]: any case key against any output columns (series, CSV) for the sweep view.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
@@ -37,5 +40,6 @@ pub mod outline;
 pub mod plots;
 pub mod request;
 pub mod rotor;
+pub mod sommerfeld;
 pub mod summary;
 pub mod sweep;

@@ -124,6 +124,8 @@ pub fn mode_shape(result: &AnalysisResult, rotor: &Rotor, speed: usize, index: u
 #[derive(Debug, Clone, PartialEq)]
 pub struct NodeResponse {
     pub node: usize,
+    /// What the node is, for legends and sentences ([`node_name`]): `bearing 1`, `mid-span`, `shaft end`.
+    pub name: String,
     /// Major axis of the orbit, peak to peak [µm], against speed [rpm].
     pub amplitude_um: Vec<[f64; 2]>,
     /// Phase of x [deg] against speed [rpm].
@@ -138,9 +140,128 @@ pub struct UnbalanceBode {
     pub api617_um: Vec<[f64; 2]>,
 }
 
-/// The unbalance response of `result` per response node.
+/// A node as a reader names it, with its axial position: `bearing 1 (210 mm)` (bearings that carry the
+/// shaft numbered along it), `shaft end (0 mm)`, `mid-span (840 mm)` (within a tenth of the bearing span of the midpoint
+/// between the outer bearings), else `node 31 (1020 mm)`; `, disk` is added where a disk sits.
 #[must_use]
-pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
+pub fn node_name(rotor: &Rotor, node: usize) -> String {
+    let z = rotor.node_positions();
+    let at = |n: usize| MM.from_si(z.get(n).copied().unwrap_or(0.0));
+    // Bearings that carry the shaft: a bearing case, or numbers with direct stiffness. A cross-coupling
+    // entered as a "bearing" (the compressor's aerodynamic cross-coupling at mid-span: skew-symmetric
+    // stiffness only) is not numbered as one.
+    let carries = |b: &&crate::model::rotor::BearingPosition| match &b.support {
+        BearingSupport::Case { .. } => true,
+        BearingSupport::Numbers(t) => t.k.iter().any(|k| k[0][0] > 0.0 || k[1][1] > 0.0),
+    };
+    let mut bearing_nodes: Vec<usize> = rotor.bearings.iter().filter(carries).map(|b| b.node).collect();
+    bearing_nodes.sort_unstable();
+    bearing_nodes.dedup();
+    let what = if let Some(i) = bearing_nodes.iter().position(|&b| b == node) {
+        format!("bearing {}", i + 1)
+    } else if node == 0 || node + 1 == rotor.n_nodes() {
+        "shaft end".to_string()
+    } else {
+        match (bearing_nodes.first(), bearing_nodes.last()) {
+            (Some(&a), Some(&b)) if b > a && (at(node) - 0.5 * (at(a) + at(b))).abs() <= 0.1 * (at(b) - at(a)) => {
+                "mid-span".to_string()
+            }
+            _ => format!("node {node}"),
+        }
+    };
+    let disk = if rotor.disks.iter().any(|d| d.node == node) { ", disk" } else { "" };
+    format!("{what}{disk} ({:.0} mm)", at(node))
+}
+
+/// Where a node's response exceeds the API 617 limit: the speed band and the worst point in it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Exceedance {
+    pub name: String,
+    /// First and last analysed speed above the limit [rpm].
+    pub from_rpm: f64,
+    pub to_rpm: f64,
+    /// The largest ratio of amplitude to limit in the band, its speed [rpm], amplitude and limit [µm].
+    pub worst_rpm: f64,
+    pub worst_um: f64,
+    pub limit_um: f64,
+}
+
+impl UnbalanceBode {
+    /// Every band of analysed speeds where a node's amplitude exceeds the API 617 limit, node by node.
+    #[must_use]
+    pub fn exceedances(&self) -> Vec<Exceedance> {
+        let limit_at = |rpm: f64| self.api617_um.iter().find(|p| (p[0] - rpm).abs() < 1e-9).map(|p| p[1]);
+        let mut out = Vec::new();
+        for n in &self.nodes {
+            let mut band: Option<Exceedance> = None;
+            for &[rpm, a] in &n.amplitude_um {
+                match limit_at(rpm) {
+                    Some(l) if a > l => {
+                        let e = band.get_or_insert(Exceedance {
+                            name: n.name.clone(),
+                            from_rpm: rpm,
+                            to_rpm: rpm,
+                            worst_rpm: rpm,
+                            worst_um: a,
+                            limit_um: l,
+                        });
+                        e.to_rpm = rpm;
+                        if a / l > e.worst_um / e.limit_um {
+                            (e.worst_rpm, e.worst_um, e.limit_um) = (rpm, a, l);
+                        }
+                    }
+                    _ => out.extend(band.take()),
+                }
+            }
+            out.extend(band);
+        }
+        out
+    }
+
+    /// The API 617 check in words: each band over the limit, or that every node stays below it (with the
+    /// closest approach).
+    #[must_use]
+    pub fn api617_sentence(&self) -> String {
+        let over = self.exceedances();
+        if over.is_empty() {
+            let closest = self
+                .nodes
+                .iter()
+                .flat_map(|n| {
+                    n.amplitude_um.iter().filter_map(move |&[rpm, a]| {
+                        self.api617_um.iter().find(|p| (p[0] - rpm).abs() < 1e-9).map(|p| (a / p[1], rpm, &n.name))
+                    })
+                })
+                .max_by(|a, b| a.0.total_cmp(&b.0));
+            return match closest {
+                Some((ratio, rpm, name)) => format!(
+                    "Below the API 617 limit at every node shown; closest: {name}, {:.0} % of the limit at {rpm:.0} rpm.",
+                    100.0 * ratio
+                ),
+                None => "No API 617 limit at these speeds.".into(),
+            };
+        }
+        let parts: Vec<String> = over
+            .iter()
+            .map(|e| {
+                format!(
+                    "{} from {:.0} to {:.0} rpm (worst {} µm against {} µm at {:.0} rpm)",
+                    e.name,
+                    e.from_rpm,
+                    e.to_rpm,
+                    crate::number::sig(e.worst_um, 3),
+                    crate::number::sig(e.limit_um, 3),
+                    e.worst_rpm
+                )
+            })
+            .collect();
+        format!("Exceeds the API 617 limit 25.4 sqrt(12000/N) µm: {}.", parts.join("; "))
+    }
+}
+
+/// The unbalance response of `result` per response node, each named on `rotor` ([`node_name`]).
+#[must_use]
+pub fn unbalance_bode(result: &AnalysisResult, rotor: &Rotor) -> UnbalanceBode {
     let nodes = result
         .response_nodes
         .iter()
@@ -153,7 +274,7 @@ pub fn unbalance_bode(result: &AnalysisResult) -> UnbalanceBode {
                     p.push([rpm, o.x_phase_rad.to_degrees()]);
                 }
             }
-            NodeResponse { node, amplitude_um: a, phase_deg: p }
+            NodeResponse { node, name: node_name(rotor, node), amplitude_um: a, phase_deg: p }
         })
         .collect();
     let api617_um = result
@@ -325,12 +446,49 @@ c_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]
         assert_eq!(s.z_m.len(), rotor.n_nodes());
         let biggest = s.x.iter().chain(&s.y).fold(0.0_f64, |m, v| m.max(v.abs()));
         assert!(biggest <= 1.0 + 1e-12 && biggest > 0.5, "{biggest}");
-        let b = unbalance_bode(&r);
+        let b = unbalance_bode(&r, &rotor);
         let mid = b.nodes.iter().find(|n| n.node == 5).unwrap();
+        // Bearings at nodes 0 and 10 of a 1 m shaft; the disk and unbalance at node 5 in between.
+        assert_eq!(mid.name, "mid-span, disk (500 mm)");
+        let names: Vec<&str> = b.nodes.iter().map(|n| n.name.as_str()).collect();
+        assert_eq!(names, ["bearing 1 (0 mm)", "mid-span, disk (500 mm)", "bearing 2 (1000 mm)"]);
         let peak = mid.amplitude_um.iter().max_by(|a, b| a[1].total_cmp(&b[1])).unwrap()[0];
         let critical = mode_curves(&r, &rotor, 1).critical[0][0];
         assert!((peak - critical).abs() <= 300.0, "peak at {peak} rpm, critical {critical} rpm");
         assert_eq!(b.api617_um.len(), r.speeds.len() - 1);
+    }
+
+    /// The API 617 check in words, on a made-up response: a bearing over its limit from 4000 to 5000 rpm
+    /// (worst 60 µm against 40 µm at 4000 rpm), the other node below it.
+    #[test]
+    fn the_api617_check_names_the_node_and_the_speed_band() {
+        let limit = |rpm: f64| 25.4 * (12000.0 / rpm).sqrt();
+        let speeds = [3000.0, 4000.0, 5000.0, 6000.0];
+        let node = |name: &str, a: [f64; 4]| NodeResponse {
+            node: 0,
+            name: name.into(),
+            amplitude_um: speeds.iter().zip(a).map(|(&r, a)| [r, a]).collect(),
+            phase_deg: Vec::new(),
+        };
+        let mut b = UnbalanceBode {
+            nodes: vec![node("bearing 1 (210 mm)", [10.0, 60.0, 40.0, 10.0]), node("mid-span (840 mm)", [5.0; 4])],
+            api617_um: speeds.iter().map(|&r| [r, limit(r)]).collect(),
+        };
+        let e = b.exceedances();
+        assert_eq!(e.len(), 1);
+        assert_eq!((e[0].from_rpm, e[0].to_rpm, e[0].worst_rpm, e[0].worst_um), (4000.0, 5000.0, 4000.0, 60.0));
+        assert_eq!(
+            b.api617_sentence(),
+            "Exceeds the API 617 limit 25.4 sqrt(12000/N) µm: bearing 1 (210 mm) from 4000 to 5000 rpm (worst 60 µm against 44 µm at 4000 rpm)."
+        );
+        b.nodes.truncate(0);
+        b.nodes.push(node("mid-span (840 mm)", [5.0, 5.0, 5.0, 20.0]));
+        assert!(b.exceedances().is_empty());
+        // 20 µm against 25.4·√2 = 35.92 µm at 6000 rpm: 56 %.
+        assert_eq!(
+            b.api617_sentence(),
+            "Below the API 617 limit at every node shown; closest: mid-span (840 mm), 56 % of the limit at 6000 rpm."
+        );
     }
 
     #[test]

@@ -25,6 +25,7 @@ use tiltpad::app::WorkbenchApp;
 use tiltpad::model::rotor::CoefficientModel;
 use tiltpad::scene::field::{FieldKind, PadMap};
 use tiltpad::scene::field_compare::difference_maps;
+use tiltpad::scene::rotor::unbalance_bode;
 use tiltpad::scene::summary::sig4;
 use tiltpad::scene::sweep::SweepSpec;
 use tiltpad::units::{MPA, RPM, UM};
@@ -256,9 +257,21 @@ fn coefficient_view_plots_the_frequency_sweep_and_the_full_matrices() {
     // The synchronous point of the sweep is the case's own reduced coefficients.
     let sync = sweep.iter().find(|(r, _)| (*r - 1.0).abs() < 1e-12).unwrap().1;
     assert_eq!(sync.k_n_per_m, shown.solution.reduced.k_n_per_m);
-    h.get_by_label_contains("Reduced stiffness K [MN/m]");
-    assert_eq!(h.get_all_by_label("pad 3 tilt [rad]").count(), 6, "row and column header in K, C and M");
+    // Direct and cross terms on scales of their own, each legend above its plot.
+    for title in
+        ["Direct stiffness [MN/m]", "Cross stiffness [MN/m]", "Direct damping [kN·s/m]", "Cross damping [kN·s/m]"]
+    {
+        h.get_by_label(title);
+    }
+    for entry in ["Kxx", "Kyy", "Kxy", "Kyx", "Cxx", "Cyy"] {
+        h.get_by_label(&format!("legend: {entry}"));
+    }
     snapshot(&mut h, "coefficients_frequency");
+    // The full matrices open under their header.
+    assert!(h.query_by_label("pad 3 tilt [rad]").is_none());
+    h.get_by_label_contains("Full coefficient matrices").click();
+    h.run_steps(3);
+    assert_eq!(h.get_all_by_label("pad 3 tilt [rad]").count(), 6, "row and column header in K, C and M");
 }
 
 #[test]
@@ -460,6 +473,9 @@ fn an_invalid_value_is_flagged_in_place_and_the_last_result_stays() {
     let shown = h.state().shown.clone().unwrap().solution;
     assert!(std::sync::Arc::ptr_eq(&shown, &before));
     assert!(h.state().result_is_stale());
+    // The status bar says the case is not solved, not "Solved" beside "Invalid case".
+    assert!(h.query_by_label("Solved").is_none());
+    h.get_by_label("Not solved");
     h.get_by_label(&format!("{:.4}", before.eccentricity_ratio));
     assert_eq!(
         h.get_all_by_label_contains("Showing the last valid result").count(),
@@ -598,6 +614,15 @@ fn rotor_view_analyses_the_compressor_rotor_and_shows_every_tab() {
     snapshot(&mut h, "rotor_mode_shape");
     h.get_by_label("Unbalance response").click();
     h.run_steps(3);
+    // The check against API 617 in words, the nodes by name (bearings numbered along the shaft).
+    let bode = unbalance_bode(rotor(&h).result().unwrap(), rotor(&h).analysed_rotor().unwrap());
+    let sentence = bode.api617_sentence();
+    h.get_by_label(&sentence);
+    assert!(sentence.contains("API 617 limit"), "{sentence}");
+    for name in ["bearing 1 (210 mm)", "bearing 2 (1470 mm)", "shaft end, disk (0 mm)", "mid-span, disk (780 mm)"] {
+        h.get_by_label(&format!("legend: {name}"));
+    }
+    assert!(h.query_by_label_contains("node 7").is_none());
     snapshot(&mut h, "rotor_unbalance");
     h.get_by_label("Critical-speed map").click();
     h.run_steps(3);
@@ -669,17 +694,10 @@ fn a_load_sweep_plots_three_outputs_with_their_units() {
             outputs: vec!["eccentricity_ratio".into(), "h_min_um".into(), "p_max_mpa".into()],
             against_sommerfeld: false,
             preview: true,
+            chart: false,
         };
     });
-    h.get_by_label("Run sweep").click();
-    let start = Instant::now();
-    while !sweep_view(&h).job.as_ref().is_some_and(|j| j.done()) {
-        assert!(start.elapsed() < Duration::from_secs(180), "sweep did not finish");
-        std::thread::sleep(Duration::from_millis(10));
-        h.step();
-    }
-    h.run_steps(3);
-    let table = sweep_view(&h).job.as_ref().unwrap().table.clone();
+    let table = run_sweep(&mut h);
     let eps = table.series("eccentricity_ratio", false);
     assert_eq!(eps.iter().map(|p| p[0]).collect::<Vec<_>>(), [1000.0, 2000.0, 3000.0, 4000.0]);
     assert!(eps.windows(2).all(|w| w[1][1] > w[0][1]), "{eps:?}");
@@ -690,6 +708,144 @@ fn a_load_sweep_plots_three_outputs_with_their_units() {
     }
     assert!(table.csv().lines().next().unwrap().contains("flow_sides_out_l_per_min"));
     snapshot(&mut h, "sweep_load_three_outputs");
+}
+
+/// Runs the sweep view's sweep (its spec set before) and waits for its last point.
+fn run_sweep(h: &mut Harness<'_, WorkbenchApp>) -> tiltpad::scene::sweep::SweepTable {
+    h.get_by_label("Run sweep").click();
+    wait_for_sweep(h)
+}
+
+/// Steps frames until the sweep view's sweep has its last point; its table.
+fn wait_for_sweep(h: &mut Harness<'_, WorkbenchApp>) -> tiltpad::scene::sweep::SweepTable {
+    h.step();
+    let start = Instant::now();
+    while !sweep_view(h).job.as_ref().is_some_and(|j| j.done()) {
+        assert!(start.elapsed() < Duration::from_secs(300), "sweep did not finish");
+        std::thread::sleep(Duration::from_millis(10));
+        h.step();
+    }
+    h.run_steps(3);
+    sweep_view(h).job.as_ref().unwrap().table.clone()
+}
+
+/// The teaching sweep: preload on the cases that give the pad bore radius (compressor) or the pad clearance
+/// (Fillon). Each point's preload replaces the file's key, every point solves, and the view says what was
+/// replaced. Cp = Cb / (1 − m) grows with m.
+#[test]
+fn a_preload_sweep_fills_every_point_of_the_compressor_and_fillon_cases() {
+    for (text, replaced) in [
+        (None, "bearing.pads.bore_radius_mm = 50.921"),
+        (Some(include_str!("../../cases/fillon-a.toml")), "bearing.pads.clearance_um = 148.0"),
+    ] {
+        let mut h = solved_app(text, |app| {
+            app.open::<SweepView>();
+            app.view_mut::<SweepView>().unwrap().spec = SweepSpec {
+                key: "bearing.pads.preload".into(),
+                from: 0.1,
+                to: 0.5,
+                count: 3,
+                outputs: vec!["h_min_um".into(), "kyy_n_per_m".into()],
+                against_sommerfeld: false,
+                preview: true,
+                chart: false,
+            };
+        });
+        let table = run_sweep(&mut h);
+        assert!(table.failures().is_empty(), "{replaced}: {:?}", table.failures());
+        let h_min = table.series("h_min_um", false);
+        assert_eq!(h_min.iter().map(|p| p[0]).collect::<Vec<_>>(), [0.1, 0.30000000000000004, 0.5], "{replaced}");
+        h.get_by_label(&format!(
+            "Each point: bearing.pads.preload replaces {replaced} (alternative pad-geometry keys)."
+        ));
+    }
+}
+
+/// The Sommerfeld chart runs its own load sweep around the case's load (a fifth to three times 1918 N):
+/// every point solves, S falls as the load grows while ε rises, and the chart says that a tilting-pad
+/// bearing has no closed-form reference.
+#[test]
+fn the_sommerfeld_chart_runs_its_load_sweep() {
+    let mut h = solved_app(None, |app| app.open::<SweepView>());
+    h.get_by_label("Sommerfeld chart").click();
+    let table = wait_for_sweep(&mut h);
+    let spec = &sweep_view(&h).job.as_ref().unwrap().spec;
+    assert_eq!((spec.key.as_str(), spec.from, spec.to), ("operating.load_n", 0.2 * 1918.0, 3.0 * 1918.0));
+    assert_eq!(table.points.len(), 12);
+    assert!(table.failures().is_empty(), "{:?}", table.failures());
+    let eps = table.series("eccentricity_ratio", true);
+    assert_eq!(eps.len(), 12);
+    assert!(eps.windows(2).all(|w| w[1][0] < w[0][0] && w[1][1] > w[0][1]), "{eps:?}");
+    h.get_by_label_contains("Sommerfeld chart, S = µ N L D / W (R/Cb)². No closed form for this geometry");
+    for title in ["Eccentricity ratio ε [–]", "Reduced stiffness K Cb / W [–]", "Reduced damping C Cb Ω / W [–]"]
+    {
+        h.get_by_label(title);
+    }
+    snapshot(&mut h, "sweep_sommerfeld_chart");
+}
+
+/// At 1280×720 the FRF view's controls and its legend do not cover one another (the legend is a row of its
+/// own above the plots), and all of them lie inside the view, not under the results panel.
+#[test]
+fn frf_controls_and_legend_do_not_overlap_at_1280x720() {
+    let mut h = solved_app_at([1280.0, 720.0], Some(include_str!("../../cases/test-rig-pub5.toml")), |app| {
+        app.open::<FrfView>();
+    });
+    h.run_steps(3);
+    h.get_by_label_contains("Bode — 1000 rpm");
+    let mut controls: Vec<(String, egui::Rect)> =
+        ["air fraction", "line length [mm]", "valve ω_V/2π [Hz]", "signal [V]"]
+            .iter()
+            .map(|l| (l.to_string(), h.get_by_role_and_label(Role::Slider, l).rect()))
+            .collect();
+    for l in ["dB", "Export CSV", "|G| log scale"] {
+        controls.push((l.to_string(), h.get_by_label(l).rect()));
+    }
+    controls.push(("unit selector".into(), h.get_by_role_and_label(Role::ComboBox, "Show").rect()));
+    // Each entry: its line sample and its name.
+    let mut legend: Vec<(String, egui::Rect)> = Vec::new();
+    for sample in h.get_all_by_label_contains("legend: ") {
+        let name = text_of(&sample).trim_start_matches("legend: ").to_string();
+        legend.push((name.clone(), h.get_by_label(&name).rect()));
+        legend.push((name, sample.rect()));
+    }
+    assert!(legend.len() >= 2, "{legend:?}");
+    let view = h.state().view_rect().unwrap();
+    for (name, c) in &controls {
+        assert!(view.expand(1.0).contains_rect(*c), "{name} at {c:?} outside the view {view:?}");
+        for (entry, l) in &legend {
+            assert!(!c.intersects(*l), "{name} at {c:?} under the legend entry {entry} at {l:?}");
+        }
+    }
+    snapshot(&mut h, "frf_rig_pub5_1280x720");
+}
+
+/// Dragging the load down stops at the smallest valid load (0 N), never below; a drag moves it by half
+/// a percent of itself per point (1918 N: about 9.6 N per point, where it was 125 N).
+#[test]
+fn a_load_drag_cannot_leave_the_valid_range() {
+    let mut h = solved_app(None, |_| {});
+    let load = |h: &Harness<'_, WorkbenchApp>| h.state().doc.file().operating.load_n.unwrap();
+    assert_eq!(load(&h), 1918.0);
+    let start = spin_button(&h, "Load W").rect().center();
+    h.hover_at(start);
+    h.step();
+    h.drag_at(start);
+    h.step();
+    h.hover_at(start - egui::vec2(10.0, 0.0));
+    h.step();
+    let after_ten = load(&h);
+    // At most twice the 96 N ten points ask for (egui may count the press threshold); a 400th of the
+    // typical range per point moved it 1250 N.
+    assert!(after_ten < 1918.0 && after_ten > 1918.0 - 200.0, "10 points moved the load to {after_ten} N");
+    for k in 1..=20 {
+        h.hover_at(start - egui::vec2(10.0 + 150.0 * k as f32, 0.0));
+        h.step();
+        assert!(load(&h) >= 0.0, "{} N", load(&h));
+    }
+    h.drop_at(start - egui::vec2(3010.0, 0.0));
+    h.run_steps(2);
+    assert_eq!(load(&h), 0.0);
 }
 
 /// The colour-scale label of the field view: "… from LO to HI (…)" as two numbers.
@@ -805,22 +961,28 @@ fn a_locked_colour_scale_survives_two_edits() {
     assert!(h.state().view::<FieldView>().unwrap().settings.locks.is_empty());
 }
 
+/// The bearing view's scales lock on the first result (a class sees the field change, not the scale), stay
+/// through two edits, follow the result once unlocked, and say so when they change.
 #[test]
 fn locked_scales_survive_two_edits() {
     let mut h = solved_app(None, |_| {});
     h.get_by_label_contains("journal displacement × 50");
-    h.get_by_label("Lock scales").click();
-    h.run_steps(2);
     let lock = h.state().view::<BearingView>().unwrap().settings.outline_lock;
-    assert_eq!(lock.map(|l| l.exaggeration), Some(50.0));
+    assert_eq!(lock.map(|l| l.exaggeration), Some(50.0), "locked by default");
     // Edit 1: pads bored to the assembled clearance (Cp = 102 µm): unlocked, 50.8 mm / 6 / 102 µm ≈ 83 → × 100.
     edit_and_solve(&mut h, "bearing.pads.bore_radius_mm", |f| f.bearing.pads.bore_radius_mm = Some(50.902));
     // Edit 2: another speed.
     edit_and_solve(&mut h, "operating.speed_rpm", |f| f.operating.speed_rpm = 6000.0);
     h.get_by_label_contains("journal displacement × 50");
-    h.get_by_label_contains("Lock scales").click();
+    h.get_by_label_contains("Lock scales (film × 50").click();
     h.run_steps(2);
     h.get_by_label_contains("journal displacement × 100");
+    assert!(h.state().view::<BearingView>().unwrap().settings.unlocked);
+    // Unlocked, a result with another peak pressure changes the pressure scale, and the view says so.
+    assert!(h.query_by_label_contains("Scales changed with this result").is_none());
+    edit_and_solve(&mut h, "operating.load_n", |f| f.operating.load_n = f.operating.load_n.map(|w| 2.0 * w));
+    h.run_steps(2);
+    h.get_by_label_contains("Scales changed with this result: pressure");
 }
 
 /// Without a desktop portal, an export asks for a name in the workbench's own dialog: nothing is written
@@ -918,8 +1080,8 @@ fn the_field_selector_names_the_drawn_field_after_switching_to_an_isothermal_cas
     h.get_by_label_contains("Colour scale: Pressure");
 }
 
-/// At 1280×720 the side panels leave the view a third of the window, the tabs wrap inside it and
-/// nothing of it lies under the results panel; either side panel can be collapsed for more room.
+/// At 1280×720 the side panels leave the view a third of the window, the tabs keep to one row inside it
+/// and nothing of it lies under the results panel; either side panel can be collapsed for more room.
 #[test]
 fn the_layout_fits_1280_by_720() {
     let mut h = solved_app_at([1280.0, 720.0], None, |app| app.open::<FieldView>());
@@ -929,9 +1091,19 @@ fn the_layout_fits_1280_by_720() {
     // The editor and results panels grow to their content (about 450 and 390 points): the view keeps a third.
     assert!(view.width() > 0.32 * 1280.0, "{view:?}");
     assert!(view.right() <= results_left, "view {view:?} under the results panel at {results_left}");
-    for tab in ["Bearing", "Rotor"] {
-        let r = h.get_by_role_and_label(Role::Button, tab).rect();
+    // The tabs keep to one row inside the view; those that do not fit are under "More…".
+    let tabs: Vec<(String, egui::Rect)> = tiltpad::app::views::all()
+        .iter()
+        .filter_map(|v| h.query_by_role_and_label(Role::Button, v.label()).map(|n| (v.label().to_string(), n.rect())))
+        .collect();
+    assert!(tabs.iter().any(|t| t.0 == "Pad fields"), "the open view's tab is shown: {tabs:?}");
+    for (tab, r) in &tabs {
         assert!(r.right() <= results_left && r.left() >= view.left() - 1.0, "{tab} tab at {r:?}");
+        assert!((r.top() - tabs[0].1.top()).abs() < 1.0, "{tab} tab on another row: {tabs:?}");
+    }
+    if tabs.len() < tiltpad::app::views::all().len() {
+        let more = h.get_by_label("More…").rect();
+        assert!(more.right() <= results_left && (more.top() - tabs[0].1.top()).abs() < 1.0, "{more:?}");
     }
     let legend = h.get_by_label_contains("Colour scale: Pressure").rect();
     assert!(legend.right() <= results_left, "{legend:?}");

@@ -56,10 +56,28 @@ impl Num<'_> {
         key_tooltip(self.key)
     }
 
-    /// Drag speed: a 400th of the typical range.
-    fn speed(&self) -> f64 {
+    /// Drag speed per point at `value`: half a percent of the value, so a drag changes a value by a share
+    /// of itself (1918 N moves by about 10 N per point, not the 100 N a 400th of the typical range gave);
+    /// at least a 40 000th and at most a 400th of the typical range (values at or near zero still move).
+    fn speed(&self, value: f64) -> f64 {
         let (lo, hi) = schema_row(self.key).and_then(|s| s.typical).unwrap_or((0.0, 1.0));
-        (hi - lo) / 400.0
+        let span = (hi - lo).abs().max(1e-12);
+        (0.005 * value.abs()).clamp(span / 40_000.0, span / 400.0)
+    }
+
+    /// A dragged value kept inside the key's allowed range: onto a closed bound, or a drag step inside an
+    /// open one (a load drags down to just above 0 N, never below). Typed values are not clamped (the
+    /// validation says what is wrong, in place).
+    #[must_use]
+    pub fn clamp_dragged(&self, value: f64, step: f64) -> f64 {
+        let Some(r) = schema_row(self.key).and_then(|s| s.allowed.range()) else { return value };
+        let lo = if r.open_lo { r.lo + step.min(0.5 * (r.hi - r.lo)) } else { r.lo };
+        let hi = if r.open_hi { r.hi - step.min(0.5 * (r.hi - r.lo)) } else { r.hi };
+        if lo <= hi {
+            value.clamp(lo, hi)
+        } else {
+            value
+        }
     }
 }
 
@@ -126,7 +144,7 @@ fn drag_ui(
             flag_invalid_ui(ui, invalid);
             ui.add(
                 DragValue::new(&mut v)
-                    .speed(n.speed())
+                    .speed(n.speed(value))
                     .max_decimals(n.decimals)
                     .min_decimals(0)
                     .update_while_editing(false),
@@ -136,6 +154,9 @@ fn drag_ui(
         .labelled_by(label.id)
         .on_hover_text(n.tooltip());
     let mut out = EditOutput { dragging: r.dragged(), drag_released: r.drag_stopped(), ..EditOutput::default() };
+    if r.dragged() {
+        v = n.clamp_dragged(v, n.speed(value));
+    }
     if r.changed() && v.to_bits() != value.to_bits() {
         let continuing = r.dragged() && !r.drag_started();
         doc.edit(n.key, continuing, |f| set(f, v));

@@ -34,6 +34,9 @@ pub struct BearingView {
 pub struct BearingSettings {
     /// Locked film exaggeration and pressure scale (`None`: chosen per picture).
     pub outline_lock: Option<OutlineScales>,
+    /// The user unlocked the scales. Until then they lock on the first result, so that a class comparing
+    /// pictures before and after an edit sees the field change, not the scale.
+    pub unlocked: bool,
 }
 
 impl View for BearingView {
@@ -55,8 +58,15 @@ impl View for BearingView {
         let pinned = cx.compare_with_ui(ui, self.needs(), |_| {});
         let solution = cx.shown.map(|s| s.solution.as_ref());
         let lock = &mut self.settings.outline_lock;
+        if lock.is_none() && !self.settings.unlocked && solution.is_some() {
+            *lock = Some(outline::bearing_outline_with(&case, solution, None).scales());
+        }
         let o = outline::bearing_outline_with(&case, solution, *lock);
-        lock_ui(ui, lock, o.scales());
+        let free = outline::bearing_outline_with(&case, solution, None).scales();
+        if lock_ui(ui, lock, o.scales()) {
+            self.settings.unlocked = lock.is_none();
+        }
+        scale_note_ui(ui, *lock, free, solution.map(|s| s.p_max_pa));
         let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
         let checks = solution.map(|s| crate::bearing::solution::limits::check(&s.inputs.limits, s)).unwrap_or_default();
         // The pinned outline at the live picture's scales, so the two overlay.
@@ -129,7 +139,8 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
 
 /// The "Lock scales" toggle: locked, the film exaggeration and the pressure scale stay those of the
 /// picture on screen when it was locked, so pictures before and after an edit compare.
-pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineScales) {
+/// Returns whether the user toggled it.
+pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineScales) -> bool {
     let mut locked = lock.is_some();
     let text = match lock {
         Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, MPA.from_si(l.pressure_scale_pa)),
@@ -141,6 +152,47 @@ pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineSc
         .changed()
     {
         *lock = locked.then_some(current);
+        return true;
+    }
+    false
+}
+
+/// What the picture's scales mean for this result, said beside it: locked, whether the result's peak
+/// pressure goes past the locked pressure scale (its band is drawn longer than R/3); unlocked, when the
+/// scales changed from the previous picture (a class would otherwise read a new scale as a new field).
+fn scale_note_ui(ui: &mut Ui, lock: Option<OutlineScales>, free: OutlineScales, p_max_pa: Option<f64>) {
+    let warn = ui.visuals().warn_fg_color;
+    match (lock, p_max_pa) {
+        (Some(l), Some(p)) if p > l.pressure_scale_pa * (1.0 + 1e-9) => {
+            ui.colored_label(
+                warn,
+                format!(
+                    "Peak pressure {:.2} MPa is above the locked scale ({:.2} MPa at R/3): its band reaches further.",
+                    MPA.from_si(p),
+                    MPA.from_si(l.pressure_scale_pa)
+                ),
+            );
+        }
+        (None, Some(_)) => {
+            let id = ui.make_persistent_id("bearing-free-scales");
+            let (before, now): (Option<OutlineScales>, Option<OutlineScales>) =
+                ui.data(|d| d.get_temp(id)).unwrap_or((None, None));
+            let (before, now) = if now == Some(free) { (before, now) } else { (now, Some(free)) };
+            ui.data_mut(|d| d.insert_temp(id, (before, now)));
+            if let Some(b) = before.filter(|b| *b != free) {
+                ui.colored_label(
+                    warn,
+                    format!(
+                        "Scales changed with this result: pressure {:.2} to {:.2} MPa at R/3, film × {} to × {}.",
+                        MPA.from_si(b.pressure_scale_pa),
+                        MPA.from_si(free.pressure_scale_pa),
+                        b.exaggeration,
+                        free.exaggeration
+                    ),
+                );
+            }
+        }
+        _ => {}
     }
 }
 

@@ -1,10 +1,12 @@
-//! Reduced stiffness and damping against ω/Ω or speed (from a background sweep), the case's own point
-//! marked, a pinned result's curves overlaid, and the full coefficient matrices as a table.
+//! Reduced stiffness and damping against ω/Ω or speed (from a background sweep): direct and cross terms
+//! on plots of their own scale, legends above the plots, the case's own point marked, a pinned result's
+//! curves overlaid, and the full coefficient matrices as a table (folded away until opened).
 
 use egui::{Color32, Grid, RichText, ScrollArea, Ui};
-use egui_plot::{GridInput, GridMark, Legend, Line, LineStyle, MarkerShape, Plot, Points, VLine};
+use egui_plot::{GridInput, GridMark, Line, LineStyle, MarkerShape, Plot, Points, VLine};
 use serde::{Deserialize, Serialize};
 
+use super::plot_kit::{legend_ui, PALETTE};
 use super::{View, ViewContext};
 use crate::app::Shown;
 use crate::bearing::stages::StageId;
@@ -102,12 +104,13 @@ impl View for CoefficientsView {
     }
 }
 
-const COLORS: [Color32; 4] = [
-    Color32::from_rgb(86, 180, 233),
-    Color32::from_rgb(230, 159, 0),
-    Color32::from_rgb(0, 158, 115),
-    Color32::from_rgb(204, 121, 167),
-];
+/// One colour per entry xx, xy, yx, yy (readable on both themes).
+const COLORS: [Color32; 4] = [PALETTE[0], PALETTE[1], PALETTE[2], PALETTE[3]];
+
+/// The direct (xx, yy) and the cross (xy, yx) entries, plotted on scales of their own: the direct terms
+/// are often ten times the cross terms and would flatten them on one scale.
+const DIRECT: [usize; 2] = [0, 3];
+const CROSS: [usize; 2] = [1, 2];
 
 /// Line style and marker per series, distinct so that coinciding curves are told apart.
 const SERIES_STYLES: [(LineStyle, MarkerShape); 4] = [
@@ -125,10 +128,13 @@ struct PlotSpec<'a> {
     x_label: &'a str,
 }
 
-/// `pinned`: a pinned result's name and series, drawn thin and faint in the same colours.
+/// The entries `which` (indices into xx, xy, yx, yy) of `series`; `pinned`: a pinned result's name and
+/// series, drawn wide and faint in the same colours. The legend is a row above the plot.
+#[allow(clippy::too_many_arguments)]
 fn plot_ui(
     ui: &mut Ui,
     spec: &PlotSpec<'_>,
+    which: [usize; 2],
     series: &[crate::scene::plots::Series],
     current: Option<(f64, [f64; 4])>,
     pinned: Option<(&str, &[crate::scene::plots::Series])>,
@@ -136,9 +142,13 @@ fn plot_ui(
 ) {
     let PlotSpec { id, title, unit, x_label } = *spec;
     ui.label(RichText::new(format!("{title} [{unit}]")).strong());
+    let legend: Vec<(String, Color32)> =
+        which.iter().filter_map(|&i| series.get(i).map(|s| (s.name.clone(), COLORS[i]))).collect();
+    legend_ui(ui, &legend);
+    let width = ui.available_width();
     Plot::new(id)
         .height(height)
-        .legend(Legend::default())
+        .width(width)
         .x_axis_label(x_label)
         .y_axis_label(unit)
         .allow_scroll(false)
@@ -149,16 +159,18 @@ fn plot_ui(
         .show(ui, |p| {
             // Each series has its own dash and marker as well as its colour: coinciding curves (Kxx = Kyy
             // on a symmetric bearing) stay visible, the later one dashed over the earlier.
-            for ((s, color), (style, marker)) in series.iter().zip(COLORS).zip(SERIES_STYLES) {
+            for &i in &which {
+                let Some(s) = series.get(i) else { continue };
+                let (color, (style, marker)) = (COLORS[i], SERIES_STYLES[i]);
                 p.line(Line::new(s.name.clone(), s.points.clone()).color(color).width(1.8).style(style));
                 p.points(Points::new(s.name.clone(), s.points.clone()).color(color).shape(marker).radius(3.0));
             }
             if let Some((name, pinned)) = pinned {
-                for (s, color) in pinned.iter().zip(COLORS) {
-                    let faint = color.gamma_multiply(0.55);
+                for &i in &which {
+                    let Some(s) = pinned.get(i) else { continue };
                     p.line(
                         Line::new(format!("{} (pinned \"{name}\")", s.name), s.points.clone())
-                            .color(faint)
+                            .color(COLORS[i].gamma_multiply(0.55))
                             .width(3.0)
                             .style(LineStyle::Dashed { length: 12.0 }),
                     );
@@ -166,9 +178,12 @@ fn plot_ui(
             }
             if let Some((x, values)) = current {
                 p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
-                for (v, color) in values.iter().zip(COLORS) {
+                for &i in &which {
                     p.points(
-                        Points::new("this case", vec![[x, *v]]).color(color).shape(MarkerShape::Diamond).radius(6.0),
+                        Points::new("this case", vec![[x, values[i]]])
+                            .color(COLORS[i])
+                            .shape(MarkerShape::Diamond)
+                            .radius(6.0),
                     );
                 }
             }
@@ -195,28 +210,26 @@ fn round_grid(input: GridInput) -> Vec<GridMark> {
         .collect()
 }
 
-/// The two plots.
-/// `pinned`: a pinned result's name and plot, overlaid.
+/// Four plots in two columns: stiffness (left) and damping (right), direct terms above, cross terms
+/// below, each on its own scale. `pinned`: a pinned result's name and plot, overlaid.
 pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot, pinned: Option<(&str, &CoefficientPlot)>) {
-    let h = ((ui.available_height() - 300.0) / 2.0).max(150.0);
+    // Two rows of plots share what the view leaves after the matrices' header and the notes below.
+    let h = ((ui.available_height() - 170.0) / 2.0).max(110.0);
     let spec = |id, title, unit| PlotSpec { id, title, unit, x_label: plot.x_label };
     let stiffness = pinned.map(|(n, p)| (n, p.stiffness.as_slice()));
     let damping = pinned.map(|(n, p)| (n, p.damping.as_slice()));
-    plot_ui(
-        ui,
-        &spec("stiffness", "Reduced stiffness K", "MN/m"),
-        &plot.stiffness,
-        plot.current.map(|c| (c.0, c.1)),
-        stiffness,
-        h,
-    );
-    plot_ui(
-        ui,
-        &spec("damping", "Reduced damping C", "kN·s/m"),
-        &plot.damping,
-        plot.current.map(|c| (c.0, c.2)),
-        damping,
-        h,
+    let (k_now, c_now) = (plot.current.map(|c| (c.0, c.1)), plot.current.map(|c| (c.0, c.2)));
+    ui.columns(2, |cols| {
+        let [left, right] = cols else { return };
+        plot_ui(left, &spec("stiffness", "Direct stiffness", "MN/m"), DIRECT, &plot.stiffness, k_now, stiffness, h);
+        plot_ui(left, &spec("stiffness_cross", "Cross stiffness", "MN/m"), CROSS, &plot.stiffness, k_now, stiffness, h);
+        plot_ui(right, &spec("damping", "Direct damping", "kN·s/m"), DIRECT, &plot.damping, c_now, damping, h);
+        plot_ui(right, &spec("damping_cross", "Cross damping", "kN·s/m"), CROSS, &plot.damping, c_now, damping, h);
+    });
+    ui.label(
+        RichText::new("Diamonds and the grey line: this case's point.")
+            .small()
+            .weak(),
     );
     if let Some((name, _)) = pinned {
         ui.label(RichText::new(format!("Wide faint dashed curves: pinned \"{name}\".")).small());
@@ -228,20 +241,26 @@ pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot, pinned: Option<
 
 /// The full matrices.
 pub fn matrix_table_ui(ui: &mut Ui, table: &MatrixTable) {
-    ui.label(RichText::new("Full coefficients over journal and pad coordinates (SI: force or moment per unit of the column coordinate)").strong());
+    egui::CollapsingHeader::new(RichText::new("Full coefficient matrices over journal and pad coordinates").strong())
+        .id_salt("full-matrices")
+        .show(ui, |ui| matrices_ui(ui, table));
+}
+
+fn matrices_ui(ui: &mut Ui, table: &MatrixTable) {
+    ui.label("SI: force or moment per unit of the column coordinate.");
     ScrollArea::both().id_salt("matrices").show(ui, |ui| {
         for (name, m) in [("K (stiffness)", &table.k), ("C (damping)", &table.c), ("M (pad inertia)", &table.m)] {
             ui.label(name);
             Grid::new(name).striped(true).show(ui, |ui| {
                 ui.label("");
                 for h in &table.headers {
-                    ui.label(RichText::new(h).small());
+                    ui.label(h);
                 }
                 ui.end_row();
                 for (h, row) in table.headers.iter().zip(m) {
-                    ui.label(RichText::new(h).small());
+                    ui.label(h);
                     for v in row {
-                        ui.label(RichText::new(format!("{v:.3e}")).monospace().small());
+                        ui.label(RichText::new(format!("{v:.3e}")).monospace());
                     }
                     ui.end_row();
                 }

@@ -10,10 +10,12 @@
 //! and `tests/suite/workbench_ui.rs` snapshots it (`tests/snapshots/view_<id>.png`).
 //!
 //! Parts of views and panels that are not tabs: [`compare_panel`], [`limits_view`], [`results_panel`],
-//! [`rotor_edit`].
+//! [`rotor_edit`]; [`plot_kit`]: what the plots share (the legend above the plot, decade and phase ticks,
+//! the palette).
 
 pub mod compare_panel;
 pub mod limits_view;
+pub mod plot_kit;
 pub mod results_panel;
 pub mod rotor_edit;
 pub mod view;

@@ -13,8 +13,9 @@
 use std::sync::Arc;
 
 use egui::{Color32, RichText, Stroke, Ui};
-use egui_plot::{HLine, Legend, Line, LineStyle, Plot, Points, VLine};
+use egui_plot::{HLine, Line, LineStyle, Plot, Points, VLine};
 
+use super::plot_kit::{decade_label, labelled_spacer, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
 use super::{View, ViewContext};
 use crate::app::frame_probe::Job;
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
@@ -171,6 +172,12 @@ impl RotorView {
         self.runner.as_ref().is_none_or(|r| !r.busy())
     }
 
+    /// The rotor of the analysis shown (as submitted), if it could be read.
+    #[must_use]
+    pub fn analysed_rotor(&self) -> Option<&Rotor> {
+        self.rotor.as_ref().and_then(|r| r.as_ref().ok())
+    }
+
     /// The finished analysis, if any.
     #[must_use]
     pub fn result(&self) -> Option<&AnalysisResult> {
@@ -319,7 +326,7 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     match view.tab {
         RotorTab::Campbell | RotorTab::Stability => curves_ui(ui, &result, &rotor, view.tab),
         RotorTab::ModeShape => mode_shape_ui(ui, view, &result, &rotor),
-        RotorTab::Unbalance => unbalance_ui(ui, &result),
+        RotorTab::Unbalance => unbalance_ui(ui, &result, &rotor),
         RotorTab::CriticalMap => {
             let map = view.map.get_or_insert_with(|| {
                 map_over_curves(&rotor, result.bearing_stiffness.clone(), MAP_POINTS, MAP_MODES)
@@ -378,10 +385,6 @@ fn whirl_color(w: Whirl) -> Color32 {
         Whirl::Forward => FORWARD,
         Whirl::Backward => BACKWARD,
     }
-}
-
-fn plot(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
-    plot_without_legend(id, ui, height).legend(Legend::default().position(egui_plot::Corner::LeftTop))
 }
 
 fn plot_without_legend(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
@@ -456,7 +459,12 @@ fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
     };
     curves_legend_ui(ui, campbell, c.operating_rpm.is_some(), c.onset_rpm);
     let height = (height - ui.spacing().interact_size.y - ui.spacing().item_spacing.y).max(160.0);
-    plot_without_legend(id, ui, height).x_axis_label("speed [rpm]").y_axis_label(y_label).show(ui, |p| {
+    plot_without_legend(id, ui, height)
+        .x_axis_label("speed [rpm]")
+        .y_axis_label(y_label)
+        .x_grid_spacer(labelled_spacer(70.0))
+        .y_grid_spacer(labelled_spacer(32.0))
+        .show(ui, |p| {
         for curve in curves {
             let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
             p.line(
@@ -526,8 +534,18 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
     let z_mm: Vec<f64> = s.z_m.iter().map(|z| MM.from_si(*z)).collect();
     let color = whirl_color(s.whirl);
     let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
-    plot("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
+    let whirl = if s.whirl == Whirl::Forward { "forward" } else { "backward" };
+    legend_ui(
+        ui,
+        &[
+            (format!("x ({whirl} whirl)"), color),
+            ("y (dashed)".into(), color),
+            ("bearings (dotted)".into(), Color32::from_gray(150)),
+        ],
+    );
+    plot_without_legend("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
         .x_axis_label("axial position [mm]")
+        .x_grid_spacer(labelled_spacer(70.0))
         .y_axis_label("deflection (largest = 1)")
         .show(ui, |p| {
             p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
@@ -548,50 +566,65 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
         });
 }
 
-fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult) {
-    let b = unbalance_bode(r);
+fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
+    let b = unbalance_bode(r, rotor);
+    let over = !b.exceedances().is_empty();
+    let sentence = b.api617_sentence();
+    ui.label(if over { RichText::new(sentence).color(LIMIT).strong() } else { RichText::new(sentence) });
+    let colors: Vec<Color32> = PALETTE.iter().copied().cycle().take(b.nodes.len()).collect();
+    let mut legend: Vec<(String, Color32)> = b.nodes.iter().zip(&colors).map(|(n, c)| (n.name.clone(), *c)).collect();
+    legend.push(("API 617 limit 25.4 sqrt(12000/N) µm (dashed)".into(), LIMIT));
+    legend_ui(ui, &legend);
     let height = ((ui.available_height() - 20.0) / 2.0).max(120.0);
     let link = ui.scope_id().with("rotor_bode");
-    let colors = [
-        FORWARD,
-        BACKWARD,
-        Color32::from_rgb(0, 158, 115),
-        Color32::from_rgb(204, 121, 167),
-        Color32::from_rgb(86, 180, 233),
-    ];
-    plot("rotor_unbalance_amplitude", ui, height)
+    plot_without_legend("rotor_unbalance_amplitude", ui, height)
         .x_axis_label("speed [rpm]")
-        .y_axis_label("orbit major axis, peak to peak [µm]")
+        .y_axis_label("orbit p-p [µm]")
+        .x_grid_spacer(labelled_spacer(70.0))
+        .y_grid_spacer(labelled_spacer(32.0))
+        .include_y(0.0)
         .link_axis(link, [true, false])
         .show(ui, |p| {
-            for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
-                p.line(Line::new(format!("node {}", n.node), n.amplitude_um.clone()).color(*color).width(1.6));
+            for (n, color) in b.nodes.iter().zip(&colors) {
+                p.line(Line::new(n.name.clone(), n.amplitude_um.clone()).color(*color).width(1.6));
             }
             p.line(
-                Line::new("API 617 limit 25.4 sqrt(12000/N) µm", b.api617_um.clone())
-                    .color(LIMIT)
-                    .style(LineStyle::dashed_dense())
-                    .width(2.0),
+                Line::new("API 617 limit", b.api617_um.clone()).color(LIMIT).style(LineStyle::dashed_dense()).width(2.0),
             );
         });
-    plot("rotor_unbalance_phase", ui, height)
+    plot_without_legend("rotor_unbalance_phase", ui, height)
         .x_axis_label("speed [rpm]")
-        .y_axis_label("phase of x [deg]")
+        .y_axis_label("phase of x [°]")
+        .x_grid_spacer(labelled_spacer(70.0))
+        .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
+        .y_axis_formatter(|m, _| phase_label(m.value))
+        .include_y(-180.0)
+        .include_y(180.0)
         .link_axis(link, [true, false])
         .show(ui, |p| {
-            for (n, color) in b.nodes.iter().zip(colors.iter().cycle()) {
-                p.line(Line::new(format!("node {}", n.node), n.phase_deg.clone()).color(*color).width(1.6));
+            for (n, color) in b.nodes.iter().zip(&colors) {
+                let x: Vec<f64> = n.phase_deg.iter().map(|q| q[0]).collect();
+                let y: Vec<f64> = n.phase_deg.iter().map(|q| q[1]).collect();
+                for piece in wrapped_phase(&x, &y) {
+                    p.line(Line::new(n.name.clone(), piece).color(*color).width(1.6));
+                }
             }
         });
 }
 
 fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
-    let colors =
-        [FORWARD, Color32::from_rgb(0, 158, 115), Color32::from_rgb(204, 121, 167), Color32::from_rgb(86, 180, 233)];
-    plot("rotor_critical_map", ui, (ui.available_height() - 10.0).max(160.0))
+    let colors = PALETTE;
+    let mut legend: Vec<(String, Color32)> =
+        (0..m.modes.len()).map(|i| (format!("mode {}", i + 1), colors[i % colors.len()])).collect();
+    legend.push(("bearings k_xx (dashed), k_yy (dotted)".into(), BACKWARD));
+    legend.push(("dots: crossings, critical speeds on the bearings".into(), LIMIT));
+    legend_ui(ui, &legend);
+    plot_without_legend("rotor_critical_map", ui, (ui.available_height() - 10.0).max(160.0))
         .x_axis_label("support stiffness at the bearings [N/m]")
         .y_axis_label("undamped critical speed [rpm]")
-        .x_axis_formatter(|mark, _| format!("1e{:.1}", mark.value))
+        .x_grid_spacer(egui_plot::log_grid_spacer(10))
+        .x_axis_formatter(|mark, _| decade_label(mark.value))
+        .y_grid_spacer(labelled_spacer(32.0))
         .show(ui, |p| {
             for (i, (line, color)) in m.modes.iter().zip(colors.iter().cycle()).enumerate() {
                 p.line(Line::new(format!("mode {}", i + 1), line.clone()).color(*color).width(1.8));

@@ -1,6 +1,8 @@
 //! The sweep view: any numeric case key against any output columns ([`crate::scene::sweep`]), one plot
 //! per output with its unit, the current case's point marked, points beyond a design limit marked, the
-//! Sommerfeld chart (ε and the coefficients against S) one click away, CSV export with every column.
+//! Sommerfeld chart one click away (a load sweep drawn as ε, φ, h_min/Cb and the reduced coefficients
+//! against S, with the closed-form curves of a plain bearing; [`crate::scene::sommerfeld`]), CSV export with
+//! every column.
 //!
 //! The points are solved by a [`SweepJob`] (a thread on native, one point per frame on the web); the view
 //! only reads its table.
@@ -13,15 +15,16 @@ use crate::app::frame_probe::Job;
 use crate::app::sweep_job::SweepJob;
 use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
+use crate::number::sig;
+use crate::scene::sommerfeld::{chart, ChartGeometry, ChartPlot};
 use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
+
+use super::plot_kit::{decade_label, legend_ui, PALETTE};
 use crate::study::COLUMNS;
 
 const LINE: Color32 = Color32::from_rgb(86, 180, 233);
 const CURRENT: Color32 = Color32::from_rgb(230, 159, 0);
 const OVER_LIMIT: Color32 = Color32::from_rgb(235, 70, 60);
-/// ε and the reduced coefficients: the designers' chart against the Sommerfeld number.
-const SOMMERFELD_CHART: [&str; 5] =
-    ["eccentricity_ratio", "kxx_n_per_m", "kyy_n_per_m", "cxx_ns_per_m", "cyy_ns_per_m"];
 
 /// The sweep view: its spec (kept between sessions) and the sweep run from it.
 #[derive(Default)]
@@ -30,6 +33,8 @@ pub struct SweepView {
     pub spec: SweepSpec,
     pub job: Option<SweepJob>,
     pub error: Option<String>,
+    /// What the swept key replaces in the case (an alternative pad-geometry key), said above the plots.
+    pub replaced: Vec<String>,
 }
 
 impl View for SweepView {
@@ -89,7 +94,8 @@ pub fn key_value(text: &str, key: &str) -> Option<f64> {
     }
 }
 
-fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
+/// The controls; `case`: the shown solution's case (the Sommerfeld chart sweeps around its load).
+fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec, case: Option<&crate::model::Case>) -> bool {
     let mut run = false;
     ui.horizontal_wrapped(|ui| {
         let label = ui.label("Input");
@@ -139,13 +145,15 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec) -> bool {
         });
         ui.checkbox(&mut spec.against_sommerfeld, "against the Sommerfeld number")
             .on_hover_text("Abscissa S = µ N L D / W (R/Cb)² of each point instead of the swept value.");
-        if ui
-            .button("Sommerfeld chart")
-            .on_hover_text("ε and the reduced coefficients against S, from a load sweep.")
-            .clicked()
-        {
-            spec.outputs = SOMMERFELD_CHART.iter().map(|s| (*s).to_string()).collect();
-            spec.against_sommerfeld = true;
+        let chart = ui
+            .add_enabled(case.is_some(), egui::Button::new("Sommerfeld chart"))
+            .on_hover_text("Runs a load sweep (a fifth to three times the case's load; ε from 0.1 to 0.85 for a prescribed position) and draws ε, the attitude angle, h_min/Cb and the reduced coefficients K Cb/W, C Cb Ω/W against S, with the short-bearing curves of a plain 360° bearing.");
+        if let (true, Some(case)) = (chart.clicked(), case) {
+            *spec = SweepSpec::sommerfeld_chart(case);
+            run = true;
+        }
+        if spec.chart && ui.button("Back to single outputs").clicked() {
+            spec.chart = false;
         }
     });
     run
@@ -160,12 +168,17 @@ pub fn sweep_view_ui(
 ) -> Option<SweepAction> {
     let spec = &mut view.spec;
     let key_x = |key: &str| text.as_deref().and_then(|t| key_value(t, key));
-    let run = controls_ui(ui, spec);
+    let run = controls_ui(ui, spec, current.map(|s| &s.inputs));
     let current_x = view.job.as_ref().and_then(|j| key_x(&j.spec.key)).or_else(|| key_x(&spec.key));
     if run {
         match text {
-            Some(text) => match SweepJob::start(text, spec, ui.ctx()) {
-                Ok(job) => (view.job, view.error) = (Some(job), None),
+            Some(text) => match SweepJob::start(text.clone(), spec, ui.ctx()) {
+                Ok(job) => {
+                    let first = format!("{}={:?}", spec.key, spec.from);
+                    let replaced = crate::model::replaced_keys(&text, &[first]).unwrap_or_default();
+                    view.replaced = replaced.iter().map(ToString::to_string).collect();
+                    (view.job, view.error) = (Some(job), None);
+                }
                 Err(e) => view.error = Some(e.to_string()),
             },
             None => view.error = Some("the case is invalid: fix it in the editor first".into()),
@@ -173,6 +186,9 @@ pub fn sweep_view_ui(
     }
     if let Some(e) = &view.error {
         ui.label(RichText::new(format!("Cannot sweep: {e}")).color(OVER_LIMIT));
+    }
+    for note in &view.replaced {
+        ui.label(RichText::new(format!("Each point: {note}.")).weak());
     }
     let Some(job) = view.job.as_mut() else {
         ui.label(RichText::new("Choose an input, its range and the outputs, then run the sweep.").weak());
@@ -197,8 +213,70 @@ pub fn sweep_view_ui(
             action = Some(SweepAction::ExportCsv(job.table.csv()));
         }
     });
-    plots_ui(ui, job, spec, current, current_x);
+    if spec.chart && job.spec.chart {
+        let case = current.map(|s| &s.inputs);
+        if let Some(case) = case {
+            chart_ui(ui, &job.table, &ChartGeometry::of(case), current.and_then(|s| s.sommerfeld));
+        }
+    } else {
+        plots_ui(ui, job, spec, current, current_x);
+    }
     action
+}
+
+/// The Sommerfeld chart of the sweep: five plots against S (log axis) in two columns, the reference lines
+/// of the geometry dashed, the case's own S marked.
+fn chart_ui(ui: &mut Ui, table: &crate::scene::sweep::SweepTable, g: &ChartGeometry, current_s: Option<f64>) {
+    let plots = chart(table, g);
+    let reference = g.plain_360_l_over_d.map_or_else(
+        || "No closed form for this geometry (reference lines exist for a plain 360° bearing).".to_string(),
+        |ld| format!("Dashed: short-bearing theory (Ocvirk) of a plain 360° bearing, here L/D = {}.", sig(ld, 3)),
+    );
+    ui.label(RichText::new(format!("Sommerfeld chart, S = µ N L D / W (R/Cb)². {reference}")).strong());
+    let rows = 3.0;
+    let height = ((ui.available_height() - 20.0) / rows - 48.0).max(70.0);
+    let plot_ui = |ui: &mut Ui, p: &ChartPlot| {
+        ui.label(RichText::new(p.title).strong());
+        let mut legend: Vec<(String, Color32)> =
+            p.curves.iter().zip(PALETTE).map(|((name, _), c)| ((*name).to_string(), c)).collect();
+        if !p.reference.is_empty() {
+            legend.push(("short bearing (dashed)".into(), Color32::from_gray(140)));
+        }
+        legend_ui(ui, &legend);
+        Plot::new(("sommerfeld-chart", p.title))
+            .height(height)
+            .width(ui.available_width())
+            .x_axis_label("Sommerfeld number S [–]")
+            .x_grid_spacer(egui_plot::log_grid_spacer(10))
+            .x_axis_formatter(|m, _| decade_label(m.value))
+            .allow_scroll(false)
+            .show(ui, |plot| {
+                let log = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> { pts.iter().map(|q| [q[0].log10(), q[1]]).collect() };
+                for ((name, pts), color) in p.curves.iter().zip(PALETTE) {
+                    plot.line(Line::new(*name, log(pts)).color(color).width(1.8));
+                    plot.points(Points::new(*name, log(pts)).color(color).radius(2.5));
+                }
+                if !p.reference.is_empty() {
+                    plot.line(
+                        Line::new("short bearing", log(&p.reference))
+                            .color(Color32::from_gray(140))
+                            .style(egui_plot::LineStyle::dashed_loose()),
+                    );
+                }
+                if let Some(s) = current_s {
+                    plot.vline(VLine::new("this case", s.log10()).color(Color32::from_gray(150)));
+                }
+            });
+    };
+    ui.columns(2, |cols| {
+        let [left, right] = cols else { return };
+        for p in plots.iter().take(3) {
+            plot_ui(left, p);
+        }
+        for p in plots.iter().skip(3) {
+            plot_ui(right, p);
+        }
+    });
 }
 
 /// `key_x`: the swept key's value in the edited case (absent from the file: not marked).
@@ -219,14 +297,18 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
         for name in &spec.outputs {
             let Some(k) = COLUMNS.iter().position(|c| c.name == name.as_str()) else { continue };
             let (label, unit) = column_label(name);
+            // Engineering notation: 3e7 N/m reads 30 MN/m.
+            let largest = table.series(name, against_s).iter().fold(0.0_f64, |m, p| m.max(p[1].abs()));
+            let (scale, unit) = super::compare_panel::row_unit(unit, Some(largest), None);
+            let scaled = |pts: Vec<[f64; 2]>| -> Vec<[f64; 2]> { pts.into_iter().map(|p| [p[0], p[1] / scale]).collect() };
             ui.label(RichText::new(format!("{label} [{unit}]")).strong());
-            let series = table.series(name, against_s);
-            let flagged = table.series_over_limits(name, against_s);
+            let series = scaled(table.series(name, against_s));
+            let flagged = scaled(table.series_over_limits(name, against_s));
             Plot::new(("sweep-plot", name.as_str()))
                 .height(height)
                 .legend(Legend::default())
                 .x_axis_label(x_label.clone())
-                .y_axis_label(unit)
+                .y_axis_label(unit.clone())
                 .allow_scroll(false)
                 .show(ui, |p| {
                     p.line(Line::new(label.clone(), series.clone()).color(LINE).width(1.8));
@@ -243,7 +325,7 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
                         p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
                         if let Some(y) = current_cells.as_ref().and_then(|c| c[k]) {
                             p.points(
-                                Points::new("this case", vec![[x, y]])
+                                Points::new("this case", vec![[x, y / scale]])
                                     .color(CURRENT)
                                     .shape(MarkerShape::Diamond)
                                     .radius(6.0),
@@ -253,9 +335,11 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
                 });
         }
         for (x, why) in table.failures() {
+            let x = crate::number::sig(x, 6);
             ui.label(RichText::new(format!("No solution at {x}: {why}")).color(Color32::from_rgb(230, 120, 60)));
         }
         for (x, names) in table.limit_marks() {
+            let x = crate::number::sig(x, 6);
             ui.label(RichText::new(format!("At {x}: beyond the design limits {names}")).color(OVER_LIMIT));
         }
     });

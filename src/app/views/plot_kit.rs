@@ -1,0 +1,196 @@
+//! Pieces the plots of several views share, so every plot reads the same way:
+//!
+//! - [`legend_ui`]: the legend as a row of coloured names above the plot, never over the curves or the
+//!   controls (egui_plot's legend is drawn inside the plot frame);
+//! - [`decade_label`]: tick labels of a log10 axis as the numbers they stand for (`0.01`, `1`, `1k`);
+//! - [`wrapped_phase`]: a phase curve folded into (−180°, 180°], cut where it wraps, with [`PHASE_TICKS`]
+//!   (labelled every 90°) as the axis' grid.
+
+use egui::{Color32, RichText, Ui};
+
+/// Curve colours readable on both the dark and the light theme: each keeps a contrast of at least 3:1
+/// against both backgrounds (relative luminance between about 0.12 and 0.3; no yellow, no pale blue).
+pub const PALETTE: [Color32; 8] = [
+    Color32::from_rgb(0, 114, 178),
+    Color32::from_rgb(213, 94, 0),
+    Color32::from_rgb(0, 158, 115),
+    Color32::from_rgb(190, 100, 150),
+    Color32::from_rgb(160, 120, 0),
+    Color32::from_rgb(120, 100, 220),
+    Color32::from_rgb(0, 150, 170),
+    Color32::from_rgb(128, 128, 128),
+];
+
+/// One legend entry: the curve's name and colour.
+pub type LegendEntry = (String, Color32);
+
+/// The legend of a plot as a row that wraps: per entry a short line in the curve's colour (an image
+/// labelled `legend: <name>` for screen readers and tests) and the name.
+pub fn legend_ui(ui: &mut Ui, entries: &[LegendEntry]) {
+    ui.horizontal_wrapped(|ui| {
+        for (name, color) in entries {
+            let (rect, sample) = ui.allocate_exact_size(egui::vec2(16.0, 12.0), egui::Sense::hover());
+            sample.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend: {name}")));
+            ui.painter().line_segment([rect.left_center(), rect.right_center()], egui::Stroke::new(2.5, *color));
+            ui.label(RichText::new(name).color(*color));
+            ui.add_space(6.0);
+        }
+    });
+}
+
+/// A decade tick of a log10 axis (`value` = log10 of the number) as the number it stands for, with an SI
+/// prefix from 1000 on: −2 → "0.01", 0 → "1", 3 → "1k", 6 → "1M". Off-decade values (a zoomed axis) get
+/// three significant digits.
+#[must_use]
+pub fn decade_label(value: f64) -> String {
+    let v = 10f64.powf(value);
+    let (scaled, prefix) = match v {
+        v if v >= 1e9 => (v / 1e9, "G"),
+        v if v >= 1e6 => (v / 1e6, "M"),
+        v if v >= 1e3 => (v / 1e3, "k"),
+        v => (v, ""),
+    };
+    format!("{}{prefix}", crate::number::sig(scaled, 3))
+}
+
+/// The smallest of 1, 2, 5 × 10ⁿ at least `x` (> 0).
+#[must_use]
+pub fn nice_up(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let decade = 10f64.powf(x.log10().floor());
+    [1.0, 2.0, 5.0, 10.0].into_iter().map(|m| m * decade).find(|&s| s >= x * (1.0 - 1e-12)).unwrap_or(10.0 * decade)
+}
+
+/// A linear axis grid on 1-2-5 steps whose largest step is at least `label_px` points apart, so that
+/// egui_plot labels it (it labels a step only when its marks stand 60 points apart on x, 20 on y): a
+/// 1000–13 000 rpm axis 500 points wide gets labels every 2000 rpm rather than one label at 10 000.
+pub fn labelled_spacer(label_px: f64) -> impl Fn(egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    egui_plot::uniform_grid_spacer(move |input| {
+        // `base_step_size` is the value spanned by the plot's minimum grid spacing (8 points).
+        let per_px = input.base_step_size / 8.0;
+        let label = nice_up(per_px * label_px);
+        [nice_up(per_px * 8.0).min(label), nice_up(0.25 * label).min(label), label]
+    })
+}
+
+/// Grid steps of a phase axis in degrees: lines every 30°, labels every 90° and 180°.
+pub const PHASE_TICKS: [f64; 3] = [30.0, 90.0, 180.0];
+
+/// Phase in (−180°, 180°].
+#[must_use]
+pub fn wrap_deg(phase: f64) -> f64 {
+    let p = phase.rem_euclid(360.0);
+    if p > 180.0 {
+        p - 360.0
+    } else {
+        p
+    }
+}
+
+/// The points `(x, phase)` with the phase folded into (−180°, 180°], as pieces cut where the folded phase
+/// jumps by more than 180° (a wrap, not a change of the response), so no line crosses the plot at a wrap.
+#[must_use]
+pub fn wrapped_phase(x: &[f64], phase_deg: &[f64]) -> Vec<Vec<[f64; 2]>> {
+    let mut pieces: Vec<Vec<[f64; 2]>> = Vec::new();
+    let mut last: Option<f64> = None;
+    for (&x, &p) in x.iter().zip(phase_deg) {
+        let w = wrap_deg(p);
+        match (last, pieces.last_mut()) {
+            (Some(prev), Some(piece)) if (w - prev).abs() <= 180.0 => piece.push([x, w]),
+            _ => pieces.push(vec![[x, w]]),
+        }
+        last = Some(w);
+    }
+    pieces
+}
+
+/// The tick label of a phase axis: whole degrees with the degree sign.
+#[must_use]
+pub fn phase_label(value: f64) -> String {
+    format!("{value:.0}°")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// WCAG relative luminance of an sRGB colour.
+    fn luminance(c: Color32) -> f64 {
+        let lin = |v: u8| {
+            let v = f64::from(v) / 255.0;
+            if v <= 0.040_45 {
+                v / 12.92
+            } else {
+                ((v + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        0.2126 * lin(c.r()) + 0.7152 * lin(c.g()) + 0.0722 * lin(c.b())
+    }
+
+    fn contrast(a: Color32, b: Color32) -> f64 {
+        let (la, lb) = (luminance(a), luminance(b));
+        (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
+    }
+
+    /// Every curve colour against egui's dark and light panel fills, at least 3:1 (WCAG's minimum for
+    /// graphics and large text).
+    #[test]
+    fn the_palette_reads_on_both_themes() {
+        let backgrounds = [egui::Visuals::dark().panel_fill, egui::Visuals::light().panel_fill];
+        for c in PALETTE {
+            for bg in backgrounds {
+                assert!(contrast(c, bg) >= 3.0, "{c:?} on {bg:?}: {:.2}", contrast(c, bg));
+            }
+        }
+    }
+
+    #[test]
+    fn nice_steps_are_one_two_five() {
+        let steps: Vec<f64> = [0.7, 1.0, 1.3, 2.5, 4.0, 7.0, 1440.0].map(nice_up).to_vec();
+        assert_eq!(steps, [1.0, 1.0, 2.0, 5.0, 5.0, 10.0, 2000.0]);
+    }
+
+    /// The unbalance plot's speed axis, 1000–13 221 rpm over 500 points: egui_plot labels steps whose marks
+    /// stand 60 points apart or more; the spacer gives labels every 2000 rpm (82 points apart, six of them), where the default
+    /// decade grid labelled only 10 000.
+    #[test]
+    fn a_speed_axis_gets_several_labelled_ticks() {
+        let (lo, hi, px) = (1000.0, 13_221.0, 500.0);
+        let input = egui_plot::GridInput { bounds: (lo, hi), base_step_size: (hi - lo) / px * 8.0 };
+        let marks = labelled_spacer(70.0)(input);
+        let labelled: Vec<f64> =
+            marks.iter().filter(|m| m.step_size * px / (hi - lo) >= 60.0).map(|m| m.value).collect();
+        assert_eq!(labelled, [2000.0, 4000.0, 6000.0, 8000.0, 10_000.0, 12_000.0]);
+        // An amplitude axis of 0–65 µm over 150 points, labels 20 points apart or more: every 20 µm.
+        let input = egui_plot::GridInput { bounds: (0.0, 65.0), base_step_size: 65.0 / 150.0 * 8.0 };
+        let labelled: Vec<f64> = labelled_spacer(32.0)(input)
+            .iter()
+            .filter(|m| m.step_size * 150.0 / 65.0 >= 20.0)
+            .map(|m| m.value)
+            .collect();
+        assert_eq!(labelled, [0.0, 20.0, 40.0, 60.0]);
+    }
+
+    #[test]
+    fn decades_read_as_numbers() {
+        let labels: Vec<String> = [-2.0, -1.0, 0.0, 1.0, 2.0, 3.0, 4.0, 6.0].map(decade_label).to_vec();
+        assert_eq!(labels, ["0.01", "0.1", "1", "10", "100", "1k", "10k", "1M"]);
+        assert_eq!(decade_label(0.5), "3.16");
+    }
+
+    #[test]
+    fn phase_is_folded_and_cut_at_each_wrap() {
+        assert_eq!([wrap_deg(-190.0), wrap_deg(180.0), wrap_deg(-180.0), wrap_deg(725.0)], [170.0, 180.0, 180.0, 5.0]);
+        // A lag growing from 0 to −540°: folded, it wraps at −180° twice, so three pieces.
+        let x: Vec<f64> = (0..=54).map(f64::from).collect();
+        let p: Vec<f64> = x.iter().map(|k| -10.0 * k).collect();
+        let pieces = wrapped_phase(&x, &p);
+        assert_eq!(pieces.len(), 3, "{pieces:?}");
+        assert!(pieces.iter().flatten().all(|q| q[1] > -180.0 && q[1] <= 180.0));
+        assert_eq!(pieces.iter().map(Vec::len).sum::<usize>(), x.len());
+        // Each piece is continuous.
+        assert!(pieces.iter().all(|s| s.windows(2).all(|w| (w[1][1] - w[0][1]).abs() <= 10.0 + 1e-9)));
+    }
+}
