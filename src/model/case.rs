@@ -219,6 +219,8 @@ pub struct Physics {
     /// Bending modes per tilting pad beyond the rigid tilt (pseudo-modal pad flexibility, docs/MODEL.md §5);
     /// 0 = rigid pads.
     pub pad_modes: usize,
+    /// The equilibrium's work budget: film solves per pad over all its methods.
+    pub max_film_solves_per_pad: usize,
 }
 
 /// Film–pad heat exchange (docs/MODEL.md §3).

@@ -303,6 +303,9 @@ pub struct PhysicsFile {
     /// Bending modes per tilting pad beyond the rigid tilt (pad flexibility); 0 = rigid pads.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pad_modes: Option<usize>,
+    /// Film solves per pad the equilibrium may spend (its work budget).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_film_solves_per_pad: Option<usize>,
 }
 
 /// Which film model: isothermal (one viscosity at `operating.film_temperature_c`) or thermohydrodynamic.
