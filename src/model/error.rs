@@ -134,7 +134,7 @@ pub enum Inconsistency {
     /// The valve cannot hold a fed pad's static injection pressure from its supply.
     #[error(
         "{supply_bar} bar is below pad {pad}'s injection pressure of {injection_bar} bar \
-         (operating.injection_pressure_bar): the valve cannot hold it; allowed: above {injection_bar} bar"
+         (operating.injection_pressure_bar): the valve cannot hold it; allowed: at least {injection_bar} bar"
     )]
     SupplyBelowInjection { supply_bar: f64, pad: usize, injection_bar: f64 },
     // ----------------------------------------------------------------------------------------- rotor

@@ -82,7 +82,7 @@ fn check_ports(
                 ));
             }
             let injection = operating.injection_pressure_pa.get(pad).copied().unwrap_or(0.0);
-            if injection >= h.supply_pressure_pa {
+            if injection > h.supply_pressure_pa {
                 return Err(inconsistent(
                     "hydraulics.supply_pressure_bar",
                     Inconsistency::SupplyBelowInjection {

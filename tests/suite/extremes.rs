@@ -207,9 +207,11 @@ fn zero_speed_with_injection_is_hydrostatic() {
 #[test]
 fn injection_up_to_pad_lift_off() {
     // Soft pivots and rising injection: the pads ride out on their pivots; the solver follows (scan + Newton
-    // through the negative-stiffness region) at every pressure.
+    // through the negative-stiffness region) at every pressure (the valve's supply raised above it: a supply
+    // below the injection pressure is refused).
     for p in ["20", "40", "80", "160"] {
-        let s = converges("test-rig-pub5.toml", &[&format!("operating.injection_pressure_bar={p}")]);
+        let set = [format!("operating.injection_pressure_bar={p}"), "hydraulics.supply_pressure_bar=200".to_string()];
+        let s = converges("test-rig-pub5.toml", &[&set[0], &set[1]]);
         if p == "40" {
             assert!(s.pads.iter().all(|p| p.pivot_displacement_m.unwrap() > 100e-6), "pads pushed out");
         }

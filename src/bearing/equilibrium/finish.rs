@@ -94,10 +94,10 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
 ///
 /// A tilting-pad bearing whose pads do not surround the load cannot carry it whatever a search met on its
 /// way (an unloaded pad pressed onto the journal by its own film while the journal wandered along the
-/// unsupported direction): a touchdown there is reported as the missing stiffness it follows from.
+/// unsupported direction): a touchdown or closed film there is reported as the missing stiffness it follows from.
 pub(super) fn classify_failure(model: &BearingModel, ctx: &Ctx<'_>, e: SolveError) -> SolveError {
     match classify_contact(model, e) {
-        e @ SolveError::Touchdown { .. } => unsupported_load(model, ctx).unwrap_or(e),
+        e @ (SolveError::Touchdown { .. } | SolveError::FilmClosed { .. }) => unsupported_load(model, ctx).unwrap_or(e),
         e => e,
     }
 }
