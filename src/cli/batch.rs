@@ -31,6 +31,9 @@ pub struct BatchArgs<'a> {
 pub fn run(args: &BatchArgs<'_>) -> Result<()> {
     let table = super::inputs::read_text(args.designs, "designs table")?;
     let designs = Designs::parse(&table).with_context(|| format!("in {}", args.designs.display()))?;
+    if designs.rows.is_empty() {
+        bail!("{} has a header but no design rows: nothing to solve", args.designs.display());
+    }
     let text = super::inputs::read_text(args.case, "case file")?;
     let range = args.shard.range(designs.rows.len());
     super::inputs::check_points("batch", range.len(), args.max_points)?;

@@ -43,12 +43,27 @@ def schema(binary):
     return table if isinstance(table, list) else table.get("keys", [])
 
 
+INTERVAL = re.compile(r"^\s*[\[(]\s*([-+0-9.eE]+|−?inf)\s*,\s*([-+0-9.eE]+|inf)\s*[\])]")
+
+
+def interval(row):
+    """The ends of a key's allowed interval (`tiltpad schema --json` writes it as `(0, 10000]`), or None."""
+    m = INTERVAL.match(str(row.get("allowed") or ""))
+    if not m:
+        return None
+    ends = []
+    for t in m.groups():
+        try:
+            ends.append(float(t))
+        except ValueError:
+            ends.append(None)
+    return ends
+
+
 def numeric_values(row):
     """Values at and beyond the ends of a key's allowed range, and non-numbers."""
     vals = ["nan", "inf", "-inf", "abc", '""']
-    allowed = row.get("allowed") or {}
-    lo = allowed.get("min") if isinstance(allowed, dict) else None
-    hi = allowed.get("max") if isinstance(allowed, dict) else None
+    lo, hi = interval(row) or (None, None)
     for v in (lo, hi):
         if isinstance(v, (int, float)):
             vals.append(repr(v))
@@ -130,7 +145,7 @@ class Harness:
             kind = str(row.get("kind", row.get("type", "")))
             if "[]" in key:
                 continue
-            if "number" in kind or "integer" in kind or isinstance((row.get("allowed") or {}).get("min"), (int, float)):
+            if "number" in kind or "integer" in kind or interval(row) is not None:
                 for v in numeric_values(row):
                     extra = ["--set", "mesh.fidelity=\"preview\""] if not key.startswith("mesh.") else []
                     self.run(f"set {key}={v}", ["solve", case, "--set", f"{key}={v}"] + extra + ["--json", "r.json"])

@@ -88,6 +88,9 @@ fn a_key_varied_twice_or_misspelt_is_refused_before_the_first_solve() {
     let o = tiltpad(&["batch", "typo.csv", "--case", "compressor-bearing.toml"], &d);
     let err = refused(&o, &["bearing.pads.prelaod", "header of typo.csv"]);
     assert!(!err.contains("design 0"), "a design was solved: {err}");
+    std::fs::write(d.join("empty.csv"), "operating.speed_rpm\n").unwrap();
+    let o = tiltpad(&["batch", "empty.csv", "--case", "compressor-bearing.toml"], &d);
+    refused(&o, &["empty.csv has a header but no design rows"]);
     std::fs::remove_dir_all(&d).ok();
 }
 
