@@ -20,6 +20,8 @@ pub struct BatchArgs<'a> {
     pub shard: Shard,
     pub csv: Option<PathBuf>,
     pub jsonl: Option<PathBuf>,
+    /// Most designs this run may solve.
+    pub max_points: usize,
 }
 
 /// Runs the shard.
@@ -27,15 +29,22 @@ pub struct BatchArgs<'a> {
 /// # Errors
 /// Unreadable inputs, a bad designs table, an output that cannot be written, or every design failed.
 pub fn run(args: &BatchArgs<'_>) -> Result<()> {
-    let table = std::fs::read_to_string(args.designs)
-        .with_context(|| format!("cannot read designs table {}", args.designs.display()))?;
+    let table = super::inputs::read_text(args.designs, "designs table")?;
     let designs = Designs::parse(&table).with_context(|| format!("in {}", args.designs.display()))?;
-    let text =
-        std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    if designs.rows.is_empty() {
+        bail!("{} has a header but no design rows: nothing to solve", args.designs.display());
+    }
+    let text = super::inputs::read_text(args.case, "case file")?;
     let range = args.shard.range(designs.rows.len());
+    super::inputs::check_points("batch", range.len(), args.max_points)?;
+    let runner = Runner::new(text, args.set.to_vec(), false);
+    // Every column's key, with its first given value, is checked before the first design is solved.
+    let firsts: Vec<(String, String)> =
+        designs.keys.iter().filter_map(|k| designs.rows.iter().flatten().find(|(g, _)| g == k).cloned()).collect();
+    runner.check_keys(&firsts).with_context(|| format!("in the header of {}", args.designs.display()))?;
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
     let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "design", &designs.keys)?;
-    let mut runner = Runner::new(text, args.set.to_vec(), false);
+    let mut runner = runner;
     for note in runner.replaced(&designs.rows[range.clone()]) {
         eprintln!("note: {note}");
     }

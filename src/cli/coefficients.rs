@@ -26,11 +26,24 @@ pub struct CoefficientArgs<'a> {
     pub csv: Option<PathBuf>,
     pub node: usize,
     pub tag: &'a str,
+    /// Most speeds or ratios.
+    pub max_points: usize,
 }
 
-fn numbers(key: &str, spec: &str) -> Result<Vec<f64>> {
-    let axis = Axis::parse(&format!("{key}={spec}"))?;
-    axis.values.iter().map(|v| v.parse::<f64>().with_context(|| format!("`{v}` is not a number"))).collect()
+/// The numbers of `--flag spec` (a range or a list), each finite and at least `min` (`what`: their meaning),
+/// at most `max_points` of them.
+fn numbers(flag: &str, spec: &str, min: f64, what: &str, max_points: usize) -> Result<Vec<f64>> {
+    let axis = Axis::parse(&format!("{flag}={spec}"))?;
+    super::inputs::check_points(flag, axis.values.len(), max_points)?;
+    let values: Vec<f64> = axis
+        .values
+        .iter()
+        .map(|v| v.parse::<f64>().with_context(|| format!("{flag} {spec}: `{v}` is not a number")))
+        .collect::<Result<_>>()?;
+    if let Some(v) = values.iter().find(|v| !(v.is_finite() && **v >= min)) {
+        bail!("{flag} {spec}: {v} is not allowed; {what} must be finite and at least {min}");
+    }
+    Ok(values)
 }
 
 fn empty_table(meaning: FrequencyMeaning) -> CoefficientTable {
@@ -85,12 +98,16 @@ fn excitation_table(runner: &mut Runner, ratios: &[f64]) -> Result<CoefficientTa
 /// # Errors
 /// Bad arguments, an invalid case, every point failed, or an output that cannot be written.
 pub fn run(args: &CoefficientArgs<'_>) -> Result<()> {
-    let text =
-        std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let text = super::inputs::read_text(args.case, "case file")?;
     let mut runner = Runner::new(text, args.set.to_vec(), true);
     let table = match (args.speed_rpm, args.excitation_ratio) {
-        (Some(spec), None) => speed_table(&mut runner, &numbers("--speed-rpm", spec)?)?,
-        (None, Some(spec)) => excitation_table(&mut runner, &numbers("--excitation-ratio", spec)?)?,
+        (Some(spec), None) => {
+            speed_table(&mut runner, &numbers("--speed-rpm", spec, 0.0, "speeds [rpm]", args.max_points)?)?
+        }
+        (None, Some(spec)) => excitation_table(
+            &mut runner,
+            &numbers("--excitation-ratio", spec, 0.0, "excitation ratios ω/Ω", args.max_points)?,
+        )?,
         (Some(_), Some(_)) => bail!("give --speed-rpm (a speed sweep) or --excitation-ratio (one speed), not both"),
         (None, None) => {
             let rpm = crate::units::RPM.from_si(runner.case(&[])?.operating.speed_rad_s);
@@ -98,7 +115,7 @@ pub fn run(args: &CoefficientArgs<'_>) -> Result<()> {
         }
     };
     if table.frequency_rad_s.is_empty() {
-        bail!("no point solved; nothing to write");
+        bail!("no point solved (each point's reason is printed above); nothing to write");
     }
     if args.ross.is_none() && args.csv.is_none() {
         print!("{}", table.csv());

@@ -17,6 +17,7 @@ mod bench_turb;
 mod coefficients;
 mod convergence_map;
 pub mod frf;
+mod inputs;
 pub mod modes;
 pub mod rotor;
 mod rotor_map;
@@ -77,10 +78,10 @@ pub enum Command {
         #[arg(long, value_name = "KEY")]
         param: Option<String>,
         /// First value of the --param key (in the key's unit, e.g. rpm for `operating.speed_rpm`).
-        #[arg(long, requires = "param")]
+        #[arg(long, requires = "param", allow_negative_numbers = true)]
         from: Option<f64>,
         /// Last value of the --param key.
-        #[arg(long, requires = "param")]
+        #[arg(long, requires = "param", allow_negative_numbers = true)]
         to: Option<f64>,
         /// Number of evenly spaced values of the --param key, both ends included.
         #[arg(long, default_value_t = 11)]
@@ -97,6 +98,9 @@ pub enum Command {
         /// A ParaView collection `OUT.pvd` with one `.vtu` per solved point beside it.
         #[arg(long, value_name = "OUT.pvd")]
         vtu: Option<PathBuf>,
+        /// Most points the sweep may have (refused before the first solve beyond it).
+        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
+        max_points: usize,
     },
     /// Solve every design of a table (one design per row, any case keys as columns) on a base case.
     Batch {
@@ -117,6 +121,9 @@ pub enum Command {
         /// JSON lines of the rows.
         #[arg(long, value_name = "OUT")]
         jsonl: Option<PathBuf>,
+        /// Most designs this run may solve (refused before the first solve beyond it).
+        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
+        max_points: usize,
     },
     /// Reduced stiffness and damping over running speed or excitation frequency, for ROSS and as CSV.
     Coefficients {
@@ -144,6 +151,9 @@ pub enum Command {
         /// Tag of the ROSS element.
         #[arg(long, default_value = "tiltpad")]
         tag: String,
+        /// Most speeds or excitation ratios (refused before the first solve beyond it).
+        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
+        max_points: usize,
     },
     /// Pad bending modes on the pivot (frequency, modal mass and stiffness), optionally the mesh-convergence
     /// table of the first pad's modes (thesis Table 3.1 style).
@@ -154,8 +164,8 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// Bending modes per pad (1–6).
-        #[arg(long, default_value_t = 3)]
-        count: usize,
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(1..=6))]
+        count: u16,
         /// Also the convergence table over film/solid meshes.
         #[arg(long)]
         table: bool,
@@ -170,15 +180,19 @@ pub enum Command {
     Rotor {
         /// Rotor file (TOML; bearing cases relative to it).
         rotor: PathBuf,
-        /// Spin speeds, rpm: `FROM:TO:N`.
+        /// Spin speeds, rpm: `FROM:TO:N` (N at most --max-points).
         #[arg(long, value_name = "FROM:TO:N")]
         speeds: String,
+        /// Most speeds (refused before the first solve beyond it).
+        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
+        max_points: usize,
         /// Override the rotor's bearing coefficients: `full` or `reduced`.
         #[arg(long, value_parser = ["full", "reduced"])]
         coefficients: Option<String>,
-        /// Override the rotor's shaft reduction: fixed-interface modes per bending plane (0: full shaft).
-        #[arg(long, value_name = "N")]
-        shaft_modes: Option<usize>,
+        /// Override the rotor's shaft reduction: fixed-interface modes per bending plane (0: full shaft; at
+        /// most 400, as in the rotor file).
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(0..=400))]
+        shaft_modes: Option<u16>,
         /// Instead of the analysis: the undamped critical-speed map (critical speeds against a support
         /// stiffness at the bearings), the bearings' stiffness over `--speeds` and their crossings.
         #[arg(long)]
@@ -199,15 +213,17 @@ pub enum Command {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
         /// Lowest frequency [Hz] (0 allowed: the band is then linear, else logarithmic).
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
         from: f64,
         /// Highest frequency [Hz].
-        #[arg(long, default_value_t = 1000.0)]
+        #[arg(long, default_value_t = 1000.0, allow_negative_numbers = true)]
         to: f64,
+        /// Frequencies in the band (2 to 100000).
         #[arg(long, default_value_t = 400)]
         points: usize,
-        /// Control-signal amplitude [V] to check against the valve model's small-signal range.
-        #[arg(long, value_name = "V")]
+        /// Control-signal amplitude [V] to check against the valve model's small-signal range (a positive
+        /// number).
+        #[arg(long, value_name = "V", value_parser = parse_amplitude)]
         amplitude_v: Option<f64>,
         /// CSV of magnitude and phase per curve (`-`: standard output; the default without --json).
         #[arg(long, value_name = "OUT")]
@@ -274,12 +290,21 @@ fn parse_step_deg(s: &str) -> std::result::Result<f64, String> {
     Ok(v)
 }
 
+/// `--amplitude-v`: a finite positive voltage.
+fn parse_amplitude(s: &str) -> std::result::Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|e| format!("`{s}` is not a number: {e}"))?;
+    if !(v.is_finite() && v > 0.0) {
+        return Err(format!("{v} V: the control amplitude must be a finite positive voltage"));
+    }
+    Ok(v)
+}
+
 /// Reads and validates a case file with overrides.
 ///
 /// # Errors
 /// I/O and every case error, with the file name.
 pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
-    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read case file {}", path.display()))?;
+    let text = inputs::read_text(path, "case file")?;
     for note in crate::model::replaced_keys(&text, set).unwrap_or_default() {
         eprintln!("note: {note}");
     }
@@ -299,6 +324,10 @@ fn is_stdout(p: Option<&PathBuf>) -> bool {
 }
 
 fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathBuf>) -> Result<()> {
+    inputs::check_outputs(
+        &[("case file", case)],
+        &[("--json", json.map(PathBuf::as_path)), ("--vtu", vtu.map(PathBuf::as_path))],
+    )?;
     let (_, c) = read_case(case, set)?;
     let sol = solve_case(&c).with_context(|| format!("solving {}", case.display()))?;
     // Standard output belongs to the JSON when it goes there.
@@ -328,10 +357,13 @@ fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathB
 pub fn run(command: Command) -> Result<()> {
     match command {
         Command::Solve { case, set, json, vtu } => solve(&case, &set, json.as_ref(), vtu.as_ref()),
-        Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu } => {
+        Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu, max_points } => {
             let mut axes = Vec::new();
             if let Some(key) = param {
                 let (Some(from), Some(to)) = (from, to) else { anyhow::bail!("--param needs --from and --to") };
+                if !(from.is_finite() && to.is_finite()) {
+                    anyhow::bail!("--from {from} --to {to}: both must be finite numbers");
+                }
                 if steps < 1 {
                     anyhow::bail!("--steps must be at least 1");
                 }
@@ -340,13 +372,20 @@ pub fn run(command: Command) -> Result<()> {
             for spec in &vary {
                 axes.push(crate::study::Axis::parse(spec)?);
             }
-            sweep::run(sweep::SweepArgs { case: &case, axes, set: &set, csv, jsonl, vtu })
+            let outputs = [("--csv", csv.as_deref()), ("--jsonl", jsonl.as_deref()), ("--vtu", vtu.as_deref())];
+            inputs::check_outputs(&[("case file", &case)], &outputs)?;
+            sweep::run(sweep::SweepArgs { case: &case, axes, set: &set, csv, jsonl, vtu, max_points })
         }
-        Command::Batch { designs, case, set, shard, csv, jsonl } => {
+        Command::Batch { designs, case, set, shard, csv, jsonl, max_points } => {
             let shard = shard.as_deref().map_or(Ok(crate::study::Shard::ALL), crate::study::Shard::parse)?;
-            batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl })
+            inputs::check_outputs(
+                &[("designs table", &designs), ("case file", &case)],
+                &[("--csv", csv.as_deref()), ("--jsonl", jsonl.as_deref())],
+            )?;
+            batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl, max_points })
         }
-        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag } => {
+        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag, max_points } => {
+            inputs::check_outputs(&[("case file", &case)], &[("--ross", ross.as_deref()), ("--csv", csv.as_deref())])?;
             coefficients::run(&coefficients::CoefficientArgs {
                 case: &case,
                 set: &set,
@@ -356,12 +395,15 @@ pub fn run(command: Command) -> Result<()> {
                 csv,
                 node,
                 tag: &tag,
+                max_points,
             })
         }
         Command::Modes { case, set, count, table, json, csv } => {
-            modes::run(&modes::ModeArgs { case: &case, set: &set, count, table, json, csv })
+            inputs::check_outputs(&[("case file", &case)], &[("--json", json.as_deref()), ("--csv", csv.as_deref())])?;
+            modes::run(&modes::ModeArgs { case: &case, set: &set, count: usize::from(count), table, json, csv })
         }
         Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
+            inputs::check_outputs(&[("case file", &case)], &[("--csv", csv.as_deref()), ("--json", json.as_deref())])?;
             frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
         }
         Command::Schema { rotor, json } => {
@@ -378,10 +420,15 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
-        Command::Rotor { rotor, speeds, coefficients, shaft_modes, critical_map, json, csv } => {
+        Command::Rotor { rotor, speeds, max_points, coefficients, shaft_modes, critical_map, json, csv } => {
+            inputs::check_outputs(
+                &[("rotor file", &rotor)],
+                &[("--json", json.as_deref()), ("--csv", csv.as_deref())],
+            )?;
             let args = rotor::RotorArgs {
                 rotor: &rotor,
                 speeds: &speeds,
+                max_points,
                 coefficients: coefficients.map(|c| {
                     if c == "full" {
                         crate::model::rotor::CoefficientModel::Full
@@ -389,7 +436,7 @@ pub fn run(command: Command) -> Result<()> {
                         crate::model::rotor::CoefficientModel::Reduced
                     }
                 }),
-                shaft_modes,
+                shaft_modes: shaft_modes.map(usize::from),
                 json,
                 csv,
             };

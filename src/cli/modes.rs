@@ -152,7 +152,7 @@ fn csv(rows: &[ModeRow], table: &[ModeTableRow]) -> String {
 /// Invalid case, elastic-model failure, or an output that cannot be written.
 pub fn run(args: &ModeArgs<'_>) -> Result<()> {
     let (_, case) = read_case(args.case, args.set)?;
-    let count = args.count.clamp(1, 6);
+    let count = args.count;
     let rows = pad_mode_rows(&case, count).with_context(|| format!("pad modes of {}", args.case.display()))?;
     let first = case.bearing.pads.iter().position(|p| p.kind == crate::model::PadKind::Tilting && p.thickness_m > 0.0);
     let table = match (args.table, first) {

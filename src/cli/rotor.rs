@@ -11,11 +11,17 @@ use std::path::PathBuf;
 use anyhow::{bail, Context, Result};
 
 use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
-use crate::rotor::analysis::{run as run_analysis, AnalysisParams, AnalysisResult};
+use crate::rotor::analysis::{Analysis, AnalysisParams, AnalysisResult, Step};
 use crate::rotor::eigen::Whirl;
 
 use super::rows::announce;
 use super::{is_stdout, write_atomic};
+
+/// The highest speed of a `--speeds` range [rpm]: the top of `operating.speed_rpm`'s allowed range.
+const MAX_SPEED_RPM: f64 = match crate::key!("operating.speed_rpm").allowed {
+    crate::model::schema::Allowed::Number(range) => range.hi,
+    _ => panic!("operating.speed_rpm: a number"),
+};
 
 /// Modes written per speed in the CSV and the summary.
 const MODES: usize = 6;
@@ -25,11 +31,10 @@ const MODES: usize = 6;
 /// # Errors
 /// I/O and validation errors, naming the file and the key.
 pub fn read_rotor(path: &Path) -> Result<Rotor> {
-    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read rotor file {}", path.display()))?;
+    let text = super::inputs::read_text(path, "rotor file")?;
     let file = parse_rotor_file(&text).with_context(|| format!("invalid rotor file {}", path.display()))?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let read =
-        |name: &str| std::fs::read_to_string(dir.join(name)).map_err(|e| format!("{}: {e}", dir.join(name).display()));
+    let read = |name: &str| super::inputs::read_text(&dir.join(name), "bearing case").map_err(|e| format!("{e:#}"));
     file.resolve(&read).with_context(|| format!("invalid rotor file {}", path.display()))
 }
 
@@ -37,14 +42,21 @@ pub fn read_rotor(path: &Path) -> Result<Rotor> {
 ///
 /// # Errors
 /// A malformed range.
-pub fn parse_speeds(spec: &str) -> Result<Vec<f64>> {
+pub fn parse_speeds(spec: &str, max_points: usize) -> Result<Vec<f64>> {
     let parts: Vec<&str> = spec.split(':').collect();
     let [a, b, n] = parts.as_slice() else { bail!("--speeds `{spec}`: expected FROM:TO:N in rpm") };
     let (a, b): (f64, f64) = (a.trim().parse().context("--speeds FROM")?, b.trim().parse().context("--speeds TO")?);
     let n: usize = n.trim().parse().context("--speeds N")?;
-    if !(a.is_finite() && b.is_finite() && a >= 0.0 && b > a && (2..=10_000).contains(&n)) {
-        bail!("--speeds `{spec}`: needs 0 ≤ FROM < TO and 2 ≤ N ≤ 10000");
+    if !(a.is_finite() && b.is_finite() && a >= 0.0 && b > a && n >= 2) {
+        bail!("--speeds `{spec}`: needs 0 ≤ FROM < TO ≤ {MAX_SPEED_RPM} rpm and N ≥ 2");
     }
+    if b > MAX_SPEED_RPM {
+        bail!(
+            "--speeds `{spec}`: TO = {b} rpm is above {MAX_SPEED_RPM} rpm, the highest speed a bearing case allows \
+             (operating.speed_rpm)"
+        );
+    }
+    super::inputs::check_points("--speeds", n, max_points)?;
     #[allow(clippy::cast_precision_loss)]
     Ok((0..n).map(|i| RPM.to_si(a + (b - a) * i as f64 / (n - 1) as f64)).collect())
 }
@@ -53,6 +65,8 @@ pub fn parse_speeds(spec: &str) -> Result<Vec<f64>> {
 pub struct RotorArgs<'a> {
     pub rotor: &'a Path,
     pub speeds: &'a str,
+    /// Most speeds.
+    pub max_points: usize,
     pub coefficients: Option<CoefficientModel>,
     /// Shaft modes per plane (0: full shaft), overriding the file's `shaft_modes`.
     pub shaft_modes: Option<usize>,
@@ -72,9 +86,18 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     if let Some(m) = args.shaft_modes {
         rotor.shaft_modes = m;
     }
-    let speeds = parse_speeds(args.speeds)?;
-    let result = run_analysis(&rotor, AnalysisParams::new(speeds))
-        .with_context(|| format!("analysing {}", args.rotor.display()))?;
+    let speeds = parse_speeds(args.speeds, args.max_points)?;
+    let context = || format!("analysing {}", args.rotor.display());
+    // One bearing solve and one eigen-solution per speed: a bar on standard error shows them go by.
+    let pb = super::sweep::progress(speeds.len());
+    pb.set_message("shaft model");
+    let mut analysis = Analysis::new(&rotor, AnalysisParams::new(speeds)).with_context(context)?;
+    while let Step::More { done, .. } = analysis.step().with_context(context)? {
+        pb.set_position(done as u64);
+    }
+    pb.set_message("onset and critical speeds");
+    let result = analysis.finish().with_context(context)?;
+    pb.finish_and_clear();
     emit(args, &summary(&rotor, &result), &result, || csv_text(&result))
 }
 

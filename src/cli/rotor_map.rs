@@ -23,7 +23,7 @@ const MODES: usize = 4;
 /// Input, solve and I/O errors.
 pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let rotor = read_rotor(args.rotor)?;
-    let speeds = parse_speeds(args.speeds)?;
+    let speeds = parse_speeds(args.speeds, args.max_points)?;
     let map = critical_speed_map(&rotor, &speeds, POINTS, MODES)
         .with_context(|| format!("critical-speed map of {}", args.rotor.display()))?;
     emit(args, &summary(&map), &map, || csv_text(&map))

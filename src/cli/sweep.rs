@@ -19,6 +19,8 @@ pub struct SweepArgs<'a> {
     pub csv: Option<PathBuf>,
     pub jsonl: Option<PathBuf>,
     pub vtu: Option<PathBuf>,
+    /// Most points the grid may have.
+    pub max_points: usize,
 }
 
 pub fn progress(len: usize) -> ProgressBar {
@@ -30,6 +32,12 @@ pub fn progress(len: usize) -> ProgressBar {
     pb
 }
 
+/// Two spellings of one case key (`bearing.pad.2.offset`, `bearing.pad[2].offset`).
+fn same_key(a: &str, b: &str) -> bool {
+    let normal = |k: &str| k.replace('[', ".").replace([']', ' '], "");
+    normal(a) == normal(b)
+}
+
 /// Runs the sweep.
 ///
 /// # Errors
@@ -38,16 +46,29 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     if args.axes.is_empty() {
         bail!("nothing to sweep: give --vary KEY=FROM:TO:STEPS (or --param KEY --from A --to B --steps N)");
     }
-    let text =
-        std::fs::read_to_string(args.case).with_context(|| format!("cannot read case file {}", args.case.display()))?;
+    let text = super::inputs::read_text(args.case, "case file")?;
+    for (i, a) in args.axes.iter().enumerate() {
+        if let Some(b) = args.axes[..i].iter().find(|b| same_key(&a.key, &b.key)) {
+            bail!(
+                "--vary {} and --vary {}: the same key twice (its rows would show values that were not solved); \
+                 give all its values in one --vary",
+                a.key,
+                b.key
+            );
+        }
+    }
+    let total = args.axes.iter().try_fold(1usize, |n, a| n.checked_mul(a.values.len())).unwrap_or(usize::MAX);
+    super::inputs::check_points("sweep", total, args.max_points)?;
     let points = grid::points(&args.axes)?;
     let keys: Vec<String> = args.axes.iter().map(|a| a.key.clone()).collect();
+    let mut runner = Runner::new(text, args.set.to_vec(), true);
+    let firsts: Vec<(String, String)> = args.axes.iter().map(|a| (a.key.clone(), a.values[0].clone())).collect();
+    runner.check_keys(&firsts).context("a swept key (--vary or --param)")?;
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
     let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "point", &keys)?;
     let mut vtu = args.vtu.as_deref().map(VtuSeries::new);
     // One numeric axis: ParaView steps through its values; otherwise through the point numbers.
     let single = (args.axes.len() == 1).then(|| &args.axes[0]);
-    let mut runner = Runner::new(text, args.set.to_vec(), true);
     for note in runner.replaced(&points) {
         eprintln!("note: {note}");
     }

@@ -39,9 +39,15 @@ pub struct VtuSeries {
 }
 
 impl VtuSeries {
+    /// The collection at `pvd`; a symlink is followed, so that the `.vtu` files are written beside the file
+    /// the collection really is (its references are relative to its own directory).
     #[must_use]
     pub fn new(pvd: &Path) -> Self {
-        Self { pvd: pvd.to_path_buf(), entries: Vec::new() }
+        let resolved = match std::fs::symlink_metadata(pvd) {
+            Ok(m) if m.file_type().is_symlink() => std::fs::canonicalize(pvd).unwrap_or_else(|_| pvd.to_path_buf()),
+            _ => pvd.to_path_buf(),
+        };
+        Self { pvd: resolved, entries: Vec::new() }
     }
 
     /// Writes point `index`'s grids, listed at time step `step`.

@@ -33,17 +33,14 @@ pub enum WriteError {
     Special { path: PathBuf, kind: &'static str },
     #[error("cannot write {path}: it is a symlink to {target}, which does not exist")]
     DanglingLink { path: PathBuf, target: PathBuf },
-    #[error("cannot write {path}: {source}")]
-    Io {
-        path: PathBuf,
-        #[source]
-        source: io::Error,
-    },
+    /// The operating system's error is part of the message, not a separate cause (printed once).
+    #[error("cannot write {path}: {error}")]
+    Io { path: PathBuf, error: io::Error },
 }
 
 impl WriteError {
     fn io(path: &Path, source: io::Error) -> Self {
-        Self::Io { path: path.to_path_buf(), source }
+        Self::Io { path: path.to_path_buf(), error: source }
     }
 }
 

@@ -226,6 +226,8 @@ pub struct Physics {
     pub turbulence: Turbulence,
     /// Laminar–turbulent transition band of the local film Reynolds number ρ U h / µ: [start, end].
     pub transition_reynolds: [f64; 2],
+    /// The equilibrium's work budget: film solves per pad over all its methods.
+    pub max_film_solves_per_pad: usize,
 }
 
 /// Film–pad heat exchange (docs/MODEL.md §3).

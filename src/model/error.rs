@@ -131,9 +131,25 @@ pub enum Inconsistency {
     NoSuchPad { pad: usize, last: usize },
     #[error("pad {pad} is fed by two ports")]
     PadFedTwice { pad: usize },
+    /// A line feeds a pad that has no orifice: no flow reaches its film, so the valve has nothing to act on.
+    #[error("pad {pad} has no orifice (bearing.pads.orifice): the line's flow cannot reach its film")]
+    PortPadWithoutOrifice { pad: usize },
+    /// The valve cannot hold a fed pad's static injection pressure from its supply.
+    #[error(
+        "{supply_bar} bar is below pad {pad}'s injection pressure of {injection_bar} bar \
+         (operating.injection_pressure_bar): the valve cannot hold it; allowed: at least {injection_bar} bar"
+    )]
+    SupplyBelowInjection { supply_bar: f64, pad: usize, injection_bar: f64 },
     // ----------------------------------------------------------------------------------------- rotor
     #[error("{modes:?}: two increasing flexible-mode numbers in [1, 20]")]
     DampingModes { modes: [usize; 2] },
+    /// More shaft elements than a rotor analysis is allowed to assemble (dense matrices, one eigen-solution
+    /// per speed).
+    #[error(
+        "{total} shaft elements in all (Σ rotor.section[].elements); at most {max}: the shaft's dense matrices and \
+         its eigen-solutions grow with the cube of the count (a few dozen elements resolve a compressor rotor)"
+    )]
+    ShaftElements { total: usize, max: usize },
     #[error("give both rotor.min_speed_rpm and rotor.max_speed_rpm, or neither")]
     SpeedRangeHalf,
     /// The rotor file names a bearing case the caller could not read (`reason`: the caller's words).

@@ -333,6 +333,9 @@ pub struct PhysicsFile {
     /// Local film Reynolds number where the transition band ends (fully turbulent above).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub transition_reynolds_end: Option<f64>,
+    /// Film solves per pad the equilibrium may spend (its work budget).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_film_solves_per_pad: Option<usize>,
 }
 
 /// Which film model: isothermal (one viscosity at `operating.film_temperature_c`) or thermohydrodynamic.

@@ -40,6 +40,8 @@ impl CaseFile {
             pad_modes: key!("physics.pad_modes").count(self.physics.pad_modes)?,
             turbulence: self.physics.turbulence.unwrap_or_default(),
             transition_reynolds: resolve_transition(self)?,
+            max_film_solves_per_pad: key!("physics.max_film_solves_per_pad")
+                .count(self.physics.max_film_solves_per_pad)?,
         };
         let thermal = resolve_thermal(self)?;
         let hydraulics = self
@@ -47,6 +49,9 @@ impl CaseFile {
             .as_ref()
             .map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len()))
             .transpose()?;
+        if let Some(h) = &hydraulics {
+            check_ports(h, &bearing, &operating)?;
+        }
         let limits = super::limits::resolve_limits(&self.limits)?;
         let case = Case {
             title: self.title.clone().unwrap_or_default(),
@@ -72,6 +77,36 @@ fn resolve_transition(f: &CaseFile) -> Result<[f64; 2], CaseError> {
     let end = end_row.value(f.physics.transition_reynolds_end)?;
     Range::open_lo(start, super::schema::MAX_TRANSITION_REYNOLDS).check(end_row.key, end)?;
     Ok([start, end])
+}
+
+/// Every pad a line feeds has an orifice, and the supply is above each fed pad's static injection pressure.
+fn check_ports(
+    h: &super::hydraulics::Hydraulics,
+    bearing: &super::Bearing,
+    operating: &super::Operating,
+) -> Result<(), CaseError> {
+    for (i, port) in h.ports.iter().enumerate() {
+        for &pad in &port.pads {
+            if bearing.pads.get(pad).is_some_and(|p| p.orifices.is_empty()) {
+                return Err(inconsistent(
+                    format!("hydraulics.port[{i}].pads"),
+                    Inconsistency::PortPadWithoutOrifice { pad },
+                ));
+            }
+            let injection = operating.injection_pressure_pa.get(pad).copied().unwrap_or(0.0);
+            if injection > h.supply_pressure_pa {
+                return Err(inconsistent(
+                    "hydraulics.supply_pressure_bar",
+                    Inconsistency::SupplyBelowInjection {
+                        supply_bar: crate::units::BAR.from_si(h.supply_pressure_pa),
+                        pad,
+                        injection_bar: crate::units::BAR.from_si(injection),
+                    },
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 fn inconsistent(key: impl Into<String>, reason: Inconsistency) -> CaseError {

@@ -26,6 +26,11 @@ use super::rotor_schema::{rotor_default, rotor_row as row};
 use super::shaft::{BeamSection, BeamTheory};
 use super::Case;
 
+/// Most shaft elements over all sections: 1604 coordinates, whose dense eigen-solution (the shaft's modes, or
+/// the whole system per speed without reduction) takes seconds; 25 sections of 200 elements (20 004
+/// coordinates) would allocate gigabytes before the first speed.
+pub const MAX_SHAFT_ELEMENTS: usize = 400;
+
 /// The row of a rotor-file key, found while compiling (a key without a row fails the build).
 macro_rules! rotor_key {
     ($key:literal) => {
@@ -396,6 +401,12 @@ impl RotorFile {
                     poisson_ratio: nu,
                 });
             }
+        }
+        if elements.len() > MAX_SHAFT_ELEMENTS {
+            return Err(CaseError::inconsistent(
+                "rotor.section",
+                Inconsistency::ShaftElements { total: elements.len(), max: MAX_SHAFT_ELEMENTS },
+            ));
         }
         let n_nodes = elements.len() + 1;
         let disks = r

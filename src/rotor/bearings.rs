@@ -77,8 +77,8 @@ impl BearingSet {
         let mut case = e.case.clone();
         case.operating.speed_rad_s = omega;
         let before = e.stages.runs(StageId::Coefficients);
-        let solution = e.stages.coefficients(&Request::coefficients(case), &NoCancel).map_err(|source| {
-            RotorError::Bearing { bearing: e.name.clone(), speed_rpm: crate::units::RPM.from_si(omega), source }
+        let solution = e.stages.coefficients(&Request::coefficients(case), &NoCancel).map_err(|error| {
+            RotorError::Bearing { bearing: e.name.clone(), speed_rpm: crate::units::RPM.from_si(omega), error }
         })?;
         self.solves += e.stages.runs(StageId::Coefficients) - before;
         Ok(solution.full.clone())

@@ -11,8 +11,10 @@ pub enum RotorError {
     #[error(transparent)]
     Input(#[from] CaseError),
     /// A bearing case could not be solved at a speed.
-    #[error("bearing `{bearing}` at {speed_rpm:.0} rpm: {source}")]
-    Bearing { bearing: String, speed_rpm: f64, source: SolveError },
+    /// The bearing's solve failed at that speed (its message is part of this one, not a separate cause, so
+    /// it is printed once).
+    #[error("bearing `{bearing}` at {speed_rpm:.0} rpm: {error}")]
+    Bearing { bearing: String, speed_rpm: f64, error: SolveError },
     /// The mass matrix cannot be inverted (a coordinate without inertia).
     #[error("the mass matrix is singular ({size} coordinates): every coordinate needs inertia")]
     SingularMass { size: usize },

@@ -171,6 +171,27 @@ impl Runner {
         notes
     }
 
+    /// Checks, before anything is solved, that every key a study varies is a key of the case (with the base
+    /// overrides): a misspelt key in a `--vary` or a batch header would otherwise fail every point, after
+    /// solving none. `keys` are `(key, one of its values)`; a value that is only wrong for some points is
+    /// left to those points' rows.
+    ///
+    /// # Errors
+    /// The first unknown or malformed key ([`CaseError::UnknownKey`] with the schema's hint,
+    /// [`CaseError::BadOverride`]).
+    pub fn check_keys(&self, keys: &[(String, String)]) -> Result<(), CaseError> {
+        for (key, value) in keys {
+            let mut set = self.base.clone();
+            set.push(format!("{key}={value}"));
+            if let Err(e @ (CaseError::UnknownKey { .. } | CaseError::BadOverride { .. })) =
+                crate::model::parse_case_file(&self.text, &set)
+            {
+                return Err(e);
+            }
+        }
+        Ok(())
+    }
+
     /// Solves one point.
     ///
     /// # Errors

@@ -2,6 +2,7 @@
 //! what it checks. `common` holds the helpers they share.
 
 mod architecture;
+mod bad_inputs;
 mod case_validation;
 mod cli;
 mod cli_study;
@@ -31,4 +32,5 @@ mod thermal_compressor;
 mod thermal_convergence;
 mod thermal_slider;
 mod turbulence;
+mod work_budgets;
 mod workbench_ui;

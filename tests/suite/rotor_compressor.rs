@@ -31,7 +31,7 @@ fn onset_with(model: CoefficientModel, set: &[&str]) -> f64 {
     assert!(rotor.representative);
     assert!((rotor.mass() - 391.0).abs() < 1.0, "published mass 391 kg, got {}", rotor.mass());
     rotor.coefficients = model;
-    let r = run(&rotor, AnalysisParams::new(parse_speeds("6000:16000:6").unwrap())).unwrap();
+    let r = run(&rotor, AnalysisParams::new(parse_speeds("6000:16000:6", usize::MAX).unwrap())).unwrap();
     assert!(r.report.warnings.is_empty(), "{:?}", r.report.warnings);
     // identical bearing cases share their solves: one per speed (plus the onset probes)
     assert_eq!(r.report.bearing_solves, r.report.eigen_solutions);

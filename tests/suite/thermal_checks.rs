@@ -113,23 +113,23 @@ fn thermal_loop_stops_at_its_budgets() {
     let params = ThermalParams::default();
     let s = solve_thd(&mut model, &mut thermal, &case, params, None, &NoCancel).unwrap();
     assert!(s.report.converged && s.report.outer_iterations > 2, "{:?}", s.report.outer_iterations);
-    // A microsecond: spent inside the first equilibrium, which stops at its next iteration, so the very
-    // first outer iteration returns the error.
-    let params = ThermalParams { max_seconds: 1e-6, ..ThermalParams::default() };
+    // The equilibrium's work budget inside the loop: 5 film solves per pad do not place the pads of the first
+    // (isothermal) equilibrium, and the loop answers with that budget, not with a touchdown or a restart.
+    let mut equilibrium = params.equilibrium;
+    equilibrium.max_film_solves_per_pad = 5;
+    let params = ThermalParams { equilibrium, ..ThermalParams::default() };
     let mut run = ThdRun::new(&model, &mut thermal, &case, params, None);
     let err = run.step(&mut model, &mut thermal, &case, &NoCancel).map(|s| s.is_some()).unwrap_err();
     match err {
         SolveError::BudgetExceeded {
-            what: Iteration::Thermal,
-            budget: Budget::Seconds(limit),
-            iterations: 1,
-            seconds,
+            what: Iteration::Equilibrium,
+            budget: Budget::FilmSolves { per_pad: 5, pads },
             ..
         } => {
-            assert!(limit == 1e-6 && seconds >= limit, "{err}");
-            assert!(err.to_string().contains("time budget"), "{err}");
+            assert_eq!(pads, case.bearing.pads.len());
+            assert!(err.to_string().contains("physics.max_film_solves_per_pad"), "{err}");
         }
-        other => panic!("expected the time budget, got {other:?}"),
+        other => panic!("expected the equilibrium's work budget, got {other:?}"),
     }
 }
 

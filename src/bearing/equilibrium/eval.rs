@@ -71,13 +71,14 @@ pub(crate) struct Ctx<'a> {
     /// across neighbouring rays: (pad that switched, direction [rad], residual component on either side [N]).
     pub gap_2d: Option<(usize, f64, f64, f64)>,
     /// Film solves allowed in total.
-    budget: usize,
+    budget: Budget,
+    /// When the solve started (for the report's timing only: no outcome depends on it).
     started: Instant,
 }
 
 impl<'a> Ctx<'a> {
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
-        let budget = params.max_film_solves_per_pad * model.pads.len().max(1);
+        let budget = Budget::FilmSolves { per_pad: params.max_film_solves_per_pad, pads: model.pads.len().max(1) };
         Self {
             op,
             params,
@@ -94,20 +95,16 @@ impl<'a> Ctx<'a> {
         }
     }
 
-    /// Seconds since the solve started.
+    /// Seconds since the solve started (reported, never compared with a limit).
     pub fn elapsed(&self) -> f64 {
         self.started.elapsed().as_secs_f64()
     }
 
-    /// Which budget is spent, if any.
+    /// Which budget is spent, if any: the film solves counted so far against the work budget (a count, so the
+    /// same case stops at the same film solve whatever the machine's load).
     pub fn exhausted(&self) -> Option<Budget> {
-        if self.report.film_solves > self.budget {
-            Some(Budget::FilmSolves(self.budget))
-        } else if self.elapsed() > self.params.max_seconds {
-            Some(Budget::Seconds(self.params.max_seconds))
-        } else {
-            None
-        }
+        let Budget::FilmSolves { per_pad, pads } = self.budget else { return None };
+        (self.report.film_solves >= per_pad.saturating_mul(pads)).then_some(self.budget)
     }
 
     /// The error of a spent budget.
@@ -116,7 +113,6 @@ impl<'a> Ctx<'a> {
             what: Iteration::Equilibrium,
             budget,
             iterations: self.report.iterations,
-            seconds: self.elapsed(),
             residual: self.report.residual_history.last().copied().unwrap_or(1.0),
         }
     }

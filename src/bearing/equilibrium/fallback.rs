@@ -241,7 +241,7 @@ fn continuation(
     if let Some(b) = ctx.exhausted() {
         return Err(ctx.budget_error(b));
     }
-    if let Some((pad, hmin, ecc)) = ctx.closes_before_balance {
+    if let Some((pad, hmin, ecc)) = ctx.closes_before_balance.filter(|c| c.1 > 0.0) {
         return Err(SolveError::Touchdown { pad, h_min_um: crate::units::UM.from_si(hmin), eccentricity_ratio: ecc });
     }
     if let Some((axis_deg, load_component_n)) = ctx.no_stiffness {

@@ -20,7 +20,7 @@ use crate::bearing::equilibrium::journal::{nearest_normal, pads_surround};
 use crate::bearing::equilibrium::state::{Equilibrium, Found, FLOATING_SHARE, TOUCHDOWN_FRACTION};
 use crate::bearing::film::coordinates::PadDof;
 use crate::bearing::film::model::BearingModel;
-use crate::bearing::report::error::{Iteration, SolveError};
+use crate::bearing::report::error::SolveError;
 
 /// Pad residual (relative) above which a converged state is reported with a warning.
 const PAD_RESIDUAL_WARNING: f64 = 1e3;
@@ -86,24 +86,18 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
     Ok(Equilibrium { u, pads, film_force: force, report: ctx.report })
 }
 
-/// Every method failed with the films last seen close to contact, or a film closed where no method could
-/// open it (a flexible pad pressed onto the journal, pads grown into it by heat): the load cannot be
-/// carried, which is touchdown. `h_min_um` is then the thinnest film last seen (≤ 0 where it closed).
+/// Every method failed with the films last seen close to contact (a positive film thinner than
+/// [`TOUCHDOWN_FRACTION`] of the clearance at the last film the solver accepted): the load cannot be carried,
+/// which is touchdown, on the pad named. A film that closes (h ≤ 0) at a trial position of a search is not a
+/// state of the bearing and is not called touchdown ([`SolveError::FilmClosed`]); a spent work budget is
+/// reported as the budget, whatever the films looked like when it ran out.
 ///
 /// A tilting-pad bearing whose pads do not surround the load cannot carry it whatever a search met on its
 /// way (an unloaded pad pressed onto the journal by its own film while the journal wandered along the
-/// unsupported direction): a touchdown there is reported as the missing stiffness it follows from.
+/// unsupported direction): a touchdown or closed film there is reported as the missing stiffness it follows from.
 pub(super) fn classify_failure(model: &BearingModel, ctx: &Ctx<'_>, e: SolveError) -> SolveError {
-    // A budget spent after the polar search saw the films close before the load balanced: touchdown, as the
-    // continuation would have answered had the budget lasted.
-    let e = match (e, ctx.closes_before_balance) {
-        (SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. }, Some((pad, h, ecc))) => {
-            SolveError::Touchdown { pad, h_min_um: crate::units::UM.from_si(h), eccentricity_ratio: ecc }
-        }
-        (e, _) => e,
-    };
     match classify_contact(model, e) {
-        e @ SolveError::Touchdown { .. } => unsupported_load(model, ctx).unwrap_or(e),
+        e @ (SolveError::Touchdown { .. } | SolveError::FilmClosed { .. }) => unsupported_load(model, ctx).unwrap_or(e),
         e => e,
     }
 }
@@ -135,9 +129,9 @@ fn classify_contact(model: &BearingModel, e: SolveError) -> SolveError {
         e[0].hypot(e[1]) / cb
     };
     match e {
-        SolveError::NotConverged { .. } | SolveError::BudgetExceeded { what: Iteration::Equilibrium, .. } => {
+        SolveError::NotConverged { .. } => {
             let (pad, hmin) = min_film(model);
-            if hmin < TOUCHDOWN_FRACTION * cb {
+            if hmin > 0.0 && hmin < TOUCHDOWN_FRACTION * cb {
                 SolveError::Touchdown {
                     pad,
                     h_min_um: crate::units::UM.from_si(hmin),
@@ -147,9 +141,10 @@ fn classify_contact(model: &BearingModel, e: SolveError) -> SolveError {
                 e
             }
         }
-        SolveError::Film { pad, error: FilmError::Contact { h_min_m, .. } } => SolveError::Touchdown {
+        SolveError::Film { pad, error: FilmError::Contact { h_min_m, theta_deg, .. } } => SolveError::FilmClosed {
             pad,
             h_min_um: crate::units::UM.from_si(h_min_m),
+            theta_deg,
             eccentricity_ratio: journal_ecc(),
         },
         e => e,

@@ -45,10 +45,9 @@ pub struct EquilibriumParams {
     pub max_inner_iterations: usize,
     /// Largest journal step, as a fraction of the assembled clearance.
     pub max_step: f64,
-    /// Work budget: film solves per pad over all methods and fallbacks (bounds the time to fail).
+    /// Work budget: film solves per pad over all methods and fallbacks (bounds the work to fail; the case key
+    /// `physics.max_film_solves_per_pad`). Work, not time: the outcome does not depend on the machine's load.
     pub max_film_solves_per_pad: usize,
-    /// Time budget of one solve over all methods [s].
-    pub max_seconds: f64,
     /// Resuming a suspended cold start: the pads before this index are already placed in `start`
     /// (0: an ordinary solve).
     pub placed_pads: usize,
@@ -62,10 +61,23 @@ impl Default for EquilibriumParams {
             max_iterations: 60,
             max_inner_iterations: 80,
             max_step: 0.4,
-            max_film_solves_per_pad: 3000,
-            max_seconds: 60.0,
+            max_film_solves_per_pad: DEFAULT_MAX_FILM_SOLVES_PER_PAD,
             placed_pads: 0,
         }
+    }
+}
+
+/// The default of `physics.max_film_solves_per_pad` (its schema row's).
+pub const DEFAULT_MAX_FILM_SOLVES_PER_PAD: usize = match crate::key!("physics.max_film_solves_per_pad").default {
+    crate::model::schema::Fallback::Count(n) => n,
+    _ => panic!("physics.max_film_solves_per_pad: a count"),
+};
+
+impl EquilibriumParams {
+    /// The defaults, with the case's work budget (`physics.max_film_solves_per_pad`).
+    #[must_use]
+    pub fn of(case: &crate::model::Case) -> Self {
+        Self { max_film_solves_per_pad: case.physics.max_film_solves_per_pad, ..Self::default() }
     }
 }
 

@@ -37,23 +37,37 @@ impl std::fmt::Display for Iteration {
     }
 }
 
-/// The budget that stopped an iteration.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+/// The budget that stopped an iteration. Budgets count work, never time, so the same case stops at the same
+/// point on an idle and on a busy machine; each names the case key that raises it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Budget {
-    /// At most this many iterations.
+    /// At most this many outer iterations (`thermal.max_iterations`).
     Iterations(usize),
-    /// At most this much computing time [s].
-    Seconds(f64),
-    /// At most this many film solves.
-    FilmSolves(usize),
+    /// At most `per_pad` film solves per pad, `per_pad × pads` in all (`physics.max_film_solves_per_pad`).
+    FilmSolves { per_pad: usize, pads: usize },
+}
+
+impl Budget {
+    /// The case key that raises this budget.
+    #[must_use]
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Iterations(_) => "thermal.max_iterations",
+            Self::FilmSolves { .. } => "physics.max_film_solves_per_pad",
+        }
+    }
 }
 
 impl std::fmt::Display for Budget {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::Iterations(n) => write!(f, "iteration budget ({n} iterations)"),
-            Self::Seconds(s) => write!(f, "time budget ({s} s)"),
-            Self::FilmSolves(n) => write!(f, "work budget ({n} film solves)"),
+        match *self {
+            Self::Iterations(n) => write!(f, "iteration budget ({n} outer iterations, {} = {n})", self.key()),
+            Self::FilmSolves { per_pad, pads } => write!(
+                f,
+                "work budget ({} film solves: {} = {per_pad} per pad × {pads} pads)",
+                per_pad.saturating_mul(pads),
+                self.key()
+            ),
         }
     }
 }
@@ -71,6 +85,17 @@ pub enum SolveError {
          the load is carried; reduce the load, raise the speed or viscosity, or inject"
     )]
     Touchdown { pad: usize, h_min_um: f64, eccentricity_ratio: f64 },
+    /// A trial position of the search closed the film of a pad (h ≤ 0 somewhere, or a tilt at the end of its
+    /// admissible range, where h reaches 0) and no method found a state
+    /// with an open film that carries the load. Not touchdown: the closed film belongs to a trial, not to a
+    /// state of the bearing (a pad so flexible or so grown that it is pressed onto the journal, a film
+    /// pressure that pushes the pads into it).
+    #[error(
+        "no equilibrium: the film of pad {pad} closed at a trial position of the search (h {h_min_um:.3} µm at \
+         θ = {theta_deg:.1}°, journal last at ε = {eccentricity_ratio:.3}) and no method found an open film that \
+         carries the load; check the pads' stiffness, thermal growth and the injection pressure"
+    )]
+    FilmClosed { pad: usize, h_min_um: f64, theta_deg: f64, eccentricity_ratio: f64 },
     /// The bearing has no static stiffness along a direction in which the load has a component (e.g. two
     /// tilting pads whose pivot line is perpendicular to the load: their forces pass through the pivots).
     #[error(
@@ -107,13 +132,18 @@ pub enum SolveError {
         "equilibrium not converged after {iterations} iterations: relative force residual {residual:.2e} ({reason})"
     )]
     NotConverged { iterations: usize, residual: f64, reason: StallReason },
-    /// An iteration used up its iteration or time budget before converging.
+    /// An iteration used up its work budget before converging (never reported as anything else: a budget
+    /// says nothing about the physics).
     #[error(
-        "{what} not converged: stopped by its {budget} after {iterations} iterations ({seconds:.1} s); {} {residual:.2e}",
-        what.residual_name()
+        "{what} not converged: stopped by its {budget} after {iterations} iterations, {} {residual:.2e}; this is a \
+         work limit, not a result: raise {} (or coarsen the mesh) to let it go on",
+        what.residual_name(),
+        budget.key()
     )]
-    BudgetExceeded { what: Iteration, budget: Budget, iterations: usize, seconds: f64, residual: f64 },
-    #[error("solve cancelled")]
+    BudgetExceeded { what: Iteration, budget: Budget, iterations: usize, residual: f64 },
+    /// Stopped from outside (a superseded interactive job, an interrupted command): no result, and no
+    /// statement about the case.
+    #[error("solve cancelled (stopped from outside before it finished; not a property of the case)")]
     Cancelled,
     /// A pad's thermal system (film energy, pad conduction) could not be factorised or solved.
     #[error("pad {pad} {system}: {error}")]

@@ -72,8 +72,14 @@ impl EquilibriumInputs {
             supply_flow_m3_s,
             excitation_ratio: _, // the reduction's
         } = operating;
-        let Physics { cavitation: _, touchdown_film_m: _, pad_modes: _, turbulence: _, transition_reynolds: _ } =
-            physics; // kept whole below (pad_modes: the films'; turbulence: every film solve)
+        let Physics {
+            cavitation: _,
+            touchdown_film_m: _,
+            pad_modes: _,
+            turbulence: _,
+            transition_reynolds: _,
+            max_film_solves_per_pad: _,
+        } = physics; // kept whole below (pad_modes: the films'; turbulence: every film solve)
         let structure = StructureInputs::of(case);
         Self {
             films: FilmsInputs::of(case),
@@ -155,13 +161,13 @@ impl Stage for EquilibriumStage {
         let start = resumed.as_ref().map(|r| r.coordinates.clone()).or(warm);
         let params = EquilibriumParams {
             placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads),
-            ..EquilibriumParams::default()
+            ..EquilibriumParams::of(&case)
         };
         let attempt = match solve(model, &case, &op, start.as_deref(), params, cancel) {
             // A failed warm start retries cold before giving up.
             Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled) => {
                 self.warm.clear();
-                solve(model, &case, &op, None, EquilibriumParams::default(), &NoSuspend(cancel))
+                solve(model, &case, &op, None, EquilibriumParams::of(&case), &NoSuspend(cancel))
             }
             r => r,
         };

@@ -129,7 +129,14 @@ impl FilmsInputs {
     pub fn of(case: &Case) -> Self {
         let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _, limits: _ } =
             case;
-        let Physics { cavitation: _, touchdown_film_m: _, pad_modes, turbulence: _, transition_reynolds: _ } = physics; // the equilibrium's (cavitation, turbulence); the modes
+        let Physics {
+            cavitation: _,
+            touchdown_film_m: _,
+            pad_modes,
+            turbulence: _,
+            transition_reynolds: _,
+            max_film_solves_per_pad: _,
+        } = physics; // the equilibrium's (cavitation, turbulence); the modes
         let Bearing { journal_radius_m, length_m, assembled_clearance_m, pads } = bearing;
         let MeshSpec {
             fidelity: _, // its element counts are read

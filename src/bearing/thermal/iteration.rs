@@ -64,7 +64,7 @@ pub(super) fn nodal_viscosity(law: &crate::model::ViscosityLaw, t: &[f64], unifo
 /// equilibrium to 1e-9 is wasted; the tolerance follows the last viscosity change (full precision once the
 /// change is within ten times the thermal tolerance, so the converged state is exact).
 pub(super) fn equilibrium_params(last_change: f64, params: &ThermalParams) -> EquilibriumParams {
-    let full = EquilibriumParams::default();
+    let full = params.equilibrium;
     if last_change.is_finite() && last_change > 10.0 * params.viscosity_tol {
         EquilibriumParams {
             force_tol: (1e-3 * last_change).clamp(full.force_tol, 1e-4),

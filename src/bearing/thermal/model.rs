@@ -14,7 +14,7 @@ use crate::model::{Case, PadFilmBc};
 use crate::physics::energy::FilmHeat;
 use crate::physics::pad_conduction::{PadConduction, PadDirichletSolver, PadMaterial};
 
-use crate::bearing::equilibrium::Equilibrium;
+use crate::bearing::equilibrium::{Equilibrium, EquilibriumParams};
 use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::report::error::SolveError;
 use crate::bearing::thermal::growth::GrowthField;
@@ -53,9 +53,6 @@ pub const DEFAULT_MAX_ITERATIONS: usize = match crate::key!("thermal.max_iterati
 };
 /// Halvings of a temperature update whose viscosity field has no equilibrium.
 pub const MAX_BACKTRACKS: usize = 6;
-/// Default time budget of the thermal loop [s]: about a hundred times what a THD solve of a shipped case
-/// takes at the standard fidelity in a release build (docs/PERFORMANCE.md).
-pub const DEFAULT_MAX_SECONDS: f64 = 120.0;
 /// Load share below which a pad whose non-uniform viscosity leaves it without an equilibrium tilt is given
 /// its mean film viscosity instead.
 pub const LIGHT_PAD_SHARE: f64 = 0.1;
@@ -86,13 +83,12 @@ pub struct ThermalParams {
     /// Largest nodal relative viscosity change at convergence (default 1e-4).
     pub viscosity_tol: f64,
     /// Iteration budget: outer iterations at most (default [`DEFAULT_MAX_ITERATIONS`]: [`SAFEGUARD_AFTER`] plain
-    /// ones, then the safeguarded damped steps; an outer iteration of a preview-mesh THD solve takes
-    /// milliseconds, and the time budget bounds the rest).
+    /// ones, then the safeguarded damped steps; the case key `thermal.max_iterations`). With the equilibrium's
+    /// work budget per outer iteration it bounds the loop's work; no time limit decides its outcome.
     pub max_iterations: usize,
-    /// Time budget: computing time of the whole loop at most [s] (default [`DEFAULT_MAX_SECONDS`]; counted
-    /// inside [`ThdRun::step`] only, so a caller that spreads the loop over frames is not charged for the
-    /// time in between). An equilibrium running when it is spent is stopped at its next iteration.
-    pub max_seconds: f64,
+    /// The equilibrium's settings at full precision (its work budget: `physics.max_film_solves_per_pad`); the
+    /// early outer iterations loosen its tolerances only.
+    pub equilibrium: EquilibriumParams,
     /// Damping ω of the film temperature update (default 0.8).
     pub relaxation: f64,
     /// Stabilisation of the film energy equation (default plain SUPG: linear, so the loop's fixed point is
@@ -105,7 +101,11 @@ impl ThermalParams {
     /// The defaults, with the case's iteration budget (`thermal.max_iterations`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        Self { max_iterations: case.thermal.max_iterations, ..Self::default() }
+        Self {
+            max_iterations: case.thermal.max_iterations,
+            equilibrium: EquilibriumParams::of(case),
+            ..Self::default()
+        }
     }
 }
 
@@ -114,7 +114,7 @@ impl Default for ThermalParams {
         Self {
             viscosity_tol: 1e-4,
             max_iterations: DEFAULT_MAX_ITERATIONS,
-            max_seconds: DEFAULT_MAX_SECONDS,
+            equilibrium: EquilibriumParams::default(),
             relaxation: 0.8,
             stabilisation: Stabilisation::Supg,
         }

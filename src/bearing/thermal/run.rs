@@ -8,7 +8,7 @@ use crate::bearing::report::warning::Warning;
 use web_time::Instant;
 
 use crate::bearing::equilibrium::pivots::{self, HertzPivots};
-use crate::bearing::equilibrium::{Equilibrium, EquilibriumParams};
+use crate::bearing::equilibrium::Equilibrium;
 use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::report::error::{Budget, Iteration, SolveError};
 use crate::bearing::report::progress::{Cancel, Progress};
@@ -66,7 +66,7 @@ pub struct ThdRun {
     /// the last equilibrium.
     uniform: Vec<bool>,
     shares: Vec<f64>,
-    /// Computing time spent inside [`ThdRun::step`] so far [s] (the time budget's count).
+    /// Computing time spent inside [`ThdRun::step`] so far [s] (reported only).
     work_seconds: f64,
     /// TEHD ([`crate::bearing::thermal::tehd`]): the growth model (built on first use), the growth in the films of the current
     /// outer iteration, and the one the last temperatures give (installed at the next iteration).
@@ -88,33 +88,6 @@ pub struct ThdRun {
     restarted_from: Option<SolveError>,
     growth_at_start: Option<GrowthField>,
     u_start: Option<Vec<f64>>,
-}
-
-/// Forwards the caller's cancellation and suspension, and cancels once a time budget is spent.
-struct Deadline<'a> {
-    inner: &'a dyn Cancel,
-    /// `None`: no limit (an infinite or unrepresentable budget).
-    until: Option<Instant>,
-}
-
-impl<'a> Deadline<'a> {
-    fn after(inner: &'a dyn Cancel, seconds: f64) -> Self {
-        let until =
-            std::time::Duration::try_from_secs_f64(seconds.max(0.0)).ok().and_then(|d| Instant::now().checked_add(d));
-        Self { inner, until }
-    }
-    fn expired(&self) -> bool {
-        self.until.is_some_and(|t| Instant::now() >= t)
-    }
-}
-
-impl Cancel for Deadline<'_> {
-    fn cancelled(&self) -> bool {
-        self.inner.cancelled() || self.expired()
-    }
-    fn suspend(&self) -> bool {
-        self.inner.suspend()
-    }
 }
 
 impl ThdRun {
@@ -174,8 +147,8 @@ impl ThdRun {
     /// thermal model and case as [`ThdRun::new`].
     ///
     /// # Errors
-    /// Equilibrium failures, a singular thermal system, or a loop that spends its iteration or time budget
-    /// ([`SolveError::BudgetExceeded`], saying which).
+    /// Equilibrium failures, a singular thermal system, or a loop that spends its iteration budget
+    /// ([`SolveError::BudgetExceeded`]).
     pub fn step(
         &mut self,
         model: &mut BearingModel,
@@ -186,37 +159,24 @@ impl ThdRun {
         if cancel.cancelled() {
             return Err(SolveError::Cancelled);
         }
-        let time_budget = Budget::Seconds(self.params.max_seconds);
-        if self.work_seconds >= self.params.max_seconds {
-            return Err(self.budget_exceeded(time_budget));
-        }
         let started = Instant::now();
-        let deadline = Deadline::after(cancel, self.params.max_seconds - self.work_seconds);
-        let result = self.outer_iteration(model, thermal, case, &deadline);
+        let result = self.outer_iteration(model, thermal, case, cancel);
         if self.growth.is_some() || self.growth_next.is_some() {
             // The films are shared with other stages: they hold the growth only while the loop works.
             growth::clear(model);
         }
         self.work_seconds += started.elapsed().as_secs_f64();
-        match result {
-            Err(SolveError::Cancelled) if !cancel.cancelled() && deadline.expired() => {
-                Err(self.budget_exceeded(time_budget))
-            }
-            r => r,
-        }
+        result
     }
 
-    /// The loop ran out of a budget; after a cautious restart ([`ThdRun`]'s robustness notes) whose loop did
-    /// not finish in it, the answer is the touchdown that started it.
+    /// The loop ran out of its budget. Also after a cautious restart ([`ThdRun`]'s robustness notes): the
+    /// touchdown that started it belonged to an intermediate viscosity field, not to the converged state, so the
+    /// answer is the spent budget, not that touchdown.
     fn budget_exceeded(&self, budget: Budget) -> SolveError {
-        if let Some(e) = &self.restarted_from {
-            return e.clone();
-        }
         SolveError::BudgetExceeded {
             what: Iteration::Thermal,
             budget,
             iterations: self.report.outer_iterations,
-            seconds: self.work_seconds,
             residual: self.last_change,
         }
     }
@@ -255,7 +215,7 @@ impl ThdRun {
             p.install(model);
         }
         let te = Instant::now();
-        let exact = pending.params == EquilibriumParams::default();
+        let exact = pending.params == self.params.equilibrium;
         let attempt = equilibrium_part(model, &self.op, pending, cancel);
         self.report.equilibrium_seconds += te.elapsed().as_secs_f64();
         let eq = match attempt {
@@ -324,7 +284,7 @@ impl ThdRun {
             // the full tolerances on the same viscosity field, and take the temperatures of that state.
             let mut report = report;
             let te = Instant::now();
-            let eq = warm_equilibrium(model, &self.op, EquilibriumParams::default(), Some(&eq.u), cancel)?;
+            let eq = warm_equilibrium(model, &self.op, self.params.equilibrium, Some(&eq.u), cancel)?;
             if let Some(p) = self.pivots.as_mut() {
                 // The contact states at the polished loads (the springs moved by less than the tolerance).
                 p.update(case, &eq)?;

@@ -91,6 +91,11 @@ pub(super) const KEYS: &[Key] = &[
         .default(Fallback::Count(0))
         .edit(Physics, "Pad bending modes", Optional(0))
         .meaning("Bending modes per tilting pad beyond the rigid tilt (pad flexibility by pseudo-modal reduction of the pad's finite-element model, with E, ν and density of the pads); 0: rigid pads. Each mode adds a coordinate to the equilibrium and a row/column to the full coefficient matrices. The first bending mode carries almost all of the effect."),
+    Key::integer("physics.max_film_solves_per_pad", COUNT, 100, 1_000_000)
+        .typical(1000.0, 30000.0)
+        .default(Fallback::Count(3000))
+        .edit(Physics, "Equilibrium work budget", Optional(0))
+        .meaning("Film solves per pad the static equilibrium may spend over all its methods and fallbacks before it stops and says it did not converge (a count of work, so the same case gives the same answer on an idle or a busy machine). Shipped cases converge in a few dozen; a search through folds or near touchdown can take a few thousand. A solve stopped by this budget names it in its error: raise it there."),
     // [mesh]
     Key::choice("mesh.fidelity", &["preview", "standard", "reference"])
         .default(Fallback::Word("standard"))

@@ -105,12 +105,12 @@ impl ThdRun {
     }
 
     /// The loop walked into a touchdown that backtracking could not leave: start again, once, from the
-    /// isothermal field, safeguarded from the first step (the iteration and time budgets go on). The
+    /// isothermal field, safeguarded from the first step (the iteration budget goes on). The
     /// unsafeguarded extrapolation of the first [`SAFEGUARD_AFTER`] steps can overshoot into a film hotter
     /// than the converged one (Fillon A at S = 0.1, 35°: 265 °C and h_min 0.79 µm at the fifth step, where
-    /// the converged state has 192 °C and 1.8 µm); a touchdown of the cautious loop is the answer, and so is
-    /// the first touchdown when the cautious loop spends the iteration or time budget (compressor bearing with
-    /// thermal growth at S = 0.1: 4 map points whose touchdown took 60 s, then the restart ran out of 120 s).
+    /// the converged state has 192 °C and 1.8 µm); a touchdown of the cautious loop is the answer; a cautious
+    /// loop that spends the iteration budget answers with the budget (the first touchdown was met at an
+    /// intermediate viscosity field, not at a state of the bearing).
     fn restart_cautiously(&mut self, thermal: &mut ThermalModel, e: &SolveError) {
         self.report.warnings.push(Warning::ThermalRestart {
             outer_iteration: self.report.outer_iterations,

@@ -1,0 +1,161 @@
+//! What every command checks before it starts: input files read under a size cap (a case path of
+//! `/dev/zero` is refused after [`MAX_INPUT_BYTES`], not read until memory runs out), outputs that would
+//! overwrite an input or each other refused, and the work of a command (points to solve) bounded up front
+//! with the setting that raises the bound.
+
+use std::io::Read as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+
+/// Largest input file read [bytes]: case, rotor and designs files are kilobytes; a designs table of a
+/// hundred thousand rows is a few megabytes.
+pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
+
+/// Default bound on the points one command solves (sweep points, designs, speeds, frequencies); each
+/// command's `--max-points` raises it.
+pub const DEFAULT_MAX_POINTS: usize = 10_000;
+
+/// Reads a text input (`what`: "case file", "designs table", …) of at most [`MAX_INPUT_BYTES`].
+///
+/// # Errors
+/// A missing or unreadable file, a directory, more than the cap, or text that is not UTF-8.
+pub fn read_text(path: &Path, what: &str) -> Result<String> {
+    let file = std::fs::File::open(path).with_context(|| format!("cannot read {what} {}", path.display()))?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        bail!("cannot read {what} {}: it is a directory", path.display());
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .with_context(|| format!("cannot read {what} {}", path.display()))?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        bail!(
+            "{what} {} is larger than {} MiB, the most tiltpad reads from an input file (a {what} is a few kilobytes); \
+             is it the right file?",
+            path.display(),
+            MAX_INPUT_BYTES / (1024 * 1024)
+        );
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        anyhow::anyhow!(
+            "{what} {} is not UTF-8 text (invalid byte at offset {})",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        )
+    })
+}
+
+/// A file's identity: the device and inode of what the path names (through symlinks) when it exists, else
+/// its absolute path with the directory resolved.
+#[derive(Debug, PartialEq, Eq)]
+enum Identity {
+    #[cfg(unix)]
+    Inode(u64, u64),
+    Path(PathBuf),
+}
+
+fn identity(path: &Path) -> Identity {
+    #[cfg(unix)]
+    if let Ok(m) = std::fs::metadata(path) {
+        use std::os::unix::fs::MetadataExt;
+        return Identity::Inode(m.dev(), m.ino());
+    }
+    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+    let resolved = match (absolute.parent(), absolute.file_name()) {
+        (Some(dir), Some(name)) => std::fs::canonicalize(dir).map_or(absolute.clone(), |d| d.join(name)),
+        _ => absolute,
+    };
+    Identity::Path(resolved)
+}
+
+/// Refuses outputs that would overwrite an input or each other. `inputs`: (what, path); `outputs`: (flag,
+/// path), `-` meaning standard output (which only one output may take).
+///
+/// # Errors
+/// The first collision, naming both.
+pub fn check_outputs(inputs: &[(&str, &Path)], outputs: &[(&str, Option<&Path>)]) -> Result<()> {
+    let outputs: Vec<(&str, &Path)> = outputs.iter().filter_map(|(f, p)| p.map(|p| (*f, p))).collect();
+    for (i, (flag, out)) in outputs.iter().enumerate() {
+        let stdout = out.as_os_str() == "-";
+        for (other, earlier) in &outputs[..i] {
+            let both_stdout = stdout && earlier.as_os_str() == "-";
+            if both_stdout || (!stdout && earlier.as_os_str() != "-" && identity(out) == identity(earlier)) {
+                bail!(
+                    "{other} and {flag} both write {}: one would overwrite the other; give them different files",
+                    if both_stdout { "standard output".to_string() } else { out.display().to_string() }
+                );
+            }
+        }
+        if stdout {
+            continue;
+        }
+        let id = identity(out);
+        for (what, input) in inputs {
+            if identity(input) == id {
+                bail!(
+                    "{flag} {} is the {what} this command reads; tiltpad never overwrites an input: write the \
+                     result to another file",
+                    out.display()
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Refuses `points` beyond `max` (the command's `--max-points`), before the first solve.
+///
+/// # Errors
+/// More points than `max`, with the count and the flag that raises the bound.
+pub fn check_points(what: &str, points: usize, max: usize) -> Result<()> {
+    if points > max {
+        bail!(
+            "{what}: {points} points to solve, more than the bound of {max} (a preview solve takes tens of \
+             milliseconds, a standard THD solve seconds: {points} points could take hours); narrow the range, or \
+             raise the bound with --max-points {points}"
+        );
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn outputs_never_overwrite_inputs_or_each_other() {
+        let dir = tempfile::tempdir().unwrap();
+        let case = dir.path().join("case.toml");
+        std::fs::write(&case, "x").unwrap();
+        let link = dir.path().join("link.toml");
+        #[cfg(unix)]
+        std::os::unix::fs::symlink(&case, &link).unwrap();
+        let inputs = [("case file", case.as_path())];
+        let e = check_outputs(&inputs, &[("--json", Some(&case))]).unwrap_err().to_string();
+        assert!(e.contains("--json") && e.contains("never overwrites"), "{e}");
+        #[cfg(unix)]
+        assert!(check_outputs(&inputs, &[("--json", Some(&link))]).is_err());
+        // The same new file by two spellings, and standard output twice.
+        let a = dir.path().join("out.csv");
+        let b = dir.path().join(".").join("out.csv");
+        let e = check_outputs(&inputs, &[("--csv", Some(&a)), ("--jsonl", Some(&b))]).unwrap_err().to_string();
+        assert!(e.contains("--csv and --jsonl"), "{e}");
+        let dash = Path::new("-");
+        assert!(check_outputs(&inputs, &[("--csv", Some(dash)), ("--jsonl", Some(dash))]).is_err());
+        assert!(check_outputs(&inputs, &[("--csv", Some(dash)), ("--jsonl", Some(&a)), ("--vtu", None)]).is_ok());
+    }
+
+    #[test]
+    fn inputs_are_read_under_a_size_cap() {
+        #[cfg(unix)]
+        {
+            let e = read_text(Path::new("/dev/zero"), "case file").unwrap_err().to_string();
+            assert!(e.contains("larger than 64 MiB"), "{e}");
+        }
+        let e = read_text(Path::new("/nonexistent/case.toml"), "case file").unwrap_err();
+        assert!(format!("{e:#}").contains("cannot read case file /nonexistent/case.toml"), "{e:#}");
+        assert!(check_points("sweep", 10_001, 10_000).unwrap_err().to_string().contains("--max-points 10001"));
+        assert!(check_points("sweep", 10_000, 10_000).is_ok());
+    }
+}

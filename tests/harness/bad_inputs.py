@@ -1,0 +1,418 @@
+#!/usr/bin/env python3
+"""Bad and extreme inputs across every command of the `tiltpad` binary, each run under a time and memory limit.
+
+Usage (from the repository root, after `cargo build --release`):
+
+    python3 tests/harness/bad_inputs.py --bin target/release/tiltpad [--timeout 60] [--mem-gb 8] [--only WORD]
+
+Every run is one command line with one bad or extreme input (a `--set` value at and beyond the ends of its
+key's range, a malformed argument, an output on top of an input, an unreadable or endless input file, a
+rotor too large to allocate, ...). A run counts as
+
+- panic       the program panicked or died from a signal (abort on a failed allocation included);
+- nonfinite   NaN or inf appears in anything it printed or wrote;
+- silent_ok   it exited 0 where the input can have no computed result (the run is marked `error`);
+- hung        it ran into the time limit without having printed anything on standard error (no progress
+              and no refusal);
+- input_lost  a file given as input changed.
+
+It prints the counts and writes every run (command, exit status, seconds, verdict, first lines of its
+standard error) to `OUT/runs.jsonl`.
+"""
+
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+NONFINITE = re.compile(r"(?<![A-Za-z_])(nan|NaN|NAN|-?inf|-?Inf|-?INF|Infinity)(?![A-Za-z_])")
+
+ROOT = Path(__file__).resolve().parents[2]
+CASES = ROOT / "cases"
+
+
+def schema(binary):
+    out = subprocess.run([binary, "schema", "--json", "-"], capture_output=True, text=True, timeout=60)
+    table = json.loads(out.stdout)
+    return table if isinstance(table, list) else table.get("keys", [])
+
+
+INTERVAL = re.compile(r"^\s*[\[(]\s*([-+0-9.eE]+|−?inf)\s*,\s*([-+0-9.eE]+|inf)\s*[\])]")
+
+
+def interval(row):
+    """The ends of a key's allowed interval (`tiltpad schema --json` writes it as `(0, 10000]`), or None."""
+    m = INTERVAL.match(str(row.get("allowed") or ""))
+    if not m:
+        return None
+    ends = []
+    for t in m.groups():
+        try:
+            ends.append(float(t))
+        except ValueError:
+            ends.append(None)
+    return ends
+
+
+def numeric_values(row):
+    """Values at and beyond the ends of a key's allowed range, and non-numbers."""
+    vals = ["nan", "inf", "-inf", "abc", '""']
+    lo, hi = interval(row) or (None, None)
+    for v in (lo, hi):
+        if isinstance(v, (int, float)):
+            vals.append(repr(v))
+    if isinstance(lo, (int, float)):
+        vals.append(repr(lo - max(1.0, abs(lo))))
+    if isinstance(hi, (int, float)):
+        vals.append(repr(hi * 10 + 1))
+    vals += ["-1", "0", "1e300"]
+    return vals
+
+
+class Harness:
+    def __init__(self, binary, out, timeout, mem_gb, only):
+        self.binary = str(Path(binary).resolve())
+        self.out = Path(out)
+        self.timeout = timeout
+        self.mem_kb = int(mem_gb * 1024 * 1024)
+        self.only = only
+        self.runs = []
+        self.work = Path(tempfile.mkdtemp(prefix="tiltpad-bad-"))
+        shutil.copytree(CASES, self.work / "cases")
+        self.cases = self.work / "cases"
+
+    def run(self, name, args, expect="any", inputs=(), stdin=None):
+        """expect: 'error' (no result can be computed), 'ok' (valid), 'any'."""
+        if self.only and self.only not in name:
+            return
+        outdir = self.work / "out" / re.sub(r"[^A-Za-z0-9_.-]", "_", name)[:120]
+        outdir.mkdir(parents=True, exist_ok=True)
+        args = [a.replace("{OUT}", str(outdir)).replace("{C}", str(self.cases)).replace("{W}", str(self.work))
+                for a in args]
+        before = {p: Path(p).read_bytes() for p in inputs if Path(p).is_file()}
+        cmd = f"ulimit -v {self.mem_kb}; exec timeout -s KILL {self.timeout} \"$@\""
+        t0 = time.monotonic()
+        p = subprocess.run(["bash", "-c", cmd, "run", self.binary] + args, capture_output=True, cwd=outdir,
+                           stdin=subprocess.DEVNULL if stdin is None else stdin)
+        secs = time.monotonic() - t0
+        err = p.stderr.decode("utf-8", "replace")
+        so = p.stdout.decode("utf-8", "replace")
+        written = ""
+        for f in outdir.rglob("*"):
+            if f.is_file() and f.stat().st_size < 50_000_000:
+                written += f.read_bytes().decode("utf-8", "replace")
+        verdicts = []
+        rc = p.returncode
+        if "panicked at" in err or rc == 101 or rc < 0 and rc != -9 or rc in (134, 139) or "memory allocation" in err:
+            verdicts.append("panic")
+        if rc == -9 or rc == 137:
+            if err.strip() == "":
+                verdicts.append("hung")
+            else:
+                verdicts.append("long_with_output")
+        text = so + written
+        # numbers only: the error text may quote a bad input back ("nan")
+        if NONFINITE.search(text) and rc == 0:
+            verdicts.append("nonfinite")
+        if expect == "error" and rc == 0:
+            verdicts.append("silent_ok")
+        if expect == "ok" and rc != 0 and rc not in (-9, 137):
+            verdicts.append("failed_valid")
+        for path, data in before.items():
+            if not Path(path).exists() or Path(path).read_bytes() != data:
+                verdicts.append("input_lost")
+                Path(path).write_bytes(data)
+        rec = {"name": name, "args": args, "rc": rc, "seconds": round(secs, 2), "expect": expect,
+               "verdicts": verdicts or ["clean"], "stderr": err[-600:]}
+        self.runs.append(rec)
+        mark = ",".join(rec["verdicts"])
+        print(f"{mark:>16} rc={rc:<4} {secs:6.1f}s  {name}", flush=True)
+        shutil.rmtree(outdir, ignore_errors=True)
+
+    # ------------------------------------------------------------------ the inputs
+
+    def set_keys(self):
+        rows = schema(self.binary)
+        case = "{C}/compressor-bearing.toml"
+        for row in rows:
+            key = row.get("key", "")
+            kind = str(row.get("kind", row.get("type", "")))
+            if "[]" in key:
+                continue
+            if "number" in kind or "integer" in kind or interval(row) is not None:
+                for v in numeric_values(row):
+                    extra = ["--set", "mesh.fidelity=\"preview\""] if not key.startswith("mesh.") else []
+                    self.run(f"set {key}={v}", ["solve", case, "--set", f"{key}={v}"] + extra + ["--json", "r.json"])
+            else:
+                for v in ['"nonsense"', "1", "nan"]:
+                    self.run(f"set {key}={v}", ["solve", case, "--set", f"{key}={v}", "--json", "r.json"])
+
+    def solve_extremes(self):
+        c = "{C}/compressor-bearing.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        cases = {
+            "E 1e-6 GPa flexible": ["--set", "bearing.pads.youngs_modulus_gpa=1e-6", "--set", "physics.pad_modes=1"],
+            "pad 0.01 mm flexible": ["--set", "bearing.pads.thickness_mm=0.01", "--set", "physics.pad_modes=1"],
+            "inject 5000 bar iso": ["--set", "operating.injection_pressure_bar=5000"],
+            "inject 5000 bar thd": ["--set", "operating.injection_pressure_bar=5000", "--set", 'thermal.model="thd"'],
+            "supply -40 C thd": ["--set", "operating.supply_temperature_c=-40", "--set", 'thermal.model="thd"'],
+            "supply -40 C iso": ["--set", "operating.supply_temperature_c=-40"],
+            "load 1e9 N": ["--set", "operating.load_n=1e9"],
+            "load 0 N": ["--set", "operating.load_n=0"],
+            "speed 0": ["--set", "operating.speed_rpm=0"],
+            "speed 1e6": ["--set", "operating.speed_rpm=1e6"],
+            "clearance 1 um": ["--set", "bearing.assembled_clearance_um=1"],
+            "viscosity tiny": ["--set", "lubricant.viscosity_pa_s=1e-9"],
+        }
+        for name, s in cases.items():
+            self.run(f"solve {name}", ["solve", c] + s + pv + ["--json", "r.json"])
+        f = "{C}/fillon-a-tehd.toml"
+        self.run("solve fillon tehd orifice 5000 bar",
+                 ["solve", f, "--set", "bearing.pads.orifice=[{position_frac=0.5,diameter_mm=2,length_mm=5}]",
+                  "--set", "operating.injection_pressure_bar=5000"] + pv + ["--json", "r.json"])
+        for fid in ["preview", "standard"]:
+            self.run(f"solve every case {fid}", ["solve", "{C}/test-rig.toml", "--set", f'mesh.fidelity="{fid}"'],
+                     expect="ok")
+
+    def files(self):
+        w = self.work
+        (w / "empty.toml").write_text("")
+        (w / "garbage.toml").write_bytes(os.urandom(4096))
+        (w / "deep.toml").write_text("a = " + "[" * 100000 + "]" * 100000 + "\n")
+        (w / "big.toml").write_text("# " + "x" * (40 * 1024 * 1024) + "\n")
+        (w / "dir.toml").mkdir(exist_ok=True)
+        os.symlink(self.cases / "compressor-bearing.toml", w / "link.toml")
+        for cmd in ["solve", "coefficients", "modes", "frf"]:
+            for name, path in [("missing", "{W}/nope.toml"), ("empty", "{W}/empty.toml"),
+                               ("garbage", "{W}/garbage.toml"), ("deep", "{W}/deep.toml"), ("big", "{W}/big.toml"),
+                               ("dir", "{W}/dir.toml"), ("dev-zero", "/dev/zero"), ("dev-null", "/dev/null")]:
+                self.run(f"{cmd} file {name}", [cmd, path], expect="error")
+        for name, path in [("dev-zero", "/dev/zero"), ("garbage", "{W}/garbage.toml"), ("dir", "{W}/dir.toml")]:
+            self.run(f"rotor file {name}", ["rotor", path, "--speeds", "1000:2000:3"], expect="error")
+            self.run(f"sweep file {name}", ["sweep", path, "--vary", "operating.speed_rpm=1000:2000:2"], expect="error")
+            self.run(f"batch designs {name}", ["batch", path, "--case", "{C}/compressor-bearing.toml"], expect="error")
+            self.run(f"batch case {name}", ["batch", "{C}/designs-compressor.csv", "--case", path], expect="error")
+
+    def outputs(self):
+        c = "{C}/compressor-bearing.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        case_path = str(self.cases / "compressor-bearing.toml")
+        self.run("solve json onto its case", ["solve", c, "--json", c] + pv, expect="error", inputs=[case_path])
+        self.run("solve vtu onto its case", ["solve", c, "--vtu", c] + pv, expect="error", inputs=[case_path])
+        self.run("sweep csv onto its case", ["sweep", c, "--vary", "operating.speed_rpm=1000:2000:2", "--csv", c] + pv,
+                 expect="error", inputs=[case_path])
+        self.run("sweep csv and jsonl same", ["sweep", c, "--vary", "operating.speed_rpm=1000:2000:2", "--csv", "x",
+                                             "--jsonl", "x"] + pv, expect="error")
+        self.run("sweep csv and jsonl both stdout", ["sweep", c, "--vary", "operating.speed_rpm=1000:2000:2", "--csv",
+                                                    "-", "--jsonl", "-"] + pv, expect="error")
+        self.run("batch csv onto designs", ["batch", "{C}/designs-compressor.csv", "--case", c, "--csv",
+                                            "{C}/designs-compressor.csv"] + pv, expect="error",
+                 inputs=[str(self.cases / "designs-compressor.csv")])
+        self.run("coefficients csv onto case", ["coefficients", c, "--csv", c] + pv, expect="error",
+                 inputs=[case_path])
+        self.run("rotor json onto rotor", ["rotor", "{C}/rotors/compressor-rotor.toml", "--speeds", "7000:8000:2",
+                                           "--json", "{C}/rotors/compressor-rotor.toml"], expect="error",
+                 inputs=[str(self.cases / "rotors/compressor-rotor.toml")])
+        self.run("solve json into missing dir", ["solve", c, "--json", "/nonexistent/dir/r.json"] + pv, expect="error")
+        self.run("solve json onto a directory", ["solve", c, "--json", "{W}"] + pv, expect="error")
+        self.run("frf json and csv same", ["frf", "{C}/test-rig.toml", "--json", "x", "--csv", "x"] + pv,
+                 expect="error")
+        self.run("modes json and csv same", ["modes", c, "--json", "x", "--csv", "x"], expect="error")
+
+    def sweeps(self):
+        c = "{C}/compressor-bearing.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        bad = {
+            "same key twice": ["--vary", "operating.load_n=1000,2000", "--vary", "operating.load_n=3000,4000"],
+            "misspelt key": ["--vary", "operating.speeed_rpm=1000:2000:2"],
+            "steps 0": ["--vary", "operating.speed_rpm=1000:2000:0"],
+            "nan bound": ["--vary", "operating.speed_rpm=nan:2000:3"],
+            "inf bound": ["--vary", "operating.speed_rpm=1000:inf:3"],
+            "million points": ["--vary", "operating.speed_rpm=1000:11000:1000000"],
+            "1e12 points": ["--vary", "operating.speed_rpm=1000:11000:1000", "--vary", "operating.load_n=1:2:1000",
+                            "--vary", "operating.load_angle_deg=0:10:1000000"],
+            "empty list": ["--vary", "operating.speed_rpm="],
+            "no equals": ["--vary", "operating.speed_rpm"],
+            "param from negative": ["--param", "operating.speed_rpm", "--from", "-5", "--to", "10"],
+            "param steps 0": ["--param", "operating.speed_rpm", "--from", "1000", "--to", "2000", "--steps", "0"],
+            "out of range values": ["--vary", "operating.speed_rpm=-1000,-2000"],
+            "string key numbers": ["--vary", "mesh.fidelity=1,2"],
+            "vtu symlink": [],
+        }
+        for name, a in bad.items():
+            expect = "error"
+            if name == "out of range values":
+                expect = "error"
+            if name == "vtu symlink":
+                real = self.work / "realdir"
+                real.mkdir(exist_ok=True)
+                (self.work / "linkdir").mkdir(exist_ok=True)
+                target = real / "s.pvd"
+                target.write_text("")
+                link = self.work / "linkdir" / "s.pvd"
+                if not link.exists():
+                    os.symlink(target, link)
+                self.run("sweep vtu symlink", ["sweep", c, "--vary", "operating.speed_rpm=1000:2000:2", "--vtu",
+                                               str(link)] + pv, expect="any")
+                continue
+            self.run(f"sweep {name}", ["sweep", c] + a + pv, expect=expect)
+        self.run("sweep valid", ["sweep", c, "--vary", "operating.speed_rpm=5000:9000:3"] + pv, expect="ok")
+
+    def batches(self):
+        c = "{C}/compressor-bearing.toml"
+        w = self.work
+        tables = {
+            "misspelt header": "operating.speeed_rpm\n1000\n2000\n",
+            "empty": "",
+            "header only": "operating.speed_rpm\n",
+            "ragged": "operating.speed_rpm,operating.load_n\n1000\n2000,3,4\n",
+            "duplicate header": "operating.speed_rpm,operating.speed_rpm\n1000,2000\n",
+            "nan values": "operating.speed_rpm\nnan\ninf\n",
+            "binary": None,
+        }
+        for name, text in tables.items():
+            path = w / f"designs-{name.replace(' ', '-')}.csv"
+            if text is None:
+                path.write_bytes(os.urandom(2000))
+            else:
+                path.write_text(text)
+            expect = "error"
+            self.run(f"batch {name}", ["batch", str(path), "--case", c, "--set", 'mesh.fidelity="preview"'],
+                     expect=expect)
+        for shard in ["0/4", "5/4", "1/0", "a/b", "1/1000000"]:
+            self.run(f"batch shard {shard}", ["batch", "{C}/designs-compressor.csv", "--case", c, "--shard", shard,
+                                              "--set", 'mesh.fidelity="preview"'],
+                     expect="error" if shard != "1/1000000" else "any")
+
+    def coefficient_runs(self):
+        c = "{C}/compressor-bearing.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        for name, a in {
+            "ratio negative": ["--excitation-ratio=-1:2:3"],
+            "ratio nan": ["--excitation-ratio=nan"],
+            "speed million": ["--speed-rpm", "6000:11000:1000000"],
+            "speed negative": ["--speed-rpm=-100:100:3"],
+            "speed zero steps": ["--speed-rpm", "1000:2000:0"],
+            "speed garbage": ["--speed-rpm", "fast"],
+            "speed inf": ["--speed-rpm", "1000,inf"],
+        }.items():
+            self.run(f"coefficients {name}", ["coefficients", c] + a + pv, expect="error")
+        self.run("coefficients valid", ["coefficients", c, "--speed-rpm", "6000:9000:3"] + pv, expect="ok")
+
+    def mode_runs(self):
+        c = "{C}/compressor-bearing.toml"
+        for n in ["0", "7", "1000000", "-1"]:
+            self.run(f"modes count {n}", ["modes", c, f"--count={n}"], expect="error")
+        self.run("modes fixed sector case", ["modes", "{C}/plain-2groove-ld05.toml"], expect="any")
+        self.run("modes valid", ["modes", c, "--count", "2", "--set", 'mesh.fidelity="preview"'], expect="ok")
+
+    def frf_runs(self):
+        r = "{C}/test-rig-pub5.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        for name, a in {
+            "amplitude nan": ["--amplitude-v", "nan"],
+            "amplitude negative": ["--amplitude-v=-1"],
+            "from negative": ["--from=-5"],
+            "to below from": ["--from", "100", "--to", "10"],
+            "points 0": ["--points", "0"],
+            "points huge": ["--points", "100000000"],
+            "to inf": ["--to", "inf"],
+            "orifices removed": ["--set", "bearing.pads.orifice="],
+            "supply below injection": ["--set", "hydraulics.supply_pressure_bar=5"],
+        }.items():
+            self.run(f"frf {name}", ["frf", r] + a + pv, expect="error")
+        self.run("frf no hydraulics", ["frf", "{C}/compressor-bearing.toml"] + pv, expect="error")
+        self.run("frf valid", ["frf", r, "--points", "20"] + pv, expect="ok")
+
+    def rotor_runs(self):
+        base = (self.cases / "rotors/compressor-rotor.toml").read_text()
+        rotor = "{C}/rotors/compressor-rotor.toml"
+        for name, a in {
+            "speeds huge top": ["--speeds", "1000:1e9:3"],
+            "speeds max count": ["--speeds", "1000:13000:10001"],
+            "speeds reversed": ["--speeds", "2000:1000:3"],
+            "speeds nan": ["--speeds", "nan:1000:3"],
+            "speeds one": ["--speeds", "1000:2000:1"],
+            "speeds zero": ["--speeds", "0:0:2"],
+            "shaft modes 10000": ["--speeds", "7000:8000:2", "--shaft-modes", "10000"],
+            "garbage speeds": ["--speeds", "x"],
+        }.items():
+            expect = "error"
+            self.run(f"rotor {name}", ["rotor", rotor] + a, expect=expect)
+        self.run("rotor at 0 rpm", ["rotor", rotor, "--speeds", "0:100:2"], expect="any")
+        big = "[[rotor.section]]\nlength_mm = 100.0\nouter_diameter_mm = 100.0\nelements = 200\n"
+        head = base.split("[[rotor.section]]")[0]
+        tail = "[[rotor.bearing]]\nnode = 0\ncase = \"../compressor-bearing.toml\"\n\n" \
+               "[[rotor.bearing]]\nnode = 5000\ncase = \"../compressor-bearing.toml\"\n"
+        head = re.sub(r"shaft_modes = \d+", "shaft_modes = 0", head)
+        (self.cases / "rotors/huge.toml").write_text(head + big * 25 + tail)
+        self.run("rotor 25x200 elements", ["rotor", "{C}/rotors/huge.toml", "--speeds", "7000:8000:2"],
+                 expect="error")
+        mid = "[[rotor.section]]\nlength_mm = 100.0\nouter_diameter_mm = 100.0\nelements = 100\n"
+        tail2 = tail.replace("5000", "1500")
+        (self.cases / "rotors/big.toml").write_text(head + mid * 15 + tail2)
+        self.run("rotor 1500 elements full", ["rotor", "{C}/rotors/big.toml", "--speeds", "7000:8000:2"],
+                 expect="error")
+        self.run("rotor critical map huge top", ["rotor", rotor, "--critical-map", "--speeds", "1000:1e9:3"],
+                 expect="error")
+
+    def misc(self):
+        self.run("schema", ["schema"], expect="ok")
+        self.run("unknown command", ["frobnicate"], expect="error")
+        self.run("solve set unknown key", ["solve", "{C}/compressor-bearing.toml", "--set", "no.such=1"],
+                 expect="error")
+        self.run("solve set malformed", ["solve", "{C}/compressor-bearing.toml", "--set", "novalue"], expect="error")
+        self.run("bench bad section", ["bench", "--only", "nothing"], expect="error")
+        self.run("convergence map bad step", ["convergence-map", "--step-deg", "7"], expect="error")
+
+    def report(self):
+        counts = {}
+        for r in self.runs:
+            for v in r["verdicts"]:
+                counts[v] = counts.get(v, 0) + 1
+        self.out.mkdir(parents=True, exist_ok=True)
+        with open(self.out / "runs.jsonl", "w") as f:
+            for r in self.runs:
+                f.write(json.dumps(r) + "\n")
+        summary = {"runs": len(self.runs), "counts": counts,
+                   "max_seconds": max((r["seconds"] for r in self.runs), default=0)}
+        (self.out / "summary.json").write_text(json.dumps(summary, indent=1))
+        print(json.dumps(summary, indent=1))
+        shutil.rmtree(self.work, ignore_errors=True)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", default=str(ROOT / "target/release/tiltpad"))
+    ap.add_argument("--out", default="target/bad-inputs")
+    ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument("--mem-gb", type=float, default=8)
+    ap.add_argument("--only", default=None)
+    ap.add_argument("--skip-keys", action="store_true", help="skip the per-key --set values")
+    a = ap.parse_args()
+    h = Harness(a.bin, a.out, a.timeout, a.mem_gb, a.only)
+    try:
+        h.files()
+        h.outputs()
+        h.sweeps()
+        h.batches()
+        h.coefficient_runs()
+        h.mode_runs()
+        h.frf_runs()
+        h.rotor_runs()
+        h.misc()
+        h.solve_extremes()
+        if not a.skip_keys:
+            h.set_keys()
+    finally:
+        h.report()
+
+
+if __name__ == "__main__":
+    sys.exit(main())

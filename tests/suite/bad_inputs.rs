@@ -1,0 +1,210 @@
+//! Bad and extreme inputs to every command, one test per finding: each is refused up front with a message that
+//! names the flag or key, the value and what is allowed, before any work; no input file is changed; nothing
+//! that was not computed exits 0. (The wider sweep over every key and command is `tests/harness/bad_inputs.py`.)
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use crate::common;
+
+fn tiltpad(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tiltpad")).args(args).current_dir(dir).output().unwrap()
+}
+
+/// A scratch directory with copies of the shipped cases (inputs the tests may try to overwrite).
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("tiltpad-bad-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("rotors")).unwrap();
+    for f in ["compressor-bearing.toml", "test-rig-pub5.toml", "designs-compressor.csv"] {
+        std::fs::copy(common::case_path(f), dir.join(f)).unwrap();
+    }
+    std::fs::copy(common::case_path("rotors/compressor-rotor.toml"), dir.join("rotors/compressor-rotor.toml")).unwrap();
+    dir
+}
+
+/// Fails (non-zero, not a panic), says each of `words` on standard error and prints no NaN or inf.
+fn refused(o: &Output, words: &[&str]) -> String {
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    assert!(!o.status.success(), "exit 0: {err}");
+    assert_ne!(o.status.code(), Some(101), "panicked: {err}");
+    for w in words {
+        assert!(err.contains(w), "`{w}` not in: {err}");
+    }
+    assert!(!err.to_lowercase().contains("nan") && !err.contains("inf "), "{err}");
+    err
+}
+
+const PREVIEW: &str = "mesh.fidelity=\"preview\"";
+
+#[test]
+fn outputs_never_overwrite_an_input_or_each_other() {
+    let d = scratch("outputs");
+    let case = std::fs::read(d.join("compressor-bearing.toml")).unwrap();
+    let o = tiltpad(&["solve", "compressor-bearing.toml", "--json", "compressor-bearing.toml"], &d);
+    refused(&o, &["--json compressor-bearing.toml", "never overwrites"]);
+    let o = tiltpad(&["solve", "compressor-bearing.toml", "--json", "./compressor-bearing.toml"], &d);
+    refused(&o, &["never overwrites"]);
+    let o = tiltpad(
+        &["batch", "designs-compressor.csv", "--case", "compressor-bearing.toml", "--csv", "designs-compressor.csv"],
+        &d,
+    );
+    refused(&o, &["designs table", "never overwrites"]);
+    let o = tiltpad(
+        &["rotor", "rotors/compressor-rotor.toml", "--speeds", "7000:8000:2", "--json", "rotors/compressor-rotor.toml"],
+        &d,
+    );
+    refused(&o, &["rotor file"]);
+    assert_eq!(std::fs::read(d.join("compressor-bearing.toml")).unwrap(), case);
+    let vary = "operating.speed_rpm=7000:8000:2";
+    let o = tiltpad(&["sweep", "compressor-bearing.toml", "--vary", vary, "--csv", "x", "--jsonl", "x"], &d);
+    refused(&o, &["--csv and --jsonl both write x"]);
+    let o = tiltpad(&["sweep", "compressor-bearing.toml", "--vary", vary, "--csv", "-", "--jsonl", "-"], &d);
+    refused(&o, &["both write standard output"]);
+    let o = tiltpad(&["modes", "compressor-bearing.toml", "--json", "m", "--csv", "./m"], &d);
+    refused(&o, &["--json and --csv"]);
+    assert!(!d.join("x").exists() && !d.join("m").exists());
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn a_key_varied_twice_or_misspelt_is_refused_before_the_first_solve() {
+    let d = scratch("keys");
+    let o = tiltpad(
+        &[
+            "sweep",
+            "compressor-bearing.toml",
+            "--vary",
+            "operating.speed_rpm=7000,8000",
+            "--vary",
+            "operating.speed_rpm=9000",
+        ],
+        &d,
+    );
+    refused(&o, &["the same key twice", "operating.speed_rpm"]);
+    let o = tiltpad(&["sweep", "compressor-bearing.toml", "--vary", "operating.sped_rpm=7000:9000:3"], &d);
+    let err = refused(&o, &["operating.sped_rpm", "unknown"]);
+    assert!(!err.contains("point 0"), "a point was solved: {err}");
+    std::fs::write(d.join("typo.csv"), "bearing.pads.prelaod\n0.3\n0.5\n").unwrap();
+    let o = tiltpad(&["batch", "typo.csv", "--case", "compressor-bearing.toml"], &d);
+    let err = refused(&o, &["bearing.pads.prelaod", "header of typo.csv"]);
+    assert!(!err.contains("design 0"), "a design was solved: {err}");
+    std::fs::write(d.join("empty.csv"), "operating.speed_rpm\n").unwrap();
+    let o = tiltpad(&["batch", "empty.csv", "--case", "compressor-bearing.toml"], &d);
+    refused(&o, &["empty.csv has a header but no design rows"]);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn frf_of_lines_that_feed_no_orifice_and_a_supply_below_the_injection_are_refused() {
+    let d = scratch("frf");
+    let o = tiltpad(&["frf", "test-rig-pub5.toml", "--set", "bearing.pads.orifice=[]", "--set", PREVIEW], &d);
+    refused(&o, &["hydraulics.port[0].pads", "has no orifice"]);
+    let o = tiltpad(&["frf", "test-rig-pub5.toml", "--set", "hydraulics.supply_pressure_bar=5", "--set", PREVIEW], &d);
+    // The rig holds 10 bar on its fed pads: a 5 bar supply cannot.
+    refused(&o, &["hydraulics.supply_pressure_bar", "5 bar is below pad", "injection pressure of 10 bar"]);
+    for a in ["nan", "-1", "0", "inf"] {
+        let o = tiltpad(&["frf", "test-rig-pub5.toml", &format!("--amplitude-v={a}")], &d);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            o.status.code() == Some(2) && err.contains("--amplitude-v") && err.contains("finite positive"),
+            "{err}"
+        );
+    }
+    let o = tiltpad(&["frf", "test-rig-pub5.toml", "--from", "-5"], &d);
+    refused(&o, &["--from -5"]);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn counts_and_ranges_out_of_bounds_are_refused_not_clamped() {
+    let d = scratch("counts");
+    for n in ["0", "7", "1000000"] {
+        let o = tiltpad(&["modes", "compressor-bearing.toml", &format!("--count={n}")], &d);
+        refused(&o, &["--count", n, "1..=6"]);
+    }
+    let rotor = "rotors/compressor-rotor.toml";
+    let o = tiltpad(&["rotor", rotor, "--speeds", "1000:1e9:3"], &d);
+    refused(&o, &["--speeds", "1000000 rpm", "operating.speed_rpm"]);
+    let o = tiltpad(&["rotor", rotor, "--speeds", "1000:2000:3", "--shaft-modes", "10000"], &d);
+    refused(&o, &["--shaft-modes", "10000", "0..=400"]);
+    let o = tiltpad(&["coefficients", "compressor-bearing.toml", "--excitation-ratio=-1:2:3"], &d);
+    refused(&o, &["--excitation-ratio", "-1 is not allowed", "at least 0"]);
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn work_beyond_the_bound_is_refused_up_front_with_the_setting_that_raises_it() {
+    let d = scratch("work");
+    let o = tiltpad(&["sweep", "compressor-bearing.toml", "--vary", "operating.speed_rpm=1000:9000:1000000"], &d);
+    refused(&o, &["1000000 points", "--max-points 1000000"]);
+    let o = tiltpad(&["coefficients", "compressor-bearing.toml", "--speed-rpm", "6000:11000:1000000"], &d);
+    refused(&o, &["1000000 points", "--max-points"]);
+    let o = tiltpad(&["rotor", "rotors/compressor-rotor.toml", "--speeds", "1000:13000:10001"], &d);
+    refused(&o, &["10001 points", "--max-points 10001"]);
+    // 25 sections of 200 elements would allocate gigabytes: refused by validation with the count and the cap.
+    let mut huge = std::fs::read_to_string(d.join("rotors/compressor-rotor.toml")).unwrap();
+    for _ in 0..25 {
+        huge.push_str("\n[[rotor.section]]\nlength_mm = 10.0\nouter_diameter_mm = 50.0\nelements = 200\n");
+    }
+    std::fs::write(d.join("rotors/huge.toml"), huge).unwrap();
+    let o = tiltpad(&["rotor", "rotors/huge.toml", "--speeds", "7000:8000:2"], &d);
+    refused(&o, &["rotor.section", "shaft elements in all", "at most 400"]);
+    #[cfg(unix)]
+    {
+        let o = tiltpad(&["solve", "/dev/zero"], &d);
+        refused(&o, &["case file /dev/zero is larger than 64 MiB"]);
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// A `.pvd` reached through a symlink gets its `.vtu` files beside the file it names, so its relative
+/// references resolve.
+#[cfg(unix)]
+#[test]
+fn a_symlinked_collection_keeps_its_grids_beside_it() {
+    let d = scratch("pvd");
+    std::fs::create_dir_all(d.join("real")).unwrap();
+    std::os::unix::fs::symlink(d.join("real/s.pvd"), d.join("s.pvd")).unwrap();
+    std::fs::write(d.join("real/s.pvd"), "").unwrap();
+    let o = tiltpad(
+        &[
+            "sweep",
+            "compressor-bearing.toml",
+            "--vary",
+            "operating.speed_rpm=7000,8000",
+            "--set",
+            PREVIEW,
+            "--vtu",
+            "s.pvd",
+        ],
+        &d,
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let pvd = std::fs::read_to_string(d.join("real/s.pvd")).unwrap();
+    for i in 0..2 {
+        let name = format!("s-{i:04}.vtu");
+        assert!(pvd.contains(&name), "{pvd}");
+        assert!(d.join("real").join(&name).is_file() && !d.join(&name).exists(), "{name} not beside the collection");
+    }
+    assert!(std::fs::symlink_metadata(d.join("s.pvd")).unwrap().file_type().is_symlink());
+    std::fs::remove_dir_all(&d).ok();
+}
+
+/// An error whose cause is part of its message is printed once (a bearing's failure inside a rotor run, an
+/// OS error of a write).
+#[test]
+fn messages_say_their_cause_once() {
+    let d = scratch("once");
+    let o = tiltpad(&["solve", "compressor-bearing.toml", "--set", PREVIEW, "--json", "/nonexistent-dir/r.json"], &d);
+    let err = refused(&o, &["cannot write /nonexistent-dir/r.json"]);
+    assert_eq!(err.matches("No such file or directory").count(), 1, "{err}");
+    // At 0 rpm the bearing's solve fails: its message appears once in the rotor's.
+    let o = tiltpad(&["rotor", "rotors/compressor-rotor.toml", "--speeds", "0:100:2"], &d);
+    let err = refused(&o, &["bearing `../compressor-bearing.toml` at 0 rpm"]);
+    let line = err.lines().find(|l| l.starts_with("error:")).unwrap();
+    let parts: Vec<&str> = line.split(": ").filter(|p| p.len() > 20).collect();
+    for (i, p) in parts.iter().enumerate() {
+        assert!(!parts[..i].contains(p), "said twice: {line}");
+    }
+    std::fs::remove_dir_all(&d).ok();
+}
