@@ -1,8 +1,7 @@
-//! The keys of a controller description — the `[control]` section of a rotor file — one table like the rotor file's ([`super::rotor_schema`], rows of
-//! `KeySpec<RotorFile>`): dotted key, unit, allowed values, typical range, typed default and meaning.
-//! `tiltpad schema --rotor` prints it after the rotor keys, and [`super::control`] reads every range, default
-//! and unit from it (through [`control_row`]); a test sets every numeric key just outside its range and checks
-//! that validation rejects it naming the key, the value and the same interval.
+//! The keys of a controller description — the `[control]` section of a rotor file — one table like the rotor
+//! file's ([`super::rotor_schema`], rows of `KeySpec<RotorFile>`): dotted key, unit, allowed values, typical
+//! range, typed default and meaning. `tiltpad schema --rotor` prints it after the rotor keys, and
+//! [`super::control`] reads every range, default and unit from it (through [`control_row`]).
 
 use super::error::Range;
 use super::rotor::RotorFile;
