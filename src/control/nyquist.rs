@@ -131,17 +131,16 @@ pub fn nyquist(l: &StateSpace) -> Result<Nyquist, ControlError> {
     phase += wrap((end / prev.1).arg());
     #[allow(clippy::cast_possible_truncation)]
     let encirclements = (2.0 * phase / std::f64::consts::TAU).round() as i64;
-    #[allow(clippy::cast_possible_wrap)]
-    let open_unstable = m.unstable_poles() as i64;
+    let open_unstable = m.unstable_poles();
     let (gain_margin, gain_margin_hz, phase_margin_deg, phase_margin_hz) = margins(&samples, &m);
     let stride = (samples.len() / 2000).max(1);
     let hz = |w: f64| w / std::f64::consts::TAU;
     let curve = samples.iter().step_by(stride).map(|(w, z)| [hz(*w), z.re, z.im]).collect();
-    #[allow(clippy::cast_sign_loss)]
+    #[allow(clippy::cast_possible_wrap)]
     Ok(Nyquist {
-        open_unstable: open_unstable as usize,
+        open_unstable,
         encirclements,
-        closed_unstable: open_unstable - encirclements,
+        closed_unstable: open_unstable as i64 - encirclements,
         gain_margin,
         gain_margin_hz,
         phase_margin_deg,
