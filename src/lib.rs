@@ -43,6 +43,7 @@ pub mod app;
 pub mod bearing;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;
+pub mod control;
 pub mod fem;
 pub mod io;
 pub mod mesh;

@@ -114,6 +114,14 @@ pub const W_PER_M_K: Unit = unit("W/(m·K)", 1.0);
 pub const W_PER_M2_K: Unit = unit("W/(m²·K)", 1.0);
 pub const VOLT: Unit = unit("V", 1.0);
 
+// Active control (the rotor file's `[control]`).
+/// Volts per micrometre (a gain on a displacement signal), in V/m.
+pub const V_PER_UM: Unit = unit("V/µm", 1e6);
+/// Volts per millimetre per second (a gain on a velocity signal), in V·s/m.
+pub const V_PER_MM_S: Unit = unit("V/(mm/s)", 1e3);
+/// Newtons per volt (an ideal force actuator's gain).
+pub const N_PER_V: Unit = unit("N/V", 1.0);
+
 #[cfg(test)]
 mod tests {
     use super::*;

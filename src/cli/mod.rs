@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -10,11 +10,13 @@ mod batch;
 mod bench;
 mod bench_batch;
 mod bench_cavitation;
+mod bench_control;
 mod bench_flex;
 mod bench_frf;
 mod bench_rotor;
 mod bench_turb;
 mod coefficients;
+pub mod control;
 mod convergence_map;
 pub mod frf;
 mod inputs;
@@ -204,6 +206,31 @@ pub enum Command {
         #[arg(long, value_name = "OUT")]
         csv: Option<PathBuf>,
     },
+    /// Active control: the closed loop of a rotor file's `[control]` over a speed range (poles open and
+    /// closed, onset against the loop gain, Nyquist margins at each valve's input, unbalance response with
+    /// and without control, valve signal and nozzle pressure amplitudes).
+    Control {
+        /// Rotor file (TOML) with a `[control]` section.
+        rotor: PathBuf,
+        /// Spin speeds, rpm: `FROM:TO:N` (N at most --max-points).
+        #[arg(long, value_name = "FROM:TO:N")]
+        speeds: String,
+        /// Most speeds (refused before the first solve beyond it).
+        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
+        max_points: usize,
+        /// Override `control.gain` (0 opens the loop, −1 flips its sign).
+        #[arg(long, allow_hyphen_values = true)]
+        gain: Option<f64>,
+        /// Onset speed at each of these loop gains: `G1,G2,…` or `FROM:TO:N`.
+        #[arg(long, value_name = "GAINS", allow_hyphen_values = true)]
+        gain_sweep: Option<String>,
+        /// Whole result as JSON (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// One row per speed as CSV (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+    },
     /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
     /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
     Frf {
@@ -249,7 +276,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`, `cavitation`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -407,16 +434,29 @@ pub fn run(command: Command) -> Result<()> {
             frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
         }
         Command::Schema { rotor, json } => {
-            use crate::model::{rotor_schema::ROTOR_KEYS, schema};
+            use crate::model::{control_schema::CONTROL_KEYS, rotor_schema::ROTOR_KEYS, schema};
             match json {
                 Some(out) => {
-                    let table = if rotor { schema::json_table_of(ROTOR_KEYS) } else { schema::json_table() };
+                    let table = if rotor {
+                        let mut t = schema::json_table_of(ROTOR_KEYS);
+                        if let (Some(a), serde_json::Value::Array(b)) =
+                            (t.as_array_mut(), schema::json_table_of(CONTROL_KEYS))
+                        {
+                            a.extend(b);
+                        }
+                        t
+                    } else {
+                        schema::json_table()
+                    };
                     let mut text = serde_json::to_string_pretty(&table)?;
                     text.push('\n');
                     write_atomic(&out, text.as_bytes())?;
                     rows::announce(&out);
                 }
-                None => print!("{}", if rotor { schema::text_table_of(ROTOR_KEYS) } else { schema::text_table() }),
+                None if rotor => {
+                    print!("{}{}", schema::text_table_of(ROTOR_KEYS), schema::text_table_of(CONTROL_KEYS));
+                }
+                None => print!("{}", schema::text_table()),
             }
             Ok(())
         }
@@ -445,6 +485,17 @@ pub fn run(command: Command) -> Result<()> {
             } else {
                 rotor::run(&args)
             }
+        }
+        Command::Control { rotor, speeds, max_points, gain, gain_sweep, json, csv } => {
+            control::run(&control::ControlArgs {
+                rotor: &rotor,
+                speeds: &speeds,
+                max_points,
+                gain,
+                gain_sweep: gain_sweep.as_deref(),
+                json,
+                csv,
+            })
         }
         Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => convergence_map::run(
             &root,
@@ -475,7 +526,12 @@ pub fn run(command: Command) -> Result<()> {
             Some("turbulence") => {
                 bench::replace_section(&root, "## Turbulence", &bench_turb::section(&root, repeats.clamp(1, 3))?)
             }
-            Some(other) => anyhow::bail!("--only {other}: known sections: frf, flex, rotor, turbulence, cavitation"),
+            Some("control") => {
+                bench::replace_section(&root, "## Active control", &bench_control::section(&root, repeats.clamp(1, 3))?)
+            }
+            Some(other) => {
+                anyhow::bail!("--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control")
+            }
         },
     }
 }

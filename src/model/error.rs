@@ -162,6 +162,43 @@ pub enum Inconsistency {
     CoefficientRows { rows: usize, expected: usize },
     #[error("give either `case` or `k_n_per_m` and `c_ns_per_m`")]
     CaseOrNumbers,
+    // --------------------------------------------------------------------------------------- control
+    #[error("give either `node` or `bearing` (the journal of rotor.bearing[i]), not both or neither")]
+    SensorPlace,
+    #[error("rotor.bearing[{bearing}] holds coefficients given by numbers, not a bearing case: it has no valve")]
+    BearingWithoutCase { bearing: usize },
+    #[error("the case of rotor.bearing[{bearing}] (`{name}`) has no [hydraulics]: no valve to drive")]
+    NoValve { bearing: usize, name: String },
+    /// A valve port whose pads have no injection orifice: the valve cannot act through it.
+    #[error("port {port} feeds pads {pads:?}, none with an injection orifice: the port feeds no pad")]
+    PortWithoutOrifice { port: char, pads: Vec<usize> },
+    #[error("the valve of rotor.bearing[{bearing}] is already actuator {first}")]
+    ValveTwice { bearing: usize, first: usize },
+    #[error("{loops} loops drive actuator {actuator}: each actuator needs exactly one")]
+    LoopsPerActuator { actuator: usize, loops: usize },
+    /// No control law, or several (`given`: the tables given).
+    #[error("give one control law: [[control.loop]] (one per actuator) or [control.mimo]; given: {}", if .given.is_empty() { "none".to_string() } else { .given.join(", ") })]
+    ControlLaw { given: Vec<String> },
+    #[error(
+        "a numerator of degree {numerator} over a denominator of degree {denominator} is an improper transfer \
+         function; allowed: numerator degree ≤ denominator degree"
+    )]
+    ImproperTransferFunction { numerator: usize, denominator: usize },
+    #[error("every coefficient of the denominator is zero")]
+    ZeroDenominator,
+    #[error(
+        "{poles} pole(s) with Re ≥ 0 (Routh–Hurwitz): the controller is unstable on its own; allowed: every root of \
+         the denominator with Re < 0"
+    )]
+    UnstableController { poles: usize },
+    #[error("a derivative gain on a displacement sensor needs rolloff_hz (the controller is improper without it)")]
+    DerivativeWithoutRolloff,
+    #[error("a proportional gain needs a displacement sensor; sensor {sensor} measures velocity (allowed: 0)")]
+    ProportionalOnVelocity { sensor: usize },
+    #[error("{rows}×{columns} entries; needs {actuators}×{sensors} (a row per actuator, a column per sensor)")]
+    GainMatrixShape { rows: usize, columns: usize, actuators: usize, sensors: usize },
+    #[error("needs at least one sensor and one actuator")]
+    NothingToControl,
     // ------------------------------------------------------------------------------------ any layer
     /// A valid case the solver's model cannot be built for (`reason`: the solver's error, as text: the model
     /// layer cannot hold the solver's types).

@@ -5,12 +5,15 @@
 //! key — unit, allowed values, default, meaning and editor row, one row per key — that validation, `tiltpad
 //! schema` and the workbench's editor read (its opening comment says how to add a key); [`limits`] holds
 //! the design limits results are checked against; [`edit`] writes an edited case back into the user's own
-//! file, keeping its comments; [`rotor`] is the rotor file (its keys: [`rotor_schema`]), [`shaft`] its
+//! file, keeping its comments; [`rotor`] is the rotor file (its keys: [`rotor_schema`]) with its
+//! controller ([`control`], keys: [`control_schema`]), [`shaft`] its
 //! elements' data, and [`rotor_sections`] adds and removes a rotor file's shaft sections, renumbering what
 //! sits on its nodes. Nothing here imports the solver: the layers above read these types.
 
 pub mod budget;
 pub mod case;
+pub mod control;
+pub mod control_schema;
 pub mod edit;
 pub mod error;
 pub mod file;

@@ -56,6 +56,10 @@ pub struct RotorFile {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub title: Option<String>,
     pub rotor: RotorTable,
+    /// `[control]`: a controller acting on this rotor through its bearings ([`super::control`]); the rotor
+    /// analysis ignores it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub control: Option<super::control::ControlTable>,
 }
 
 /// `[rotor]`

@@ -211,7 +211,11 @@ impl Analysis {
 
 /// The shaft model of an analysis: reduced to the attached nodes and `rotor.shaft_modes` modes per plane, or
 /// the full one (asked for, or — with a warning — when the attached nodes do not hold the shaft).
-fn shaft_model(rotor: &Rotor, bearing_nodes: &[usize], report: &mut AnalysisReport) -> Result<ShaftModel, RotorError> {
+pub fn shaft_model(
+    rotor: &Rotor,
+    bearing_nodes: &[usize],
+    report: &mut AnalysisReport,
+) -> Result<ShaftModel, RotorError> {
     let full = ShaftModel::new(rotor)?;
     if rotor.shaft_modes == 0 {
         return Ok(full);

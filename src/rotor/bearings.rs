@@ -9,6 +9,7 @@
 
 use super::coupling::BearingCoefficients;
 use super::error::RotorError;
+use crate::bearing::frf::model::FrfModel;
 use crate::bearing::solution::coefficients::FullCoefficients;
 use crate::bearing::{NoCancel, Request, StageId, Stages};
 use crate::model::rotor::{BearingSupport, CoefficientModel, CoefficientTable, Rotor};
@@ -108,6 +109,24 @@ impl BearingSet {
             out.push(c);
         }
         Ok(out)
+    }
+
+    /// The case at bearing position `p` linearised for its injection ports at `omega` (the FRF stage: the
+    /// nozzle–film influence fields), if it is a case; its stages share the equilibrium with the coefficients.
+    ///
+    /// # Errors
+    /// A bearing solve that fails, or a case without `[hydraulics]`.
+    pub fn frf_at(&mut self, p: usize, omega: f64) -> Result<Option<std::sync::Arc<FrfModel>>, RotorError> {
+        let Source::Case(i) = self.sources[p] else { return Ok(None) };
+        let e = &mut self.entries[i];
+        let mut case = e.case.clone();
+        case.operating.speed_rad_s = omega;
+        let model = e.stages.frf(&case, &NoCancel).map_err(|error| RotorError::Bearing {
+            bearing: e.name.clone(),
+            speed_rpm: crate::units::RPM.from_si(omega),
+            error,
+        })?;
+        Ok(Some(model))
     }
 
     /// Full coefficients of the case at bearing position `p` at `omega`, if it is a case.

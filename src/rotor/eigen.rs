@@ -65,7 +65,7 @@ pub struct Modes {
 /// `A = [[0, sI], [−K̃/s, −C̃]]`. Both blocks then have entries of the size of the eigenvalues and, for a
 /// lightly damped system, nearly orthogonal eigenvectors (a plain `M⁻¹K` with nearly massless rotations
 /// loses the low modes to round-off). Returns A and `L⁻ᵀ` (to map eigenvectors back).
-fn state_matrix(sys: &System) -> Result<(DMatrix<f64>, DMatrix<f64>), RotorError> {
+pub fn state_matrix(sys: &System) -> Result<(DMatrix<f64>, DMatrix<f64>), RotorError> {
     let n = sys.n_dofs();
     let sym = (&sys.mass + sys.mass.transpose()) * 0.5;
     let l = sym.cholesky().ok_or(RotorError::SingularMass { size: n })?.l();

@@ -54,6 +54,23 @@ impl Orbit {
     }
 }
 
+/// The unbalances' complex force amplitudes at spin speed `omega` [rad/s] on a system of `n` coordinates (the
+/// nodal forces through the shaft's weights: a reduced shaft's `Tᵀ f`).
+#[must_use]
+pub fn forces(n: usize, shaft: &ShaftModel, unbalances: &[Unbalance], omega: f64) -> DVector<Complex<f64>> {
+    let mut f = DVector::from_element(n, Complex::new(0.0, 0.0));
+    for u in unbalances {
+        let a = Complex::from_polar(u.amount * omega * omega, u.phase);
+        for (j, w) in shaft.weights(u.node, NodeDof::X) {
+            f[j] += a * w;
+        }
+        for (j, w) in shaft.weights(u.node, NodeDof::Y) {
+            f[j] += Complex::new(a.im, -a.re) * w;
+        }
+    }
+    f
+}
+
 /// Response of `sys` at spin speed `omega` [rad/s] at the given nodes.
 ///
 /// # Errors
@@ -70,17 +87,7 @@ pub fn response(
     let z = DMatrix::from_fn(n, n, |i, j| {
         Complex::new(sys.stiffness[(i, j)] - w2 * sys.mass[(i, j)], omega * sys.damping[(i, j)])
     });
-    let mut f = DVector::from_element(n, Complex::new(0.0, 0.0));
-    for u in unbalances {
-        let a = Complex::from_polar(u.amount * w2, u.phase);
-        // the nodal force through the shaft's weights (a reduced shaft: Tᵀ f)
-        for (j, w) in shaft.weights(u.node, NodeDof::X) {
-            f[j] += a * w;
-        }
-        for (j, w) in shaft.weights(u.node, NodeDof::Y) {
-            f[j] += Complex::new(a.im, -a.re) * w;
-        }
-    }
+    let f = forces(n, shaft, unbalances, omega);
     let x = z.lu().solve(&f).ok_or(RotorError::SingularResponse { speed_rpm: crate::units::RPM.from_si(omega) })?;
     if x.iter().any(|v| !v.re.is_finite() || !v.im.is_finite()) {
         return Err(RotorError::SingularResponse { speed_rpm: crate::units::RPM.from_si(omega) });

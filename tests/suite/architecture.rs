@@ -7,7 +7,7 @@
 //! are left out: tests may reach anything.
 //!
 //! Layers, bottom up (a module may import its own layer and those below):
-//! `number`, `fem`, `units` → `mesh` → `model` → `physics` → `bearing` → `rotor`, `study` → `scene` → `io` →
+//! `number`, `fem`, `units` → `mesh` → `model` → `physics` → `bearing` → `rotor`, `study` → `control` → `scene` → `io` →
 //! `app`, `cli`.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -20,6 +20,7 @@ const LAYERS: &[&[&str]] = &[
     &["physics"],
     &["bearing"],
     &["rotor", "study"],
+    &["control"],
     &["scene"],
     &["io"],
     &["app", "cli"],

@@ -8,6 +8,7 @@ mod cli;
 mod cli_study;
 mod closed_form_short_bearing;
 mod common;
+mod control;
 mod convergence_thd;
 mod equilibrium_robustness;
 mod extremes;

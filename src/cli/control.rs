@@ -1,0 +1,259 @@
+//! `tiltpad control`: the closed-loop analysis of a rotor file with a `[control]` section over a speed range
+//! — the poles with the loop open and closed, the onset speed (and against the loop gain with
+//! `--gain-sweep`), the Nyquist check and margins at each actuator's input, the unbalance response with and
+//! without control and the valve signal and nozzle pressure amplitudes it needs (a warning where they leave
+//! the valve's small-signal range) — as a summary, JSON (`--json`) and CSV (`--csv`, one row per speed).
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+
+use crate::control::analysis::{run as run_control, ControlParams, ControlResult, GainOnset};
+use crate::model::control::{Control, PlantInfo};
+use crate::model::rotor::{parse_rotor_file, Rotor};
+use crate::units::{BAR, RPM, UM};
+
+use super::rotor::{parse_speeds, read_rotor};
+use super::rows::announce;
+use super::{is_stdout, write_atomic};
+
+/// Closed-loop poles written per speed in the CSV and the summary.
+const POLES: usize = 4;
+
+/// Arguments of `tiltpad control`.
+pub struct ControlArgs<'a> {
+    pub rotor: &'a Path,
+    pub speeds: &'a str,
+    /// Most speeds (`--max-points`).
+    pub max_points: usize,
+    pub gain: Option<f64>,
+    pub gain_sweep: Option<&'a str>,
+    pub json: Option<PathBuf>,
+    pub csv: Option<PathBuf>,
+}
+
+/// Reads a rotor file and its controller.
+///
+/// # Errors
+/// I/O and validation errors naming the file and the key; a file without `[control]`.
+pub fn read_controlled(path: &Path) -> Result<(Rotor, Control)> {
+    let rotor = read_rotor(path)?;
+    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read rotor file {}", path.display()))?;
+    let file = parse_rotor_file(&text).with_context(|| format!("invalid rotor file {}", path.display()))?;
+    let Some(table) = file.control else {
+        bail!("{}: {}", path.display(), crate::control::ControlError::NoController);
+    };
+    let control =
+        table.resolve(&PlantInfo::rotor(&rotor)).with_context(|| format!("invalid rotor file {}", path.display()))?;
+    Ok((rotor, control))
+}
+
+/// Parses `G1,G2,…` or `FROM:TO:N` into gains.
+///
+/// # Errors
+/// A malformed list.
+pub fn parse_gains(spec: &str) -> Result<Vec<f64>> {
+    let parts: Vec<&str> = spec.split(':').collect();
+    let gains: Vec<f64> = if let [a, b, n] = parts.as_slice() {
+        let (a, b): (f64, f64) = (a.trim().parse()?, b.trim().parse()?);
+        let n: usize = n.trim().parse()?;
+        if !(2..=1000).contains(&n) {
+            bail!("--gain-sweep `{spec}`: needs 2 ≤ N ≤ 1000");
+        }
+        #[allow(clippy::cast_precision_loss)]
+        (0..n).map(|i| a + (b - a) * i as f64 / (n - 1) as f64).collect()
+    } else {
+        spec.split(',').map(|g| g.trim().parse::<f64>()).collect::<Result<_, _>>()?
+    };
+    if gains.is_empty() || gains.iter().any(|g| !g.is_finite()) {
+        bail!("--gain-sweep `{spec}`: expected finite gains G1,G2,… or FROM:TO:N");
+    }
+    Ok(gains)
+}
+
+/// Runs the analysis and writes the outputs.
+///
+/// # Errors
+/// Input, solve and I/O errors.
+pub fn run(args: &ControlArgs<'_>) -> Result<()> {
+    let (rotor, mut control) = read_controlled(args.rotor)?;
+    if let Some(g) = args.gain {
+        if !g.is_finite() {
+            bail!("--gain {g}: expected a finite number");
+        }
+        control.gain = g;
+    }
+    let mut params = ControlParams::new(parse_speeds(args.speeds, args.max_points)?);
+    if let Some(spec) = args.gain_sweep {
+        params.gains = parse_gains(spec)?;
+    }
+    let result =
+        run_control(&rotor, &control, params).with_context(|| format!("analysing {}", args.rotor.display()))?;
+    let text = summary(&result);
+    if is_stdout(args.json.as_ref()) || is_stdout(args.csv.as_ref()) {
+        eprint!("{text}");
+    } else {
+        print!("{text}");
+    }
+    if let Some(out) = &args.json {
+        let mut s = serde_json::to_string_pretty(&result)?;
+        s.push('\n');
+        write_atomic(out, s.as_bytes())?;
+        announce(out);
+    }
+    if let Some(out) = &args.csv {
+        write_atomic(out, csv_text(&result)?.as_bytes())?;
+        announce(out);
+    }
+    Ok(())
+}
+
+fn onset_text(o: &GainOnset) -> String {
+    match o.onset_rad_s {
+        Some(w) => format!("{:.0} rpm", RPM.from_si(w)),
+        None if o.stable_at_first => "none in the sweep (stable throughout)".into(),
+        None => "below the sweep (unstable from its first speed)".into(),
+    }
+}
+
+/// Largest major axis over the response nodes [m], open and closed, and the speed of each [rad/s].
+#[must_use]
+pub fn peaks(r: &ControlResult) -> ((f64, f64), (f64, f64)) {
+    let mut open = (0.0, 0.0);
+    let mut closed = (0.0, 0.0);
+    for s in &r.speeds {
+        if let Some(resp) = &s.response {
+            for o in &resp.open {
+                if o.major_pp_m > open.0 {
+                    open = (o.major_pp_m, s.speed_rad_s);
+                }
+            }
+            for o in &resp.closed {
+                if o.major_pp_m > closed.0 {
+                    closed = (o.major_pp_m, s.speed_rad_s);
+                }
+            }
+        }
+    }
+    (open, closed)
+}
+
+/// The human-readable summary.
+#[must_use]
+pub fn summary(r: &ControlResult) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "{}", r.title);
+    let _ = writeln!(
+        s,
+        "loop gain {}; closed loop {} states; {} bearing solves, {} eigen-solutions, {:.2} s",
+        r.gain, r.states, r.bearing_solves, r.eigen_solutions, r.seconds
+    );
+    let _ = writeln!(s, "instability onset, loop open: {}", onset_text(&r.onset_open));
+    let _ = writeln!(s, "instability onset, loop closed: {}", onset_text(&r.onset_closed));
+    for g in &r.gain_sweep {
+        let _ = writeln!(s, "  gain {:>8.3}: onset {}", g.gain, onset_text(g));
+    }
+    let ((po, wo), (pc, wc)) = peaks(r);
+    if po > 0.0 {
+        let _ = writeln!(
+            s,
+            "unbalance response peak: open {:.2} µm pp at {:.0} rpm, closed {:.2} µm pp at {:.0} rpm",
+            UM.from_si(po),
+            RPM.from_si(wo),
+            UM.from_si(pc),
+            RPM.from_si(wc)
+        );
+    }
+    for (a, limit) in r.limit_v.iter().enumerate() {
+        let most = r.speeds.iter().filter_map(|p| p.response.as_ref().map(|x| x.signal_v[a])).fold(0.0, f64::max);
+        let _ = writeln!(s, "actuator {a}: largest signal {most:.4} V (linear range {limit:.3} V)");
+    }
+    for w in &r.warnings {
+        let _ = writeln!(s, "warning: {w}");
+    }
+    let _ = writeln!(
+        s,
+        "{:>9}  min log dec open / closed | Nyquist (per actuator: stable, GM, PM) | closed-loop poles [Hz]/log dec",
+        "rpm"
+    );
+    for p in &r.speeds {
+        let _ = write!(
+            s,
+            "{:>9.0}  {:>7.3} / {:>7.3} |",
+            RPM.from_si(p.speed_rad_s),
+            p.open.min_log_dec(),
+            p.closed.min_log_dec()
+        );
+        for n in &p.loops {
+            let gm = n.gain_margin.map_or("—".to_string(), |g| format!("{:.1} dB", 20.0 * g.log10()));
+            let pm = n.phase_margin_deg.map_or("—".to_string(), |p| format!("{p:.0}°"));
+            let _ = write!(s, " {} {gm} {pm} |", if n.stable() { "S" } else { "U" });
+        }
+        for m in p.closed.modes.iter().take(POLES) {
+            let _ = write!(s, " {:>7.2}/{:>6.3}", m.frequency_hz(), m.log_dec);
+        }
+        let _ = writeln!(s);
+    }
+    s
+}
+
+/// One row per speed.
+///
+/// # Errors
+/// CSV writer errors.
+pub fn csv_text(r: &ControlResult) -> Result<String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut head = vec!["speed_rpm".to_string(), "open_min_log_dec".into(), "closed_min_log_dec".into()];
+    for i in 1..=POLES {
+        head.extend([format!("pole{i}_hz"), format!("pole{i}_log_dec")]);
+    }
+    let actuators = r.limit_v.len();
+    for a in 0..actuators {
+        head.extend([
+            format!("loop{a}_nyquist_stable"),
+            format!("loop{a}_gain_margin_db"),
+            format!("loop{a}_phase_margin_deg"),
+            format!("actuator{a}_signal_v"),
+            format!("actuator{a}_nozzle_pressure_bar"),
+        ]);
+    }
+    for n in &r.response_nodes {
+        head.extend([format!("node{n}_open_pp_um"), format!("node{n}_closed_pp_um")]);
+    }
+    head.push("api617_limit_um".into());
+    w.write_record(&head)?;
+    let num = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x}"));
+    for p in &r.speeds {
+        let mut row = vec![
+            format!("{}", RPM.from_si(p.speed_rad_s)),
+            format!("{}", p.open.min_log_dec()),
+            format!("{}", p.closed.min_log_dec()),
+        ];
+        for i in 0..POLES {
+            let m = p.closed.modes.get(i);
+            row.extend([num(m.map(super::super::control::closed_loop::Pole::frequency_hz)), num(m.map(|m| m.log_dec))]);
+        }
+        for a in 0..actuators {
+            let n = p.loops.get(a);
+            row.push(n.map_or(String::new(), |n| n.stable().to_string()));
+            row.push(num(n.and_then(|n| n.gain_margin).map(|g| 20.0 * g.log10())));
+            row.push(num(n.and_then(|n| n.phase_margin_deg)));
+            let resp = p.response.as_ref();
+            row.push(num(resp.map(|x| x.signal_v[a])));
+            row.push(num(resp
+                .and_then(|x| x.nozzle_pressure_pa[a].iter().copied().reduce(f64::max))
+                .map(|v| BAR.from_si(v))));
+        }
+        for n in &r.response_nodes {
+            let find = |v: &[crate::rotor::unbalance::Orbit]| {
+                v.iter().find(|o| o.node == *n).map(|o| UM.from_si(o.major_pp_m))
+            };
+            row.push(num(p.response.as_ref().and_then(|x| find(&x.open))));
+            row.push(num(p.response.as_ref().and_then(|x| find(&x.closed))));
+        }
+        row.push(if p.api617_limit_um.is_finite() { format!("{}", p.api617_limit_um) } else { String::new() });
+        w.write_record(&row)?;
+    }
+    Ok(String::from_utf8(w.into_inner()?)?)
+}

@@ -1,0 +1,397 @@
+//! The closed-loop analysis over a speed range: at each speed the plant ([`Plant`]: bearings solved, the
+//! valve chains linearised by the FRF stage), the poles with the loop open (gain 0) and closed, the Nyquist
+//! check and margins at every actuator's input, and the unbalance response with and without control with the
+//! actuator signals and nozzle pressures it needs; then the instability onset against the loop gain.
+//!
+//! Steppable: [`ControlAnalysis::step`] does one speed; [`run`] loops it and finishes.
+
+use nalgebra::{Complex, DVector};
+use serde::{Deserialize, Serialize};
+use web_time::Instant;
+
+use super::closed_loop::{broken, forced, poles, Poles};
+use super::error::{ControlError, ControlWarning};
+use super::law::realise;
+use super::nyquist::{nyquist, Nyquist};
+use super::plant::{ActuatorPlant, Plant, ValvePlant};
+use super::state_space::StateSpace;
+use crate::bearing::film::coordinates::JOURNAL_DOFS;
+use crate::model::control::{ActuatorKind, Axis, Control};
+use crate::model::rotor::{BearingSupport, CoefficientModel, Rotor};
+use crate::physics::hydraulics::servovalve::SMALL_SIGNAL_FRACTION;
+use crate::rotor::analysis::{shaft_model, AnalysisReport};
+use crate::rotor::assembly::{NodeDof, ShaftModel, Weights};
+use crate::rotor::bearings::BearingSet;
+use crate::rotor::coupling::{assemble, BearingCoefficients};
+use crate::rotor::unbalance::{api617_limit_um, forces, Orbit};
+
+/// A force actuator's linear range when none is given [V].
+const FORCE_ACTUATOR_LIMIT_V: f64 = 10.0;
+
+/// Settings of a closed-loop analysis.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ControlParams {
+    /// Spin speeds [rad/s], ascending.
+    pub speeds_rad_s: Vec<f64>,
+    /// Loop gains whose onset speeds are found (the gain sweep; empty: the controller's gain only).
+    pub gains: Vec<f64>,
+    /// Relative bracket of the onset bisection.
+    pub onset_tol: f64,
+    /// Nyquist check and margins at every speed.
+    pub nyquist: bool,
+}
+
+impl ControlParams {
+    #[must_use]
+    pub fn new(speeds_rad_s: Vec<f64>) -> Self {
+        Self { speeds_rad_s, gains: Vec::new(), onset_tol: 1e-3, nyquist: true }
+    }
+}
+
+/// The unbalance response at one speed, with the loop open and closed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ResponsePoint {
+    pub open: Vec<Orbit>,
+    pub closed: Vec<Orbit>,
+    /// Each actuator's signal amplitude [V].
+    pub signal_v: Vec<f64>,
+    /// Per actuator, per port, the nozzle pressure amplitude [Pa].
+    pub nozzle_pressure_pa: Vec<Vec<f64>>,
+}
+
+/// Results at one speed.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SpeedResult {
+    pub speed_rad_s: f64,
+    /// Poles with the loop open (gain 0: rotor, actuators and controller apart).
+    pub open: Poles,
+    /// Poles with the loop closed at the controller's gain.
+    pub closed: Poles,
+    /// Per actuator, the loop broken at its input.
+    pub loops: Vec<Nyquist>,
+    pub response: Option<ResponsePoint>,
+    /// API 617 limit at this speed [µm peak-to-peak].
+    pub api617_limit_um: f64,
+}
+
+/// The onset speed at one gain.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GainOnset {
+    pub gain: f64,
+    /// First stable → unstable crossing [rad/s]; `None`: none in the sweep.
+    pub onset_rad_s: Option<f64>,
+    /// Stable at the first speed of the sweep.
+    pub stable_at_first: bool,
+}
+
+/// Everything a closed-loop analysis produces.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ControlResult {
+    pub title: String,
+    pub gain: f64,
+    pub speeds: Vec<SpeedResult>,
+    /// Onset with the loop open, and closed at the controller's gain.
+    pub onset_open: GainOnset,
+    pub onset_closed: GainOnset,
+    /// Onset at each gain of the sweep.
+    pub gain_sweep: Vec<GainOnset>,
+    /// Each actuator's linear range [V].
+    pub limit_v: Vec<f64>,
+    pub response_nodes: Vec<usize>,
+    /// States of the closed loop (at the last speed).
+    pub states: usize,
+    pub bearing_solves: usize,
+    pub eigen_solutions: usize,
+    pub seconds: f64,
+    pub warnings: Vec<ControlWarning>,
+}
+
+/// A running closed-loop analysis.
+pub struct ControlAnalysis {
+    rotor: Rotor,
+    control: Control,
+    controller: StateSpace,
+    shaft: ShaftModel,
+    bearings: BearingSet,
+    params: ControlParams,
+    nodes: Vec<usize>,
+    limits: Vec<f64>,
+    plants: Vec<Plant>,
+    done: Vec<SpeedResult>,
+    eigen_solutions: usize,
+    warnings: Vec<ControlWarning>,
+    started: Instant,
+}
+
+impl ControlAnalysis {
+    /// Builds the shaft model, the bearing set and the controller.
+    ///
+    /// # Errors
+    /// Bad speeds or gains; a valve actuator with reduced bearing coefficients; assembly errors.
+    pub fn new(rotor: &Rotor, control: &Control, params: ControlParams) -> Result<Self, ControlError> {
+        let s = &params.speeds_rad_s;
+        if s.is_empty() || s.iter().any(|w| !w.is_finite() || *w < 0.0) || s.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(crate::rotor::RotorError::Speeds.into());
+        }
+        if let Some(&gain) = params.gains.iter().find(|g| !g.is_finite()) {
+            return Err(ControlError::Gain { gain });
+        }
+        let mut limits = Vec::new();
+        for a in &control.actuators {
+            let default = match a.kind {
+                ActuatorKind::Valve { bearing } => {
+                    if rotor.coefficients == CoefficientModel::Reduced {
+                        return Err(ControlError::ValveNeedsFullCoefficients { bearing });
+                    }
+                    valve_full_scale(rotor, bearing) * SMALL_SIGNAL_FRACTION
+                }
+                ActuatorKind::Force { .. } => FORCE_ACTUATOR_LIMIT_V,
+            };
+            limits.push(a.max_voltage_v.unwrap_or(default));
+        }
+        let bearings = BearingSet::new(rotor);
+        let mut report = AnalysisReport::default();
+        let shaft = shaft_model(rotor, &bearings.nodes, &mut report)?;
+        let mut nodes: Vec<usize> = bearings
+            .nodes
+            .iter()
+            .copied()
+            .chain(rotor.unbalances.iter().map(|u| u.node))
+            .chain(control.sensors.iter().map(|s| s.node))
+            .collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        Ok(Self {
+            rotor: rotor.clone(),
+            control: control.clone(),
+            controller: realise(control),
+            shaft,
+            bearings,
+            params,
+            nodes,
+            limits,
+            plants: Vec::new(),
+            done: Vec::new(),
+            eigen_solutions: 0,
+            warnings: Vec::new(),
+            started: Instant::now(),
+        })
+    }
+
+    /// The plant at `omega` [rad/s].
+    ///
+    /// # Errors
+    /// Bearing solves; a singular mass matrix.
+    pub fn plant_at(&mut self, omega: f64) -> Result<Plant, ControlError> {
+        let coeffs = self.bearings.at(omega)?;
+        let sys = assemble(&self.shaft, &self.bearings.nodes, &coeffs, omega);
+        let mut actuators = Vec::new();
+        for a in &self.control.actuators {
+            actuators.push(match a.kind {
+                ActuatorKind::Force { node, direction, gain_n_per_v, dynamics } => {
+                    ActuatorPlant::Force { weights: self.place(node, direction), gain_n_per_v, dynamics }
+                }
+                ActuatorKind::Valve { bearing } => {
+                    let BearingCoefficients::Full(full) = &coeffs[bearing] else {
+                        return Err(ControlError::ValveNeedsFullCoefficients { bearing });
+                    };
+                    let frf = self.bearings.frf_at(bearing, omega)?.ok_or(ControlError::NoController)?;
+                    let case_hydraulics = match &self.rotor.bearings[bearing].support {
+                        BearingSupport::Case { case, .. } => case.hydraulics.clone(),
+                        BearingSupport::Numbers(_) => None,
+                    }
+                    .ok_or(ControlError::NoController)?;
+                    let node = self.bearings.nodes[bearing];
+                    let coordinates = full
+                        .coords
+                        .iter()
+                        .enumerate()
+                        .map(|(c, coord)| match c {
+                            0 => Some(self.shaft.weights(node, NodeDof::X)),
+                            1 => Some(self.shaft.weights(node, NodeDof::Y)),
+                            _ => sys
+                                .appended
+                                .iter()
+                                .position(|d| d.bearing == bearing && d.coord == *coord)
+                                .map(|i| vec![(sys.n_shaft + i, 1.0)]),
+                        })
+                        .collect();
+                    debug_assert!(full.coords.len() >= JOURNAL_DOFS);
+                    ActuatorPlant::Valve(Box::new(ValvePlant {
+                        hydraulics: frf.hydraulics(&case_hydraulics),
+                        coupling: frf.dynamics.coupling.clone(),
+                        coordinates,
+                    }))
+                }
+            });
+        }
+        let shaft = &self.shaft;
+        let place = |node: usize, axis: Axis| shaft.weights(node, dof(axis));
+        Plant::new(&sys, &place, &self.control.sensors, &actuators)
+    }
+
+    fn place(&self, node: usize, axis: Axis) -> Weights {
+        self.shaft.weights(node, dof(axis))
+    }
+
+    /// Does the next speed.
+    ///
+    /// # Errors
+    /// Bearing solves, eigen-solutions and responses that fail.
+    pub fn step(&mut self) -> Result<bool, ControlError> {
+        let Some(&omega) = self.params.speeds_rad_s.get(self.done.len()) else {
+            return Ok(true);
+        };
+        let plant = self.plant_at(omega)?;
+        let gain = self.control.gain;
+        let open = poles(&plant, &self.controller, 0.0)?;
+        let closed = poles(&plant, &self.controller, gain)?;
+        self.eigen_solutions += 2;
+        let mut loops = Vec::new();
+        if self.params.nyquist {
+            for a in 0..self.control.actuators.len() {
+                let n = nyquist(&broken(&plant, &self.controller, gain, a))?;
+                self.eigen_solutions += 1;
+                if n.stable() != closed.stable() {
+                    self.warnings
+                        .push(ControlWarning::NyquistDisagrees { speed_rpm: crate::units::RPM.from_si(omega) });
+                }
+                loops.push(n);
+            }
+        }
+        let response =
+            if self.rotor.unbalances.is_empty() || omega == 0.0 { None } else { Some(self.response(&plant, omega)?) };
+        let rpm = crate::units::RPM.from_si(omega);
+        self.done.push(SpeedResult {
+            speed_rad_s: omega,
+            open,
+            closed,
+            loops,
+            response,
+            api617_limit_um: if rpm > 0.0 { api617_limit_um(rpm) } else { f64::INFINITY },
+        });
+        self.plants.push(plant);
+        Ok(self.done.len() == self.params.speeds_rad_s.len())
+    }
+
+    fn response(&mut self, plant: &Plant, omega: f64) -> Result<ResponsePoint, ControlError> {
+        let n = plant.coordinates.nrows();
+        let f: DVector<Complex<f64>> = forces(n, &self.shaft, &self.rotor.unbalances, omega);
+        let (shaft, nodes) = (&self.shaft, &self.nodes);
+        let orbits = |u: &DVector<Complex<f64>>| -> Vec<Orbit> {
+            let at = |node: usize, axis: Axis| {
+                shaft.weights(node, dof(axis)).iter().fold(Complex::new(0.0, 0.0), |acc, &(j, c)| acc + u[j] * c)
+            };
+            nodes.iter().map(|&node| Orbit::from_amplitudes(node, at(node, Axis::X), at(node, Axis::Y))).collect()
+        };
+        let open = forced(plant, &self.controller, 0.0, omega, &f)?;
+        let closed = forced(plant, &self.controller, self.control.gain, omega, &f)?;
+        let signal_v: Vec<f64> = closed.signals.iter().map(|z| z.norm()).collect();
+        let (open, closed_orbits) = (orbits(&open.coordinates), orbits(&closed.coordinates));
+        for (a, (&v, &limit)) in signal_v.iter().zip(&self.limits).enumerate() {
+            if v > limit {
+                self.warnings.push(ControlWarning::Saturation {
+                    actuator: a,
+                    speed_rpm: crate::units::RPM.from_si(omega),
+                    amplitude_v: v,
+                    limit_v: limit,
+                });
+            }
+        }
+        Ok(ResponsePoint {
+            open,
+            closed: closed_orbits,
+            signal_v,
+            nozzle_pressure_pa: closed.pressures.iter().map(|p| p.iter().map(|z| z.norm()).collect()).collect(),
+        })
+    }
+
+    /// The onset at `gain`: the first stable → unstable crossing of the sweep, refined by bisection.
+    ///
+    /// # Errors
+    /// Bearing solves and eigen-solutions of the probes.
+    pub fn onset(&mut self, gain: f64) -> Result<GainOnset, ControlError> {
+        let plants = std::mem::take(&mut self.plants);
+        let mut stable = Vec::with_capacity(plants.len());
+        for p in &plants {
+            stable.push(poles(p, &self.controller, gain)?.stable());
+            self.eigen_solutions += 1;
+        }
+        self.plants = plants;
+        let stable_at_first = stable.first().copied().unwrap_or(false);
+        if !stable_at_first {
+            self.warnings.push(ControlWarning::UnstableFromFirstSpeed { gain });
+        }
+        let Some(i) = stable.windows(2).position(|w| w[0] && !w[1]) else {
+            return Ok(GainOnset { gain, onset_rad_s: None, stable_at_first });
+        };
+        let speeds = &self.params.speeds_rad_s;
+        let (mut lo, mut hi) = (speeds[i], speeds[i + 1]);
+        let mut probes = 0;
+        while hi - lo > self.params.onset_tol * hi && probes < 60 {
+            let mid = 0.5 * (lo + hi);
+            let plant = self.plant_at(mid)?;
+            self.eigen_solutions += 1;
+            if poles(&plant, &self.controller, gain)?.stable() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+            probes += 1;
+        }
+        Ok(GainOnset { gain, onset_rad_s: Some(0.5 * (lo + hi)), stable_at_first })
+    }
+
+    /// Finishes: onsets open, closed and over the gain sweep.
+    ///
+    /// # Errors
+    /// As [`Self::onset`].
+    pub fn finish(mut self) -> Result<ControlResult, ControlError> {
+        let onset_open = self.onset(0.0)?;
+        let onset_closed = self.onset(self.control.gain)?;
+        let gains = self.params.gains.clone();
+        let gain_sweep = gains.iter().map(|&g| self.onset(g)).collect::<Result<Vec<_>, _>>()?;
+        let states = self.plants.last().map_or(0, |p| p.ss.states() + self.controller.states());
+        self.warnings.dedup();
+        Ok(ControlResult {
+            title: self.rotor.title.clone(),
+            gain: self.control.gain,
+            speeds: self.done,
+            onset_open,
+            onset_closed,
+            gain_sweep,
+            limit_v: self.limits,
+            response_nodes: self.nodes,
+            states,
+            bearing_solves: self.bearings.solves,
+            eigen_solutions: self.eigen_solutions,
+            seconds: self.started.elapsed().as_secs_f64(),
+            warnings: self.warnings,
+        })
+    }
+}
+
+fn dof(axis: Axis) -> NodeDof {
+    match axis {
+        Axis::X => NodeDof::X,
+        Axis::Y => NodeDof::Y,
+    }
+}
+
+/// Full-scale signal of the valve of the case at bearing position `b` [V] (validation checked it has one).
+fn valve_full_scale(rotor: &Rotor, b: usize) -> f64 {
+    match &rotor.bearings[b].support {
+        BearingSupport::Case { case, .. } => case.hydraulics.as_ref().map_or(10.0, |h| h.valve.full_scale_v),
+        BearingSupport::Numbers(_) => 10.0,
+    }
+}
+
+/// Runs the whole analysis.
+///
+/// # Errors
+/// As [`ControlAnalysis::new`], [`ControlAnalysis::step`] and [`ControlAnalysis::finish`].
+pub fn run(rotor: &Rotor, control: &Control, params: ControlParams) -> Result<ControlResult, ControlError> {
+    let mut a = ControlAnalysis::new(rotor, control, params)?;
+    while !a.step()? {}
+    a.finish()
+}
