@@ -261,6 +261,22 @@ fn svg_plot(rows: &[LevelRow]) -> String {
     s
 }
 
+/// A level's cells from its name on: `| level | film nodes | time | errors… |`.
+pub(super) fn level_cells(r: &LevelRow) -> String {
+    format!(
+        "| {} | {} | {:.1} ms | {} | {} | {} | {} | {} | {} |",
+        r.level,
+        r.film_nodes,
+        r.median_ms,
+        pct(r.err_eccentricity),
+        pct(r.err_k),
+        pct(r.err_c),
+        pct(r.err_p_max),
+        r.err_t_max.map_or_else(|| "—".to_string(), pct),
+        r.err_flows.map_or_else(|| "—".to_string(), pct)
+    )
+}
+
 pub(super) fn pct(x: f64) -> String {
     if x == 0.0 {
         "—".into()
@@ -308,20 +324,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     );
     let _ = writeln!(md, "| case | level | film nodes | time | ε error | K error | C error | p_max error | T_max error | flow error |\n|---|---|---|---|---|---|---|---|---|---|");
     for r in &rows {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {} | {:.1} ms | {} | {} | {} | {} | {} | {} |",
-            r.case,
-            r.level,
-            r.film_nodes,
-            r.median_ms,
-            pct(r.err_eccentricity),
-            pct(r.err_k),
-            pct(r.err_c),
-            pct(r.err_p_max),
-            r.err_t_max.map_or_else(|| "—".to_string(), pct),
-            r.err_flows.map_or_else(|| "—".to_string(), pct)
-        );
+        let _ = writeln!(md, "| {} {}", r.case, level_cells(r));
     }
     let _ = writeln!(md, "\n![error vs time](performance-error-vs-time.svg)\n");
     let _ = writeln!(md, "## Targets (compressor bearing, 5 pads)\n\n| target | measured | status |\n|---|---|---|");

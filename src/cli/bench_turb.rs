@@ -9,7 +9,7 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use super::bench::{levels, pct, timed, with_mesh};
+use super::bench::{level_cells, levels, timed, with_mesh};
 
 const CASE: &str = "large-5pad-transition";
 
@@ -31,19 +31,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
          |---|---|---|---|---|---|---|---|---|\n",
     );
     for r in &rows {
-        let _ = writeln!(
-            md,
-            "| {} | {} | {:.1} ms | {} | {} | {} | {} | {} | {} |",
-            r.level,
-            r.film_nodes,
-            r.median_ms,
-            pct(r.err_eccentricity),
-            pct(r.err_k),
-            pct(r.err_c),
-            pct(r.err_p_max),
-            r.err_t_max.map_or_else(|| "—".to_string(), pct),
-            r.err_flows.map_or_else(|| "—".to_string(), pct)
-        );
+        let _ = writeln!(md, "{}", level_cells(r));
     }
     md.push_str(
         "\nCost of the option at the standard level (median time; ratio to `off`; friction power and largest local \

@@ -41,32 +41,7 @@ pub const ROUGHNESS_FILM_M: f64 = 1e-6;
 pub const MIN_CLEARANCE_RATIO: f64 = 2e-4;
 pub const MAX_CLEARANCE_RATIO: f64 = 1e-2;
 
-/// The regime numbers of a solved film.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct Regime {
-    /// Largest local film Reynolds number ρ U h / µ, and its pad.
-    pub reynolds_max: f64,
-    pub reynolds_pad: usize,
-    /// The film model's turbulence setting (`physics.turbulence`) and the transition band [start, end].
-    pub turbulence: Turbulence,
-    pub transition_reynolds: [f64; 2],
-    /// Share of the film nodes whose local Reynolds number lies above the transition band's start (where the
-    /// film is turbulent or in transition; with `turbulence = "off"` the laminar model is used there all the
-    /// same, and the report warns).
-    pub transitional_fraction: f64,
-    /// Share of the film nodes above the band's end (fully turbulent).
-    pub turbulent_fraction: f64,
-    /// Largest local Taylor number Re √(h/R).
-    pub taylor_max: f64,
-    /// Smallest film thickness [m].
-    pub h_min_m: f64,
-    /// Assembled clearance ratio Cb/R.
-    pub clearance_ratio: f64,
-    /// Largest radial pivot deflection |ξ| over the pads, as a multiple of the assembled clearance, and
-    /// its pad (0 without pivot springs).
-    pub pivot_deflection_cb: f64,
-    pub pivot_pad: usize,
-}
+pub use crate::bearing::solution::result::Regime;
 
 impl Regime {
     /// The regime of the pad fields `pads` of a solve of `case` at journal surface speed `surface_speed`

@@ -228,7 +228,7 @@ pub struct Solution {
     pub report: SolveReport,
     /// Flow regime: the local film Reynolds number's largest value, the share of the film in and past the
     /// transition band, and the other validity checks (their warnings are in the report).
-    pub regime: crate::bearing::solution::regime::Regime,
+    pub regime: Regime,
     pub derived: Derived,
     pub inputs: Case,
     /// Thermal results (`None` for the isothermal model).
@@ -244,4 +244,31 @@ impl Solution {
             _ => self.load_n[1].atan2(self.load_n[0]),
         }
     }
+}
+
+/// The flow-regime checks' numbers (computed and checked by `bearing::solution::regime`).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Regime {
+    /// Largest local film Reynolds number ρ U h / µ, and its pad.
+    pub reynolds_max: f64,
+    pub reynolds_pad: usize,
+    /// The film model's turbulence setting (`physics.turbulence`) and the transition band [start, end].
+    pub turbulence: crate::model::Turbulence,
+    pub transition_reynolds: [f64; 2],
+    /// Share of the film nodes whose local Reynolds number lies above the transition band's start (where the
+    /// film is turbulent or in transition; with `turbulence = "off"` the laminar model is used there all the
+    /// same, and the report warns).
+    pub transitional_fraction: f64,
+    /// Share of the film nodes above the band's end (fully turbulent).
+    pub turbulent_fraction: f64,
+    /// Largest local Taylor number Re √(h/R).
+    pub taylor_max: f64,
+    /// Smallest film thickness [m].
+    pub h_min_m: f64,
+    /// Assembled clearance ratio Cb/R.
+    pub clearance_ratio: f64,
+    /// Largest radial pivot deflection |ξ| over the pads, as a multiple of the assembled clearance, and
+    /// its pad (0 without pivot springs).
+    pub pivot_deflection_cb: f64,
+    pub pivot_pad: usize,
 }

@@ -358,7 +358,9 @@ impl FilmEnergy {
                 let qz = -cz * pz;
                 st.theta_qp[e][k] = th;
                 st.a[e][k] = [rc * qs, rc * qz];
-                st.phi[e][k] = th * f.cf * mu * u * u / h + cs * ps * ps + cz * pz * pz;
+                // (the laminar film keeps the laminar arithmetic, bit for bit)
+                let poiseuille = if turb.is_some() { cs * ps * ps + cz * pz * pz } else { cp * (ps * ps + pz * pz) };
+                st.phi[e][k] = th * f.cf * mu * u * u / h + poiseuille;
                 st.dissipation += g.sym * q.w * st.phi[e][k];
                 st.shear_power += g.sym * q.w * u * (th * f.cf * mu * u / h + 0.5 * h * ps);
                 for a in 0..4 {

@@ -85,16 +85,17 @@ impl PadFilm {
                     dpz += q.dn_dz[a] * pg[nodes[a]];
                 }
                 // ∂(h³ G/µ)/∂h = (h²/µ) G e per direction (laminar: G = 1, e = 3).
-                let (cs, cz) = match self.turb_qp.get(e) {
-                    Some(t) => (t[k].gs * t[k].es, t[k].gz * t[k].ez),
-                    None => (3.0, 3.0),
-                };
+                let turb = self.turb_qp.get(e).map(|t| (t[k].gs * t[k].es, t[k].gz * t[k].ez));
                 let couette = if jfo { 0.0 } else { 6.0 * u };
                 for a in 0..4 {
                     // ∂b/∂q_k − (∂A/∂q_k) p, per unit φ_k:
                     //   6 U ∂N_a/∂s − 3 h²/µ ∇p·∇N_a   (laminar; turbulent: the per-direction coefficients; the
                     //   Couette part above for the mass-conserving option)
-                    let c = q.w * (couette * q.dn_ds[a] - h * h / mu * (cs * dps * q.dn_ds[a] + cz * dpz * q.dn_dz[a]));
+                    let poiseuille = match turb {
+                        Some((cs, cz)) => h * h / mu * (cs * dps * q.dn_ds[a] + cz * dpz * q.dn_dz[a]),
+                        None => 3.0 * h * h / mu * (dps * q.dn_ds[a] + dpz * q.dn_dz[a]),
+                    };
+                    let c = q.w * (couette * q.dn_ds[a] - poiseuille);
                     // Squeeze: −12 N_a per unit φ_k q̇_k.
                     let d = -12.0 * q.w * q.n[a];
                     for (s, shape) in g.shapes.iter().enumerate() {

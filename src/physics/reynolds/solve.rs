@@ -20,17 +20,18 @@ impl PadFilm {
                 // Diffusion coefficient h³/µ times the quadrature weight; turbulent: G_s h³/µ along s and
                 // G_z h³/µ along z (physics::turbulence).
                 let kd = q.w * h * h * h / self.mu_qp[e][k];
-                let (ks, kz) = match self.turb_qp.get(e) {
-                    Some(t) => (kd * t[k].gs, kd * t[k].gz),
-                    None => (kd, kd),
-                };
+                // The laminar film keeps its own arithmetic (bit for bit the laminar solver's).
+                let turb = self.turb_qp.get(e).map(|t| (kd * t[k].gs, kd * t[k].gz));
                 for a in 0..4 {
                     // Couette wedge, integrated by parts: ∫ 6 U h ∂N_a/∂s.
                     self.b[nodes[a]] += q.w * 6.0 * u * h * q.dn_ds[a];
                     for bb in 0..4 {
                         let pos = map[4 * a + bb];
                         if pos != usize::MAX {
-                            self.a_raw[pos] += ks * q.dn_ds[a] * q.dn_ds[bb] + kz * q.dn_dz[a] * q.dn_dz[bb];
+                            self.a_raw[pos] += match turb {
+                                Some((ks, kz)) => ks * q.dn_ds[a] * q.dn_ds[bb] + kz * q.dn_dz[a] * q.dn_dz[bb],
+                                None => kd * (q.dn_ds[a] * q.dn_ds[bb] + q.dn_dz[a] * q.dn_dz[bb]),
+                            };
                         }
                     }
                 }
