@@ -163,7 +163,7 @@ fn bad_controllers_are_refused_naming_the_key() {
                     1,
                 )
             },
-            "feeds no pad",
+            "hydraulics.port[0].pads`: pad 3 has no orifice",
         ),
         (&|t| t.replacen("bearing = 0\ndirection", "node = 99\ndirection", 1), "control.sensor[0].node"),
         (&|t| t.replacen("kp_v_per_um = -0.05", "kp_v_per_um = nan", 1), "control.loop[0].kp_v_per_um"),
