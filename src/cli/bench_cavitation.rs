@@ -33,7 +33,11 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let jfo_set = [iso.clone(), "physics.cavitation=\"jfo\"".to_string()];
     let jfo = levels("compressor-bearing, jfo", &compressor, &jfo_set, repeats)?;
     eprintln!("bench: cavitation (starved)");
-    let starved_rows = levels("compressor-bearing-starved", &starved, &[iso], repeats)?;
+    // The starved case's equilibrium can fail at a level (a touchdown on the way); the section says so.
+    let (starved_rows, starved_failure) = match levels("compressor-bearing-starved", &starved, &[iso], repeats) {
+        Ok(rows) => (rows, None),
+        Err(e) => (Vec::new(), Some(e.to_string())),
+    };
     let mut md = String::new();
     let _ = writeln!(
         md,
@@ -65,10 +69,13 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
             r.err_flows.map_or_else(|| "—".to_string(), pct)
         );
     }
+    if let Some(e) = starved_failure {
+        let _ = writeln!(md, "\ncompressor-bearing-starved: a level or its reference-fine solution failed: {e}");
+    }
     let _ = writeln!(
         md,
         "\nStarvation sweep (compressor bearing, JFO, standard fidelity): the supply shared equally by the five pads.\n\n\
-         | supply | friction power | ε | h_min | leading-edge inflow | pads carrying load |\n|---|---|---|---|---|---|"
+         | supply | friction power | ε | h_min | leading-edge inflow | pads with p_max above 1 % of the bearing's |\n|---|---|---|---|---|---|"
     );
     for supply in [None, Some(35.0), Some(30.0), Some(25.0), Some(20.0), Some(15.0)] {
         let mut set = vec!["physics.cavitation=\"jfo\"".to_string()];
@@ -79,7 +86,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         let case = load_case(&compressor, &set)?.1;
         match solve_case(&case) {
             Ok(s) => {
-                let loaded = s.pads.iter().filter(|p| p.p_max_pa > 0.0).count();
+                let loaded = s.pads.iter().filter(|p| p.p_max_pa > 0.01 * s.p_max_pa).count();
                 let _ = writeln!(
                     md,
                     "| {label} | {:.0} W | {:.4} | {:.2} µm | {:.2} l/min | {loaded} of {} |",

@@ -182,6 +182,23 @@ impl LuSolver {
         Ok(Self { symbolic: std::sync::Arc::new(symbolic), numeric: NumericLu::new(), work, factored: false })
     }
 
+    /// As [`Self::new`] but always with the supernodal factorisation (faer's automatic choice takes the
+    /// simplicial one for the mixed pressure/film-fraction system of a film, which the supernodal one
+    /// factorises 2–5× faster: measured on the compressor bearing's pads, 600–4600 nodes).
+    ///
+    /// # Errors
+    /// [`SolverError::Symbolic`] if faer's analysis fails (out of memory).
+    pub fn new_supernodal(pattern: &GeneralPattern) -> Result<Self, SolverError> {
+        let params = faer::sparse::linalg::lu::LuSymbolicParams {
+            supernodal_flop_ratio_threshold: faer::sparse::linalg::SupernodalThreshold::FORCE_SUPERNODAL,
+            ..Default::default()
+        };
+        let symbolic =
+            factorize_symbolic_lu(pattern.symbolic(), params).map_err(|e| SolverError::Symbolic(format!("{e:?}")))?;
+        let work = MemBuffer::new(Self::scratch(&symbolic));
+        Ok(Self { symbolic: std::sync::Arc::new(symbolic), numeric: NumericLu::new(), work, factored: false })
+    }
+
     /// Numeric factorisation of the matrix with the given values.
     ///
     /// # Errors

@@ -114,7 +114,7 @@ impl JfoState {
     pub(super) fn new(geom: &FilmGeometry) -> Result<Self, FilmError> {
         let n = geom.n_nodes();
         let pattern = GeneralPattern::from_groups(n, geom.elements.iter().map(|e| &e[..]));
-        let lu = LuSolver::new(&pattern)?;
+        let lu = LuSolver::new_supernodal(&pattern)?;
         let nnz = pattern.nnz();
         let mut transpose = vec![0; nnz];
         for c in 0..n {
