@@ -26,6 +26,24 @@ fn flooded_bearing_without_reformation_is_the_reynolds_solution() {
     assert!(b.flows_m3_per_s.to_cavitation.abs() > 0.0, "the films rupture");
 }
 
+/// The same with turbulent film coefficients (`physics.turbulence = "on"`): the mass-conserving solve
+/// assembles its pressure operator and its linearisation with the same turbulent factors as the Reynolds
+/// option, so the two still agree; and the factors change the answer (the comparison is not laminar twice).
+#[test]
+fn with_turbulent_coefficients_the_flooded_bearing_is_still_the_reynolds_solution() {
+    const ON: &str = "physics.turbulence=\"on\"";
+    let a = common::solve("someya-4pad-lbp.toml", &[JFO, ON]);
+    let b = common::solve("someya-4pad-lbp.toml", &[ON]);
+    let laminar = common::solve("someya-4pad-lbp.toml", &[JFO]);
+    let e = common::rel(a.eccentricity_ratio, b.eccentricity_ratio).abs();
+    let k = common::rel(a.reduced.k_n_per_m[1][1], b.reduced.k_n_per_m[1][1]).abs();
+    let c = common::rel(a.reduced.c_ns_per_m[1][1], b.reduced.c_ns_per_m[1][1]).abs();
+    let turbulent = common::rel(a.reduced.k_n_per_m[1][1], laminar.reduced.k_n_per_m[1][1]).abs();
+    eprintln!("ε {e:.1e}, K_yy {k:.1e}, C_yy {c:.1e}; turbulent vs laminar K_yy {turbulent:.2e}");
+    assert!(e < 1e-6 && k < 1e-6 && c < 1e-6, "ε {e}, K {k}, C {c}");
+    assert!(turbulent > 1e-3, "the turbulent factors change K_yy by {turbulent}");
+}
+
 /// The compressor bearing's orifices drain the film (ambient injection pressure): the film ruptures at the
 /// holes and downstream of the minimum film and reforms. Flooded and starved, every pad's flows balance to
 /// round-off and no flow vanishes into cavitated zones. Measured: imbalance ≤ 1e-15 of each pad's
