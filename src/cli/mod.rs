@@ -117,32 +117,7 @@ pub enum Command {
         jsonl: Option<PathBuf>,
     },
     /// Reduced stiffness and damping over running speed or excitation frequency, for ROSS and as CSV.
-    Coefficients {
-        /// Case file (TOML).
-        case: PathBuf,
-        /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
-        #[arg(long = "set", value_name = "KEY=VALUE")]
-        set: Vec<String>,
-        /// Running speeds, rpm: `FROM:TO:STEPS` or a list (each condensed at the case's excitation ratio).
-        #[arg(long, value_name = "RPM")]
-        speed_rpm: Option<String>,
-        /// Excitation ratios ω/Ω at the case's speed: `FROM:TO:STEPS` or a list (frequency-dependent
-        /// coefficients).
-        #[arg(long, value_name = "RATIOS")]
-        excitation_ratio: Option<String>,
-        /// ROSS bearing-element file (TOML, `ross.BearingElement.load` reads it).
-        #[arg(long, value_name = "OUT.toml")]
-        ross: Option<PathBuf>,
-        /// CSV with units in the header (`-`: standard output; the default without --ross).
-        #[arg(long, value_name = "OUT")]
-        csv: Option<PathBuf>,
-        /// Rotor node of the bearing in the ROSS model.
-        #[arg(long, default_value_t = 0)]
-        node: usize,
-        /// Tag of the ROSS element.
-        #[arg(long, default_value = "tiltpad")]
-        tag: String,
-    },
+    Coefficients(coefficients::CoefficientArgs),
     /// Pad bending modes on the pivot (frequency, modal mass and stiffness), optionally the mesh-convergence
     /// table of the first pad's modes (thesis Table 3.1 style).
     Modes {
@@ -341,18 +316,7 @@ pub fn run(command: Command) -> Result<()> {
             let shard = shard.as_deref().map_or(Ok(crate::study::Shard::ALL), crate::study::Shard::parse)?;
             batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl })
         }
-        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag } => {
-            coefficients::run(&coefficients::CoefficientArgs {
-                case: &case,
-                set: &set,
-                speed_rpm: speed_rpm.as_deref(),
-                excitation_ratio: excitation_ratio.as_deref(),
-                ross,
-                csv,
-                node,
-                tag: &tag,
-            })
-        }
+        Command::Coefficients(args) => coefficients::run(&args),
         Command::Modes { case, set, count, table, json, csv } => {
             modes::run(&modes::ModeArgs { case: &case, set: &set, count, table, json, csv })
         }
