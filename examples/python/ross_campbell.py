@@ -76,6 +76,7 @@ def main() -> None:
     ax[1].axhline(0.1, color="r", lw=1, ls=":", label="API 684 log dec 0.1")
     ax[1].set_xlabel("speed [rpm]")
     ax[1].set_ylabel("log decrement [–]")
+    ax[1].set_ylim(-0.5, 3.0)  # overdamped modes (log dec ≫ 1) off the top
     ax[1].legend(fontsize=8)
     for a in ax:
         a.grid(True, alpha=0.3)
