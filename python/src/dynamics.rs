@@ -8,7 +8,6 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use tiltpad::bearing::frf::model::band as frequency_band;
-use tiltpad::bearing::solution::coefficients::reduce;
 use tiltpad::bearing::{SolveError, Stages};
 use tiltpad::io::coefficients::{CoefficientTable, FrequencyMeaning};
 use tiltpad::scene::frf::FrfCurves;
@@ -159,23 +158,7 @@ pub fn coefficients(
         )),
         (None, Some(ratios)) => {
             let sol = solve_detached(py, resolved, &control).map_err(|e| control.error(py, &e))?;
-            let mut t = CoefficientTable {
-                meaning: FrequencyMeaning::Excitation,
-                frequency_rad_s: vec![],
-                speed_rpm: vec![],
-                excitation_rad_s: vec![],
-                k_n_per_m: vec![],
-                c_ns_per_m: vec![],
-            };
-            for r in ratios {
-                let omega = r * sol.derived.speed_rad_s;
-                let red = reduce(&sol.full, omega);
-                t.frequency_rad_s.push(omega);
-                t.speed_rpm.push(sol.derived.speed_rpm);
-                t.excitation_rad_s.push(omega);
-                t.k_n_per_m.push(red.k_n_per_m);
-                t.c_ns_per_m.push(red.c_ns_per_m);
-            }
+            let t = CoefficientTable::of_excitation(&sol, &ratios);
             Ok(Coefficients { table: t, warnings: Vec::new(), solves: 1 })
         }
         (speeds, None) => {

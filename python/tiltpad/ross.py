@@ -100,18 +100,7 @@ def bearing_element(
     ``tiltpad coefficients CASE --speed-rpm … --node n --ross FILE`` writes, read by
     ``ross.BearingElement.load(FILE)``.
     """
-    ross = _ross()
-    table = sample(
-        case,
-        speeds_rpm=speeds_rpm,
-        analysis_speeds_rpm=analysis_speeds_rpm,
-        refine=refine,
-        fidelity=fidelity,
-        progress=progress,
-        cancel=cancel,
-        stacklevel=2,
-    )
-    return _element(ross, table, n, tag)
+    return _elements(case, [n], [tag], speeds_rpm, analysis_speeds_rpm, refine, fidelity, progress, cancel)[0]
 
 
 def bearing_elements(
@@ -129,7 +118,6 @@ def bearing_elements(
     """One ``ross.BearingElement`` per node of ``nodes``, all with the coefficients of ``case`` (one sampling):
     the bearings of a rotor that carries the same bearing at several nodes. ``tags``: one per node, or one
     for all (then ``TAG_<node>``, as ``tiltpad coefficients --node 3,12 --tag TAG`` names them)."""
-    ross = _ross()
     nodes = [int(x) for x in nodes]
     if isinstance(tags, str):
         names = [tags] if len(nodes) == 1 else [f"{tags}_{x}" for x in nodes]
@@ -137,6 +125,12 @@ def bearing_elements(
         names = [str(t) for t in tags]
         if len(names) != len(nodes):
             raise ValueError(f"{len(names)} tags for {len(nodes)} nodes: give one tag, or one per node")
+    return _elements(case, nodes, names, speeds_rpm, analysis_speeds_rpm, refine, fidelity, progress, cancel)
+
+
+def _elements(case, nodes, tags, speeds_rpm, analysis_speeds_rpm, refine, fidelity, progress, cancel) -> List[Any]:
+    ross = _ross()
+    # Warnings point at the caller of bearing_element(s): this frame, the public function, then the caller.
     table = sample(
         case,
         speeds_rpm=speeds_rpm,
@@ -145,6 +139,6 @@ def bearing_elements(
         fidelity=fidelity,
         progress=progress,
         cancel=cancel,
-        stacklevel=2,
+        stacklevel=3,
     )
-    return [_element(ross, table, x, t) for x, t in zip(nodes, names)]
+    return [_element(ross, table, x, t) for x, t in zip(nodes, tags)]

@@ -13,9 +13,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::bearing::solution::coefficients::reduce;
 use crate::bearing::NoCancel;
-use crate::io::coefficients::{CoefficientTable, FrequencyMeaning};
+use crate::io::coefficients::CoefficientTable;
 use crate::io::write_file;
 use crate::study::band::{self, BandParams, BandWarning};
 use crate::study::{Axis, Runner};
@@ -115,25 +114,7 @@ fn speed_table(
 }
 
 fn excitation_table(runner: &mut Runner, ratios: &[f64]) -> Result<CoefficientTable> {
-    let s = runner.solve(&[])?;
-    let mut t = CoefficientTable {
-        meaning: FrequencyMeaning::Excitation,
-        frequency_rad_s: vec![],
-        speed_rpm: vec![],
-        excitation_rad_s: vec![],
-        k_n_per_m: vec![],
-        c_ns_per_m: vec![],
-    };
-    for &r in ratios {
-        let omega = r * s.derived.speed_rad_s;
-        let red = reduce(&s.full, omega);
-        t.frequency_rad_s.push(omega);
-        t.speed_rpm.push(s.derived.speed_rpm);
-        t.excitation_rad_s.push(omega);
-        t.k_n_per_m.push(red.k_n_per_m);
-        t.c_ns_per_m.push(red.c_ns_per_m);
-    }
-    Ok(t)
+    Ok(CoefficientTable::of_excitation(&runner.solve(&[])?, ratios))
 }
 
 fn read(case: &Path) -> Result<String> {

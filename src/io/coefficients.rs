@@ -17,6 +17,8 @@
 
 use std::fmt::Write as _;
 
+use crate::bearing::solution::coefficients::reduce;
+use crate::bearing::Solution;
 use crate::number::csv;
 use crate::study::band::Band;
 
@@ -63,6 +65,22 @@ impl CoefficientTable {
             excitation_rad_s: s.iter().map(|x| x.excitation_rad_s).collect(),
             k_n_per_m: s.iter().map(|x| x.k_n_per_m).collect(),
             c_ns_per_m: s.iter().map(|x| x.c_ns_per_m).collect(),
+        }
+    }
+
+    /// The table of one solution's full coefficients condensed at each excitation frequency ω = ratio · Ω
+    /// (frequency-dependent coefficients at the solution's speed).
+    #[must_use]
+    pub fn of_excitation(s: &Solution, ratios: &[f64]) -> Self {
+        let omegas: Vec<f64> = ratios.iter().map(|r| r * s.derived.speed_rad_s).collect();
+        let reduced: Vec<_> = omegas.iter().map(|&w| reduce(&s.full, w)).collect();
+        Self {
+            meaning: FrequencyMeaning::Excitation,
+            frequency_rad_s: omegas.clone(),
+            speed_rpm: vec![s.derived.speed_rpm; omegas.len()],
+            excitation_rad_s: omegas,
+            k_n_per_m: reduced.iter().map(|r| r.k_n_per_m).collect(),
+            c_ns_per_m: reduced.iter().map(|r| r.c_ns_per_m).collect(),
         }
     }
 
