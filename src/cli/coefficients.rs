@@ -1,32 +1,65 @@
 //! `tiltpad coefficients`: reduced coefficients over running speed (a warm-started speed sweep, each point
 //! condensed at the case's excitation ratio) or over excitation frequency at the case's speed (one solve,
-//! the full matrices condensed at each ω), written for ROSS (`--ross`) and as CSV (`--csv`).
+//! the full matrices condensed at each ω), written for ROSS (`--ross`, one bearing element per `--node`) and
+//! as CSV (`--csv`).
+//!
+//! For ROSS the speed band is refined where its spline would miss the coefficients (a pad starting to float)
+//! and checked ([`crate::study::band`]): warnings on standard error say where the coefficients jump between
+//! samples and when the band does not cover `--analysis-rpm`, the speed range of the rotor analysis. The
+//! Python package's `tiltpad.ross.bearing_element` samples through the same code, so both give the same
+//! elements.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 
-use crate::bearing::solution::coefficients::reduce;
-use crate::io::coefficients::{CoefficientTable, FrequencyMeaning};
+use crate::bearing::NoCancel;
+use crate::io::coefficients::CoefficientTable;
 use crate::io::write_file;
+use crate::study::band::{self, BandParams, BandWarning};
 use crate::study::{Axis, Runner};
 
 use super::rows::announce;
 use super::sweep::progress;
 
-/// Which frequencies and where the tables go.
-pub struct CoefficientArgs<'a> {
-    pub case: &'a Path,
-    pub set: &'a [String],
-    /// `FROM:TO:STEPS` or a list, rpm.
-    pub speed_rpm: Option<&'a str>,
-    /// `FROM:TO:STEPS` or a list of ω/Ω at the case's speed.
-    pub excitation_ratio: Option<&'a str>,
+/// `tiltpad coefficients` arguments.
+#[derive(Debug, clap::Args)]
+pub struct CoefficientArgs {
+    /// Case file (TOML).
+    pub case: PathBuf,
+    /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
+    /// Running speeds, rpm: `FROM:TO:STEPS` or a list (each condensed at the case's excitation ratio).
+    #[arg(long, value_name = "RPM")]
+    pub speed_rpm: Option<String>,
+    /// Excitation ratios ω/Ω at the case's speed: `FROM:TO:STEPS` or a list (frequency-dependent
+    /// coefficients).
+    #[arg(long, value_name = "RATIOS")]
+    pub excitation_ratio: Option<String>,
+    /// ROSS bearing-element file (TOML, `ross.BearingElement.load` reads it; one element per `--node`).
+    #[arg(long, value_name = "OUT.toml")]
     pub ross: Option<PathBuf>,
+    /// CSV with units in the header (`-`: standard output; the default without --ross).
+    #[arg(long, value_name = "OUT")]
     pub csv: Option<PathBuf>,
-    pub node: usize,
-    pub tag: &'a str,
-    /// Most speeds or ratios.
+    /// Rotor node of the bearing in the ROSS model; several (`--node 3 --node 12` or `--node 3,12`) write one
+    /// bearing element per node with the same coefficients.
+    #[arg(long, value_delimiter = ',', default_value = "0")]
+    pub node: Vec<usize>,
+    /// Tag of the ROSS element: one, or one per node (a single tag for several nodes becomes `TAG_<node>`).
+    #[arg(long, value_delimiter = ',', default_value = "tiltpad")]
+    pub tag: Vec<String>,
+    /// Speed range of the rotor analysis the elements serve, rpm (`FROM:TO`): a warning when the sampled
+    /// band does not cover it (ROSS extrapolates its spline outside the band).
+    #[arg(long, value_name = "FROM:TO")]
+    pub analysis_rpm: Option<String>,
+    /// Write exactly the requested speeds for ROSS: no refinement where the spline misses the
+    /// coefficients (the jump warnings still apply).
+    #[arg(long)]
+    pub no_refine: bool,
+    /// Most speeds or ratios (refused before the first solve beyond it).
+    #[arg(long, value_name = "N", default_value_t = super::inputs::DEFAULT_MAX_POINTS)]
     pub max_points: usize,
 }
 
@@ -46,74 +79,96 @@ fn numbers(flag: &str, spec: &str, min: f64, what: &str, max_points: usize) -> R
     Ok(values)
 }
 
-fn empty_table(meaning: FrequencyMeaning) -> CoefficientTable {
-    CoefficientTable {
-        meaning,
-        frequency_rad_s: vec![],
-        speed_rpm: vec![],
-        excitation_rad_s: vec![],
-        k_n_per_m: vec![],
-        c_ns_per_m: vec![],
+/// `FROM:TO` in rpm.
+fn range_rpm(spec: &str) -> Result<[f64; 2]> {
+    let (a, b) = spec.split_once(':').with_context(|| format!("--analysis-rpm `{spec}`: expected FROM:TO"))?;
+    let (a, b): (f64, f64) = (
+        a.trim().parse().with_context(|| format!("--analysis-rpm `{spec}`: FROM"))?,
+        b.trim().parse().with_context(|| format!("--analysis-rpm `{spec}`: TO"))?,
+    );
+    if !(a.is_finite() && b.is_finite() && 0.0 <= a && a <= b) {
+        bail!("--analysis-rpm `{spec}`: needs 0 ≤ FROM ≤ TO");
+    }
+    Ok([a, b])
+}
+
+/// The `(node, tag)` of every element: one tag per node, or one tag for all (then suffixed with the node).
+fn elements(nodes: &[usize], tags: &[String]) -> Result<Vec<(usize, String)>> {
+    match (nodes.len(), tags.len()) {
+        (_, 1) if nodes.len() == 1 => Ok(vec![(nodes[0], tags[0].clone())]),
+        (_, 1) => Ok(nodes.iter().map(|n| (*n, format!("{}_{n}", tags[0]))).collect()),
+        (n, t) if n == t => Ok(nodes.iter().copied().zip(tags.iter().cloned()).collect()),
+        (n, t) => bail!("{t} tags for {n} nodes: give one tag, or one per node"),
     }
 }
 
-fn speed_table(runner: &mut Runner, speeds: &[f64]) -> Result<CoefficientTable> {
+/// The band over `speeds` [rpm], refined for ROSS unless `refine` is off, with its warnings.
+fn speed_table(
+    runner: &mut Runner,
+    speeds: &[f64],
+    refine: bool,
+    analysis_rpm: Option<[f64; 2]>,
+) -> Result<(CoefficientTable, Vec<BandWarning>)> {
     let ratio = runner.case(&[])?.operating.excitation_ratio;
-    let mut t = empty_table(FrequencyMeaning::RunningSpeed { excitation_ratio: ratio });
+    let params = BandParams { refine, analysis_rpm, ..BandParams::default() };
     let pb = progress(speeds.len());
-    for &rpm in speeds {
-        match runner.solve(&[("operating.speed_rpm".into(), format!("{rpm:?}"))]) {
-            Ok(s) => {
-                t.frequency_rad_s.push(s.derived.speed_rad_s);
-                t.speed_rpm.push(rpm);
-                t.excitation_rad_s.push(s.reduced.omega_rad_s);
-                t.k_n_per_m.push(s.reduced.k_n_per_m);
-                t.c_ns_per_m.push(s.reduced.c_ns_per_m);
-            }
-            Err(e) => pb.println(format!("{rpm} rpm left out: {e}")),
+    let mut solves = 0;
+    let band = band::sample(speeds, &params, &mut |rpm| {
+        solves += 1;
+        if solves > speeds.len() {
+            pb.inc_length(1);
         }
+        pb.set_message(format!("{rpm:.0} rpm"));
+        let s = band::solve_point(runner, rpm, &NoCancel);
         pb.inc(1);
-    }
+        s
+    })?;
     pb.finish_and_clear();
-    Ok(t)
+    Ok((CoefficientTable::of_band(&band, ratio), band.warnings))
 }
 
 fn excitation_table(runner: &mut Runner, ratios: &[f64]) -> Result<CoefficientTable> {
-    let s = runner.solve(&[])?;
-    let mut t = empty_table(FrequencyMeaning::Excitation);
-    for &r in ratios {
-        let omega = r * s.derived.speed_rad_s;
-        let red = reduce(&s.full, omega);
-        t.frequency_rad_s.push(omega);
-        t.speed_rpm.push(s.derived.speed_rpm);
-        t.excitation_rad_s.push(omega);
-        t.k_n_per_m.push(red.k_n_per_m);
-        t.c_ns_per_m.push(red.c_ns_per_m);
-    }
-    Ok(t)
+    Ok(CoefficientTable::of_excitation(&runner.solve(&[])?, ratios))
 }
 
 /// Computes and writes the tables.
 ///
 /// # Errors
 /// Bad arguments, an invalid case, every point failed, or an output that cannot be written.
-pub fn run(args: &CoefficientArgs<'_>) -> Result<()> {
-    let text = super::inputs::read_text(args.case, "case file")?;
-    let mut runner = Runner::new(text, args.set.to_vec(), true);
-    let table = match (args.speed_rpm, args.excitation_ratio) {
-        (Some(spec), None) => {
-            speed_table(&mut runner, &numbers("--speed-rpm", spec, 0.0, "speeds [rpm]", args.max_points)?)?
-        }
-        (None, Some(spec)) => excitation_table(
+pub fn run(args: &CoefficientArgs) -> Result<()> {
+    let elements = elements(&args.node, &args.tag)?;
+    let analysis = args.analysis_rpm.as_deref().map(range_rpm).transpose()?;
+    let mut runner = band::cold_runner(super::inputs::read_text(&args.case, "case file")?, args.set.clone());
+    // Refinement serves ROSS's spline; a CSV alone keeps exactly the requested speeds.
+    let refine = args.ross.is_some() && !args.no_refine;
+    let (table, warnings) = match (&args.speed_rpm, &args.excitation_ratio) {
+        (Some(spec), None) => speed_table(
             &mut runner,
-            &numbers("--excitation-ratio", spec, 0.0, "excitation ratios ω/Ω", args.max_points)?,
+            &numbers("--speed-rpm", spec, 0.0, "speeds [rpm]", args.max_points)?,
+            refine,
+            analysis,
         )?,
+        (None, Some(spec)) => {
+            if analysis.is_some() {
+                bail!("--analysis-rpm checks a speed band: give it with --speed-rpm");
+            }
+            (
+                excitation_table(
+                    &mut runner,
+                    &numbers("--excitation-ratio", spec, 0.0, "excitation ratios ω/Ω", args.max_points)?,
+                )?,
+                Vec::new(),
+            )
+        }
         (Some(_), Some(_)) => bail!("give --speed-rpm (a speed sweep) or --excitation-ratio (one speed), not both"),
         (None, None) => {
             let rpm = crate::units::RPM.from_si(runner.case(&[])?.operating.speed_rad_s);
-            speed_table(&mut runner, &[rpm])?
+            speed_table(&mut runner, &[rpm], false, analysis)?
         }
     };
+    for w in &warnings {
+        eprintln!("warning: {w}");
+    }
     if table.frequency_rad_s.is_empty() {
         bail!("no point solved (each point's reason is printed above); nothing to write");
     }
@@ -121,7 +176,7 @@ pub fn run(args: &CoefficientArgs<'_>) -> Result<()> {
         print!("{}", table.csv());
     }
     if let Some(p) = &args.ross {
-        write_file(p, table.ross_toml(args.node, args.tag, &args.case.display().to_string()).as_bytes())?;
+        write_file(p, table.ross_toml_elements(&elements, &args.case.display().to_string()).as_bytes())?;
         announce(p);
     }
     if let Some(p) = &args.csv {

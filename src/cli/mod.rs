@@ -128,35 +128,7 @@ pub enum Command {
         max_points: usize,
     },
     /// Reduced stiffness and damping over running speed or excitation frequency, for ROSS and as CSV.
-    Coefficients {
-        /// Case file (TOML).
-        case: PathBuf,
-        /// Override a case value, e.g. `--set operating.speed_rpm=3000` (repeatable).
-        #[arg(long = "set", value_name = "KEY=VALUE")]
-        set: Vec<String>,
-        /// Running speeds, rpm: `FROM:TO:STEPS` or a list (each condensed at the case's excitation ratio).
-        #[arg(long, value_name = "RPM")]
-        speed_rpm: Option<String>,
-        /// Excitation ratios ω/Ω at the case's speed: `FROM:TO:STEPS` or a list (frequency-dependent
-        /// coefficients).
-        #[arg(long, value_name = "RATIOS")]
-        excitation_ratio: Option<String>,
-        /// ROSS bearing-element file (TOML, `ross.BearingElement.load` reads it).
-        #[arg(long, value_name = "OUT.toml")]
-        ross: Option<PathBuf>,
-        /// CSV with units in the header (`-`: standard output; the default without --ross).
-        #[arg(long, value_name = "OUT")]
-        csv: Option<PathBuf>,
-        /// Rotor node of the bearing in the ROSS model.
-        #[arg(long, default_value_t = 0)]
-        node: usize,
-        /// Tag of the ROSS element.
-        #[arg(long, default_value = "tiltpad")]
-        tag: String,
-        /// Most speeds or excitation ratios (refused before the first solve beyond it).
-        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
-        max_points: usize,
-    },
+    Coefficients(coefficients::CoefficientArgs),
     /// Pad bending modes on the pivot (frequency, modal mass and stiffness), optionally the mesh-convergence
     /// table of the first pad's modes (thesis Table 3.1 style).
     Modes {
@@ -411,19 +383,12 @@ pub fn run(command: Command) -> Result<()> {
             )?;
             batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl, max_points })
         }
-        Command::Coefficients { case, set, speed_rpm, excitation_ratio, ross, csv, node, tag, max_points } => {
-            inputs::check_outputs(&[("case file", &case)], &[("--ross", ross.as_deref()), ("--csv", csv.as_deref())])?;
-            coefficients::run(&coefficients::CoefficientArgs {
-                case: &case,
-                set: &set,
-                speed_rpm: speed_rpm.as_deref(),
-                excitation_ratio: excitation_ratio.as_deref(),
-                ross,
-                csv,
-                node,
-                tag: &tag,
-                max_points,
-            })
+        Command::Coefficients(args) => {
+            inputs::check_outputs(
+                &[("case file", &args.case)],
+                &[("--ross", args.ross.as_deref()), ("--csv", args.csv.as_deref())],
+            )?;
+            coefficients::run(&args)
         }
         Command::Modes { case, set, count, table, json, csv } => {
             inputs::check_outputs(&[("case file", &case)], &[("--json", json.as_deref()), ("--csv", csv.as_deref())])?;

@@ -17,7 +17,10 @@
 
 use std::fmt::Write as _;
 
+use crate::bearing::solution::coefficients::reduce;
+use crate::bearing::Solution;
 use crate::number::csv;
+use crate::study::band::Band;
 
 /// What the frequency column of a [`CoefficientTable`] is.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -51,12 +54,58 @@ fn toml_list(values: impl Iterator<Item = f64>) -> String {
 }
 
 impl CoefficientTable {
+    /// The table of a speed band's samples ([`crate::study::band`]), each condensed at `excitation_ratio`.
+    #[must_use]
+    pub fn of_band(band: &Band, excitation_ratio: f64) -> Self {
+        let s = &band.samples;
+        Self {
+            meaning: FrequencyMeaning::RunningSpeed { excitation_ratio },
+            frequency_rad_s: s.iter().map(|x| x.speed_rad_s).collect(),
+            speed_rpm: s.iter().map(|x| x.speed_rpm).collect(),
+            excitation_rad_s: s.iter().map(|x| x.excitation_rad_s).collect(),
+            k_n_per_m: s.iter().map(|x| x.k_n_per_m).collect(),
+            c_ns_per_m: s.iter().map(|x| x.c_ns_per_m).collect(),
+        }
+    }
+
+    /// The table of one solution's full coefficients condensed at each excitation frequency ω = ratio · Ω
+    /// (frequency-dependent coefficients at the solution's speed).
+    #[must_use]
+    pub fn of_excitation(s: &Solution, ratios: &[f64]) -> Self {
+        let omegas: Vec<f64> = ratios.iter().map(|r| r * s.derived.speed_rad_s).collect();
+        let reduced: Vec<_> = omegas.iter().map(|&w| reduce(&s.full, w)).collect();
+        Self {
+            meaning: FrequencyMeaning::Excitation,
+            frequency_rad_s: omegas.clone(),
+            speed_rpm: vec![s.derived.speed_rpm; omegas.len()],
+            excitation_rad_s: omegas,
+            k_n_per_m: reduced.iter().map(|r| r.k_n_per_m).collect(),
+            c_ns_per_m: reduced.iter().map(|r| r.c_ns_per_m).collect(),
+        }
+    }
+
     /// The file ROSS's `BearingElement.load` reads, for rotor node `node`, with a `#` comment header.
     #[must_use]
     pub fn ross_toml(&self, node: usize, tag: &str, source: &str) -> String {
+        self.ross_toml_elements(&[(node, tag.to_string())], source)
+    }
+
+    /// One bearing element per `(node, tag)`, each with this table, in one file: a table per element named as
+    /// ROSS's `Element.save` names it (`BearingElement_<tag>`), so `BearingElement.load` reads the first and
+    /// `[ross.BearingElement.read_toml_data(d) for d in toml.load(f).values()]` all of them.
+    #[must_use]
+    pub fn ross_toml_elements(&self, elements: &[(usize, String)], source: &str) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "# Reduced coefficients of {source}, written by tiltpad for ROSS:");
-        let _ = writeln!(s, "#   import ross; bearing = ross.BearingElement.load(\"THIS_FILE.toml\")");
+        if elements.len() > 1 {
+            let _ = writeln!(s, "#   import ross, toml");
+            let _ = writeln!(
+                s,
+                "#   bearings = [ross.BearingElement.read_toml_data(d) for d in toml.load(\"THIS_FILE.toml\").values()]"
+            );
+        } else {
+            let _ = writeln!(s, "#   import ross; bearing = ross.BearingElement.load(\"THIS_FILE.toml\")");
+        }
         let _ = writeln!(s, "# SI units: k [N/m], c [N*s/m], frequency [rad/s]; x horizontal, y vertical up.");
         match self.meaning {
             FrequencyMeaning::RunningSpeed { excitation_ratio } => {
@@ -73,6 +122,13 @@ impl CoefficientTable {
                 );
             }
         }
+        for (node, tag) in elements {
+            self.ross_element(&mut s, *node, tag);
+        }
+        s
+    }
+
+    fn ross_element(&self, s: &mut String, node: usize, tag: &str) {
         let tag = tag.replace(['"', '\\'], "_");
         // A bare TOML key when the tag allows it (as ROSS writes it), else a quoted one.
         let name = format!("BearingElement_{tag}");
@@ -92,7 +148,6 @@ impl CoefficientTable {
         for (name, i, j) in TERMS {
             let _ = writeln!(s, "c{name} = {}", toml_list(self.c_ns_per_m.iter().map(|c| c[i][j])));
         }
-        s
     }
 
     /// A CSV with units in the header: one row per frequency.

@@ -1,6 +1,7 @@
 //! Studies: many solves of one base case, each with some case keys changed — a sweep over a grid of any
 //! keys ([`grid`]), or a design-space batch read from a table ([`designs`]) — and the table of results,
-//! one row per point ([`columns`], [`run`]).
+//! one row per point ([`columns`], [`run`]); and reduced coefficients sampled over a speed band for a
+//! rotordynamics code that interpolates them ([`band`]).
 //!
 //! Contract: a study never stops at a bad point. Each point yields a [`Row`] holding either the output
 //! columns (SI or engineering units, the unit in each column name; empty where a quantity does not exist,
@@ -14,6 +15,7 @@
 //! overrides, so a batch split into shards gives the same rows as one run; only the `seconds` column (wall
 //! time) differs between runs.
 
+pub mod band;
 pub mod columns;
 pub mod convergence;
 pub mod designs;

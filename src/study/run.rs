@@ -10,7 +10,7 @@
 use web_time::Instant;
 
 use crate::bearing::solution::limits::LimitKind;
-use crate::bearing::{NoCancel, Request, Solution, SolveError, Stages, Start};
+use crate::bearing::{Cancel, NoCancel, Request, Solution, SolveError, Stages, Start};
 use crate::model::{load_case, replaced_keys, Case, CaseError, Replaced};
 
 use super::columns::{outputs, COLUMNS};
@@ -197,15 +197,33 @@ impl Runner {
     /// # Errors
     /// The point's case error or solve error.
     pub fn solve(&mut self, overrides: &[(String, String)]) -> Result<Solution, PointError> {
+        self.solve_with(overrides, &NoCancel)
+    }
+
+    /// Solves one point, stopping when `cancel` says so ([`SolveError::Cancelled`]).
+    ///
+    /// # Errors
+    /// The point's case error or solve error.
+    pub fn solve_with(&mut self, overrides: &[(String, String)], cancel: &dyn Cancel) -> Result<Solution, PointError> {
         let case = self.case(overrides)?;
-        let solution = self.stages.solution(&Request::solution(case).starting(self.start), &NoCancel)?;
+        let solution = self.stages.solution(&Request::solution(case).starting(self.start), cancel)?;
         Ok(std::sync::Arc::unwrap_or_clone(solution))
     }
 
     /// Solves one point and makes its row; the solution too when there is one (for field exports).
     pub fn row(&mut self, index: usize, overrides: &[(String, String)]) -> (Row, Option<Solution>) {
+        self.row_with(index, overrides, &NoCancel)
+    }
+
+    /// [`Self::row`], stopping when `cancel` says so (the row then holds [`SolveError::Cancelled`]).
+    pub fn row_with(
+        &mut self,
+        index: usize,
+        overrides: &[(String, String)],
+        cancel: &dyn Cancel,
+    ) -> (Row, Option<Solution>) {
         let t0 = Instant::now();
-        let result = self.solve(overrides);
+        let result = self.solve_with(overrides, cancel);
         let seconds = t0.elapsed().as_secs_f64();
         match result {
             Ok(s) => (Row::of(index, overrides, Ok(&s), seconds), Some(s)),

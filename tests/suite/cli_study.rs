@@ -318,6 +318,7 @@ fn coefficients_over_speed_and_frequency_for_ross_and_csv() {
         "6000:10000:3",
         "--node",
         "8",
+        "--no-refine",
         "--ross",
         ross.to_str().unwrap(),
         "--csv",
@@ -365,6 +366,65 @@ fn coefficients_over_speed_and_frequency_for_ross_and_csv() {
     assert_eq!(kxx, s.reduced.k_n_per_m[0][0]);
     let cxx: Vec<f64> = c[1..].iter().map(|r| r[col(&c, "cxx_ns_per_m")].parse().unwrap()).collect();
     assert!(cxx[0] != cxx[2], "pad inertia and tilt make the damping frequency dependent: {cxx:?}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The `--ross` band is refined where ROSS's spline would miss the coefficients, one element per node, with
+/// warnings on standard error where the coefficients jump between samples (at preview fidelity pad 1 of the
+/// compressor bearing starts floating near 7470 rpm and stops near 7720 rpm) and where the band misses the
+/// analysis range.
+#[test]
+fn ross_export_refines_the_band_writes_every_node_and_warns() {
+    let dir = scratch("ross-band");
+    let ross = dir.join("brg.toml");
+    let base = case("compressor-bearing.toml");
+    let args = |speeds: &str, extra: &[&str]| {
+        let mut a: Vec<String> = ["coefficients", &base, "--set", PREVIEW, "--speed-rpm", speeds, "--ross"]
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        a.push(ross.to_str().unwrap().to_string());
+        a.extend(extra.iter().map(ToString::to_string));
+        a
+    };
+    let run_args = |a: &[String]| run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    // A smooth band: refined (every interval checked at its midpoint), no warning, one element per node.
+    let o = run_args(&args("8000,9000,10000", &["--node", "7,49", "--tag", "de,nde"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+    let doc: toml::Table = std::fs::read_to_string(&ross).unwrap().parse().unwrap();
+    let (de, nde) = (doc["BearingElement_de"].as_table().unwrap(), doc["BearingElement_nde"].as_table().unwrap());
+    assert_eq!((de["n"].as_integer(), nde["n"].as_integer()), (Some(7), Some(49)));
+    let f = toml_list(de, "frequency");
+    assert_eq!(f, toml_list(nde, "frequency"));
+    assert_eq!(toml_list(de, "kxx"), toml_list(nde, "kxx"));
+    assert!(f.len() >= 5 && f.windows(2).all(|w| w[0] < w[1]), "{f:?}");
+    for n in [8000.0f64, 9000.0, 10000.0] {
+        assert!(f.iter().any(|w| (w - n * std::f64::consts::TAU / 60.0).abs() < 1e-9), "{n} rpm kept: {f:?}");
+    }
+    // Across the floating pad: the jumps are narrowed to the finest interval (1000/512 rpm) and warned.
+    let o = run_args(&args("7000,8000", &["--analysis-rpm", "6000:8000"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    let warnings: Vec<&str> = err.lines().filter(|l| l.starts_with("warning: ")).collect();
+    let jumps: Vec<&&str> = warnings.iter().filter(|w| w.contains("coefficients jump between")).collect();
+    assert!(!jumps.is_empty() && jumps.iter().any(|w| w.contains("pad 1")), "{warnings:?}");
+    // Each located to one finest interval: "between 7467.8 and 7468.8 rpm".
+    for w in &jumps {
+        let words: Vec<&str> = w.split_whitespace().collect();
+        let at = words.iter().position(|x| *x == "between").unwrap();
+        let (a, b): (f64, f64) = (words[at + 1].parse().unwrap(), words[at + 3].trim_end_matches(':').parse().unwrap());
+        assert!(b - a < 1000.0 / 1024.0 + 0.1, "{w}");
+    }
+    assert!(warnings.iter().any(|w| w.contains("cover 7000–8000 rpm") && w.contains("6000–8000 rpm")), "{warnings:?}");
+    let doc: toml::Table = std::fs::read_to_string(&ross).unwrap().parse().unwrap();
+    let f = toml_list(doc["BearingElement_tiltpad"].as_table().unwrap(), "frequency");
+    let finest = f.windows(2).map(|w| (w[1] - w[0]) * 60.0 / std::f64::consts::TAU).fold(f64::MAX, f64::min);
+    // Intervals are halved while they are at least 1/512 of the band wide: the finest is 1/1024 of it.
+    assert!((finest - 1000.0 / 1024.0).abs() < 1e-6, "finest interval {finest} rpm");
+    // One tag per node or one for all.
+    let o = run_args(&args("8000,9000", &["--node", "1,2,3", "--tag", "a,b"]));
+    assert!(!o.status.success() && stderr(&o).contains("2 tags for 3 nodes"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).ok();
 }
 
