@@ -20,6 +20,8 @@ pub struct Case {
     pub hydraulics: Option<super::hydraulics::Hydraulics>,
     /// Design limits (read by no solver stage: checked on the solution).
     pub limits: super::limits::Limits,
+    /// The tuning keys' values ([`super::tuning`]: read by the equilibrium, the thermal loop and what follows).
+    pub tuning: super::tuning::Tuning,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -269,8 +271,6 @@ pub struct Thermal {
     /// (else the supply temperature).
     pub housing_expansion_per_k: f64,
     pub housing_temperature_c: Option<f64>,
-    /// Outer iterations the THD loop may take.
-    pub max_iterations: usize,
 }
 
 /// The pad arc the levels' circumferential counts are set for (the 60–80° pads of the shipped

@@ -313,8 +313,10 @@ pub enum Turbulence {
 
 /// `[physics]`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
 pub struct PhysicsFile {
+    /// The section's tuning keys (and any unknown key, refused when the file is read): [`super::tuning`].
+    #[serde(flatten)]
+    pub tuning: super::tuning::TuningFile,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cavitation: Option<Cavitation>,
     /// Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (surfaces in
@@ -374,8 +376,10 @@ pub enum CavitatedFilmFile {
 
 /// `[thermal]`
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
-#[serde(deny_unknown_fields)]
 pub struct ThermalFile {
+    /// The section's tuning keys (and any unknown key, refused when the file is read): [`super::tuning`].
+    #[serde(flatten)]
+    pub tuning: super::tuning::TuningFile,
     /// `isothermal` or `thd`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub model: Option<ThermalModelKind>,
@@ -421,7 +425,4 @@ pub struct ThermalFile {
     /// Housing temperature.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub housing_temperature_c: Option<f64>,
-    /// Outer-iteration budget of the THD loop.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub max_iterations: Option<usize>,
 }

@@ -79,11 +79,13 @@ pub fn replaced_keys(text: &str, overrides: &[String]) -> Result<Vec<Replaced>, 
 /// Unknown keys, missing keys and wrong types.
 pub fn from_table(table: toml::Table) -> Result<CaseFile, CaseError> {
     let value = toml::Value::Table(table);
-    serde_path_to_error::deserialize::<_, CaseFile>(value).map_err(|e| {
+    let file = serde_path_to_error::deserialize::<_, CaseFile>(value).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner().to_string();
         schema_error(&path, &inner)
-    })
+    })?;
+    super::tuning::check_names(&file)?;
+    Ok(file)
 }
 
 /// Turns a serde message into a typed error with a dotted key.

@@ -26,6 +26,7 @@ pub mod rotor_schema;
 pub mod rotor_sections;
 pub mod schema;
 pub mod shaft;
+pub mod tuning;
 
 pub use case::{
     Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad,

@@ -63,6 +63,7 @@ impl CaseFile {
             thermal,
             hydraulics,
             limits,
+            tuning: super::tuning::Tuning::resolve(self)?,
         };
         super::budget::check(&case)?;
         Ok(case)
@@ -576,6 +577,5 @@ fn resolve_thermal(file: &CaseFile) -> Result<Thermal, CaseError> {
         reference_temperature_c: key!("thermal.reference_temperature_c").optional(t.reference_temperature_c)?,
         housing_expansion_per_k: key!("thermal.housing_expansion_ppm_per_k").value(t.housing_expansion_ppm_per_k)?,
         housing_temperature_c: key!("thermal.housing_temperature_c").optional(t.housing_temperature_c)?,
-        max_iterations: key!("thermal.max_iterations").count(t.max_iterations)?,
     })
 }

@@ -21,6 +21,7 @@ use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage, 
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::request::{Request, Start};
 use crate::bearing::stages::stage::{Ctx, Poll, Stage};
+use crate::model::tuning::Tuning;
 use crate::model::{Case, Lubricant, Operating, Physics, ViscosityLaw};
 
 /// Suspensions of one equilibrium before it must run to the end.
@@ -47,14 +48,26 @@ pub struct EquilibriumInputs {
     /// Starved pads: the bearing's oil supply (the pads' inlet film fractions).
     pub supply_flow_m3_s: Option<f64>,
     pub physics: Physics,
+    /// Every tuning key (the equilibrium's and those of the stages after it, which key on these inputs).
+    pub tuning: Tuning,
 }
 
 impl EquilibriumInputs {
     /// Exhaustive over the case and its sub-structs (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing: _, lubricant, operating, mesh: _, physics, thermal: _, hydraulics: _, limits: _ } =
-            case;
+        let Case {
+            title: _,
+            bearing: _,
+            lubricant,
+            operating,
+            mesh: _,
+            physics,
+            thermal: _,
+            hydraulics: _,
+            limits: _,
+            tuning,
+        } = case;
         let Lubricant {
             name: _,
             viscosity,
@@ -95,6 +108,7 @@ impl EquilibriumInputs {
             injection_temperature_c: *injection_temperature_c,
             supply_flow_m3_s: *supply_flow_m3_s,
             physics: *physics,
+            tuning: *tuning,
         }
     }
 }

@@ -127,8 +127,18 @@ impl FilmsInputs {
     /// Exhaustive over the case, the bearing and the mesh (no `..`).
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        let Case { title: _, bearing, lubricant: _, operating: _, mesh, physics, thermal: _, hydraulics: _, limits: _ } =
-            case;
+        let Case {
+            title: _,
+            bearing,
+            lubricant: _,
+            operating: _,
+            mesh,
+            physics,
+            thermal: _,
+            hydraulics: _,
+            limits: _,
+            tuning: _,
+        } = case;
         let Physics {
             cavitation: _,
             touchdown_film_m: _,

@@ -50,8 +50,18 @@ impl ThermalInputs {
     /// Exhaustive over the case and its sub-structs (no `..`); `None` for an isothermal case.
     #[must_use]
     pub fn of(case: &Case) -> Option<Self> {
-        let Case { title: _, bearing, lubricant, operating, mesh, physics: _, thermal, hydraulics: _, limits: _ } =
-            case;
+        let Case {
+            title: _,
+            bearing,
+            lubricant,
+            operating,
+            mesh,
+            physics: _,
+            thermal,
+            hydraulics: _,
+            limits: _,
+            tuning: _,
+        } = case;
         let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } =
             lubricant;
         let Operating {
@@ -89,7 +99,6 @@ impl ThermalInputs {
             reference_temperature_c: _,
             housing_expansion_per_k: _,
             housing_temperature_c: _,
-            max_iterations: _, // kept whole below
         } = thermal;
         // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
         let pad_elastic = (*pad_expansion_per_k != 0.0)

@@ -102,7 +102,7 @@ impl ThermalParams {
     #[must_use]
     pub fn of(case: &Case) -> Self {
         Self {
-            max_iterations: case.thermal.max_iterations,
+            max_iterations: case.tuning.count(crate::key!("thermal.max_iterations")),
             equilibrium: EquilibriumParams::of(case),
             ..Self::default()
         }

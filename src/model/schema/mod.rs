@@ -15,29 +15,36 @@
 //! `bearing.pad.<i>.<name>` takes the row of `bearing.pads.<name>` ([`spec`] maps both).
 //!
 //! # Adding a key
-//! 1. **One row** in the section's file here, e.g. the THD loop's iteration budget in `thermal.rs`:
-//!    ```text
-//!    Key::integer("thermal.max_iterations", COUNT, 10, 100_000)
-//!        .typical(100.0, 1000.0)
-//!        .default(Fallback::Count(300))
-//!        .edit(Thermal, "Iteration budget", Optional(0))
-//!        .when(thd)
-//!        .meaning("Outer iterations the THD loop may take … raise it there."),
-//!    ```
-//!    The range check and its error message (`` `thermal.max_iterations` = 5 is out of range: allowed an
-//!    integer in [10, 100000] ``), the default, the unit conversion, the `tiltpad schema` entry and the editor
-//!    row (checkbox, drag value, tooltip, shown with the thermal model only) follow from it: no editor code,
-//!    no range or default written anywhere else.
-//! 2. **The key in the file format**: its field in the serde table of [`super::file`], a declaration
-//!    (`pub max_iterations: Option<usize>`, with its neighbours' serde attributes).
-//! 3. **The value the solver reads**: its field in the SI case ([`super::case`], `pub max_iterations: usize`)
-//!    and one line in [`super::resolve`] that takes range, default and unit from the row:
-//!    `max_iterations: key!("thermal.max_iterations").count(t.max_iterations)?`.
-//! 4. The physics that reads it (here `ThermalParams { max_iterations: case.thermal.max_iterations, .. }`
-//!    where the stages build the THD loop; a stage that lists the SI fields it reads names the new one).
+//! **A tuning key** (a number one part of the solver reads as it is: an iteration budget, a tolerance) is
+//! one row, marked `.tuning()`, plus the physics that reads it. The THD loop's iteration budget, in
+//! `thermal.rs`:
+//! ```text
+//! Key::integer("thermal.max_iterations", COUNT, 10, 100_000)
+//!     .typical(100.0, 1000.0)
+//!     .default(Fallback::Count(300))
+//!     .tuning()
+//!     .edit(Thermal, "Iteration budget", Optional(0))
+//!     .when(thd)
+//!     .meaning("Outer iterations the THD loop may take … raise it there."),
+//! ```
+//! and where the loop's settings are built, `case.tuning.count(key!("thermal.max_iterations"))`. The range
+//! check and its error message (`` `thermal.max_iterations` = 5 is out of range: allowed an integer in [10,
+//! 100000] ``), the default, the unit conversion, the file format, the `tiltpad schema` entry and the editor
+//! row (checkbox, drag value, tooltip, shown with the thermal model only) follow from the row
+//! ([`crate::model::tuning`] says where tuning keys may live and which stages read them).
+//!
+//! **A key that changes what the model is** (a geometry, a choice of model, anything a film mesh or a pad
+//! solid depends on) also gets typed fields, so that every solver stage must decide whether it reads it:
+//! 1. the row, as above without `.tuning()`;
+//! 2. its field in the serde table of [`super::file`] (`pub carry_over: Option<f64>`, with its neighbours'
+//!    serde attributes);
+//! 3. its field in the SI case ([`super::case`]) and one line in [`super::resolve`] that takes range,
+//!    default and unit from the row: `carry_over: key!("thermal.carry_over").value(t.carry_over)?`;
+//! 4. the physics that reads it; the stages destructure the case structs without `..`, so the new field is a
+//!    compile error in each stage's inputs until it is named there.
 //!
 //! Steps 2 and 3 are declarations the compiler checks (`key!` finds the row while building); what a key is
-//! — its unit, range, default, meaning and editor row — is written once, in step 1.
+//! — its unit, range, default, meaning and editor row — is written once, in its row.
 //!
 //! A unit test sets every numeric key just outside its range and checks that validation rejects it with the
 //! row's interval, and that every row's default lies inside its range; another checks that every key a shipped

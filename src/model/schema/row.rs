@@ -187,6 +187,9 @@ pub struct KeySpec<F: 'static = CaseFile> {
     pub meaning: &'static str,
     /// The key's row in the workbench's editor; `None`: not edited there.
     pub editor: Option<Editor<F>>,
+    /// A tuning key: a number the solver reads through its row ([`crate::model::tuning`]), with no field of
+    /// its own in the file or the SI case.
+    pub tuning: bool,
 }
 
 // Every field is Copy whatever the file type (the functions take it by reference).
@@ -236,6 +239,7 @@ impl<F> KeySpec<F> {
             default: Fallback::Required,
             meaning: "",
             editor: None,
+            tuning: false,
         }
     }
 
@@ -291,6 +295,11 @@ impl<F> KeySpec<F> {
     /// The key's row in the editor: its group, label and widget.
     pub const fn edit(self, group: Group, label: &'static str, widget: Widget) -> Self {
         Self { editor: Some(Editor { group, label, widget, when: always }), ..self }
+    }
+    /// A tuning key: the solver reads the value through this row (`case.tuning.value(key!("…"))`), so the key
+    /// needs no field in the file or the SI case ([`crate::model::tuning`]).
+    pub const fn tuning(self) -> Self {
+        Self { tuning: true, ..self }
     }
     /// The editor shows the row only for files where `when` holds.
     pub const fn when(self, when: fn(&F) -> bool) -> Self {

@@ -116,6 +116,7 @@ pub(super) const KEYS: &[Key] = &[
     Key::integer("thermal.max_iterations", COUNT, 10, 100_000)
         .typical(100.0, 1000.0)
         .default(Fallback::Count(300))
+        .tuning()
         .edit(Thermal, "Iteration budget", Optional(0))
         .when(thd)
         .meaning("Outer iterations (equilibrium, temperatures, viscosity update) the THD loop may take before it stops and says it did not converge. Shipped cases converge in 10–60; points near touchdown or with lightly loaded pads can need a few hundred. A loop stopped by this budget names it in its error: raise it there."),
