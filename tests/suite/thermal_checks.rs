@@ -149,3 +149,31 @@ fn the_iteration_budget_is_a_case_key() {
     let s = solve_case(&common::case("fillon-a-tehd.toml", &["mesh.fidelity=\"preview\""])).unwrap();
     assert!(s.thermal.unwrap().report.outer_iterations > 10);
 }
+
+/// The case key `thermal.viscosity_tolerance` is the loop's stopping rule: the loop stops at the first outer
+/// iteration whose largest viscosity change is below it, so a tighter tolerance takes more iterations and
+/// ends with a smaller change; the default is 1e-4.
+#[test]
+fn the_viscosity_tolerance_is_a_case_key() {
+    use tiltpad::bearing::solve_case;
+    let report = |tol: Option<&str>| {
+        let mut set = vec!["mesh.fidelity=\"preview\"".to_string()];
+        set.extend(tol.map(|t| format!("thermal.viscosity_tolerance={t}")));
+        let set: Vec<&str> = set.iter().map(String::as_str).collect();
+        solve_case(&common::case("fillon-a.toml", &set)).unwrap().thermal.unwrap().report
+    };
+    let (default, tight) = (report(None), report(Some("1e-7")));
+    for (r, tol) in [(&default, 1e-4), (&tight, 1e-7)] {
+        let stop = r.stop_reason.expect("converged");
+        assert_eq!(stop.viscosity_tol, tol);
+        assert!(stop.viscosity_change < tol, "{stop}");
+        let before_last = r.viscosity_change[r.viscosity_change.len() - 2];
+        assert!(before_last >= tol, "the loop stops at the first iteration below {tol} (previous {before_last:.1e})");
+    }
+    assert!(
+        tight.outer_iterations > default.outer_iterations,
+        "{} vs {}",
+        tight.outer_iterations,
+        default.outer_iterations
+    );
+}

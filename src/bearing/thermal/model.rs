@@ -103,6 +103,7 @@ impl ThermalParams {
     pub fn of(case: &Case) -> Self {
         Self {
             max_iterations: case.tuning.count(crate::key!("thermal.max_iterations")),
+            viscosity_tol: case.tuning.value(crate::key!("thermal.viscosity_tolerance")),
             equilibrium: EquilibriumParams::of(case),
             ..Self::default()
         }

@@ -120,4 +120,11 @@ pub(super) const KEYS: &[Key] = &[
         .edit(Thermal, "Iteration budget", Optional(0))
         .when(thd)
         .meaning("Outer iterations (equilibrium, temperatures, viscosity update) the THD loop may take before it stops and says it did not converge. Shipped cases converge in 10–60; points near touchdown or with lightly loaded pads can need a few hundred. A loop stopped by this budget names it in its error: raise it there."),
+    Key::number("thermal.viscosity_tolerance", ONE, Range::open_lo(0.0, 1e-2))
+        .typical(1e-7, 1e-3)
+        .or(1e-4)
+        .tuning()
+        .edit(Thermal, "Viscosity tolerance", Optional(8))
+        .when(thd)
+        .meaning("The THD loop has converged when no node's film viscosity changed by more than this fraction in the last outer iteration. 1e-4 moves temperatures by well under 0.1 K; tighten it (1e-6 … 1e-8) for reference solutions and convergence studies, at a few more outer iterations per decade."),
 ];
