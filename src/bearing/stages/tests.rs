@@ -100,6 +100,10 @@ fn stages_rerun_only_when_their_inputs_change() {
     req.case = case(&["operating.load_n=8000", "mesh.circumferential_elements=20"]);
     s.run(&req, &NoCancel).unwrap();
     assert_eq!(runs(&s), [2, 3, 0, 3, 4, 3, 0]);
+    // A tuning key reruns the equilibrium and what follows it (they key on every tuning value), not the films.
+    req.case = case(&["operating.load_n=8000", "mesh.circumferential_elements=20", "thermal.max_iterations=50"]);
+    s.run(&req, &NoCancel).unwrap();
+    assert_eq!(runs(&s), [2, 4, 0, 4, 5, 4, 0]);
 }
 
 #[test]
