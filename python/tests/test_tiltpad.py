@@ -76,9 +76,10 @@ def test_arrays_have_documented_shapes_and_are_read_only(compressor):
         assert pad.force_n.shape == (2,)
         with pytest.raises(ValueError):
             pad.pressure_pa[0, 0] = 1.0
-    # One copy per array: the same object on every read.
+    # One copy per array: the same object on every read, the pads' fields too.
     assert r.k_n_per_m is r.k_n_per_m
-    assert r.pads[0].pressure_pa is not None
+    assert r.pads is r.pads and isinstance(r.pads, tuple)
+    assert r.pads[0].pressure_pa is r.pads[0].pressure_pa
     # The load the film carries is equal and opposite to the pads' forces on the journal (equilibrium).
     total = sum(p.force_n for p in r.pads)
     np.testing.assert_allclose(-total, r.load_n, rtol=1e-6, atol=1e-6 * r.load_magnitude_n)
