@@ -59,6 +59,9 @@ pub struct Control {
     stop: AtomicBool,
     error: Mutex<Option<PyErr>>,
     last_check: Mutex<Instant>,
+    /// The largest fraction told so far: threads of a batch finish out of order, the callback sees a
+    /// fraction that never decreases.
+    told: Mutex<f64>,
 }
 
 impl Control {
@@ -69,6 +72,7 @@ impl Control {
             stop: AtomicBool::new(false),
             error: Mutex::new(None),
             last_check: Mutex::new(Instant::now()),
+            told: Mutex::new(0.0),
         }
     }
 
@@ -83,14 +87,25 @@ impl Control {
     /// called without the GIL.
     pub fn report(&self, fraction: f64, message: &str) {
         let Some(callback) = &self.progress else { return };
-        Python::attach(|py| match callback.call1(py, (fraction, message)) {
+        Python::attach(|py| {
+            // Taken under the GIL, just before the call: calls start in increasing order.
+            let fraction = self.told.lock().map_or(fraction, |mut told| {
+                *told = told.max(fraction);
+                *told
+            });
+            self.call(py, callback, fraction, message);
+        });
+    }
+
+    fn call(&self, py: Python<'_>, callback: &Py<PyAny>, fraction: f64, message: &str) {
+        match callback.call1(py, (fraction, message)) {
             Ok(v) => {
                 if v.bind(py).is(pyo3::types::PyBool::new(py, false)) {
                     self.stop.store(true, Ordering::Relaxed);
                 }
             }
             Err(e) => self.fail(e),
-        });
+        }
     }
 
     /// Whether the call should stop.
@@ -99,12 +114,25 @@ impl Control {
     }
 
     /// The exception to raise for a call that ended with `e`: the callback's own exception or Ctrl-C's
-    /// `KeyboardInterrupt` first, then `Cancelled` or the solver's error.
+    /// `KeyboardInterrupt` first, then `Cancelled` (saying who cancelled) or the solver's error.
     pub fn error(&self, py: Python<'_>, e: &SolveError) -> PyErr {
-        match self.error.lock().ok().and_then(|mut slot| slot.take()) {
-            Some(err) => err,
-            None => crate::errors::solve_error(py, e),
+        match (self.take_error(), e) {
+            (Some(err), _) => err,
+            (None, SolveError::Cancelled) => self.cancelled(py),
+            (None, _) => crate::errors::solve_error(py, e),
         }
+    }
+
+    /// `tiltpad.Cancelled` naming who stopped the call.
+    pub fn cancelled(&self, py: Python<'_>) -> PyErr {
+        let by = if self.stop.load(Ordering::Relaxed) {
+            "the progress callback returned False"
+        } else if self.token.as_ref().is_some_and(|t| t.load(Ordering::Relaxed)) {
+            "its CancelToken was cancelled"
+        } else {
+            "stopped from outside"
+        };
+        crate::errors::cancelled(py, by)
     }
 
     /// The callback's exception or Ctrl-C, if the call stopped for one.

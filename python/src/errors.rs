@@ -109,6 +109,17 @@ pub fn solve_error(py: Python<'_>, e: &SolveError) -> PyErr {
     }
 }
 
+/// `tiltpad.Cancelled`, its message saying who stopped the call (`by`: "the progress callback returned
+/// False", "its CancelToken was cancelled"); `kind` "cancelled", `details` `{"by": by}`.
+pub fn cancelled(py: Python<'_>, by: &str) -> PyErr {
+    let e = SolveError::Cancelled;
+    let extra = PyDict::new(py);
+    let message = format!("{e}: {by}");
+    let mut map = serde_json::Map::new();
+    map.insert("Cancelled".into(), serde_json::json!({ "by": by }));
+    raise(py, "Cancelled", message, &serde_json::Value::Object(map), &extra)
+}
+
 /// A point of a study that failed.
 pub fn point_error(py: Python<'_>, e: &PointError) -> PyErr {
     match e {

@@ -212,12 +212,13 @@ pub fn rotor(
                 }
             }
         }
+        let result = a.finish()?;
         control.report(1.0, "onset and critical speeds");
-        a.finish().map(Some)
+        Ok(Some(result))
     });
     match result {
         Ok(Some(result)) => Ok(RotorResult { rotor, result, modes }),
-        Ok(None) => Err(control.error(py, &tiltpad::bearing::SolveError::Cancelled)),
+        Ok(None) => Err(control.take_error().unwrap_or_else(|| control.cancelled(py))),
         Err(e) => Err(rotor_error(py, &e)),
     }
 }

@@ -212,11 +212,17 @@ impl Solution {
     fn full_units(&self) -> Vec<&'static str> {
         self.sol.full.coords.iter().map(|c| c.unit()).collect()
     }
-    /// The pads, in order.
+    /// The pads, in order: a tuple made on the first read and returned on every later one (so each pad's
+    /// arrays are copied once, however often they are read).
     #[getter]
-    fn pads(slf: &Bound<'_, Self>) -> PyResult<Vec<Pad>> {
-        let s = slf.get();
-        Ok((0..s.sol.pads.len()).map(|i| Pad { sol: Arc::clone(&s.sol), index: i, kept: Kept::default() }).collect())
+    fn pads<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyAny>> {
+        let (py, s) = (slf.py(), slf.get());
+        s.kept.get(py, "pads", || {
+            let pads = (0..s.sol.pads.len())
+                .map(|i| Bound::new(py, Pad { sol: Arc::clone(&s.sol), index: i, kept: Kept::default() }))
+                .collect::<PyResult<Vec<_>>>()?;
+            Ok(pyo3::types::PyTuple::new(py, pads)?.into_any())
+        })
     }
     /// The solve's report (iterations, residuals, method, floating pads, time, warnings), as in the JSON.
     #[getter]

@@ -12,6 +12,34 @@ use crate::case::Case;
 use crate::control::{CancelToken, Control};
 use crate::solution::Solution;
 
+/// Steps `req` on fresh stages until done, telling `control` after each stage: the fraction `share` ×
+/// (stages done, counted up to `last`) / (`last` + 1), and the stage's name. Stops with `Cancelled` as soon
+/// as the caller asks (between stages, and inside a stage wherever the solver polls its [`tiltpad::bearing::Cancel`]).
+///
+/// Without the GIL: call it inside `py.detach`.
+pub fn run_stages(
+    req: &Request,
+    last: StageId,
+    share: f64,
+    control: &Control,
+) -> Result<tiltpad::bearing::Outcome, SolveError> {
+    let mut stages = Stages::new();
+    #[allow(clippy::cast_precision_loss)]
+    let of = (last.index() + 1) as f64;
+    loop {
+        match stages.step(req, control)? {
+            Step::Done(o) => return Ok(o),
+            Step::Pending { stage, .. } => {
+                #[allow(clippy::cast_precision_loss)]
+                control.report(share * (stage.index() + 1) as f64 / of, stage.label());
+                if control.stopped() {
+                    return Err(SolveError::Cancelled);
+                }
+            }
+        }
+    }
+}
+
 /// Runs the solution's request on fresh stages, reporting each finished stage; without the GIL.
 pub fn solve_detached(
     py: Python<'_>,
@@ -19,23 +47,7 @@ pub fn solve_detached(
     control: &Control,
 ) -> Result<Arc<tiltpad::bearing::Solution>, SolveError> {
     py.detach(|| {
-        let req = Request::solution(case);
-        let mut stages = Stages::new();
-        #[allow(clippy::cast_precision_loss)]
-        let of = (StageId::Reduction.index() + 1) as f64;
-        let outcome = loop {
-            match stages.step(&req, control)? {
-                Step::Done(o) => break o,
-                Step::Pending { stage, .. } => {
-                    #[allow(clippy::cast_precision_loss)]
-                    control.report((stage.index() + 1) as f64 / of, stage.label());
-                    if control.stopped() {
-                        return Err(SolveError::Cancelled);
-                    }
-                }
-            }
-        };
-        drop(stages);
+        let outcome = run_stages(&Request::solution(case), StageId::Reduction, 1.0, control)?;
         outcome.solution().ok_or(SolveError::Cancelled)
     })
 }

@@ -91,7 +91,7 @@ fn run_points(
 
 /// The exception of a study that stopped before its end.
 fn stop_error(py: Python<'_>, control: &Control) -> PyErr {
-    control.take_error().unwrap_or_else(|| crate::errors::solve_error(py, &SolveError::Cancelled))
+    control.take_error().unwrap_or_else(|| control.cancelled(py))
 }
 
 /// The sweep's Rust half: `axes` as `[(key, [values…]), …]`; returns the columns.

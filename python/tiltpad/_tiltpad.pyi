@@ -4,16 +4,34 @@
 from __future__ import annotations
 
 import os
-from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
 
-FloatArray = npt.NDArray[np.float64]
-Progress = Callable[[float, str], Any]
+_FloatArray = npt.NDArray[np.float64]
+_Progress = Callable[[float, str], Any]
 
 __version__: str
+__all__ = [
+    "CancelToken",
+    "Case",
+    "Coefficients",
+    "Pad",
+    "RotorResult",
+    "Solution",
+    "coefficients",
+    "frf",
+    "load_case",
+    "rotor",
+    "schema",
+    "solve",
+    "_sweep",
+    "_batch",
+    "__version__",
+]
 
+@final
 class CancelToken:
     """A flag that stops the solves it is passed to, set from any thread (they raise ``tiltpad.Cancelled``)."""
 
@@ -22,6 +40,7 @@ class CancelToken:
     @property
     def cancelled(self) -> bool: ...
 
+@final
 class Case:
     """A bearing case: a case file (or TOML text) and the edits made to it, validated as ``tiltpad solve``
     validates it."""
@@ -35,8 +54,8 @@ class Case:
     def with_values(self, values: Mapping[str, Any]) -> Case: ...
     def get(self, key: str) -> Any:
         """The value of a key as the file has it (its unit), None where the file leaves the default."""
-    def __getitem__(self, key: str) -> Any: ...
-    def __setitem__(self, key: str, value: Any) -> None: ...
+    def __getitem__(self, key: str, /) -> Any: ...
+    def __setitem__(self, key: str, value: Any, /) -> None: ...
     def copy(self) -> Case: ...
     @property
     def overrides(self) -> List[str]: ...
@@ -47,6 +66,7 @@ class Case:
     def to_toml(self) -> str: ...
     def save(self, path: Union[str, os.PathLike[str]]) -> None: ...
 
+@final
 class Pad:
     """One pad of a solution. Field arrays have shape ``(len(s_m), len(z_m))``: circumferential node i from the
     leading edge, axial node j."""
@@ -64,7 +84,7 @@ class Pad:
     @property
     def p_max_pa(self) -> float: ...
     @property
-    def force_n(self) -> FloatArray:
+    def force_n(self) -> _FloatArray:
         """Film force on the journal (x, y) [N], shape (2,)."""
     @property
     def moment_nm(self) -> float: ...
@@ -77,17 +97,17 @@ class Pad:
     @property
     def flows_m3_per_s(self) -> Dict[str, float]: ...
     @property
-    def orifice_flows_m3_per_s(self) -> FloatArray: ...
+    def orifice_flows_m3_per_s(self) -> _FloatArray: ...
     @property
-    def mode_amplitudes_m(self) -> FloatArray: ...
+    def mode_amplitudes_m(self) -> _FloatArray: ...
     @property
-    def s_m(self) -> FloatArray:
+    def s_m(self) -> _FloatArray:
         """Circumferential node coordinates along the pad from its leading edge [m], shape (ns,)."""
     @property
-    def z_m(self) -> FloatArray:
+    def z_m(self) -> _FloatArray:
         """Axial node coordinates [m], shape (nz,)."""
     @property
-    def theta_rad(self) -> FloatArray:
+    def theta_rad(self) -> _FloatArray:
         """Node angles in the bearing frame (from +x, counter-clockwise) [rad], shape (ns,)."""
     @property
     def half(self) -> bool:
@@ -95,31 +115,32 @@ class Pad:
     @property
     def periodic(self) -> bool: ...
     @property
-    def pressure_pa(self) -> FloatArray:
+    def pressure_pa(self) -> _FloatArray:
         """Film pressure [Pa], shape (ns, nz)."""
     @property
-    def film_thickness_m(self) -> FloatArray:
+    def film_thickness_m(self) -> _FloatArray:
         """Film thickness [m], shape (ns, nz)."""
     @property
-    def viscosity_pa_s(self) -> FloatArray: ...
+    def viscosity_pa_s(self) -> _FloatArray: ...
     @property
     def cavitated(self) -> npt.NDArray[np.bool_]: ...
     @property
-    def film_temperature_c(self) -> Optional[FloatArray]: ...
+    def film_temperature_c(self) -> Optional[_FloatArray]: ...
     @property
-    def pad_surface_temperature_c(self) -> Optional[FloatArray]: ...
+    def pad_surface_temperature_c(self) -> Optional[_FloatArray]: ...
     @property
-    def elastic_displacement_m(self) -> Optional[FloatArray]: ...
+    def elastic_displacement_m(self) -> Optional[_FloatArray]: ...
     @property
-    def thermal_growth_m(self) -> Optional[FloatArray]: ...
+    def thermal_growth_m(self) -> Optional[_FloatArray]: ...
     @property
-    def pad_radii_m(self) -> Optional[FloatArray]: ...
+    def pad_radii_m(self) -> Optional[_FloatArray]: ...
     @property
-    def pad_temperature_c(self) -> Optional[FloatArray]:
+    def pad_temperature_c(self) -> Optional[_FloatArray]:
         """Pad solid temperature [°C], shape (layers, ns, nz)."""
     @property
     def thermal(self) -> Optional[Dict[str, Any]]: ...
 
+@final
 class Solution:
     """A solved bearing: scalars with the unit in the name, arrays as read-only NumPy arrays."""
 
@@ -133,9 +154,9 @@ class Solution:
     @property
     def attitude_angle_deg(self) -> float: ...
     @property
-    def journal_position_m(self) -> FloatArray: ...
+    def journal_position_m(self) -> _FloatArray: ...
     @property
-    def load_n(self) -> FloatArray: ...
+    def load_n(self) -> _FloatArray: ...
     @property
     def load_magnitude_n(self) -> float: ...
     @property
@@ -171,23 +192,23 @@ class Solution:
     @property
     def excitation_rad_s(self) -> float: ...
     @property
-    def k_n_per_m(self) -> FloatArray:
+    def k_n_per_m(self) -> _FloatArray:
         """Reduced stiffness at the excitation frequency [N/m], shape (2, 2), rows/columns x, y."""
     @property
-    def c_ns_per_m(self) -> FloatArray:
+    def c_ns_per_m(self) -> _FloatArray:
         """Reduced damping [N·s/m], shape (2, 2)."""
     @property
-    def full_k(self) -> FloatArray: ...
+    def full_k(self) -> _FloatArray: ...
     @property
-    def full_c(self) -> FloatArray: ...
+    def full_c(self) -> _FloatArray: ...
     @property
-    def full_m(self) -> FloatArray: ...
+    def full_m(self) -> _FloatArray: ...
     @property
     def full_coordinates(self) -> List[str]: ...
     @property
     def full_units(self) -> List[str]: ...
     @property
-    def pads(self) -> List[Pad]: ...
+    def pads(self) -> Tuple[Pad, ...]: ...
     @property
     def report(self) -> Dict[str, Any]: ...
     @property
@@ -208,20 +229,21 @@ class Solution:
         """The JSON ``tiltpad solve --json`` writes."""
     def to_json(self) -> str: ...
 
+@final
 class Coefficients:
     """Reduced coefficients over frequency: ``frequency_rad_s`` (running speed of a speed band, or excitation
     frequency at the case's speed), ``k_n_per_m`` [N/m] and ``c_ns_per_m`` [N·s/m] of shape (n, 2, 2)."""
 
     @property
-    def frequency_rad_s(self) -> FloatArray: ...
+    def frequency_rad_s(self) -> _FloatArray: ...
     @property
-    def speed_rpm(self) -> FloatArray: ...
+    def speed_rpm(self) -> _FloatArray: ...
     @property
-    def excitation_rad_s(self) -> FloatArray: ...
+    def excitation_rad_s(self) -> _FloatArray: ...
     @property
-    def k_n_per_m(self) -> FloatArray: ...
+    def k_n_per_m(self) -> _FloatArray: ...
     @property
-    def c_ns_per_m(self) -> FloatArray: ...
+    def c_ns_per_m(self) -> _FloatArray: ...
     @property
     def meaning(self) -> str: ...
     @property
@@ -232,27 +254,28 @@ class Coefficients:
     def solves(self) -> int: ...
     def to_csv(self) -> str: ...
     def to_ross_toml(self, elements: Sequence[Tuple[int, str]], source: str = "tiltpad") -> str: ...
-    def to_dict(self) -> Dict[str, FloatArray]: ...
+    def to_dict(self) -> Dict[str, _FloatArray]: ...
     def __len__(self) -> int: ...
 
+@final
 class RotorResult:
     """A rotor analysis over speed (``tiltpad rotor``)."""
 
     @property
     def title(self) -> str: ...
     @property
-    def speeds_rpm(self) -> FloatArray: ...
+    def speeds_rpm(self) -> _FloatArray: ...
     @property
-    def frequencies_hz(self) -> FloatArray:
+    def frequencies_hz(self) -> _FloatArray:
         """Damped natural frequencies [Hz], shape (speeds, modes); NaN where a speed has fewer modes."""
     @property
-    def frequencies_rad_s(self) -> FloatArray: ...
+    def frequencies_rad_s(self) -> _FloatArray: ...
     @property
-    def log_decrements(self) -> FloatArray: ...
+    def log_decrements(self) -> _FloatArray: ...
     @property
     def whirl(self) -> List[List[str]]: ...
     @property
-    def min_log_dec(self) -> FloatArray: ...
+    def min_log_dec(self) -> _FloatArray: ...
     @property
     def onset_rpm(self) -> Optional[float]: ...
     @property
@@ -260,9 +283,9 @@ class RotorResult:
     @property
     def response_nodes(self) -> List[int]: ...
     @property
-    def response_pp_um(self) -> FloatArray: ...
+    def response_pp_um(self) -> _FloatArray: ...
     @property
-    def api617_limit_um(self) -> FloatArray: ...
+    def api617_limit_um(self) -> _FloatArray: ...
     @property
     def warnings(self) -> List[str]: ...
     @property
@@ -280,7 +303,7 @@ def solve(
     case: Case,
     *,
     fidelity: Optional[str] = None,
-    progress: Optional[Progress] = None,
+    progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> Solution:
     """Solves a case as ``tiltpad solve`` does (GIL released). ``fidelity``: "preview", "standard",
@@ -294,7 +317,7 @@ def coefficients(
     refine: bool = False,
     analysis_speeds_rpm: Optional[Sequence[float]] = None,
     fidelity: Optional[str] = None,
-    progress: Optional[Progress] = None,
+    progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> Coefficients:
     """Reduced coefficients over running speed [rpm] or excitation ratio ω/Ω (``tiltpad coefficients``)."""
@@ -307,10 +330,12 @@ def frf(
     points: int = 400,
     amplitude_v: Optional[float] = None,
     fidelity: Optional[str] = None,
+    progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> Dict[str, Any]:
-    """Frequency responses of the controllable bearing (``tiltpad frf``): ``frequency_hz`` and ``curves``
-    (name → unit, group, magnitude, phase_deg)."""
+    """Frequency responses of the controllable bearing (``tiltpad frf``): ``frequency_hz`` [Hz] and
+    ``curves`` (name → unit, group, magnitude, phase_deg [°]). ``progress`` after each solver stage and each
+    twentieth of the band."""
 
 def rotor(
     path: Union[str, os.PathLike[str]],
@@ -319,7 +344,7 @@ def rotor(
     coefficients: Optional[str] = None,
     shaft_modes: Optional[int] = None,
     modes: int = 6,
-    progress: Optional[Progress] = None,
+    progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> RotorResult:
     """Rotor–bearing analysis of a rotor file over ``speeds_rpm`` (``tiltpad rotor``)."""
@@ -329,7 +354,7 @@ def _sweep(
     axes: List[Tuple[str, List[Any]]],
     *,
     fidelity: Optional[str] = None,
-    progress: Optional[Progress] = None,
+    progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> Dict[str, Any]: ...
 def _batch(
@@ -339,6 +364,6 @@ def _batch(
     shard: Optional[Tuple[int, int]] = None,
     workers: int = 1,
     fidelity: Optional[str] = None,
-    progress: Optional[Progress] = None,
+    progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> Dict[str, Any]: ...

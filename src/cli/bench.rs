@@ -390,7 +390,9 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
            2-core machine that saves 2 % at standard and 7 % at reference fidelity (the rest of a solve is serial).\n\
          - THD: about 80 % of a BC1 solve is its equilibria; BC3 couples film and pad in one LU system (see docs/THERMAL.md)."
     );
-    // Measured by hand in a browser (not by this command): carried over as it is.
+    // Measured by python/benchmarks/overhead.py (against this command line) and by hand in a browser (not by
+    // this command): carried over as they are.
+    md.push_str(&kept_section(root, PYTHON_SECTION));
     md.push_str(&kept_section(root, WEB_SECTION));
     write_atomic(&root.join("docs").join("PERFORMANCE.md"), md.as_bytes())?;
     write_atomic(&root.join("docs").join("performance-error-vs-time.svg"), svg_plot(&rows).as_bytes())?;
@@ -405,6 +407,10 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     println!("wrote docs/PERFORMANCE.md, docs/performance-error-vs-time.svg, assets/fidelity.json");
     Ok(())
 }
+
+/// Heading of the Python package's cost against the command line (`python python/benchmarks/overhead.py
+/// --write-doc`).
+const PYTHON_SECTION: &str = "## Python package (`tiltpad.solve`)";
 
 /// Heading of the web build's frame times in docs/PERFORMANCE.md (measured in Chromium with `?probe`).
 const WEB_SECTION: &str = "## Web build: frame times";
