@@ -19,6 +19,10 @@ fn main() {
         }
     };
     if let Err(e) = tiltpad::cli::run(command) {
+        if e.downcast_ref::<tiltpad::cli::interrupt::Interrupted>().is_some() {
+            eprintln!("{e:#}");
+            std::process::exit(tiltpad::cli::interrupt::EXIT_STATUS);
+        }
         eprintln!("error: {e:#}");
         std::process::exit(1);
     }

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
+use crate::study::estimate::Estimate;
 use crate::study::{Designs, Runner, Shard};
 
 use super::rows::RowSink;
@@ -22,6 +23,8 @@ pub struct BatchArgs<'a> {
     pub jsonl: Option<PathBuf>,
     /// Most designs this run may solve.
     pub max_points: usize,
+    /// Most estimated hours of work.
+    pub max_hours: f64,
 }
 
 /// Runs the shard.
@@ -42,15 +45,28 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
     let firsts: Vec<(String, String)> =
         designs.keys.iter().filter_map(|k| designs.rows.iter().flatten().find(|(g, _)| g == k).cloned()).collect();
     runner.check_keys(&firsts).with_context(|| format!("in the header of {}", args.designs.display()))?;
+    let mine = &designs.rows[range.clone()];
+    let ends: Vec<&[(String, String)]> =
+        [Some(&[][..]), mine.first().map(Vec::as_slice), mine.last().map(Vec::as_slice)]
+            .into_iter()
+            .flatten()
+            .collect();
+    if let Some(cost) = super::inputs::costliest(&runner, &ends) {
+        super::inputs::check_work(&Estimate::points("batch", range.len(), cost), args.max_hours)?;
+    }
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
     let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "design", &designs.keys)?;
     let mut runner = runner;
     for note in runner.replaced(&designs.rows[range.clone()]) {
         eprintln!("note: {note}");
     }
-    let pb = progress(range.len());
+    let mut pb = progress(range.len());
     let mut failed = 0;
+    let mut done = 0;
     for i in range.clone() {
+        if super::interrupt::requested() {
+            break;
+        }
         // Every key of the table is a column, in header order, empty where the design keeps the base value.
         let given = &designs.rows[i];
         let (mut row, _) = runner.row(i, given);
@@ -64,10 +80,15 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
             pb.println(format!("design {i}: {}", row.error_text()));
         }
         sink.write(&row)?;
+        done += 1;
         pb.inc(1);
     }
     pb.finish_and_clear();
     sink.finish()?;
+    if done < range.len() {
+        let outputs: Vec<&Path> = [csv.as_deref(), args.jsonl.as_deref()].into_iter().flatten().collect();
+        return Err(super::interrupt::Interrupted::new(done, range.len(), "designs", &outputs).into());
+    }
     if !range.is_empty() && failed == range.len() {
         bail!("every design of this shard failed ({failed} of {failed}); the rows say why");
     }

@@ -13,12 +13,14 @@ use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 
-use crate::bearing::NoCancel;
+use crate::bearing::SolveError;
 use crate::io::coefficients::CoefficientTable;
 use crate::io::write_file;
-use crate::study::band::{self, BandParams, BandWarning};
-use crate::study::{Axis, Runner};
+use crate::study::band::{self, Band, BandParams, BandWarning, Sample};
+use crate::study::estimate::{point_cost, Estimate};
+use crate::study::{Axis, PointError, Runner};
 
+use super::interrupt::{self, Interrupt, Interrupted};
 use super::rows::announce;
 use super::sweep::progress;
 
@@ -61,6 +63,15 @@ pub struct CoefficientArgs {
     /// Most speeds or ratios (refused before the first solve beyond it).
     #[arg(long, value_name = "N", default_value_t = super::inputs::DEFAULT_MAX_POINTS)]
     pub max_points: usize,
+    /// Most estimated hours of work (solves × the work model's time per solve; refused before the first
+    /// solve beyond it).
+    #[arg(
+        long,
+        value_name = "H",
+        default_value_t = crate::study::estimate::DEFAULT_MAX_HOURS,
+        value_parser = super::inputs::parse_hours
+    )]
+    pub max_hours: f64,
 }
 
 /// The numbers of `--flag spec` (a range or a list), each finite and at least `min` (`what`: their meaning),
@@ -102,33 +113,55 @@ fn elements(nodes: &[usize], tags: &[String]) -> Result<Vec<(usize, String)>> {
     }
 }
 
-/// The band over `speeds` [rpm], refined for ROSS unless `refine` is off, with its warnings.
+/// The band over `speeds` [rpm], refined for ROSS unless `refine` is off, with its warnings. On Ctrl-C: the
+/// samples solved so far, in speed order, and the interruption (the caller writes them, then reports it).
 fn speed_table(
     runner: &mut Runner,
     speeds: &[f64],
     refine: bool,
     analysis_rpm: Option<[f64; 2]>,
-) -> Result<(CoefficientTable, Vec<BandWarning>)> {
+) -> Result<(CoefficientTable, Vec<BandWarning>, Option<Interrupted>)> {
     let ratio = runner.case(&[])?.operating.excitation_ratio;
     let params = BandParams { refine, analysis_rpm, ..BandParams::default() };
-    let pb = progress(speeds.len());
+    let mut pb = progress(speeds.len());
     let mut solves = 0;
-    let band = band::sample(speeds, &params, &mut |rpm| {
+    let mut solved: Vec<Sample> = Vec::new();
+    let result = band::sample(speeds, &params, &mut |rpm| {
+        if interrupt::requested() {
+            return Err(PointError::Solve(SolveError::Cancelled));
+        }
         solves += 1;
         if solves > speeds.len() {
             pb.inc_length(1);
         }
         pb.set_message(format!("{rpm:.0} rpm"));
-        let s = band::solve_point(runner, rpm, &NoCancel);
+        let s = band::solve_point(runner, rpm, &Interrupt);
+        if let Ok(sample) = &s {
+            solved.push(sample.clone());
+        }
         pb.inc(1);
         s
-    })?;
+    });
     pb.finish_and_clear();
-    Ok((CoefficientTable::of_band(&band, ratio), band.warnings))
+    match result {
+        Ok(band) => Ok((CoefficientTable::of_band(&band, ratio), band.warnings, None)),
+        Err(PointError::Solve(SolveError::Cancelled)) => {
+            solved.sort_by(|a, b| a.speed_rpm.total_cmp(&b.speed_rpm));
+            let done = solved.len();
+            let band = Band { samples: solved, warnings: Vec::new(), solves };
+            let stop = Interrupted::new(done, speeds.len().max(done), "speeds", &[]);
+            Ok((CoefficientTable::of_band(&band, ratio), Vec::new(), Some(stop)))
+        }
+        Err(e) => Err(e.into()),
+    }
 }
 
 fn excitation_table(runner: &mut Runner, ratios: &[f64]) -> Result<CoefficientTable> {
-    Ok(CoefficientTable::of_excitation(&runner.solve(&[])?, ratios))
+    match runner.solve_with(&[], &Interrupt) {
+        Ok(s) => Ok(CoefficientTable::of_excitation(&s, ratios)),
+        Err(PointError::Solve(SolveError::Cancelled)) => Err(Interrupted::new(0, 1, "solves", &[]).into()),
+        Err(e) => Err(e.into()),
+    }
 }
 
 /// Computes and writes the tables.
@@ -141,13 +174,15 @@ pub fn run(args: &CoefficientArgs) -> Result<()> {
     let mut runner = band::cold_runner(super::inputs::read_text(&args.case, "case file")?, args.set.clone());
     // Refinement serves ROSS's spline; a CSV alone keeps exactly the requested speeds.
     let refine = args.ross.is_some() && !args.no_refine;
-    let (table, warnings) = match (&args.speed_rpm, &args.excitation_ratio) {
-        (Some(spec), None) => speed_table(
-            &mut runner,
-            &numbers("--speed-rpm", spec, 0.0, "speeds [rpm]", args.max_points)?,
-            refine,
-            analysis,
-        )?,
+    let (table, warnings, stop) = match (&args.speed_rpm, &args.excitation_ratio) {
+        (Some(spec), None) => {
+            let speeds = numbers("--speed-rpm", spec, 0.0, "speeds [rpm]", args.max_points)?;
+            // Refinement adds samples up to the band's budget.
+            let solves = if refine { speeds.len().max(BandParams::default().max_samples) } else { speeds.len() };
+            let cost = point_cost(&runner.case(&[])?);
+            super::inputs::check_work(&Estimate::points("coefficients", solves, cost), args.max_hours)?;
+            speed_table(&mut runner, &speeds, refine, analysis)?
+        }
         (None, Some(spec)) => {
             if analysis.is_some() {
                 bail!("--analysis-rpm checks a speed band: give it with --speed-rpm");
@@ -158,6 +193,7 @@ pub fn run(args: &CoefficientArgs) -> Result<()> {
                     &numbers("--excitation-ratio", spec, 0.0, "excitation ratios ω/Ω", args.max_points)?,
                 )?,
                 Vec::new(),
+                None,
             )
         }
         (Some(_), Some(_)) => bail!("give --speed-rpm (a speed sweep) or --excitation-ratio (one speed), not both"),
@@ -168,6 +204,9 @@ pub fn run(args: &CoefficientArgs) -> Result<()> {
     };
     for w in &warnings {
         eprintln!("warning: {w}");
+    }
+    if let (Some(stop), true) = (&stop, table.frequency_rad_s.is_empty()) {
+        bail!("{stop}");
     }
     if table.frequency_rad_s.is_empty() {
         bail!("no point solved (each point's reason is printed above); nothing to write");
@@ -182,6 +221,13 @@ pub fn run(args: &CoefficientArgs) -> Result<()> {
     if let Some(p) = &args.csv {
         write_file(p, table.csv().as_bytes())?;
         announce(p);
+    }
+    if let Some(stop) = stop {
+        let stdout = std::path::Path::new("-");
+        let outputs: Vec<&std::path::Path> =
+            [args.ross.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
+        let outputs = if outputs.is_empty() { vec![stdout] } else { outputs };
+        return Err(Interrupted::new(stop.done, stop.of, stop.what, &outputs).into());
     }
     Ok(())
 }

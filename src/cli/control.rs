@@ -9,9 +9,10 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::control::analysis::{run as run_control, ControlParams, ControlResult, GainOnset};
+use crate::control::analysis::{ControlAnalysis, ControlParams, ControlResult, GainOnset};
 use crate::model::control::{Control, PlantInfo};
 use crate::model::rotor::{parse_rotor_file, Rotor};
+use crate::study::estimate::Estimate;
 use crate::units::{BAR, RPM, UM};
 
 use super::rotor::{parse_speeds, read_rotor};
@@ -27,6 +28,8 @@ pub struct ControlArgs<'a> {
     pub speeds: &'a str,
     /// Most speeds (`--max-points`).
     pub max_points: usize,
+    /// Most estimated hours of work (`--max-hours`).
+    pub max_hours: f64,
     pub gain: Option<f64>,
     pub gain_sweep: Option<&'a str>,
     pub json: Option<PathBuf>,
@@ -88,8 +91,34 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     if let Some(spec) = args.gain_sweep {
         params.gains = parse_gains(spec)?;
     }
-    let result =
-        run_control(&rotor, &control, params).with_context(|| format!("analysing {}", args.rotor.display()))?;
+    // The onsets open, closed and at each gain of the sweep bisect with bearing solves of their own.
+    let probes = (2 + params.gains.len()).saturating_mul(super::rotor::ONSET_PROBES);
+    let estimate = Estimate::rotor("control", &rotor, params.speeds_rad_s.len(), probes);
+    super::inputs::check_work(&estimate, args.max_hours)?;
+    let context = || format!("analysing {}", args.rotor.display());
+    // One bearing solve per bearing and speed: a bar on standard error shows them go by; Ctrl-C stops after
+    // the speed being solved and writes the speeds done.
+    let of = params.speeds_rad_s.len();
+    let mut pb = super::sweep::progress(of);
+    pb.set_message("shaft and controller");
+    let mut analysis = ControlAnalysis::new(&rotor, &control, params).with_context(context)?;
+    pb.set_message("speeds");
+    let mut done = 0;
+    while !super::interrupt::requested() {
+        let finished = analysis.step().with_context(context)?;
+        done = (done + 1).min(of);
+        pb.set_position(done as u64);
+        if finished {
+            break;
+        }
+    }
+    pb.set_message("onsets");
+    let result = analysis.finish().with_context(context)?;
+    pb.finish_and_clear();
+    let done = result.speeds.len();
+    if done == 0 {
+        return Err(super::interrupt::Interrupted::new(0, of, "speeds", &[]).into());
+    }
     let text = summary(&result);
     if is_stdout(args.json.as_ref()) || is_stdout(args.csv.as_ref()) {
         eprint!("{text}");
@@ -105,6 +134,11 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     if let Some(out) = &args.csv {
         write_atomic(out, csv_text(&result)?.as_bytes())?;
         announce(out);
+    }
+    if done < of {
+        let outputs: Vec<&Path> = [args.json.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
+        let outputs = if outputs.is_empty() { vec![Path::new("-")] } else { outputs };
+        return Err(super::interrupt::Interrupted::new(done, of, "speeds", &outputs).into());
     }
     Ok(())
 }

@@ -7,7 +7,7 @@ use anyhow::{bail, Context, Result};
 use serde_json::json;
 
 use crate::bearing::frf::model::band;
-use crate::bearing::{NoCancel, Stages};
+use crate::bearing::Stages;
 use crate::io::write_file;
 use crate::model::Case;
 use crate::scene::frf::FrfCurves;
@@ -48,7 +48,15 @@ pub fn run(args: &FrfArgs<'_>) -> Result<()> {
         bail!("--points {}: allowed 2 to 100000", args.points);
     }
     let (_, case) = read_case(args.case, args.set)?;
-    let model = Stages::new().frf(&case, &NoCancel).with_context(|| format!("solving {}", args.case.display()))?;
+    let cost = crate::study::estimate::point_cost(&case);
+    super::inputs::check_work(&crate::study::estimate::Estimate::points("frf", 1, cost), f64::INFINITY)?;
+    let model = match Stages::new().frf(&case, &super::interrupt::Interrupt) {
+        Ok(m) => m,
+        Err(crate::bearing::SolveError::Cancelled) if super::interrupt::requested() => {
+            return Err(super::interrupt::Interrupted::new(0, 1, "solves", &[]).into())
+        }
+        Err(e) => return Err(anyhow::Error::new(e).context(format!("solving {}", args.case.display()))),
+    };
     let freqs = band(args.from_hz, args.to_hz, args.points);
     let sweep = model.sweep(&case, &freqs)?;
     let h = case.hydraulics.as_ref().context("no [hydraulics]")?;

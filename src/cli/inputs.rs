@@ -104,6 +104,44 @@ pub fn check_outputs(inputs: &[(&str, &Path)], outputs: &[(&str, Option<&Path>)]
     Ok(())
 }
 
+/// `--max-hours`: a finite positive number of hours.
+///
+/// # Errors
+/// Anything else, with the value.
+pub fn parse_hours(s: &str) -> std::result::Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|e| format!("`{s}` is not a number: {e}"))?;
+    if !(v.is_finite() && v > 0.0) {
+        return Err(format!("{v}: the bound on the estimated work must be a finite positive number of hours"));
+    }
+    Ok(v)
+}
+
+/// Refuses a command whose estimated work exceeds `max_hours` (or whose memory exceeds the cap) before its
+/// first solve; a long one (a minute or more) is announced with its estimate on standard error.
+///
+/// # Errors
+/// [`crate::study::estimate::TooMuchWork`], with the estimate and the setting that raises the bound.
+pub fn check_work(estimate: &crate::study::estimate::Estimate, max_hours: f64) -> Result<()> {
+    estimate.check(max_hours)?;
+    if estimate.seconds >= 60.0 {
+        eprintln!("estimate: {estimate}");
+    }
+    Ok(())
+}
+
+/// The costliest point of a study among `points` (the base case and a few of its points, whichever
+/// resolve), for its estimate.
+pub fn costliest(
+    runner: &crate::study::Runner,
+    points: &[&[(String, String)]],
+) -> Option<crate::study::estimate::PointCost> {
+    points
+        .iter()
+        .filter_map(|p| runner.case(p).ok())
+        .map(|c| crate::study::estimate::point_cost(&c))
+        .max_by(|a, b| a.seconds.total_cmp(&b.seconds))
+}
+
 /// Refuses `points` beyond `max` (the command's `--max-points`), before the first solve.
 ///
 /// # Errors

@@ -20,7 +20,9 @@ pub mod control;
 mod convergence_map;
 pub mod frf;
 mod inputs;
+pub mod interrupt;
 pub mod modes;
+mod progress;
 pub mod rotor;
 mod rotor_map;
 mod rows;
@@ -33,8 +35,9 @@ use std::path::{Path, PathBuf};
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 
-use crate::bearing::solve_case;
+use crate::bearing::{Request, SolveError, Stages};
 use crate::model::{load_case, Case, CaseFile};
+use crate::study::estimate::{point_cost, Estimate, DEFAULT_MAX_HOURS};
 
 pub use crate::bearing::solution::json::solution_json;
 pub use summary::summary_text;
@@ -103,6 +106,10 @@ pub enum Command {
         /// Most points the sweep may have (refused before the first solve beyond it).
         #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
         max_points: usize,
+        /// Most estimated hours of work (points × the work model's time per point; refused before the first
+        /// solve beyond it).
+        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
+        max_hours: f64,
     },
     /// Solve every design of a table (one design per row, any case keys as columns) on a base case.
     Batch {
@@ -126,6 +133,10 @@ pub enum Command {
         /// Most designs this run may solve (refused before the first solve beyond it).
         #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
         max_points: usize,
+        /// Most estimated hours of work (designs × the work model's time per design; refused before the
+        /// first solve beyond it).
+        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
+        max_hours: f64,
     },
     /// Reduced stiffness and damping over running speed or excitation frequency, for ROSS and as CSV.
     Coefficients(coefficients::CoefficientArgs),
@@ -160,6 +171,10 @@ pub enum Command {
         /// Most speeds (refused before the first solve beyond it).
         #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
         max_points: usize,
+        /// Most estimated hours of work (speeds × bearing solves by the work model; refused before the first
+        /// solve beyond it).
+        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
+        max_hours: f64,
         /// Override the rotor's bearing coefficients: `full` or `reduced`.
         #[arg(long, value_parser = ["full", "reduced"])]
         coefficients: Option<String>,
@@ -190,6 +205,10 @@ pub enum Command {
         /// Most speeds (refused before the first solve beyond it).
         #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
         max_points: usize,
+        /// Most estimated hours of work (speeds × bearing solves by the work model; refused before the first
+        /// solve beyond it).
+        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
+        max_hours: f64,
         /// Override `control.gain` (0 opens the loop, −1 flips its sign).
         #[arg(long, allow_hyphen_values = true)]
         gain: Option<f64>,
@@ -328,7 +347,14 @@ fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathB
         &[("--json", json.map(PathBuf::as_path)), ("--vtu", vtu.map(PathBuf::as_path))],
     )?;
     let (_, c) = read_case(case, set)?;
-    let sol = solve_case(&c).with_context(|| format!("solving {}", case.display()))?;
+    inputs::check_work(&Estimate::points("solve", 1, point_cost(&c)), f64::INFINITY)?;
+    let sol = match Stages::new().solution(&Request::solution(c), &interrupt::Interrupt) {
+        Ok(s) => std::sync::Arc::unwrap_or_clone(s),
+        Err(SolveError::Cancelled) if interrupt::requested() => {
+            return Err(interrupt::Interrupted::new(0, 1, "solves", &[]).into())
+        }
+        Err(e) => return Err(anyhow::Error::new(e).context(format!("solving {}", case.display()))),
+    };
     // Standard output belongs to the JSON when it goes there.
     if is_stdout(json) {
         eprint!("{}", summary_text(&sol));
@@ -354,9 +380,10 @@ fn solve(case: &Path, set: &[String], json: Option<&PathBuf>, vtu: Option<&PathB
 /// # Errors
 /// Case, solve and I/O errors (printed by `main` on standard error).
 pub fn run(command: Command) -> Result<()> {
+    interrupt::install();
     match command {
         Command::Solve { case, set, json, vtu } => solve(&case, &set, json.as_ref(), vtu.as_ref()),
-        Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu, max_points } => {
+        Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu, max_points, max_hours } => {
             let mut axes = Vec::new();
             if let Some(key) = param {
                 let (Some(from), Some(to)) = (from, to) else { anyhow::bail!("--param needs --from and --to") };
@@ -373,15 +400,24 @@ pub fn run(command: Command) -> Result<()> {
             }
             let outputs = [("--csv", csv.as_deref()), ("--jsonl", jsonl.as_deref()), ("--vtu", vtu.as_deref())];
             inputs::check_outputs(&[("case file", &case)], &outputs)?;
-            sweep::run(sweep::SweepArgs { case: &case, axes, set: &set, csv, jsonl, vtu, max_points })
+            sweep::run(sweep::SweepArgs { case: &case, axes, set: &set, csv, jsonl, vtu, max_points, max_hours })
         }
-        Command::Batch { designs, case, set, shard, csv, jsonl, max_points } => {
+        Command::Batch { designs, case, set, shard, csv, jsonl, max_points, max_hours } => {
             let shard = shard.as_deref().map_or(Ok(crate::study::Shard::ALL), crate::study::Shard::parse)?;
             inputs::check_outputs(
                 &[("designs table", &designs), ("case file", &case)],
                 &[("--csv", csv.as_deref()), ("--jsonl", jsonl.as_deref())],
             )?;
-            batch::run(&batch::BatchArgs { designs: &designs, case: &case, set: &set, shard, csv, jsonl, max_points })
+            batch::run(&batch::BatchArgs {
+                designs: &designs,
+                case: &case,
+                set: &set,
+                shard,
+                csv,
+                jsonl,
+                max_points,
+                max_hours,
+            })
         }
         Command::Coefficients(args) => {
             inputs::check_outputs(
@@ -425,7 +461,7 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
-        Command::Rotor { rotor, speeds, max_points, coefficients, shaft_modes, critical_map, json, csv } => {
+        Command::Rotor { rotor, speeds, max_points, max_hours, coefficients, shaft_modes, critical_map, json, csv } => {
             inputs::check_outputs(
                 &[("rotor file", &rotor)],
                 &[("--json", json.as_deref()), ("--csv", csv.as_deref())],
@@ -434,6 +470,7 @@ pub fn run(command: Command) -> Result<()> {
                 rotor: &rotor,
                 speeds: &speeds,
                 max_points,
+                max_hours,
                 coefficients: coefficients.map(|c| {
                     if c == "full" {
                         crate::model::rotor::CoefficientModel::Full
@@ -451,11 +488,12 @@ pub fn run(command: Command) -> Result<()> {
                 rotor::run(&args)
             }
         }
-        Command::Control { rotor, speeds, max_points, gain, gain_sweep, json, csv } => {
+        Command::Control { rotor, speeds, max_points, max_hours, gain, gain_sweep, json, csv } => {
             control::run(&control::ControlArgs {
                 rotor: &rotor,
                 speeds: &speeds,
                 max_points,
+                max_hours,
                 gain,
                 gain_sweep: gain_sweep.as_deref(),
                 json,

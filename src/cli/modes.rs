@@ -152,6 +152,8 @@ fn csv(rows: &[ModeRow], table: &[ModeTableRow]) -> String {
 /// Invalid case, elastic-model failure, or an output that cannot be written.
 pub fn run(args: &ModeArgs<'_>) -> Result<()> {
     let (_, case) = read_case(args.case, args.set)?;
+    let cost = crate::study::estimate::point_cost(&case);
+    super::inputs::check_work(&crate::study::estimate::Estimate::points("modes", 1, cost), f64::INFINITY)?;
     let count = args.count;
     let rows = pad_mode_rows(&case, count).with_context(|| format!("pad modes of {}", args.case.display()))?;
     let first = case.bearing.pads.iter().position(|p| p.kind == crate::model::PadKind::Tilting && p.thickness_m > 0.0);

@@ -13,6 +13,7 @@ use anyhow::{bail, Context, Result};
 use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
 use crate::rotor::analysis::{Analysis, AnalysisParams, AnalysisResult, Step};
 use crate::rotor::eigen::Whirl;
+use crate::study::estimate::Estimate;
 
 use super::rows::announce;
 use super::{is_stdout, write_atomic};
@@ -22,6 +23,9 @@ const MAX_SPEED_RPM: f64 = match crate::key!("operating.speed_rpm").allowed {
     crate::model::schema::Allowed::Number(range) => range.hi,
     _ => panic!("operating.speed_rpm: a number"),
 };
+
+/// Speeds the onset bisection adds, at most, in the estimate (a relative bracket of 10⁻³ takes ten halvings).
+pub(super) const ONSET_PROBES: usize = 12;
 
 /// Modes written per speed in the CSV and the summary.
 const MODES: usize = 6;
@@ -67,6 +71,8 @@ pub struct RotorArgs<'a> {
     pub speeds: &'a str,
     /// Most speeds.
     pub max_points: usize,
+    /// Most estimated hours of work.
+    pub max_hours: f64,
     pub coefficients: Option<CoefficientModel>,
     /// Shaft modes per plane (0: full shaft), overriding the file's `shaft_modes`.
     pub shaft_modes: Option<usize>,
@@ -87,18 +93,42 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
         rotor.shaft_modes = m;
     }
     let speeds = parse_speeds(args.speeds, args.max_points)?;
+    super::inputs::check_work(&Estimate::rotor("rotor", &rotor, speeds.len(), ONSET_PROBES), args.max_hours)?;
     let context = || format!("analysing {}", args.rotor.display());
     // One bearing solve and one eigen-solution per speed: a bar on standard error shows them go by.
-    let pb = super::sweep::progress(speeds.len());
+    let mut pb = super::sweep::progress(speeds.len());
     pb.set_message("shaft model");
     let mut analysis = Analysis::new(&rotor, AnalysisParams::new(speeds)).with_context(context)?;
+    let of = analysis.speeds_to_do();
     while let Step::More { done, .. } = analysis.step().with_context(context)? {
         pb.set_position(done as u64);
+        if super::interrupt::requested() {
+            analysis.stop();
+            break;
+        }
     }
     pb.set_message("onset and critical speeds");
     let result = analysis.finish().with_context(context)?;
     pb.finish_and_clear();
-    emit(args, &summary(&rotor, &result), &result, || csv_text(&result))
+    let done = result.speeds.len();
+    if done == 0 {
+        return Err(super::interrupt::Interrupted::new(0, of, "speeds", &[]).into());
+    }
+    emit(args, &summary(&rotor, &result), &result, || csv_text(&result))?;
+    stopped(done, of, args)
+}
+
+/// The interruption, after the outputs of the speeds done were written (`Ok` when every speed was done).
+///
+/// # Errors
+/// [`super::interrupt::Interrupted`] when fewer than `of` speeds were done.
+fn stopped(done: usize, of: usize, args: &RotorArgs<'_>) -> Result<()> {
+    if done < of {
+        let outputs: Vec<&Path> = [args.json.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
+        let outputs = if outputs.is_empty() { vec![Path::new("-")] } else { outputs };
+        return Err(super::interrupt::Interrupted::new(done, of, "speeds", &outputs).into());
+    }
+    Ok(())
 }
 
 /// Prints the summary (to standard error when an output goes to standard output) and writes the JSON and

@@ -24,6 +24,8 @@ const MODES: usize = 4;
 pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let rotor = read_rotor(args.rotor)?;
     let speeds = parse_speeds(args.speeds, args.max_points)?;
+    let estimate = crate::study::estimate::Estimate::rotor("rotor --critical-map", &rotor, speeds.len(), 0);
+    super::inputs::check_work(&estimate, args.max_hours)?;
     let map = critical_speed_map(&rotor, &speeds, POINTS, MODES)
         .with_context(|| format!("critical-speed map of {}", args.rotor.display()))?;
     emit(args, &summary(&map), &map, || csv_text(&map))

@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
-use indicatif::{ProgressBar, ProgressStyle};
 
+use crate::study::estimate::Estimate;
 use crate::study::{grid, Axis, Runner};
 
 use super::rows::RowSink;
@@ -21,15 +21,14 @@ pub struct SweepArgs<'a> {
     pub vtu: Option<PathBuf>,
     /// Most points the grid may have.
     pub max_points: usize,
+    /// Most estimated hours of work.
+    pub max_hours: f64,
 }
 
-pub fn progress(len: usize) -> ProgressBar {
-    let pb = ProgressBar::new(len as u64);
-    pb.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed_precise} eta {eta} {msg}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
-    pb
+/// The progress display of a command over `len` points.
+#[must_use]
+pub fn progress(len: usize) -> super::progress::Progress {
+    super::progress::Progress::new(len)
 }
 
 /// Two spellings of one case key (`bearing.pad.2.offset`, `bearing.pad[2].offset`).
@@ -64,6 +63,14 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     let mut runner = Runner::new(text, args.set.to_vec(), true);
     let firsts: Vec<(String, String)> = args.axes.iter().map(|a| (a.key.clone(), a.values[0].clone())).collect();
     runner.check_keys(&firsts).context("a swept key (--vary or --param)")?;
+    let ends: Vec<&[(String, String)]> =
+        [Some(&[][..]), points.first().map(Vec::as_slice), points.last().map(Vec::as_slice)]
+            .into_iter()
+            .flatten()
+            .collect();
+    if let Some(cost) = super::inputs::costliest(&runner, &ends) {
+        super::inputs::check_work(&Estimate::points("sweep", points.len(), cost), args.max_hours)?;
+    }
     let csv = args.csv.clone().or_else(|| args.jsonl.is_none().then(|| PathBuf::from("-")));
     let mut sink = RowSink::open(csv.as_deref(), args.jsonl.as_deref(), "point", &keys)?;
     let mut vtu = args.vtu.as_deref().map(VtuSeries::new);
@@ -72,9 +79,13 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     for note in runner.replaced(&points) {
         eprintln!("note: {note}");
     }
-    let pb = progress(points.len());
+    let mut pb = progress(points.len());
     let mut failed = 0;
+    let mut done = 0;
     for (i, point) in points.iter().enumerate() {
+        if super::interrupt::requested() {
+            break;
+        }
         pb.set_message(point.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>().join(", "));
         let (row, solution) = runner.row(i, point);
         if row.result.is_err() {
@@ -87,12 +98,18 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
             let step = single.and_then(|a| a.values[i].parse::<f64>().ok()).unwrap_or(i as f64);
             series.add(i, step, s)?;
         }
+        done += 1;
         pb.inc(1);
     }
     pb.finish_and_clear();
     sink.finish()?;
     if let Some(series) = vtu {
         series.finish()?;
+    }
+    if done < points.len() {
+        let outputs: Vec<&Path> =
+            [csv.as_deref(), args.jsonl.as_deref(), args.vtu.as_deref()].into_iter().flatten().collect();
+        return Err(super::interrupt::Interrupted::new(done, points.len(), "points", &outputs).into());
     }
     if failed == points.len() {
         bail!("every point of the sweep failed ({failed} of {failed}); the rows say why");

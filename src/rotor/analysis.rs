@@ -168,12 +168,34 @@ impl Analysis {
         Ok(if self.done.len() == of { Step::Finished } else { Step::More { done: self.done.len(), of } })
     }
 
+    /// Speeds the sweep was asked for (done or not).
+    #[must_use]
+    pub fn speeds_to_do(&self) -> usize {
+        self.params.speeds_rad_s.len()
+    }
+
+    /// Stops the sweep at the speeds done so far: [`Analysis::finish`] then covers those only, skips the onset
+    /// bisection (no more bearing solves) and warns ([`RotorWarning::Stopped`]).
+    pub fn stop(&mut self) {
+        let of = self.params.speeds_rad_s.len();
+        let done = self.done.len();
+        if done < of {
+            self.params.speeds_rad_s.truncate(done);
+            self.report.warnings.push(RotorWarning::Stopped { done, of });
+        }
+    }
+
+    fn stopped(&self) -> bool {
+        self.report.warnings.iter().any(|w| matches!(w, RotorWarning::Stopped { .. }))
+    }
+
     /// Finishes: onset bisection, critical speeds, report.
     ///
     /// # Errors
     /// Bearing solves and eigen-solutions of the onset bisection.
     pub fn finish(mut self) -> Result<AnalysisResult, RotorError> {
         let sweep: Vec<SpeedPoint> = self.done.iter().map(|r| r.point.clone()).collect();
+        let stopped = self.stopped();
         let nodes = self.bearings.nodes.clone();
         let bearings = &mut self.bearings;
         let mut bearing_seconds = 0.0;
@@ -184,7 +206,11 @@ impl Analysis {
             c
         };
         let t = Instant::now();
-        let onset = onset(&self.shaft, &nodes, &mut provider, &sweep, self.params.onset_tol)?;
+        let onset = if stopped || sweep.is_empty() {
+            None
+        } else {
+            onset(&self.shaft, &nodes, &mut provider, &sweep, self.params.onset_tol)?
+        };
         self.report.bearing_seconds += bearing_seconds;
         self.report.eigen_seconds += t.elapsed().as_secs_f64() - bearing_seconds;
         if let Some(o) = onset {

@@ -49,6 +49,9 @@ pub enum RotorWarning {
     UnstableFromFirstSpeed,
     /// The shaft could not be reduced: the full shaft model is used.
     FullShaftModel { attached: Vec<usize> },
+    /// The sweep was stopped (Ctrl-C) after `done` of `of` speeds: results cover those speeds only, and the
+    /// onset was not bisected.
+    Stopped { done: usize, of: usize },
 }
 
 impl std::fmt::Display for RotorWarning {
@@ -60,6 +63,11 @@ impl std::fmt::Display for RotorWarning {
             Self::FullShaftModel { attached } => {
                 write!(f, "{}: the full shaft model is used", RotorError::Reduction { attached: attached.clone() })
             }
+            Self::Stopped { done, of } => write!(
+                f,
+                "stopped after {done} of {of} speeds: the results cover those speeds only and the onset was not \
+                 bisected"
+            ),
         }
     }
 }

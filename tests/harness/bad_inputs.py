@@ -362,6 +362,92 @@ class Harness:
         self.run("rotor critical map huge top", ["rotor", rotor, "--critical-map", "--speeds", "1000:1e9:3"],
                  expect="error")
 
+    def control_runs(self):
+        active = "{C}/rotors/compressor-rotor-active.toml"
+        base = (self.cases / "rotors/compressor-rotor-active.toml").read_text()
+        for name, a in {
+            "speeds huge top": ["--speeds", "1000:1e9:3"],
+            "speeds max count": ["--speeds", "1000:13000:10001"],
+            "speeds reversed": ["--speeds", "2000:1000:3"],
+            "speeds nan": ["--speeds", "nan:1000:3"],
+            "gain nan": ["--speeds", "7000:8000:2", "--gain", "nan"],
+            "gain inf": ["--speeds", "7000:8000:2", "--gain=inf"],
+            "gain sweep one step": ["--speeds", "7000:8000:2", "--gain-sweep", "0:1:1"],
+            "gain sweep 1e6 steps": ["--speeds", "7000:8000:2", "--gain-sweep", "0:1:1000000"],
+            "gain sweep garbage": ["--speeds", "7000:8000:2", "--gain-sweep", "a,b"],
+            "gain sweep nan": ["--speeds", "7000:8000:2", "--gain-sweep", "1,nan"],
+            "max hours 0": ["--speeds", "7000:8000:2", "--max-hours", "0"],
+            "max hours nan": ["--speeds", "7000:8000:2", "--max-hours", "nan"],
+            "tiny work bound": ["--speeds", "1000:13000:50", "--max-hours", "0.00001"],
+        }.items():
+            self.run(f"control {name}", ["control", active] + a, expect="error")
+        self.run("control without [control]", ["control", "{C}/rotors/compressor-rotor.toml", "--speeds",
+                                               "7000:8000:2"], expect="error")
+        self.run("control json onto rotor", ["control", active, "--speeds", "7000:8000:2", "--json", active],
+                 expect="error", inputs=[str(self.cases / "rotors/compressor-rotor-active.toml")])
+        self.run("control valid", ["control", active, "--speeds", "6000:9000:3", "--csv", "c.csv"], expect="ok")
+        for key, vals in {"gain": ["nan", "1e300", '"x"'], "sensor_node": ["-1", "100000"],
+                          "actuator_bearing": ["7", "-1"]}.items():
+            for v in vals:
+                text = re.sub(rf"(?m)^{key}\s*=.*$", f"{key} = {v}", base) if re.search(rf"(?m)^{key}\s*=", base) \
+                    else base.replace("[control]", f"[control]\n{key} = {v}", 1)
+                path = self.cases / "rotors" / f"active-{key}-{abs(hash(v))}.toml"
+                path.write_text(text)
+                self.run(f"control file {key}={v}", ["control", str(path), "--speeds", "7000:8000:2"], expect="any")
+
+    def ross_runs(self):
+        c = "{C}/compressor-bearing.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        for name, a in {
+            "ross nodes and tags mismatch": ["--node", "3,12,20", "--tag", "a,b"],
+            "ross node negative": ["--node=-1"],
+            "ross node garbage": ["--node", "x"],
+            "ross analysis reversed": ["--speed-rpm", "6000:9000:3", "--analysis-rpm", "9000:6000"],
+            "ross analysis nan": ["--speed-rpm", "6000:9000:3", "--analysis-rpm", "nan:6000"],
+            "ross onto case": ["--speed-rpm", "6000:9000:3", "--ross", c],
+            "ross and csv same": ["--speed-rpm", "6000:9000:3", "--csv", "x", "--ross", "x"],
+            "ross tiny work bound": ["--speed-rpm", "6000:9000:30", "--max-hours", "0.000001"],
+        }.items():
+            self.run(f"coefficients {name}", ["coefficients", c] + a + (["--ross", "r.toml"] if "--ross" not in a
+                                                                      else []) + pv,
+                     expect="error", inputs=[str(self.cases / "compressor-bearing.toml")])
+        self.run("coefficients ross two nodes", ["coefficients", c, "--speed-rpm", "6000:9000:3", "--node", "3,12",
+                                                 "--ross", "r.toml"] + pv, expect="ok")
+
+    def physics_options(self):
+        """The film options added since the harness was first written, alone and together, at their extremes."""
+        c = "{C}/compressor-bearing.toml"
+        pv = ["--set", 'mesh.fidelity="preview"']
+        jfo = ["--set", 'physics.cavitation="jfo"']
+        turb = ["--set", 'physics.turbulence="on"']
+        combos = {
+            "jfo": jfo,
+            "jfo thd": jfo + ["--set", 'thermal.model="thd"'],
+            "jfo starved": jfo + ["--set", "operating.supply_flow_l_per_min=1"],
+            "jfo starved tiny": jfo + ["--set", "operating.supply_flow_l_per_min=1e-6"],
+            "reynolds starved": ["--set", "operating.supply_flow_l_per_min=1"],
+            "turbulent": turb,
+            "turbulent jfo": turb + jfo,
+            "turbulent thd": turb + ["--set", 'thermal.model="thd"'],
+            "transition reversed": ["--set", 'physics.turbulence="auto"', "--set",
+                                    "physics.transition_reynolds_start=2000", "--set",
+                                    "physics.transition_reynolds_end=1000"],
+            "transition nan": ["--set", 'physics.turbulence="auto"', "--set", "physics.transition_reynolds_start=nan"],
+            "gumbel speed 0": ["--set", 'physics.cavitation="gumbel"', "--set", "operating.speed_rpm=0"],
+            "jfo speed 0": jfo + ["--set", "operating.speed_rpm=0"],
+            "budget 100 film solves": ["--set", "physics.max_film_solves_per_pad=100"],
+            "prescribed eccentricity 0.99": ["--set", "operating.eccentricity_ratio=0.99"],
+            "prescribed eccentricity 1.5": ["--set", "operating.eccentricity_ratio=1.5"],
+        }
+        for name, a in combos.items():
+            self.run(f"solve {name}", ["solve", c] + a + pv + ["--json", "r.json"], expect="any")
+            self.run(f"sweep {name}", ["sweep", c, "--vary", "operating.load_n=1000:20000:3"] + a + pv, expect="any")
+        active = "{C}/compressor-bearing-active.toml"
+        self.run("frf jfo", ["frf", active, "--points", "20"] + jfo + pv, expect="any")
+        self.run("frf turbulent", ["frf", active, "--points", "20"] + turb + pv, expect="any")
+        self.run("coefficients jfo turbulent ross", ["coefficients", c, "--speed-rpm", "6000:9000:3", "--node", "3,12",
+                                                     "--ross", "r.toml"] + jfo + turb + pv, expect="any")
+
     def misc(self):
         self.run("schema", ["schema"], expect="ok")
         self.run("unknown command", ["frobnicate"], expect="error")
@@ -406,6 +492,9 @@ def main():
         h.mode_runs()
         h.frf_runs()
         h.rotor_runs()
+        h.control_runs()
+        h.ross_runs()
+        h.physics_options()
         h.misc()
         h.solve_extremes()
         if not a.skip_keys:

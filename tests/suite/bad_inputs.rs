@@ -208,3 +208,24 @@ fn messages_say_their_cause_once() {
     }
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// A prescribed journal position beyond what the pads allow closes a film: that is a position the bearing
+/// cannot take, reported as such with the pad and the (negative) film, never as a touchdown of a load.
+#[test]
+fn a_prescribed_position_that_closes_the_film_is_not_called_touchdown() {
+    let case =
+        common::case("compressor-bearing.toml", &["operating.eccentricity_ratio=3", "mesh.fidelity=\"preview\""]);
+    match tiltpad::bearing::solve_case(&case) {
+        Err(e @ tiltpad::bearing::SolveError::PositionClosesFilm { h_min_um, .. }) => {
+            assert!(h_min_um <= 0.0, "{e}");
+            let text = e.to_string();
+            assert!(text.contains("operating.eccentricity_ratio") && !text.contains("touchdown"), "{text}");
+        }
+        other => panic!("expected the closed film of a prescribed position, got {other:?}"),
+    }
+    // A position inside the clearance still solves.
+    let ok =
+        common::case("compressor-bearing.toml", &["operating.eccentricity_ratio=0.5", "mesh.fidelity=\"preview\""]);
+    let s = tiltpad::bearing::solve_case(&ok).expect("ε = 0.5 is a position the bearing can take");
+    assert!((s.eccentricity_ratio - 0.5).abs() < 1e-12, "{}", s.eccentricity_ratio);
+}

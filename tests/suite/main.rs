@@ -17,6 +17,7 @@ mod film_checks;
 mod flexible_pads;
 mod literature_fillon;
 mod literature_someya;
+mod long_runs;
 mod mass_conserving;
 mod node_budget;
 mod pivot_ball_start;

@@ -78,9 +78,12 @@ fn solve_inner(
         let mut u = start.filter(|s| s.len() == n).map_or_else(|| vec![0.0; n], <[f64]>::to_vec);
         u[..2].copy_from_slice(&journal);
         let (pads, force) = pad::solve_all_pads(model, journal, &u, ctx).map_err(|(k, e)| match e {
-            FilmError::Contact { h_min_m, .. } => {
-                SolveError::Touchdown { pad: k, h_min_um: crate::units::UM.from_si(h_min_m), eccentricity_ratio }
-            }
+            FilmError::Contact { h_min_m, theta_deg, .. } => SolveError::PositionClosesFilm {
+                pad: k,
+                h_min_um: crate::units::UM.from_si(h_min_m),
+                theta_deg,
+                eccentricity_ratio,
+            },
             e => ctx.film_error(k, e),
         })?;
         let u = pad::assemble_u(model, journal, &pads);

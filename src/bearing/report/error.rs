@@ -96,6 +96,14 @@ pub enum SolveError {
          carries the load; check the pads' stiffness, thermal growth and the injection pressure"
     )]
     FilmClosed { pad: usize, h_min_um: f64, theta_deg: f64, eccentricity_ratio: f64 },
+    /// A prescribed journal position (`operating.eccentricity_ratio`) at which a pad's film closes (h ≤ 0):
+    /// the journal would cut into the pad. Not touchdown, which is a load the film cannot carry; the position
+    /// is not one the bearing can take.
+    #[error(
+        "the prescribed position ε = {eccentricity_ratio:.3} closes the film of pad {pad} (h {h_min_um:.3} µm at \
+         θ = {theta_deg:.1}°): the journal would cut into the pad; give a smaller operating.eccentricity_ratio"
+    )]
+    PositionClosesFilm { pad: usize, h_min_um: f64, theta_deg: f64, eccentricity_ratio: f64 },
     /// The bearing has no static stiffness along a direction in which the load has a component (e.g. two
     /// tilting pads whose pivot line is perpendicular to the load: their forces pass through the pivots).
     #[error(

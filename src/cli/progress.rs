@@ -1,0 +1,89 @@
+//! The progress of a long command on standard error: indicatif's bar on a terminal; elsewhere (a pipe, a
+//! log file, a batch job) a plain line per finished point, at most one a second, so that a run watched
+//! through a pipe shows it is working.
+
+use std::io::IsTerminal as _;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use web_time::Instant;
+
+/// A progress display over `len` points (see the module).
+pub struct Progress {
+    bar: Option<ProgressBar>,
+    pos: u64,
+    len: u64,
+    message: String,
+    last_line: Option<Instant>,
+}
+
+impl Progress {
+    /// A display over `len` points: a bar on a terminal, lines otherwise.
+    #[must_use]
+    pub fn new(len: usize) -> Self {
+        let bar = std::io::stderr().is_terminal().then(|| {
+            let pb = ProgressBar::new(len as u64);
+            pb.set_style(
+                ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed_precise} eta {eta} {msg}")
+                    .unwrap_or_else(|_| ProgressStyle::default_bar()),
+            );
+            pb
+        });
+        Self { bar, pos: 0, len: len as u64, message: String::new(), last_line: None }
+    }
+
+    fn line(&mut self) {
+        if self.bar.is_some() {
+            return;
+        }
+        let due = self.last_line.is_none_or(|t| t.elapsed().as_secs_f64() >= 1.0) || self.pos == self.len;
+        if due && self.pos > 0 {
+            eprintln!("progress: {}/{} {}", self.pos, self.len, self.message);
+            self.last_line = Some(Instant::now());
+        }
+    }
+
+    /// What is being solved now.
+    pub fn set_message(&mut self, message: impl Into<String>) {
+        self.message = message.into();
+        if let Some(b) = &self.bar {
+            b.set_message(self.message.clone());
+        }
+    }
+
+    /// One more point done.
+    pub fn inc(&mut self, n: u64) {
+        self.set_position(self.pos + n);
+    }
+
+    /// `pos` points done.
+    pub fn set_position(&mut self, pos: u64) {
+        self.pos = pos;
+        if let Some(b) = &self.bar {
+            b.set_position(pos);
+        }
+        self.line();
+    }
+
+    /// More points than planned (a refined band).
+    pub fn inc_length(&mut self, n: u64) {
+        self.len += n;
+        if let Some(b) = &self.bar {
+            b.inc_length(n);
+        }
+    }
+
+    /// A line above the bar.
+    pub fn println(&self, text: impl AsRef<str>) {
+        match &self.bar {
+            Some(b) => b.println(text.as_ref()),
+            None => eprintln!("{}", text.as_ref()),
+        }
+    }
+
+    /// Removes the bar.
+    pub fn finish_and_clear(&self) {
+        if let Some(b) = &self.bar {
+            b.finish_and_clear();
+        }
+    }
+}

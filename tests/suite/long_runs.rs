@@ -1,0 +1,189 @@
+//! Long commands as a user meets them: refused before the first solve when their estimated work is over the
+//! bound (with the estimate and the flag that raises it), progress lines on a pipe, and Ctrl-C that keeps
+//! every point solved (written, named, exit status 130).
+
+use std::io::{BufRead as _, BufReader};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::common;
+
+fn tiltpad() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_tiltpad"))
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("tiltpad-long-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn rotor_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/rotors").join(name)
+}
+
+/// Runs `args`, sends SIGINT once standard error shows `progress: K/` with K ≥ `after`, and returns the exit
+/// code and standard error.
+fn interrupted(args: &[&str], after: usize) -> (Option<i32>, String) {
+    let mut child = tiltpad().args(args).stdout(Stdio::null()).stderr(Stdio::piped()).spawn().unwrap();
+    let pid = child.id().to_string();
+    let stderr = child.stderr.take().unwrap();
+    let reader = std::thread::spawn(move || {
+        let mut text = String::new();
+        let mut sent = false;
+        for line in BufReader::new(stderr).lines() {
+            let line = line.unwrap();
+            let done =
+                line.strip_prefix("progress: ").and_then(|r| r.split('/').next()).and_then(|k| k.parse::<usize>().ok());
+            if !sent && done.is_some_and(|k| k >= after) {
+                let ok = Command::new("kill").args(["-INT", &pid]).status().unwrap().success();
+                assert!(ok, "kill -INT {pid}");
+                sent = true;
+            }
+            text.push_str(&line);
+            text.push('\n');
+        }
+        (text, sent)
+    });
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break s;
+        }
+        assert!(start.elapsed() < Duration::from_secs(600), "the command did not stop");
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let (text, sent) = reader.join().unwrap();
+    assert!(sent, "no progress line reached {after} before the end:\n{text}");
+    (status.code(), text)
+}
+
+/// `N of M` from the interruption message.
+fn done_of(stderr: &str, what: &str) -> (usize, usize) {
+    let tail = stderr.split("interrupted (Ctrl-C) after ").nth(1).unwrap_or_else(|| panic!("{stderr}"));
+    let words: Vec<&str> = tail.split_whitespace().collect();
+    assert_eq!((words[1], words[3].trim_end_matches(';')), ("of", what), "{stderr}");
+    (words[0].parse().unwrap(), words[2].parse().unwrap())
+}
+
+fn csv_rows(path: &Path) -> usize {
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())).lines().count() - 1
+}
+
+#[test]
+fn ctrl_c_on_a_sweep_writes_every_finished_row_and_says_where() {
+    let dir = temp_dir("sweep");
+    let out = dir.join("rows.csv");
+    let case = common::case_path("compressor-bearing.toml");
+    let (code, err) = interrupted(
+        &[
+            "sweep",
+            case.to_str().unwrap(),
+            "--vary",
+            "operating.speed_rpm=3000:12000:400",
+            "--set",
+            "mesh.fidelity=\"preview\"",
+            "--csv",
+            out.to_str().unwrap(),
+        ],
+        2,
+    );
+    assert_eq!(code, Some(130), "{err}");
+    let (done, of) = done_of(&err, "points");
+    assert_eq!(of, 400);
+    assert!((2..400).contains(&done), "{err}");
+    assert!(err.contains(&format!("their results are in {}", out.display())), "{err}");
+    assert_eq!(csv_rows(&out), done, "one row per finished point");
+}
+
+#[test]
+fn ctrl_c_on_coefficients_writes_the_speeds_solved() {
+    let dir = temp_dir("coefficients");
+    let out = dir.join("k.csv");
+    let case = common::case_path("compressor-bearing.toml");
+    let (code, err) = interrupted(
+        &[
+            "coefficients",
+            case.to_str().unwrap(),
+            "--speed-rpm",
+            "3000:12000:400",
+            "--set",
+            "mesh.fidelity=\"preview\"",
+            "--csv",
+            out.to_str().unwrap(),
+        ],
+        2,
+    );
+    assert_eq!(code, Some(130), "{err}");
+    let (done, of) = done_of(&err, "speeds");
+    assert_eq!(of, 400);
+    assert!((2..400).contains(&done), "{err}");
+    assert_eq!(csv_rows(&out), done, "one row per solved speed");
+}
+
+#[test]
+fn ctrl_c_on_rotor_and_control_writes_the_speeds_solved() {
+    let dir = temp_dir("rotor");
+    for (command, rotor) in [("rotor", "compressor-rotor.toml"), ("control", "compressor-rotor-active.toml")] {
+        let out = dir.join(format!("{command}.csv"));
+        let rotor = rotor_path(rotor);
+        let (code, err) = interrupted(
+            &[command, rotor.to_str().unwrap(), "--speeds", "1000:13000:300", "--csv", out.to_str().unwrap()],
+            2,
+        );
+        assert_eq!(code, Some(130), "{command}: {err}");
+        let (done, of) = done_of(&err, "speeds");
+        assert_eq!(of, 300, "{command}");
+        assert!((2..300).contains(&done), "{command}: {err}");
+        assert_eq!(csv_rows(&out), done, "{command}: one row per solved speed");
+    }
+}
+
+#[test]
+fn every_long_command_is_refused_up_front_with_its_estimate_and_the_flag_that_raises_the_bound() {
+    let case = common::case_path("compressor-bearing.toml");
+    let case = case.to_str().unwrap();
+    let designs = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases/designs-compressor.csv");
+    let rotor = rotor_path("compressor-rotor.toml");
+    let active = rotor_path("compressor-rotor-active.toml");
+    let runs: Vec<Vec<&str>> = vec![
+        // 10 000 THD points at reference fidelity: about 5.5 h by the work model.
+        vec![
+            "sweep",
+            case,
+            "--vary",
+            "operating.speed_rpm=3000:12000:10000",
+            "--set",
+            "mesh.fidelity=\"reference\"",
+            "--set",
+            "thermal.model=\"thd\"",
+        ],
+        vec!["batch", designs.to_str().unwrap(), "--case", case, "--max-hours", "0.00001"],
+        vec!["coefficients", case, "--speed-rpm", "3000:12000:100", "--max-hours", "0.00001"],
+        vec!["rotor", rotor.to_str().unwrap(), "--speeds", "1000:13000:100", "--max-hours", "0.00001"],
+        vec![
+            "rotor",
+            rotor.to_str().unwrap(),
+            "--speeds",
+            "1000:13000:100",
+            "--critical-map",
+            "--max-hours",
+            "0.00001",
+        ],
+        vec!["control", active.to_str().unwrap(), "--speeds", "1000:13000:100", "--max-hours", "0.00001"],
+    ];
+    for args in runs {
+        let start = Instant::now();
+        let o = tiltpad().args(&args).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
+        assert!(err.contains("bearing solves, about") && err.contains("more than the bound of"), "{args:?}: {err}");
+        assert!(err.contains("--max-hours"), "{args:?}: {err}");
+        assert!(!err.contains("progress:"), "{args:?}: refused before the first solve: {err}");
+        assert!(start.elapsed() < Duration::from_secs(60), "{args:?}: the refusal took {:?}", start.elapsed());
+        if args[0] == "sweep" {
+            assert!(err.contains("about 5.5 h") && err.contains("--max-hours 6"), "{err}");
+        }
+    }
+}
