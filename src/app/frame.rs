@@ -354,6 +354,20 @@ impl WorkbenchApp {
     }
 }
 
+/// The theme (in the Edit menu): follow the system, dark or light. Kept by egui between sessions.
+fn theme_ui(ui: &mut Ui) {
+    use egui::ThemePreference;
+    ui.label("Theme");
+    let mut preference = ui.options(|o| o.theme_preference);
+    let before = preference;
+    ui.radio_value(&mut preference, ThemePreference::System, "Follow the system");
+    ui.radio_value(&mut preference, ThemePreference::Dark, "Dark");
+    ui.radio_value(&mut preference, ThemePreference::Light, "Light");
+    if preference != before {
+        ui.ctx().set_theme(preference);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::tabs_that_fit;
@@ -373,19 +387,5 @@ mod tests {
         assert_eq!(tabs_that_fit(&w, 3, 200.0, 50.0), [3]);
         // No room at all: the open tab alone.
         assert_eq!(tabs_that_fit(&w, 2, 10.0, 50.0), [2]);
-    }
-}
-
-/// The theme (in the Edit menu): follow the system, dark or light. Kept by egui between sessions.
-fn theme_ui(ui: &mut Ui) {
-    use egui::ThemePreference;
-    ui.label("Theme");
-    let mut preference = ui.options(|o| o.theme_preference);
-    let before = preference;
-    ui.radio_value(&mut preference, ThemePreference::System, "Follow the system");
-    ui.radio_value(&mut preference, ThemePreference::Dark, "Dark");
-    ui.radio_value(&mut preference, ThemePreference::Light, "Light");
-    if preference != before {
-        ui.ctx().set_theme(preference);
     }
 }

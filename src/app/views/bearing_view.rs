@@ -19,7 +19,6 @@ const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
 const PRESSURE_FILL: Color32 = Color32::from_rgba_premultiplied(200, 110, 20, 170);
 const INJECTION: Color32 = Color32::from_rgb(70, 160, 255);
 const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
-/// The pinned result drawn over the live one.
 
 /// The bearing view.
 #[derive(Debug, Default)]
