@@ -4,6 +4,7 @@
 use egui::{Key, KeyboardShortcut, Modifiers};
 
 use super::files::{encode_png, FileEvent};
+use super::open_dialog::{OpenDialog, OpenOutcome};
 use super::presets::PRESETS;
 use super::save_dialog::{SaveDialog, SaveOutcome};
 use super::views::rotor_view::RotorView;
@@ -130,6 +131,7 @@ impl WorkbenchApp {
                 self.notice = Some(format!("Exported {}", path.map_or(name, |p| p.display().to_string())));
             }
             FileEvent::NameNeeded(pending) => self.save_dialog = Some(SaveDialog::new(*pending)),
+            FileEvent::PathNeeded(kind) => self.open_dialog = Some(OpenDialog::new(kind)),
             FileEvent::Error(e) => self.notice = Some(e),
         }
     }
@@ -145,6 +147,19 @@ impl WorkbenchApp {
             }
             SaveOutcome::Done(event) => {
                 self.save_dialog = None;
+                self.file_event(event);
+            }
+        }
+    }
+
+    /// The workbench's own "Open" dialog, while one is open.
+    pub(super) fn open_dialog_ui(&mut self, ctx: &egui::Context) {
+        let Some(dialog) = &mut self.open_dialog else { return };
+        match dialog.ui(ctx) {
+            OpenOutcome::Open => {}
+            OpenOutcome::Cancelled => self.open_dialog = None,
+            OpenOutcome::Done(event) => {
+                self.open_dialog = None;
                 self.file_event(event);
             }
         }

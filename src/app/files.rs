@@ -39,6 +39,8 @@ pub enum FileEvent {
     },
     /// No native dialog: the workbench asks for a name itself ([`super::save_dialog`]).
     NameNeeded(Box<super::save_dialog::PendingSave>),
+    /// No native dialog: the workbench asks for the path of a file to open ([`super::open_dialog`]).
+    PathNeeded(super::open_dialog::OpenKind),
     Error(String),
 }
 
@@ -47,7 +49,7 @@ pub struct Files {
     tx: Sender<FileEvent>,
     rx: Receiver<FileEvent>,
     repaint: egui::Context,
-    /// Save through the system's dialog (false: the workbench's own name dialog).
+    /// Open and save through the system's dialogs (false: the workbench's own path dialogs).
     pub native_dialogs: bool,
 }
 
@@ -92,11 +94,8 @@ impl Files {
 
     /// Asks for a case file to open.
     pub fn open_case(&self) {
-        if !dialogs_available() {
-            let _ = self.tx.send(FileEvent::Error(
-                "No file dialog here (no desktop portal on the session bus): drop a case file on the window instead."
-                    .into(),
-            ));
+        if !self.native_dialogs {
+            let _ = self.tx.send(FileEvent::PathNeeded(super::open_dialog::OpenKind::Case));
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
@@ -122,9 +121,8 @@ impl Files {
     /// the shipped rotors).
     #[cfg(not(target_arch = "wasm32"))]
     pub fn open_rotor(&self) {
-        if !dialogs_available() {
-            let _ =
-                self.tx.send(FileEvent::Error("No file dialog here (no desktop portal on the session bus).".into()));
+        if !self.native_dialogs {
+            let _ = self.tx.send(FileEvent::PathNeeded(super::open_dialog::OpenKind::Rotor));
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());

@@ -3,6 +3,7 @@
 use egui::{Color32, RichText, Ui};
 
 use super::editor::editor_ui;
+use super::ink;
 use super::presets::PRESETS;
 use super::views::{compare_panel, limits_view, results_panel, ViewContext};
 use super::{Pending, Status, WorkbenchApp};
@@ -101,6 +102,7 @@ impl WorkbenchApp {
         let t3 = web_time::Instant::now();
         self.guard_ui(&ctx);
         self.save_dialog_ui(&ctx);
+        self.open_dialog_ui(&ctx);
         if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
             let screen = ctx.content_rect();
             ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("drop"))).text(
@@ -184,6 +186,8 @@ impl WorkbenchApp {
                 }
                 ui.checkbox(&mut self.persisted.preview_while_dragging, "Preview fidelity while dragging")
                     .on_hover_text("Solve on the coarse preview mesh while a value is dragged, at the case's fidelity on release.");
+                ui.separator();
+                theme_ui(ui);
             });
             ui.separator();
             if ui.add_enabled(self.doc.can_undo(), egui::Button::new("Undo")).on_hover_text("Undo (Ctrl+Z)").clicked() {
@@ -211,7 +215,7 @@ impl WorkbenchApp {
                         .on_hover_text("The edited case is invalid; the views show the last valid result.");
                 }
                 Status::Idle => {
-                    ui.label(RichText::new("Solved").color(Color32::from_rgb(120, 200, 120)));
+                    ui.label(RichText::new("Solved").color(ink::GOOD.of(ui)));
                 }
                 Status::Solving { stage, fraction } => {
                     ui.spinner();
@@ -224,12 +228,12 @@ impl WorkbenchApp {
                     ui.label(format!("Solving: {now}…"));
                 }
                 Status::Failed(e) => {
-                    ui.label(RichText::new(format!("Solve failed: {e}")).color(Color32::from_rgb(230, 90, 80)));
+                    ui.label(RichText::new(format!("Solve failed: {e}")).color(ink::ERROR.of(ui)));
                 }
             }
             if let Err(e) = self.doc.validation() {
                 ui.separator();
-                ui.label(RichText::new(format!("Invalid case: {e}")).color(Color32::from_rgb(230, 90, 80)));
+                ui.label(RichText::new(format!("Invalid case: {e}")).color(ink::ERROR.of(ui)));
             }
             if let Some(n) = &self.notice {
                 ui.separator();
@@ -261,7 +265,7 @@ impl WorkbenchApp {
         if self.result_is_stale() {
             ui.label(
                 RichText::new("Showing the last valid result: it does not match the edited case.")
-                    .color(Color32::from_rgb(230, 150, 60)),
+                    .color(ink::WARNING.of(ui)),
             );
         }
         let fidelity = format!("{:?}", shown.solution.inputs.mesh.fidelity).to_lowercase();
@@ -347,6 +351,20 @@ impl WorkbenchApp {
                 self.persisted.compare_with = Some(pin.name.clone());
             }
         }
+    }
+}
+
+/// The theme (in the Edit menu): follow the system, dark or light. Kept by egui between sessions.
+fn theme_ui(ui: &mut Ui) {
+    use egui::ThemePreference;
+    ui.label("Theme");
+    let mut preference = ui.options(|o| o.theme_preference);
+    let before = preference;
+    ui.radio_value(&mut preference, ThemePreference::System, "Follow the system");
+    ui.radio_value(&mut preference, ThemePreference::Dark, "Dark");
+    ui.radio_value(&mut preference, ThemePreference::Light, "Light");
+    if preference != before {
+        ui.ctx().set_theme(preference);
     }
 }
 

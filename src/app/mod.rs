@@ -20,6 +20,8 @@ pub mod editor;
 pub mod files;
 mod frame;
 pub mod frame_probe;
+pub mod ink;
+pub mod open_dialog;
 pub mod pinned;
 pub mod presets;
 pub mod rotor_worker;
@@ -96,6 +98,7 @@ pub struct WorkbenchApp {
     pinned: pinned::PinnedResults,
     pending: Option<Pending>,
     save_dialog: Option<save_dialog::SaveDialog>,
+    open_dialog: Option<open_dialog::OpenDialog>,
     allow_close: bool,
     /// Messages for the status bar (file saved, errors of dialogs).
     pub notice: Option<String>,
@@ -139,6 +142,7 @@ impl WorkbenchApp {
             None => Document::new(parse_case_file(text, &[]).expect("the shipped default case parses"), name, true)
                 .with_source(text),
         };
+        ink::apply(ctx);
         let mut views = views::all();
         for v in &mut views {
             let id = v.id();
@@ -160,6 +164,7 @@ impl WorkbenchApp {
             pinned: pinned::PinnedResults::new(ctx.clone()),
             pending: None,
             save_dialog: None,
+            open_dialog: None,
             allow_close: false,
             notice: None,
             frame_time_s: 0.0,
@@ -183,7 +188,7 @@ impl WorkbenchApp {
         }
     }
 
-    /// Saves and exports ask for a name in the workbench's own dialog, as without a desktop portal.
+    /// Saves, exports and opens ask for a path in the workbench's own dialogs, as without a desktop portal.
     pub fn use_workbench_save_dialog(&mut self) {
         self.files.native_dialogs = false;
     }

@@ -1,7 +1,7 @@
 //! The shipped cases (`cases/*.toml`), built into the binary so the web build has them too.
 
 /// File name and text of every shipped case; the first is the default (the compressor bearing).
-pub const PRESETS: [(&str, &str); 14] = [
+pub const PRESETS: [(&str, &str); 15] = [
     ("compressor-bearing.toml", include_str!("../../cases/compressor-bearing.toml")),
     ("test-rig.toml", include_str!("../../cases/test-rig.toml")),
     ("test-rig-pub5.toml", include_str!("../../cases/test-rig-pub5.toml")),
@@ -16,6 +16,7 @@ pub const PRESETS: [(&str, &str); 14] = [
     ("fillon-a-tehd-bc3.toml", include_str!("../../cases/fillon-a-tehd-bc3.toml")),
     ("compressor-bearing-tehd.toml", include_str!("../../cases/compressor-bearing-tehd.toml")),
     ("compressor-bearing-starved.toml", include_str!("../../cases/compressor-bearing-starved.toml")),
+    ("plain-360-sommerfeld.toml", include_str!("../../cases/plain-360-sommerfeld.toml")),
 ];
 
 /// The default case's name and text.

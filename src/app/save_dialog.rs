@@ -5,7 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use egui::{Color32, RichText};
+use egui::RichText;
 
 use super::files::{display_name, FileEvent};
 
@@ -116,14 +116,14 @@ impl SaveDialog {
                 }
             };
             if let Some(e) = &self.error {
-                ui.label(RichText::new(e).color(Color32::from_rgb(230, 90, 80)));
+                ui.label(RichText::new(e).color(crate::app::ink::ERROR.of(ui)));
             }
             let enter = ui.input(|i| i.key_pressed(egui::Key::Enter));
             ui.separator();
             if let Some(existing) = self.confirm.clone() {
                 ui.label(
                     RichText::new(format!("{} exists. Replace it?", display_name(&existing)))
-                        .color(Color32::from_rgb(230, 150, 60)),
+                        .color(crate::app::ink::WARNING.of(ui)),
                 );
                 ui.horizontal(|ui| {
                     if ui.button("Replace").clicked() {

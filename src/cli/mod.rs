@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `sommerfeld`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `schema`, `bench`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -14,6 +14,7 @@ mod bench_control;
 mod bench_flex;
 mod bench_frf;
 mod bench_rotor;
+mod bench_sommerfeld;
 mod bench_turb;
 mod coefficients;
 pub mod control;
@@ -26,6 +27,7 @@ mod progress;
 pub mod rotor;
 mod rotor_map;
 mod rows;
+mod sommerfeld;
 mod summary;
 mod sweep;
 mod vtu;
@@ -110,6 +112,25 @@ pub enum Command {
         /// solve beyond it).
         #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
         max_hours: f64,
+    },
+    /// The Sommerfeld chart of a case: a load sweep (or an eccentricity sweep, for a case that prescribes
+    /// the journal position) as ε, attitude, h_min/Cb and the reduced coefficients against S, with the
+    /// short-bearing reference of a plain 360° bearing. CSV on standard output unless --csv/--json.
+    Sommerfeld {
+        /// Case file (TOML); the sweep runs from 0.2 to 3 times its load.
+        case: PathBuf,
+        /// Override a case value for every point, e.g. `--set mesh.fidelity=preview` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Number of swept points (2 to 101).
+        #[arg(long, default_value_t = 12)]
+        points: usize,
+        /// CSV, one row per drawn point: plot, curve, sommerfeld, value (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// JSON: the plots, the failed points and the deviation from the reference.
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
     },
     /// Solve every design of a table (one design per row, any case keys as columns) on a base case.
     Batch {
@@ -402,6 +423,10 @@ pub fn run(command: Command) -> Result<()> {
             inputs::check_outputs(&[("case file", &case)], &outputs)?;
             sweep::run(sweep::SweepArgs { case: &case, axes, set: &set, csv, jsonl, vtu, max_points, max_hours })
         }
+        Command::Sommerfeld { case, set, points, csv, json } => {
+            inputs::check_outputs(&[("case file", &case)], &[("--csv", csv.as_deref()), ("--json", json.as_deref())])?;
+            sommerfeld::run(&sommerfeld::SommerfeldArgs { case: &case, set: &set, points, csv, json })
+        }
         Command::Batch { designs, case, set, shard, csv, jsonl, max_points, max_hours } => {
             let shard = shard.as_deref().map_or(Ok(crate::study::Shard::ALL), crate::study::Shard::parse)?;
             inputs::check_outputs(
@@ -532,8 +557,15 @@ pub fn run(command: Command) -> Result<()> {
             Some("control") => {
                 bench::replace_section(&root, "## Active control", &bench_control::section(&root, repeats.clamp(1, 3))?)
             }
+            Some("sommerfeld") => bench::replace_section(
+                &root,
+                bench_sommerfeld::HEADING,
+                &bench_sommerfeld::section(&root, repeats.clamp(1, 3))?,
+            ),
             Some(other) => {
-                anyhow::bail!("--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control")
+                anyhow::bail!(
+                    "--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control, sommerfeld"
+                )
             }
         },
     }

@@ -139,6 +139,74 @@ pub fn chart(table: &SweepTable, g: &ChartGeometry) -> Vec<ChartPlot> {
     ]
 }
 
+/// Name of the reference curve in the exports.
+pub const REFERENCE_NAME: &str = "short bearing (Ocvirk)";
+
+/// The chart as CSV, long form: one row per drawn point, `plot,curve,sommerfeld,value` (the reference line's
+/// rows named [`REFERENCE_NAME`]).
+#[must_use]
+pub fn chart_csv(plots: &[ChartPlot]) -> String {
+    let mut out = String::from("plot,curve,sommerfeld,value\n");
+    for p in plots {
+        let named = p.curves.iter().map(|(n, pts)| (*n, pts)).chain(std::iter::once((REFERENCE_NAME, &p.reference)));
+        for (curve, pts) in named {
+            for [s, v] in pts {
+                out.push_str(&format!("\"{}\",\"{curve}\",{s:e},{v:e}\n", p.title));
+            }
+        }
+    }
+    out
+}
+
+/// The chart as JSON: the swept key, the geometry, the points that failed (value and why), the largest
+/// deviation from the reference ([`reference_deviation`]) and each plot with its curves and reference line.
+#[must_use]
+pub fn chart_json(plots: &[ChartPlot], g: &ChartGeometry, table: &SweepTable) -> serde_json::Value {
+    let deviation = reference_deviation(plots, g);
+    let plots: Vec<serde_json::Value> = plots
+        .iter()
+        .map(|p| {
+            serde_json::json!({
+                "title": p.title,
+                "curves": p.curves.iter().map(|(n, pts)| serde_json::json!({"name": n, "points": pts})).collect::<Vec<_>>(),
+                "reference": p.reference,
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "swept": table.key,
+        "clearance_um": UM.from_si(g.clearance_m),
+        "speed_rad_s": g.speed_rad_s,
+        "reference": g.plain_360_l_over_d.map(|ld| serde_json::json!({"name": REFERENCE_NAME, "l_over_d": ld})),
+        "reference_deviation": deviation,
+        "failed": table.failures().iter().map(|(x, why)| serde_json::json!({"value": x, "error": why})).collect::<Vec<_>>(),
+        "plots": plots,
+    })
+}
+
+fn plots_eps(plots: &[ChartPlot]) -> Vec<[f64; 2]> {
+    plots.first().and_then(|p| p.curves.first()).map(|(_, pts)| pts.clone()).unwrap_or_default()
+}
+
+fn reference_deviation_of(eps_points: Vec<[f64; 2]>, g: &ChartGeometry) -> Option<f64> {
+    let ld = g.plain_360_l_over_d?;
+    eps_points
+        .iter()
+        .filter(|[_, eps]| *eps > 0.0 && *eps < 1.0)
+        .map(|&[s, eps]| {
+            let s_ref = short_bearing(eps, ld).0;
+            ((s - s_ref) / s_ref).abs()
+        })
+        .reduce(f64::max)
+}
+
+/// The largest relative difference in S between the solved points and the short-bearing reference at the
+/// same ε (plain 360° bearings only; `None` for other geometries or no solved point).
+#[must_use]
+pub fn reference_deviation(plots: &[ChartPlot], g: &ChartGeometry) -> Option<f64> {
+    reference_deviation_of(plots_eps(plots), g)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -27,6 +27,7 @@ mod proptest_cases;
 mod reynolds_convergence;
 mod rotor_compressor;
 mod scene_data;
+mod sommerfeld_chart;
 mod supg_benchmarks;
 mod tehd;
 mod thermal_checks;

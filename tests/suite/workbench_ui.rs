@@ -127,8 +127,8 @@ fn snapshot(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
 }
 
 /// Every view of the list ([`tiltpad::app::views::all`]) at 1280×720, as it opens on the case it asks for
-/// ([`tiltpad::app::views::View::snapshot_setup`]), its result and its own work finished:
-/// `tests/snapshots/view_<id>.png`. A view added to the list is snapshotted here with no change to this file.
+/// ([`tiltpad::app::views::View::snapshot_setup`]), its result and its own work finished, in the dark theme
+/// (`tests/snapshots/view_<id>.png`) and in the light one (`view_<id>_light.png`). A view added to the list is snapshotted here with no change to this file.
 #[test]
 fn every_view_in_the_list_at_1280x720() {
     let mut results = egui_kittest::SnapshotResults::new();
@@ -141,7 +141,17 @@ fn every_view_in_the_list_at_1280x720() {
         assert!(h.query_by_label("Waiting for the first result…").is_none(), "{id}");
         // A few more frames: plots lay out their axes from the frame before.
         h.run_steps(4);
+        assert_eq!(h.ctx.theme(), egui::Theme::Dark, "{id}: the snapshots start in the dark theme");
         results.add(h.try_snapshot_options(format!("view_{id}"), &snapshot_options()));
+        // The same view in the light theme, chosen as a user does (Edit → Theme → Light).
+        h.get_by_label("Edit").click();
+        h.run_steps(2);
+        h.get_by_label("Light").click();
+        h.run_steps(2);
+        h.key_press(egui::Key::Escape);
+        h.run_steps(4);
+        assert_eq!(h.ctx.theme(), egui::Theme::Light, "{id}");
+        results.add(h.try_snapshot_options(format!("view_{id}_light"), &snapshot_options()));
     }
 }
 
@@ -1278,4 +1288,66 @@ fn a_bearing_stiffness_given_by_numbers_edited_on_the_sketch_raises_the_first_na
     h.get_by_label_contains(&format!("{:.3} Hz", after.1));
     assert!(h.query_by_label_contains("Invalid rotor").is_none());
     snapshot(&mut h, "rotor_edit_bearing_numbers_1280x720");
+}
+
+/// Without a desktop portal, "Open case…" and "Open rotor…" ask for the path in the workbench's own dialog
+/// (as the save does): the directory's TOML files are listed to pick from; a file that cannot be read keeps
+/// the dialog open with its name and leaves the case on screen; a read case replaces the edited one and a
+/// read rotor opens in the Rotor view.
+#[test]
+fn opening_without_a_portal_asks_for_the_path_in_the_workbench() {
+    let mut h = solved_app(None, |_| {});
+    h.state_mut().use_workbench_save_dialog();
+    let dir = std::env::temp_dir().join(format!("tiltpad-open-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("rig.toml"), include_str!("../../cases/test-rig.toml")).unwrap();
+    std::fs::write(dir.join("notes.txt"), "not listed").unwrap();
+    let open = |h: &mut Harness<'_, WorkbenchApp>, item: &str| {
+        h.get_by_label("File").click();
+        h.run_steps(2);
+        h.get_by_label(item).click();
+        h.run_steps(3);
+        h.get_by_role_and_label(Role::TextInput, "Directory").focus();
+        h.run_steps(1);
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        h.get_by_role_and_label(Role::TextInput, "Directory").type_text(&dir.display().to_string());
+        h.run_steps(2);
+    };
+    open(&mut h, "Open case…");
+    h.get_by_label("Open a case");
+    h.get_by_label("TOML files in this directory (1):");
+    assert!(h.query_by_label("notes.txt").is_none());
+    // Nothing typed: Open is disabled.
+    assert!(h.get_by_role_and_label(Role::Button, "Open").accesskit_node().is_disabled());
+    // A missing file: the dialog stays with the message; the case on screen is the same.
+    h.get_by_role_and_label(Role::TextInput, "File name").focus();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, "File name").type_text("missing.toml");
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Open").click();
+    h.run_steps(2);
+    h.get_by_label_contains(&format!("cannot read {}", dir.join("missing.toml").display()));
+    assert_eq!(h.state().doc.name, "compressor-bearing.toml");
+    // Pick the listed file and open it.
+    h.get_by_label("rig.toml").click();
+    h.run_steps(2);
+    h.get_by_role_and_label(Role::Button, "Open").click();
+    h.run_steps(3);
+    assert!(h.query_by_label("Open a case").is_none(), "the dialog closed");
+    assert_eq!(h.state().doc.name, "rig.toml");
+    assert_eq!(h.state().doc.path.as_deref(), Some(std::fs::canonicalize(dir.join("rig.toml")).unwrap().as_path()));
+    // A rotor: typed as a full path (the directory field is ignored for an absolute name).
+    let rotor_path = std::fs::canonicalize("cases/rotors/compressor-rotor.toml").unwrap();
+    open(&mut h, "Open rotor…");
+    h.get_by_label("Open a rotor");
+    h.get_by_role_and_label(Role::TextInput, "File name").focus();
+    h.run_steps(1);
+    h.get_by_role_and_label(Role::TextInput, "File name").type_text(&rotor_path.display().to_string());
+    h.run_steps(2);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+    assert_eq!(h.state().open_view().id(), "rotor");
+    assert_eq!(h.state().notice.as_deref(), Some(format!("Opened rotor {}", rotor_path.display()).as_str()));
+    assert_eq!(rotor(&h).preset, tiltpad::app::views::rotor_view::ROTOR_PRESETS.len());
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -62,7 +62,7 @@ const HOOKS: &[Hook] = &[
 pub fn editor_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let mut out = Grid::new("title").num_columns(3).show(ui, |ui| group_ui(ui, doc, Group::Title)).inner;
     if let Err(e) = doc.validation() {
-        ui.label(RichText::new(format!("Invalid case: {e}")).color(widgets::ERROR_COLOR))
+        ui.label(RichText::new(format!("Invalid case: {e}")).color(crate::app::ink::ERROR.of(ui)))
             .on_hover_text("The views keep showing the last valid result until the case is valid again.");
     }
     for group in Group::SECTIONS {

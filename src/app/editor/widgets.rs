@@ -9,7 +9,7 @@
 //! A row's unit, tooltip (physical meaning, typical and allowed values) and drag range come from the case
 //! schema ([`crate::model::schema`]) by key, the same table `tiltpad schema` prints.
 
-use egui::{Color32, DragValue, RichText, Ui};
+use egui::{DragValue, RichText, Ui};
 
 use crate::app::document::Document;
 use crate::model::schema::{spec, KeySpec};
@@ -99,8 +99,6 @@ impl EditOutput {
     }
 }
 
-pub const ERROR_COLOR: Color32 = Color32::from_rgb(230, 80, 70);
-
 /// The label cell of a row.
 pub fn label_ui(ui: &mut Ui, text: &str, tooltip: &str) -> egui::Response {
     ui.label(text).on_hover_text(tooltip)
@@ -112,7 +110,7 @@ pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
         ui.label("");
         ui.scope(|ui| {
             ui.set_max_width(220.0);
-            ui.add(egui::Label::new(RichText::new(format!("{e}")).color(ERROR_COLOR).small()).wrap());
+            ui.add(egui::Label::new(RichText::new(format!("{e}")).color(crate::app::ink::ERROR.of(ui)).small()).wrap());
         });
         ui.end_row();
     }
@@ -121,9 +119,10 @@ pub fn error_row_ui(ui: &mut Ui, doc: &Document, key: &str) {
 /// Paints an error frame around the next widgets when their value is invalid (also the rotor editor's).
 pub fn flag_invalid_ui(ui: &mut Ui, invalid: bool) {
     if invalid {
+        let error = crate::app::ink::ERROR.of(ui);
         let w = &mut ui.visuals_mut().widgets;
         for s in [&mut w.inactive, &mut w.hovered, &mut w.active] {
-            s.bg_stroke = egui::Stroke::new(1.5, ERROR_COLOR);
+            s.bg_stroke = egui::Stroke::new(1.5, error);
         }
     }
 }

@@ -7,6 +7,7 @@ use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, 
 use serde::{Deserialize, Serialize};
 
 use super::{View, ViewContext};
+use crate::app::ink;
 use crate::bearing::solution::limits::{Check, LimitKind};
 use crate::bearing::stages::StageId;
 use crate::scene::outline::{self, BearingOutline, OutlineScales, Point};
@@ -17,10 +18,7 @@ const PAD_FILL: Color32 = Color32::from_rgb(150, 135, 110);
 const JOURNAL_FILL: Color32 = Color32::from_rgb(95, 105, 120);
 const PRESSURE_FILL: Color32 = Color32::from_rgba_premultiplied(200, 110, 20, 170);
 const INJECTION: Color32 = Color32::from_rgb(70, 160, 255);
-const H_MIN: Color32 = Color32::from_rgb(235, 60, 60);
 const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
-/// The pinned result drawn over the live one.
-const PINNED: Color32 = Color32::from_rgb(90, 220, 240);
 
 /// The bearing view.
 #[derive(Debug, Default)]
@@ -213,28 +211,28 @@ pub fn bearing_view_ui(
     ui.horizontal_wrapped(|ui| {
         if outline.pressure_scale_pa > 0.0 {
             ui.colored_label(
-                Color32::from_rgb(255, 160, 60),
+                ink::PRESSURE.of(ui),
                 format!(
                     "Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)",
                     MPA.from_si(outline.pressure_scale_pa)
                 ),
             );
         }
-        ui.colored_label(H_MIN, "Minimum film thickness of each pad");
-        ui.colored_label(LOAD, "Static load W");
+        ui.colored_label(ink::H_MIN.of(ui), "Minimum film thickness of each pad");
+        ui.colored_label(ink::LOAD.of(ui), "Static load W");
         if outline.pads.iter().any(|p| p.injecting) {
-            ui.colored_label(INJECTION, "Injecting orifice");
+            ui.colored_label(ink::INJECTION.of(ui), "Injecting orifice");
         }
         if stale {
-            ui.colored_label(Color32::from_rgb(230, 150, 60), "Showing the last valid result");
+            ui.colored_label(ink::WARNING.of(ui), "Showing the last valid result");
         }
         if let Some((name, _)) = pinned {
-            ui.colored_label(PINNED, format!("Pinned \"{name}\" (dashed: journal, pad film surfaces, pressure)"));
+            ui.colored_label(ink::PINNED.of(ui), format!("Pinned \"{name}\" (dashed: journal, pad film surfaces, pressure)"));
         }
     });
     for c in checks.iter().filter(|c| c.exceeded) {
         ui.colored_label(
-            super::limits_view::EXCEEDED,
+            ink::EXCEEDED.of(ui),
             format!("Exceeds design limit: {}", crate::scene::limits::text(c)),
         );
     }
@@ -306,8 +304,9 @@ pub fn bearing_view_ui(
         );
         if let Some((j, p, h)) = pad.h_min {
             let (a, b) = (to_screen.map(j), to_screen.map(p));
-            painter.line_segment([a, b], Stroke::new(2.5, H_MIN));
-            painter.circle_filled(a, 2.5, H_MIN);
+            let h_min_ink = ink::H_MIN.on(&ui.style().visuals);
+            painter.line_segment([a, b], Stroke::new(2.5, h_min_ink));
+            painter.circle_filled(a, 2.5, h_min_ink);
             let away = (b - jc).normalized();
             let below = if h < film_limit { " < limit" } else { "" };
             painter.text(
@@ -315,12 +314,12 @@ pub fn bearing_view_ui(
                 Align2::CENTER_CENTER,
                 format!("{:.1} µm{below}", UM.from_si(h)),
                 FontId::proportional(11.0),
-                H_MIN,
+                h_min_ink,
             );
         }
     }
     if let Some((_, p)) = pinned {
-        overlay(&painter, &to_screen, p);
+        overlay(&painter, &to_screen, p, ink::PINNED.of(ui));
     }
     // Hovering a pad shows its results.
     if let Some(pos) = response.hover_pos() {
@@ -365,9 +364,9 @@ fn load_label(painter: &egui::Painter, (a, b): (Pos2, Pos2), text: &str, font: e
 }
 
 /// A pinned outline over the live one: the journal, each pad's film surface and the pressure, dashed.
-fn overlay(painter: &egui::Painter, to_screen: &ScreenFromBearing, pinned: &BearingOutline) {
+fn overlay(painter: &egui::Painter, to_screen: &ScreenFromBearing, pinned: &BearingOutline, color: Color32) {
     let map = |pts: &[Point]| -> Vec<Pos2> { pts.iter().map(|&p| to_screen.map(p)).collect() };
-    let stroke = Stroke::new(1.6, PINNED);
+    let stroke = Stroke::new(1.6, color);
     let dashed = |pts: &[Pos2]| painter.extend(Shape::dashed_line(pts, stroke, 6.0, 4.0));
     let mut journal = map(&pinned.journal);
     if let Some(&first) = journal.first() {
@@ -382,7 +381,7 @@ fn overlay(painter: &egui::Painter, to_screen: &ScreenFromBearing, pinned: &Bear
             dashed(&map(&pad.pressure[n..]));
         }
         if let Some((j, q, _)) = pad.h_min {
-            painter.line_segment([to_screen.map(j), to_screen.map(q)], Stroke::new(1.0, PINNED));
+            painter.line_segment([to_screen.map(j), to_screen.map(q)], Stroke::new(1.0, color));
         }
     }
 }

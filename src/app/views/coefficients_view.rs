@@ -6,6 +6,7 @@ use egui::{Color32, Grid, RichText, ScrollArea, Ui};
 use egui_plot::{GridInput, GridMark, Line, LineStyle, MarkerShape, Plot, Points, VLine};
 use serde::{Deserialize, Serialize};
 
+use crate::app::ink;
 use super::plot_kit::{legend_ui, PALETTE};
 use super::{View, ViewContext};
 use crate::app::Shown;
@@ -235,7 +236,7 @@ pub fn coefficient_plots_ui(ui: &mut Ui, plot: &CoefficientPlot, pinned: Option<
         ui.label(RichText::new(format!("Wide faint dashed curves: pinned \"{name}\".")).small());
     }
     for (x, why) in &plot.failures {
-        ui.label(RichText::new(format!("No solution at {x:.0}: {why}")).color(Color32::from_rgb(230, 120, 60)));
+        ui.label(RichText::new(format!("No solution at {x:.0}: {why}")).color(ink::WARNING.of(ui)));
     }
 }
 

@@ -18,6 +18,7 @@ use egui::{
 
 use serde::{Deserialize, Serialize};
 
+use crate::app::ink;
 use super::{View, ViewContext};
 use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
@@ -409,7 +410,7 @@ pub fn field_view_ui(
         range
     };
     if let Some(n) = note {
-        ui.colored_label(Color32::from_rgb(230, 150, 60), n);
+        ui.colored_label(ink::WARNING.of(ui), n);
     }
     let (unit, scale) = kind.unit();
     ui.label(

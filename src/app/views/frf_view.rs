@@ -11,6 +11,7 @@
 use egui::{Color32, RichText, Ui};
 use egui_plot::{HoverPosition, Line, Plot, VLine};
 
+use crate::app::ink;
 use super::plot_kit::{decade_label, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
 
 use super::{View, ViewContext};
@@ -200,7 +201,7 @@ pub fn frf_ui(ui: &mut Ui, view: &mut FrfView, case: &Case, model: Option<&FrfMo
     }
     let limit = 0.1 * h.valve.full_scale_v;
     if view.amplitude_v > limit {
-        ui.label(RichText::new(format!("Signal {:.2} V exceeds the small-signal range of the linear valve model ({limit:.2} V, 10 % of full scale).", view.amplitude_v)).color(Color32::from_rgb(230, 120, 60)));
+        ui.label(RichText::new(format!("Signal {:.2} V exceeds the small-signal range of the linear valve model ({limit:.2} V, 10 % of full scale).", view.amplitude_v)).color(ink::WARNING.of(ui)));
     }
     for n in &curves.notes {
         ui.label(RichText::new(n).italics().weak());

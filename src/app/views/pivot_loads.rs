@@ -14,6 +14,7 @@
 use egui::{Align2, Color32, FontId, Grid, Pos2, RichText, Sense, Shape, Stroke, Ui, Vec2};
 
 use super::bearing_view::ScreenFromBearing;
+use crate::app::ink;
 use super::{View, ViewContext};
 use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
@@ -24,8 +25,6 @@ use crate::units::{DEG, MN_PER_M, UM};
 
 const PAD: Color32 = Color32::from_rgb(150, 135, 110);
 const JOURNAL: Color32 = Color32::from_rgb(95, 105, 120);
-const PIVOT_LOAD: Color32 = Color32::from_rgb(230, 120, 40);
-const LOAD: Color32 = Color32::from_rgb(240, 200, 40);
 
 /// What one pad carries [SI].
 #[derive(Debug, Clone, PartialEq)]
@@ -185,6 +184,8 @@ fn sketch_ui(ui: &mut Ui, s: &Solution, loads: &[PadLoad]) {
     let polar = |radius: f64, angle: f64| to_screen.map([radius * angle.cos(), radius * angle.sin()]);
     let largest = loads.iter().map(|l| l.magnitude_n).fold(s.load_magnitude_n, f64::max).max(1e-12);
     let font = FontId::proportional(12.0);
+    // The load and its label lie on the journal, which has one fill in both themes: the dark theme's shade.
+    let (pivot_ink, load_ink) = (ink::PIVOT_LOAD.of(ui), ink::LOAD.dark);
     let circle: Vec<Pos2> = (0..72).map(|i| polar(r, f64::from(i) * 5.0_f64.to_radians())).collect();
     painter.add(Shape::convex_polygon(circle, JOURNAL, Stroke::NONE));
     for (l, g) in loads.iter().zip(&s.inputs.bearing.pads) {
@@ -205,21 +206,21 @@ fn sketch_ui(ui: &mut Ui, s: &Solution, loads: &[PadLoad]) {
         let k = reach / largest;
         let to = [from[0] - k * l.force_n[0], from[1] - k * l.force_n[1]];
         painter.circle_filled(to_screen.map(from), 3.5, Color32::WHITE);
-        arrow(&painter, to_screen.map(from), to_screen.map(to), PIVOT_LOAD);
+        arrow(&painter, to_screen.map(from), to_screen.map(to), pivot_ink);
         let anchor = to_screen.map(to);
         let outwards = (anchor - to_screen.map([0.0, 0.0])).normalized();
         let align = if outwards.x >= 0.0 { Align2::LEFT_CENTER } else { Align2::RIGHT_CENTER };
-        painter.text(anchor + outwards * 6.0, align, format!("{} N", sig4(l.magnitude_n)), font.clone(), PIVOT_LOAD);
+        painter.text(anchor + outwards * 6.0, align, format!("{} N", sig4(l.magnitude_n)), font.clone(), pivot_ink);
     }
     let k = reach / largest;
     let tip = [k * s.load_n[0], k * s.load_n[1]];
-    arrow(&painter, to_screen.map([0.0, 0.0]), to_screen.map(tip), LOAD);
+    arrow(&painter, to_screen.map([0.0, 0.0]), to_screen.map(tip), load_ink);
     painter.text(
         to_screen.map([0.0, 0.0]) + Vec2::new(6.0, -6.0),
         Align2::LEFT_BOTTOM,
         format!("W = {} N", sig4(s.load_magnitude_n)),
         font,
-        LOAD,
+        load_ink,
     );
 }
 

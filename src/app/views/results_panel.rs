@@ -1,7 +1,8 @@
 //! The results panel: the scalar results in display units with their meaning, per-pad results, and the
 //! solver report with its warnings — shown plainly, including when the result is stale or failed.
 
-use egui::{Color32, Grid, RichText, Ui};
+use crate::app::ink;
+use egui::{Grid, RichText, Ui};
 
 use crate::scene::summary::Summary;
 
@@ -49,7 +50,7 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
         ui.label(RichText::new("No solver warnings").weak());
     } else {
         for w in &summary.warnings {
-            ui.label(RichText::new(format!("Warning: {w}")).color(Color32::from_rgb(230, 160, 60)));
+            ui.label(RichText::new(format!("Warning: {w}")).color(ink::WARNING.of(ui)));
         }
     }
 }

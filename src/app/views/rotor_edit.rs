@@ -24,7 +24,8 @@ use crate::model::rotor_schema::ROTOR_KEYS;
 use crate::model::rotor_sections::{append_section, remove_section, split_section, ShaftEnd};
 use crate::model::CaseError;
 
-use super::super::editor::widgets::{flag_invalid_ui, ERROR_COLOR};
+use super::super::editor::widgets::flag_invalid_ui;
+use crate::app::ink;
 
 /// What is selected on the sketch: an entry of the rotor file's tables, by index.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -472,7 +473,7 @@ pub fn edit_ui(ui: &mut Ui, edit: &mut RotorEdit) -> Option<SaveRequest> {
     if let Some(e) = &edit.error {
         ui.label(
             RichText::new(format!("Invalid rotor: {e}. The sketch and results are of the last valid rotor."))
-                .color(ERROR_COLOR),
+                .color(ink::ERROR.of(ui)),
         );
     }
     save

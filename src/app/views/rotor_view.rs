@@ -17,6 +17,7 @@ use egui_plot::{HLine, Line, LineStyle, Plot, Points, VLine};
 
 use super::plot_kit::{decade_label, labelled_spacer, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
 use super::{View, ViewContext};
+use crate::app::ink::{self, Ink};
 use crate::app::frame_probe::Job;
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
 use crate::bearing::stages::StageId;
@@ -46,8 +47,8 @@ const MAP_POINTS: usize = 61;
 const MAP_MODES: usize = 4;
 
 const FORWARD: Color32 = Color32::from_rgb(0, 114, 178);
-const BACKWARD: Color32 = Color32::from_rgb(230, 159, 0);
-const LIMIT: Color32 = Color32::from_rgb(213, 94, 0);
+const BACKWARD: Ink = Ink { dark: Color32::from_rgb(230, 159, 0), light: Color32::from_rgb(165, 110, 0) };
+const LIMIT: Ink = ink::EXCEEDED;
 
 /// The plot shown under the sketch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -280,7 +281,7 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     let rotor = match &view.rotor {
         Some(Ok(r)) => r.clone(),
         Some(Err(e)) => {
-            ui.label(RichText::new(format!("Cannot read the rotor: {e}")).color(LIMIT));
+            ui.label(RichText::new(format!("Cannot read the rotor: {e}")).color(LIMIT.of(ui)));
             return None;
         }
         None => return None,
@@ -304,7 +305,7 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     let result = match &view.result {
         Some(Ok(r)) => r.clone(),
         Some(Err(e)) => {
-            ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT));
+            ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT.of(ui)));
             return save;
         }
         None => {
@@ -336,7 +337,7 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
             match map {
                 Ok(m) => critical_map_ui(ui, m),
                 Err(e) => {
-                    ui.label(RichText::new(format!("Critical-speed map failed: {e}")).color(LIMIT));
+                    ui.label(RichText::new(format!("Critical-speed map failed: {e}")).color(LIMIT.of(ui)));
                 }
             }
         }
@@ -376,14 +377,14 @@ fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
         r.report.system_dofs
     ));
     for w in &r.report.warnings {
-        ui.label(RichText::new(w.to_string()).color(LIMIT));
+        ui.label(RichText::new(w.to_string()).color(LIMIT.of(ui)));
     }
 }
 
-fn whirl_color(w: Whirl) -> Color32 {
+fn whirl_color(w: Whirl, backward: Color32) -> Color32 {
     match w {
         Whirl::Forward => FORWARD,
-        Whirl::Backward => BACKWARD,
+        Whirl::Backward => backward,
     }
 }
 
@@ -406,16 +407,17 @@ enum Sample {
 /// at 1280×720. Short labels keep it to one row there; each curve keeps its name (F1, B2, …: whirl and rank)
 /// for the plot's hover label.
 fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<f64>) {
+    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
     let grey = Color32::from_gray(150);
     let mut entries =
-        vec![("forward".to_string(), FORWARD, Sample::Solid), ("backward".to_string(), BACKWARD, Sample::Dashed)];
+        vec![("forward".to_string(), FORWARD, Sample::Solid), ("backward".to_string(), backward, Sample::Dashed)];
     if campbell {
         entries.push(("1×".into(), grey, Sample::Dashed));
-        entries.push(("1× critical".into(), LIMIT, Sample::Dot));
+        entries.push(("1× critical".into(), limit, Sample::Dot));
     } else {
         entries.push(("δ = 0".into(), grey, Sample::Solid));
         if let Some(x) = onset {
-            entries.push((format!("onset {x:.0} rpm"), LIMIT, Sample::Solid));
+            entries.push((format!("onset {x:.0} rpm"), limit, Sample::Solid));
         }
     }
     if operating {
@@ -449,6 +451,7 @@ fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<
 }
 
 fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
+    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
     let c = mode_curves(r, rotor, RANKS);
     let height = (ui.available_height() - 10.0).max(160.0);
     let campbell = tab == RotorTab::Campbell;
@@ -469,7 +472,7 @@ fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
             let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
             p.line(
                 Line::new(curve.name.clone(), curve.points.clone())
-                    .color(whirl_color(curve.whirl))
+                    .color(whirl_color(curve.whirl, backward))
                     .style(style)
                     .width(1.6),
             );
@@ -483,11 +486,11 @@ fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
         }
         if campbell {
             p.line(Line::new("1×", c.one_x.to_vec()).color(Color32::from_gray(120)).style(LineStyle::dashed_dense()));
-            p.points(Points::new("1× critical speeds", c.critical.clone()).radius(5.0).color(LIMIT));
+            p.points(Points::new("1× critical speeds", c.critical.clone()).radius(5.0).color(limit));
         } else {
             p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
             if let Some(x) = c.onset_rpm {
-                p.vline(VLine::new(format!("onset {x:.0} rpm"), x).color(LIMIT).width(2.0));
+                p.vline(VLine::new(format!("onset {x:.0} rpm"), x).color(limit).width(2.0));
             }
         }
     });
@@ -532,7 +535,7 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
         return;
     };
     let z_mm: Vec<f64> = s.z_m.iter().map(|z| MM.from_si(*z)).collect();
-    let color = whirl_color(s.whirl);
+    let color = whirl_color(s.whirl, BACKWARD.of(ui));
     let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
     let whirl = if s.whirl == Whirl::Forward { "forward" } else { "backward" };
     legend_ui(
@@ -567,13 +570,14 @@ fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &
 }
 
 fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
+    let limit = LIMIT.of(ui);
     let b = unbalance_bode(r, rotor);
     let over = !b.exceedances().is_empty();
     let sentence = b.api617_sentence();
-    ui.label(if over { RichText::new(sentence).color(LIMIT).strong() } else { RichText::new(sentence) });
+    ui.label(if over { RichText::new(sentence).color(limit).strong() } else { RichText::new(sentence) });
     let colors: Vec<Color32> = PALETTE.iter().copied().cycle().take(b.nodes.len()).collect();
     let mut legend: Vec<(String, Color32)> = b.nodes.iter().zip(&colors).map(|(n, c)| (n.name.clone(), *c)).collect();
-    legend.push(("API 617 limit 25.4 sqrt(12000/N) µm (dashed)".into(), LIMIT));
+    legend.push(("API 617 limit 25.4 sqrt(12000/N) µm (dashed)".into(), limit));
     legend_ui(ui, &legend);
     let height = ((ui.available_height() - 20.0) / 2.0).max(120.0);
     let link = ui.scope_id().with("rotor_bode");
@@ -589,7 +593,7 @@ fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
                 p.line(Line::new(n.name.clone(), n.amplitude_um.clone()).color(*color).width(1.6));
             }
             p.line(
-                Line::new("API 617 limit", b.api617_um.clone()).color(LIMIT).style(LineStyle::dashed_dense()).width(2.0),
+                Line::new("API 617 limit", b.api617_um.clone()).color(limit).style(LineStyle::dashed_dense()).width(2.0),
             );
         });
     plot_without_legend("rotor_unbalance_phase", ui, height)
@@ -613,11 +617,12 @@ fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
 }
 
 fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
+    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
     let colors = PALETTE;
     let mut legend: Vec<(String, Color32)> =
         (0..m.modes.len()).map(|i| (format!("mode {}", i + 1), colors[i % colors.len()])).collect();
-    legend.push(("bearings k_xx (dashed), k_yy (dotted)".into(), BACKWARD));
-    legend.push(("dots: crossings, critical speeds on the bearings".into(), LIMIT));
+    legend.push(("bearings k_xx (dashed), k_yy (dotted)".into(), backward));
+    legend.push(("dots: crossings, critical speeds on the bearings".into(), limit));
     legend_ui(ui, &legend);
     plot_without_legend("rotor_critical_map", ui, (ui.available_height() - 10.0).max(160.0))
         .x_axis_label("support stiffness at the bearings [N/m]")
@@ -631,10 +636,10 @@ fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
             }
             for (name, points) in &m.bearings {
                 let style = if name.ends_with("k_xx") { LineStyle::dashed_dense() } else { LineStyle::dotted_dense() };
-                p.line(Line::new(name.clone(), points.clone()).color(BACKWARD).style(style).width(1.6));
+                p.line(Line::new(name.clone(), points.clone()).color(backward).style(style).width(1.6));
             }
             p.points(
-                Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(LIMIT),
+                Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(limit),
             );
         });
 }
@@ -683,6 +688,7 @@ fn sketch_ui(
     let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 124.0), egui::Sense::click());
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "rotor sketch"));
     let painter = ui.painter_at(rect);
+    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
     let margin = 12.0;
     let sx = (rect.width() - 2.0 * margin) / s.length_mm.max(1e-9) as f32;
     let sy = 30.0 / s.max_diameter_mm.max(1e-9) as f32;
@@ -732,18 +738,18 @@ fn sketch_ui(
             SketchItem::Bearing => {
                 painter.add(egui::Shape::convex_polygon(
                     vec![r.center_top(), r.left_bottom(), r.right_bottom()],
-                    BACKWARD,
+                    backward,
                     Stroke::NONE,
                 ));
             }
             SketchItem::Numbers | SketchItem::Support => {
-                painter.line_segment([r.left_top(), r.right_bottom()], Stroke::new(2.0, LIMIT));
-                painter.line_segment([r.left_bottom(), r.right_top()], Stroke::new(2.0, LIMIT));
+                painter.line_segment([r.left_top(), r.right_bottom()], Stroke::new(2.0, limit));
+                painter.line_segment([r.left_bottom(), r.right_top()], Stroke::new(2.0, limit));
             }
             SketchItem::Unbalance => {
-                painter.circle_filled(r.center(), 4.0, LIMIT);
+                painter.circle_filled(r.center(), 4.0, limit);
                 painter
-                    .line_segment([r.center_bottom(), egui::pos2(r.center().x, mid - 30.0)], Stroke::new(1.0, LIMIT));
+                    .line_segment([r.center_bottom(), egui::pos2(r.center().x, mid - 30.0)], Stroke::new(1.0, limit));
             }
         }
         if selected.is_some() && item_selection(kind, rank) == selected {

@@ -11,6 +11,7 @@ use egui::{Color32, ComboBox, DragValue, RichText, Ui};
 use egui_plot::{Legend, Line, MarkerShape, Plot, Points, VLine};
 
 use super::{View, ViewContext};
+use crate::app::ink::{self, Ink};
 use crate::app::frame_probe::Job;
 use crate::app::sweep_job::SweepJob;
 use crate::bearing::stages::StageId;
@@ -22,9 +23,9 @@ use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
 use super::plot_kit::{decade_label, legend_ui, PALETTE};
 use crate::study::COLUMNS;
 
-const LINE: Color32 = Color32::from_rgb(86, 180, 233);
-const CURRENT: Color32 = Color32::from_rgb(230, 159, 0);
-const OVER_LIMIT: Color32 = Color32::from_rgb(235, 70, 60);
+/// The swept curve and the current case's point (sky blue and amber on the dark theme; darker on the light).
+const LINE: Ink = Ink { dark: Color32::from_rgb(86, 180, 233), light: Color32::from_rgb(0, 105, 170) };
+const CURRENT: Ink = Ink { dark: Color32::from_rgb(230, 159, 0), light: Color32::from_rgb(165, 100, 0) };
 
 /// The sweep view: its spec (kept between sessions) and the sweep run from it.
 #[derive(Default)]
@@ -185,7 +186,7 @@ pub fn sweep_view_ui(
         }
     }
     if let Some(e) = &view.error {
-        ui.label(RichText::new(format!("Cannot sweep: {e}")).color(OVER_LIMIT));
+        ui.label(RichText::new(format!("Cannot sweep: {e}")).color(ink::EXCEEDED.of(ui)));
     }
     for note in &view.replaced {
         ui.label(RichText::new(format!("Each point: {note}.")).weak());
@@ -304,6 +305,8 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
             ui.label(RichText::new(format!("{label} [{unit}]")).strong());
             let series = scaled(table.series(name, against_s));
             let flagged = scaled(table.series_over_limits(name, against_s));
+            let (line, current, over, reference) =
+                (LINE.of(ui), CURRENT.of(ui), ink::EXCEEDED.of(ui), ink::REFERENCE.of(ui));
             Plot::new(("sweep-plot", name.as_str()))
                 .height(height)
                 .legend(Legend::default())
@@ -311,22 +314,22 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
                 .y_axis_label(unit.clone())
                 .allow_scroll(false)
                 .show(ui, |p| {
-                    p.line(Line::new(label.clone(), series.clone()).color(LINE).width(1.8));
-                    p.points(Points::new(label.clone(), series).color(LINE).radius(2.5));
+                    p.line(Line::new(label.clone(), series.clone()).color(line).width(1.8));
+                    p.points(Points::new(label.clone(), series).color(line).radius(2.5));
                     if !flagged.is_empty() {
                         p.points(
                             Points::new("beyond a design limit", flagged)
-                                .color(OVER_LIMIT)
+                                .color(over)
                                 .shape(MarkerShape::Cross)
                                 .radius(6.0),
                         );
                     }
                     if let Some(x) = current_x {
-                        p.vline(VLine::new("this case", x).color(Color32::from_gray(150)));
+                        p.vline(VLine::new("this case", x).color(reference));
                         if let Some(y) = current_cells.as_ref().and_then(|c| c[k]) {
                             p.points(
                                 Points::new("this case", vec![[x, y / scale]])
-                                    .color(CURRENT)
+                                    .color(current)
                                     .shape(MarkerShape::Diamond)
                                     .radius(6.0),
                             );
@@ -336,11 +339,11 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
         }
         for (x, why) in table.failures() {
             let x = crate::number::sig(x, 6);
-            ui.label(RichText::new(format!("No solution at {x}: {why}")).color(Color32::from_rgb(230, 120, 60)));
+            ui.label(RichText::new(format!("No solution at {x}: {why}")).color(ink::WARNING.of(ui)));
         }
         for (x, names) in table.limit_marks() {
             let x = crate::number::sig(x, 6);
-            ui.label(RichText::new(format!("At {x}: beyond the design limits {names}")).color(OVER_LIMIT));
+            ui.label(RichText::new(format!("At {x}: beyond the design limits {names}")).color(ink::EXCEEDED.of(ui)));
         }
     });
 }
