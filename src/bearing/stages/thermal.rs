@@ -80,7 +80,6 @@ impl ThermalInputs {
             convection_w_per_m2_k: _,
             ambient_temperature_c: _,
             pad_conductivity_w_per_m_k: _,
-            carry_over: _,
             inlet_temperature_c: _,
             journal_temperature_c: _,
             cavitated_film: _,
@@ -89,7 +88,8 @@ impl ThermalInputs {
             reference_temperature_c: _,
             housing_expansion_per_k: _,
             housing_temperature_c: _,
-            max_iterations: _, // kept whole below
+            max_iterations: _,
+            feeding: _, // kept whole below
         } = thermal;
         // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
         let pad_elastic = (*pad_expansion_per_k != 0.0)
