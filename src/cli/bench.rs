@@ -376,6 +376,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_turb::section(root, repeats.min(3))?);
     md.push_str(&super::bench_control::section(root, repeats.min(3))?);
     md.push_str(&super::bench_sommerfeld::section(root, repeats.min(3))?);
+    md.push_str(&super::bench_feeding::section(root, repeats.min(3))?);
     let _ = writeln!(
         md,
         "\n## Notes\n\n\

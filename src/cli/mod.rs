@@ -11,6 +11,7 @@ mod bench;
 mod bench_batch;
 mod bench_cavitation;
 mod bench_control;
+mod bench_feeding;
 mod bench_flex;
 mod bench_frf;
 mod bench_rotor;
@@ -288,7 +289,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`) and replace it in docs/PERFORMANCE.md, keeping the rest.
+        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`, `feeding`) and replace it in docs/PERFORMANCE.md, keeping the rest.
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
@@ -562,9 +563,14 @@ pub fn run(command: Command) -> Result<()> {
                 bench_sommerfeld::HEADING,
                 &bench_sommerfeld::section(&root, repeats.clamp(1, 3))?,
             ),
+            Some("feeding") => bench::replace_section(
+                &root,
+                bench_feeding::HEADING,
+                &bench_feeding::section(&root, repeats.clamp(1, 3))?,
+            ),
             Some(other) => {
                 anyhow::bail!(
-                    "--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control, sommerfeld"
+                    "--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control, sommerfeld, feeding"
                 )
             }
         },

@@ -37,7 +37,7 @@ pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTa
     let values = spec.values().with_context(|| format!("--points {points}: allowed 2 to {MAX_POINTS}"))?;
     let mut runner = Runner::new(text, set.to_vec(), true);
     let mut table = SweepTable::new(&spec.key);
-    let pb = super::sweep::progress(values.len());
+    let mut pb = super::sweep::progress(values.len());
     for (i, x) in values.into_iter().enumerate() {
         pb.set_message(format!("{} = {x:.4}", spec.key));
         let (row, _) = runner.row(i, &point_override(&spec.key, x));

@@ -255,8 +255,6 @@ pub struct Thermal {
     pub ambient_temperature_c: f64,
     /// Pad conductivity [W/(m K)].
     pub pad_conductivity_w_per_m_k: f64,
-    /// Hot-oil carry-over λ.
-    pub carry_over: f64,
     /// Given leading-edge temperature [°C], else the mixing balance.
     pub inlet_temperature_c: Option<f64>,
     /// Given journal temperature [°C], else zero net heat flux.
@@ -271,6 +269,34 @@ pub struct Thermal {
     /// (else the supply temperature).
     pub housing_expansion_per_k: f64,
     pub housing_temperature_c: Option<f64>,
+    /// How oil reaches the pads (`[feeding]`): the groove mixing rule and its carry-over.
+    pub feeding: Feeding,
+}
+
+/// How supply oil reaches the pads' leading edges, with the hot-oil carry-over each kind uses
+/// (docs/MODEL.md §3.4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Feeding {
+    /// Oil bath: the carried hot oil (`carry_over` of the upstream outflow) enters first.
+    Flooded { carry_over: f64 },
+    /// Supply at each leading edge: only `carry_over` (small) of the hot oil passes the groove, and enters first.
+    LeadingEdgeGroove { carry_over: f64 },
+    /// Supply sprayed between pads: the carried hot oil and the sprayed oil mix fully before the film takes its
+    /// share.
+    SprayBar { carry_over: f64 },
+}
+
+impl Feeding {
+    /// The fraction of the hot oil leaving the pad upstream that reaches the next leading edge.
+    #[must_use]
+    pub fn carry_over(self) -> f64 {
+        match self {
+            Self::Flooded { carry_over } | Self::LeadingEdgeGroove { carry_over } | Self::SprayBar { carry_over } => {
+                carry_over
+            }
+        }
+    }
 }
 
 /// The pad arc the levels' circumferential counts are set for (the 60–80° pads of the shipped

@@ -117,6 +117,11 @@ pub enum Inconsistency {
     HalfModelOffMidPlane,
     #[error("only used with pad_film_bc = \"bc2\"")]
     OnlyWithBc2,
+    /// A carry-over coefficient the case's feeding does not use (`used`: the key it uses).
+    #[error(
+        "not used with feeding.kind = \"{kind}\" (its hot-oil carry-over is {used}): remove it, or change feeding.kind"
+    )]
+    CarryOverOfOtherFeeding { kind: String, used: String },
     // ------------------------------------------------------------------------------------ hydraulics
     #[error("must be below the supply pressure")]
     ReturnNotBelowSupply,

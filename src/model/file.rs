@@ -41,6 +41,9 @@ pub struct CaseFile {
     pub physics: PhysicsFile,
     #[serde(default)]
     pub thermal: ThermalFile,
+    /// How oil reaches the pads (flooded, leading-edge groove, spray bar).
+    #[serde(default, skip_serializing_if = "FeedingFile::is_empty")]
+    pub feeding: FeedingFile,
     /// The controllable bearing's valve, lines and rig ([`super::hydraulics`]); absent for a passive bearing.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hydraulics: Option<super::hydraulics::HydraulicsFile>,
@@ -348,6 +351,39 @@ pub enum ThermalModelKind {
     Isothermal,
     /// Film energy equation, pad conduction and inlet mixing, iterated with the equilibrium.
     Thd,
+}
+
+/// `[feeding]`
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct FeedingFile {
+    /// `flooded` (default), `leading_edge_groove` or `spray_bar`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub kind: Option<FeedingKind>,
+    /// Hot-oil carry-over past a leading-edge groove λg.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub groove_carry_over: Option<f64>,
+}
+
+impl FeedingFile {
+    /// Nothing given (the section is left out when written).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        *self == Self::default()
+    }
+}
+
+/// How supply oil reaches the pads' leading edges (docs/MODEL.md §3.4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum FeedingKind {
+    /// The pads run in an oil bath.
+    #[default]
+    Flooded,
+    /// Supply oil fed at each pad's leading edge.
+    LeadingEdgeGroove,
+    /// Supply oil sprayed into the gap between pads.
+    SprayBar,
 }
 
 /// Heat exchange between the film and the pad's film-side surface (docs/MODEL.md §3).

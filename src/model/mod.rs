@@ -29,8 +29,8 @@ pub mod shaft;
 pub mod tuning;
 
 pub use case::{
-    Bearing, Case, CavitatedFilm, Cavitation, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice, Pad,
-    PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, Turbulence, ViscosityLaw,
+    Bearing, Case, CavitatedFilm, Cavitation, Feeding, Fidelity, LoadSpec, Lubricant, MeshSpec, Operating, Orifice,
+    Pad, PadFilmBc, PadKind, Physics, Thermal, ThermalModelKind, Turbulence, ViscosityLaw,
 };
 pub use error::CaseError;
 pub use file::CaseFile;

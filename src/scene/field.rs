@@ -22,10 +22,13 @@ pub enum FieldKind {
     FilmTemperature,
     /// Temperature of the pad's film-side surface, from the thermal model.
     PadTemperature,
+    /// Local film Reynolds number ρ U h / µ: where the film is laminar, in transition or turbulent.
+    Reynolds,
 }
 
 impl FieldKind {
-    pub const ALL: [Self; 4] = [Self::Pressure, Self::FilmThickness, Self::FilmTemperature, Self::PadTemperature];
+    pub const ALL: [Self; 5] =
+        [Self::Pressure, Self::FilmThickness, Self::FilmTemperature, Self::PadTemperature, Self::Reynolds];
 
     #[must_use]
     pub fn label(self) -> &'static str {
@@ -34,6 +37,7 @@ impl FieldKind {
             Self::FilmThickness => "Film thickness",
             Self::FilmTemperature => "Film temperature",
             Self::PadTemperature => "Pad surface temperature",
+            Self::Reynolds => "Local Reynolds number",
         }
     }
 
@@ -44,13 +48,14 @@ impl FieldKind {
             Self::Pressure => (MPA.symbol, MPA.from_si(1.0)),
             Self::FilmThickness => (UM.symbol, UM.from_si(1.0)),
             Self::FilmTemperature | Self::PadTemperature => ("°C", 1.0),
+            Self::Reynolds => ("–", 1.0),
         }
     }
 
     #[must_use]
     pub fn colormap(self) -> ColorMap {
         match self {
-            Self::Pressure | Self::FilmThickness => ColorMap::Viridis,
+            Self::Pressure | Self::FilmThickness | Self::Reynolds => ColorMap::Viridis,
             Self::FilmTemperature | Self::PadTemperature => ColorMap::Inferno,
         }
     }
@@ -66,6 +71,11 @@ impl FieldKind {
             }
             Self::FilmTemperature => "Oil temperature averaged across the film thickness (energy equation).",
             Self::PadTemperature => "Temperature of the pad's babbitt surface facing the film (pad conduction).",
+            Self::Reynolds => {
+                "Local film Reynolds number ρUh/µ (U the journal surface speed, h and µ at each point): laminar below \
+                 physics.transition_reynolds_start (default 1000), in the transition band up to \
+                 physics.transition_reynolds_end, turbulent above. Highest where the film is thick and hot."
+            }
         }
     }
 
@@ -78,6 +88,7 @@ impl FieldKind {
             Self::FilmThickness => Some(&field.film_thickness_m),
             Self::FilmTemperature => field.film_temperature_c.as_deref(),
             Self::PadTemperature => field.pad_surface_temperature_c.as_deref(),
+            Self::Reynolds => (!field.reynolds.is_empty()).then_some(&field.reynolds[..]),
         }
     }
 

@@ -12,6 +12,7 @@ mod control;
 mod convergence_thd;
 mod equilibrium_robustness;
 mod extremes;
+mod feeding;
 mod fidelity_arc;
 mod film_checks;
 mod flexible_pads;

@@ -326,3 +326,38 @@ fn turbulent_linearisation_matches_finite_differences() {
         println!("{mode}: worst |K − K_FD| {worst:.2e} of the diagonal");
     }
 }
+
+/// The local Reynolds field the field view draws (`FieldKind::Reynolds`): at every node `ρ U h / µ` of the
+/// solution's own thickness and viscosity; its largest value is the report's `Re max`, and the share of
+/// nodes past the band's start is the report's transitional fraction (the large bearing at 3600 rpm, THD
+/// off, preview: about half the film past 1000).
+#[test]
+fn the_reynolds_field_is_the_reports_local_reynolds_number() {
+    use tiltpad::scene::field::{FieldKind, PadMap};
+    let s = crate::common::solve(
+        "large-5pad-transition.toml",
+        &["mesh.fidelity=\"preview\"", "thermal.model=\"isothermal\""],
+    );
+    let (rho, u) = (860.0, s.derived.speed_rad_s * 0.2);
+    let (mut nodes, mut past, mut max) = (0_usize, 0_usize, 0.0_f64);
+    for p in &s.pads {
+        let f = &p.field;
+        assert_eq!(f.reynolds.len(), f.film_thickness_m.len());
+        for ((re, h), mu) in f.reynolds.iter().zip(&f.film_thickness_m).zip(&f.viscosity_pa_s) {
+            assert!((re / (rho * u * h / mu) - 1.0).abs() < 1e-12);
+            nodes += 1;
+            past += usize::from(*re > 1000.0);
+            max = max.max(*re);
+        }
+    }
+    #[allow(clippy::cast_precision_loss)]
+    let fraction = past as f64 / nodes as f64;
+    println!("Re max {max:.0}, {:.1} % of the nodes past 1000", 100.0 * fraction);
+    assert!((max / s.regime.reynolds_max - 1.0).abs() < 1e-12);
+    assert!((fraction - s.regime.transitional_fraction).abs() < 1e-12);
+    assert!(fraction > 0.2 && fraction < 0.8);
+    let maps = PadMap::all(&s, FieldKind::Reynolds);
+    assert_eq!(maps.len(), s.pads.len());
+    assert!((maps.iter().map(|m| m.max).fold(0.0, f64::max) / max - 1.0).abs() < 1e-12);
+    assert!(FieldKind::available(&s).contains(&FieldKind::Reynolds));
+}

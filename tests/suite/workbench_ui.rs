@@ -244,6 +244,23 @@ fn film_temperature_view_of_a_thermal_solve() {
     snapshot(&mut h, "fields_film_temperature_fillon");
 }
 
+/// The large five-pad bearing in transition: the local Reynolds number ρUh/µ of every pad, highest in the
+/// thick, unloaded films; the colour scale reaches the report's Re max.
+#[test]
+fn reynolds_field_view_of_the_large_bearing() {
+    let mut h = solved_app(Some(include_str!("../../cases/large-5pad-transition.toml")), |app| {
+        open_fields(app, |f| {
+            f.field = FieldKind::Reynolds;
+            f.pads = PadChoice::All;
+            f.flowlines = false;
+        })
+    });
+    let s = h.state().shown.clone().unwrap().solution;
+    assert!(s.regime.reynolds_max > 1000.0, "{}", s.regime.reynolds_max);
+    h.get_by_label_contains("Colour scale: Local Reynolds number");
+    snapshot(&mut h, "fields_reynolds_large_bearing");
+}
+
 /// The test rig with 17 bar on the lower pad (Publication 4, Fig. 6): the flow reverses upstream of the
 /// orifice. With injection off, the orifice is a sink.
 #[test]

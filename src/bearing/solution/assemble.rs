@@ -161,6 +161,11 @@ pub fn assemble_solution(
         let (hmin, inode) = film.h_min();
         let coordinate = |dof: PadDof| pm.dofs().iter().position(|d| *d == dof).map(|i| st.q[i]);
         let grid = &film.geom.grid;
+        let viscosity: Vec<f64> = match &op.nodal_viscosity[k] {
+            Some(v) => v.clone(),
+            None => vec![op.viscosity; film.p.len()],
+        };
+        let rho_u = case.lubricant.density_kg_per_m3 * op.surface_speed;
         let field = PadField {
             s_m: grid.s.clone(),
             theta_rad: grid.s.iter().map(|s| film.geom.theta_le + s / r).collect(),
@@ -170,10 +175,8 @@ pub fn assemble_solution(
             pressure_pa: film.p.clone(),
             film_thickness_m: film.h.node.clone(),
             cavitated: film.cavitated.clone(),
-            viscosity_pa_s: match &op.nodal_viscosity[k] {
-                Some(v) => v.clone(),
-                None => vec![op.viscosity; film.p.len()],
-            },
+            reynolds: film.h.node.iter().zip(&viscosity).map(|(h, mu)| rho_u * h / mu).collect(),
+            viscosity_pa_s: viscosity,
             film_temperature_c: None,
             pad_surface_temperature_c: None,
         };

@@ -43,6 +43,10 @@ pub struct PadField {
     pub cavitated: Vec<bool>,
     /// Viscosity at the nodes [Pa·s].
     pub viscosity_pa_s: Vec<f64>,
+    /// Local film Reynolds number ρ U h / µ at the nodes (docs/MODEL.md §2.7): laminar below
+    /// `physics.transition_reynolds_start`, turbulent above its end.
+    #[serde(default)]
+    pub reynolds: Vec<f64>,
     /// Film temperature (mean across the film) at the nodes [°C] (thermal model only).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub film_temperature_c: Option<Vec<f64>>,

@@ -90,7 +90,6 @@ impl ThermalInputs {
             convection_w_per_m2_k: _,
             ambient_temperature_c: _,
             pad_conductivity_w_per_m_k: _,
-            carry_over: _,
             inlet_temperature_c: _,
             journal_temperature_c: _,
             cavitated_film: _,
@@ -99,6 +98,7 @@ impl ThermalInputs {
             reference_temperature_c: _,
             housing_expansion_per_k: _,
             housing_temperature_c: _,
+            feeding: _, // kept whole below
         } = thermal;
         // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
         let pad_elastic = (*pad_expansion_per_k != 0.0)

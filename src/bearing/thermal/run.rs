@@ -18,6 +18,7 @@ use crate::bearing::thermal::growth::{Growth, GrowthField, TehdModel, GROWTH_TOL
 use crate::bearing::thermal::iteration::{
     equilibrium_params, film_temperatures, load_shares, nodal_viscosity, setup, viscosity_change, warm_equilibrium,
 };
+use crate::bearing::thermal::mixing;
 use crate::bearing::thermal::model::{
     PadThermalState, ThdState, ThermalConvergence, ThermalModel, ThermalParams, ThermalReport, ANDERSON_DEPTH,
     LIGHT_PAD_SHARE, MIN_RELAXATION,
@@ -26,6 +27,10 @@ use crate::bearing::thermal::pad_system::PadTemperatures;
 use crate::bearing::thermal::resumable::{equilibrium_part, PendingEquilibrium};
 use crate::model::Case;
 use crate::physics::energy::{BalanceInputs, Exchange, FilmHeat};
+
+/// A starved bearing's loop has converged when the flow offered to every leading edge (supply share plus
+/// carried hot oil) changes by less than this fraction between outer iterations.
+const OFFERED_FLOW_RTOL: f64 = 1e-3;
 
 mod update;
 /// The THD loop as a resumable computation: one [`ThdRun::step`] is one outer iteration (an equilibrium at
@@ -264,9 +269,13 @@ impl ThdRun {
         self.report.viscosity_change.push(change);
         self.last_change = change;
         self.report.thermal_seconds += tt.elapsed().as_secs_f64();
+        // A starved bearing's films are offered their supply share plus the carried hot oil (mixing.rs).
+        let offered = mixing::offered_inlets(case, &sols, &thermal.upstream);
+        let inlet_change = offered.as_ref().map_or(0.0, |o| mixing::inlet_change(&self.op.inlet, o));
         if change < params.viscosity_tol
             && growth_change <= GROWTH_TOL * case.bearing.assembled_clearance_m
             && self.pivot_change < pivots::RTOL
+            && inlet_change < OFFERED_FLOW_RTOL
         {
             self.report.converged = true;
             self.report.stop_reason = Some(ThermalConvergence {
@@ -301,6 +310,9 @@ impl ThdRun {
         }
         if self.report.outer_iterations >= params.max_iterations {
             return Err(self.budget_exceeded(Budget::Iterations(params.max_iterations)));
+        }
+        if let Some(o) = offered {
+            self.op.inlet = o;
         }
         let current = flatten(current);
         self.t_try = Some(self.propose(case, &current, &t_new, change));

@@ -10,7 +10,7 @@
 //!   the row's key (as `--set` does); only the [`Widget::Custom`] rows have code of their own there.
 //!
 //! Rows live in one file per part of the case file (`bearing.rs`, `running.rs`, `numerics.rs`, `thermal.rs`,
-//! `hydraulics.rs`, `limits.rs`), in the order the editor shows them; [`KEYS`] joins them. Keys inside arrays
+//! `feeding.rs`, `hydraulics.rs`, `limits.rs`), in the order the editor shows them; [`KEYS`] joins them. Keys inside arrays
 //! of tables are written with `[]` (`bearing.pads.orifice[].diameter_mm`); a per-pad override
 //! `bearing.pad.<i>.<name>` takes the row of `bearing.pads.<name>` ([`spec`] maps both).
 //!
@@ -51,6 +51,7 @@
 //! case writes has a row and that the editor reads and writes every editor row's key.
 
 mod bearing;
+mod feeding;
 mod hydraulics;
 mod limits;
 mod numerics;
@@ -65,6 +66,7 @@ use super::error::Range;
 pub use row::{Allowed, Editor, Fallback, Group, KeySpec, Widget};
 
 pub use bearing::MAX_CLEARANCE_RATIO;
+pub use feeding::GROOVE_CARRY_OVER;
 pub use numerics::{MAX_TOUCHDOWN_RATIO, MAX_TRANSITION_REYNOLDS};
 
 /// Temperatures [°C]: from arctic start-up to well above any oil's flash point.
@@ -78,7 +80,7 @@ const ANGLE: Range = Range::closed(-3600.0, 3600.0);
 pub const KEYS: &[KeySpec] = &join::<{ COUNT }>(PARTS);
 
 const PARTS: &[&[KeySpec]] =
-    &[bearing::KEYS, running::KEYS, numerics::KEYS, thermal::KEYS, hydraulics::KEYS, limits::KEYS];
+    &[bearing::KEYS, running::KEYS, numerics::KEYS, thermal::KEYS, feeding::KEYS, hydraulics::KEYS, limits::KEYS];
 const COUNT: usize = {
     let mut n = 0;
     let mut i = 0;

@@ -39,6 +39,7 @@ fn leaf_keys(v: &toml::Value, prefix: &str) -> Vec<String> {
 fn context(key: &str) -> Vec<String> {
     match key {
         "thermal.h_oil_pad_w_per_m2_k" => vec!["thermal.pad_film_bc=\"bc2\"".into()],
+        "feeding.groove_carry_over" => vec!["feeding.kind=\"leading_edge_groove\"".into()],
         "operating.eccentricity_ratio" | "operating.eccentricity_angle_deg" => {
             vec![
                 "operating.load_n=".into(),
@@ -187,7 +188,7 @@ fn the_editor_reads_and_writes_every_row_by_its_key() {
 #[test]
 fn the_file_enums_default_to_their_rows_word() {
     use crate::model::file::{
-        CavitatedFilmFile, Cavitation, Fidelity, PadFilmBcFile, PadKindFile, ThermalModelKind, Turbulence,
+        CavitatedFilmFile, Cavitation, FeedingKind, Fidelity, PadFilmBcFile, PadKindFile, ThermalModelKind, Turbulence,
     };
     use crate::model::rotor::CoefficientModel;
     use crate::model::shaft::BeamTheory;
@@ -202,6 +203,7 @@ fn the_file_enums_default_to_their_rows_word() {
         ("thermal.model", word::<ThermalModelKind>()),
         ("thermal.pad_film_bc", word::<PadFilmBcFile>()),
         ("thermal.cavitated_film", word::<CavitatedFilmFile>()),
+        ("feeding.kind", word::<FeedingKind>()),
     ];
     for (key, w) in &case {
         assert!(matches!(spec(key).unwrap().default, Fallback::Word(d) if d == *w), "{key}: the enum defaults to {w}");

@@ -6,7 +6,7 @@ use super::Group::Thermal;
 use super::Widget::{Choice, Optional};
 use super::{Fallback, KeySpec, TEMPERATURE};
 use crate::model::error::Range;
-use crate::model::file::{CaseFile, PadFilmBcFile, ThermalModelKind};
+use crate::model::file::{CaseFile, FeedingKind, PadFilmBcFile, ThermalModelKind};
 use crate::units::{CELSIUS, COUNT, ONE, PPM_PER_K, W_PER_M2_K, W_PER_M_K};
 
 type Key = KeySpec;
@@ -17,6 +17,10 @@ const EXPANSION: Range = Range::closed(0.0, 100.0);
 /// The thermal rows apply to the thermal (THD) model only.
 fn thd(f: &CaseFile) -> bool {
     f.thermal.model == Some(ThermalModelKind::Thd)
+}
+/// The feedings whose hot-oil carry-over is `thermal.carry_over` (not the leading-edge groove).
+fn carried_by_journal(f: &CaseFile) -> bool {
+    thd(f) && f.feeding.kind != Some(FeedingKind::LeadingEdgeGroove)
 }
 fn bc2(f: &CaseFile) -> bool {
     thd(f) && f.thermal.pad_film_bc == Some(PadFilmBcFile::Bc2)
@@ -69,8 +73,8 @@ pub(super) const KEYS: &[Key] = &[
         .typical(0.0, 1.0)
         .or(0.8)
         .edit(Thermal, "Hot-oil carry-over λ", Optional(2))
-        .when(thd)
-        .meaning("Fraction of the hot oil leaving a pad's trailing edge that enters the next pad (typically 0.7–0.9); fresh supply oil makes up the rest of the leading-edge inflow."),
+        .when(carried_by_journal)
+        .meaning("Flooded housing and spray bar (feeding.kind): fraction of the hot oil leaving a pad's trailing edge that the journal carries to the next pad's leading edge (typically 0.7–0.9). Flooded, it enters the film first and fresh supply oil makes up the rest; with a spray bar it mixes fully with the sprayed oil. A leading-edge groove uses feeding.groove_carry_over instead."),
     Key::number("thermal.inlet_temperature_c", CELSIUS, TEMPERATURE)
         .typical(0.0, 150.0)
         .default(Fallback::Rule("from the groove mixing"))
