@@ -33,6 +33,8 @@ pub enum Job {
     Pin,
     /// The rotor view's analysis.
     Rotor,
+    /// The Control view's sweep or its loop closed again.
+    Control,
 }
 
 impl fmt::Display for Job {
@@ -45,6 +47,7 @@ impl fmt::Display for Job {
             }
             Self::Sweep => write!(f, "sweep"),
             Self::Rotor => write!(f, "rotor analysis"),
+            Self::Control => write!(f, "closed-loop analysis"),
             Self::Pin => write!(f, "pin re-solve"),
         }
     }

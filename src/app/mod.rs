@@ -15,6 +15,7 @@
 
 mod actions;
 mod compare_views;
+pub mod control_worker;
 pub mod document;
 pub mod editor;
 pub mod files;

@@ -10,10 +10,11 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 
 use crate::control::analysis::{ControlAnalysis, ControlParams, ControlResult, GainOnset};
-use crate::model::control::{Control, PlantInfo};
+use crate::control::rig::{RigLoop, RigPoint};
+use crate::model::control::{parse_control_file, Control, PlantInfo};
 use crate::model::rotor::{parse_rotor_file, Rotor};
 use crate::study::estimate::Estimate;
-use crate::units::{BAR, RPM, UM};
+use crate::units::{BAR, KN, RPM, UM};
 
 use super::rotor::{parse_speeds, read_rotor};
 use super::rows::announce;
@@ -32,8 +33,16 @@ pub struct ControlArgs<'a> {
     pub max_hours: f64,
     pub gain: Option<f64>,
     pub gain_sweep: Option<&'a str>,
+    /// Speed of the root locus [rpm].
+    pub root_locus_rpm: Option<f64>,
     pub json: Option<PathBuf>,
+    /// Keep the Nyquist curves in the JSON.
+    pub nyquist_curves: bool,
     pub csv: Option<PathBuf>,
+    /// Onset against the gain, one row per gain.
+    pub gain_csv: Option<PathBuf>,
+    /// The root locus, one row per gain and pole.
+    pub locus_csv: Option<PathBuf>,
 }
 
 /// Reads a rotor file and its controller.
@@ -91,6 +100,18 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     if let Some(spec) = args.gain_sweep {
         params.gains = parse_gains(spec)?;
     }
+    if let Some(rpm) = args.root_locus_rpm {
+        if !(rpm.is_finite() && rpm >= 0.0) {
+            bail!("--root-locus {rpm}: expected a speed ≥ 0 rpm");
+        }
+        params.root_locus_rad_s = Some(RPM.to_si(rpm));
+    }
+    if args.gain_csv.is_some() && params.gains.is_empty() {
+        bail!("--gain-csv needs --gain-sweep (the gains whose onsets it lists)");
+    }
+    if args.locus_csv.is_some() && params.root_locus_rad_s.is_none() {
+        bail!("--locus-csv needs --root-locus RPM (the speed of the locus)");
+    }
     // The onsets open, closed and at each gain of the sweep bisect with bearing solves of their own.
     let probes = (2 + params.gains.len()).saturating_mul(super::rotor::ONSET_PROBES);
     let estimate = Estimate::rotor("control", &rotor, params.speeds_rad_s.len(), probes);
@@ -113,11 +134,18 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
         }
     }
     pb.set_message("onsets");
-    let result = analysis.finish().with_context(context)?;
+    let mut result = analysis.finish().with_context(context)?;
     pb.finish_and_clear();
     let done = result.speeds.len();
     if done == 0 {
         return Err(super::interrupt::Interrupted::new(0, of, "speeds", &[]).into());
+    }
+    if !args.nyquist_curves {
+        for s in &mut result.speeds {
+            for l in &mut s.loops {
+                l.curve.clear();
+            }
+        }
     }
     let text = summary(&result);
     if is_stdout(args.json.as_ref()) || is_stdout(args.csv.as_ref()) {
@@ -126,7 +154,7 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
         print!("{text}");
     }
     if let Some(out) = &args.json {
-        let mut s = serde_json::to_string_pretty(&result)?;
+        let mut s = serde_json::to_string(&result)?;
         s.push('\n');
         write_atomic(out, s.as_bytes())?;
         announce(out);
@@ -135,12 +163,59 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
         write_atomic(out, csv_text(&result)?.as_bytes())?;
         announce(out);
     }
+    if let Some(out) = &args.gain_csv {
+        write_atomic(out, gain_csv_text(&result)?.as_bytes())?;
+        announce(out);
+    }
+    if let Some(out) = &args.locus_csv {
+        write_atomic(out, locus_csv_text(&result)?.as_bytes())?;
+        announce(out);
+    }
     if done < of {
         let outputs: Vec<&Path> = [args.json.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
         let outputs = if outputs.is_empty() { vec![Path::new("-")] } else { outputs };
         return Err(super::interrupt::Interrupted::new(done, of, "speeds", &outputs).into());
     }
     Ok(())
+}
+
+/// Onset against the loop gain: one row per gain of the sweep (`onset_rpm` empty: none in the speed range;
+/// `stable_at_first_speed` false: the onset lies below it).
+///
+/// # Errors
+/// CSV writer errors.
+pub fn gain_csv_text(r: &ControlResult) -> Result<String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(["gain", "onset_rpm", "stable_at_first_speed"])?;
+    for g in &r.gain_sweep {
+        w.write_record([
+            format!("{}", g.gain),
+            g.onset_rad_s.map_or(String::new(), |x| format!("{}", RPM.from_si(x))),
+            g.stable_at_first.to_string(),
+        ])?;
+    }
+    Ok(String::from_utf8(w.into_inner()?)?)
+}
+
+/// The root locus: one row per gain and pole (oscillatory poles once, with their frequency; real poles with
+/// frequency 0).
+///
+/// # Errors
+/// CSV writer errors.
+pub fn locus_csv_text(r: &ControlResult) -> Result<String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(["speed_rpm", "gain", "real_per_s", "frequency_hz", "log_dec"])?;
+    if let Some(l) = &r.root_locus {
+        let rpm = format!("{}", RPM.from_si(l.speed_rad_s));
+        for (g, poles) in l.gains.iter().zip(&l.poles) {
+            for p in poles {
+                let im = p[1] * std::f64::consts::TAU;
+                let log_dec = if im > 0.0 { format!("{}", -std::f64::consts::TAU * p[0] / im) } else { String::new() };
+                w.write_record([rpm.clone(), format!("{g}"), format!("{}", p[0]), format!("{}", p[1]), log_dec])?;
+            }
+        }
+    }
+    Ok(String::from_utf8(w.into_inner()?)?)
 }
 
 fn onset_text(o: &GainOnset) -> String {
@@ -187,6 +262,17 @@ pub fn summary(r: &ControlResult) -> String {
     let _ = writeln!(s, "instability onset, loop closed: {}", onset_text(&r.onset_closed));
     for g in &r.gain_sweep {
         let _ = writeln!(s, "  gain {:>8.3}: onset {}", g.gain, onset_text(g));
+    }
+    if let Some(l) = &r.root_locus {
+        let _ = writeln!(
+            s,
+            "root locus at {:.0} rpm: {} gains from {} to {}, poles up to {} Hz",
+            RPM.from_si(l.speed_rad_s),
+            l.gains.len(),
+            l.gains.first().copied().unwrap_or(0.0),
+            l.gains.last().copied().unwrap_or(0.0),
+            l.max_hz
+        );
     }
     let ((po, wo), (pc, wc)) = peaks(r);
     if po > 0.0 {
@@ -288,6 +374,106 @@ pub fn csv_text(r: &ControlResult) -> Result<String> {
         }
         row.push(if p.api617_limit_um.is_finite() { format!("{}", p.api617_limit_um) } else { String::new() });
         w.write_record(&row)?;
+    }
+    Ok(String::from_utf8(w.into_inner()?)?)
+}
+
+/// The rig's loop closed by a controller file: X/F open and closed over the band, the loop's stability.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct RigLoopRows {
+    pub controller: String,
+    pub gain: f64,
+    /// Stable by the closed loop's eigenvalues (lines in lumped segments).
+    pub stable: bool,
+    pub min_log_dec: f64,
+    /// The valve's small-signal range [V].
+    pub limit_v: f64,
+    pub points: Vec<RigPoint>,
+}
+
+/// Closes the rig's loop of `case` (its FRF `model`) with the controller file at `path`; prints a summary
+/// (stability, X/F peaks open and closed, the valve signal per force against the small-signal range).
+///
+/// # Errors
+/// An unreadable or invalid controller file (naming the key), a controller that is not the rig's loop.
+pub fn rig_loop(
+    path: &Path,
+    case: &crate::model::Case,
+    model: &crate::bearing::frf::model::FrfModel,
+    freqs: &[f64],
+) -> Result<RigLoopRows> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("cannot read controller file {}", path.display()))?;
+    let file = parse_control_file(&text).with_context(|| format!("invalid controller file {}", path.display()))?;
+    let control = file
+        .control
+        .resolve(&PlantInfo::rig(case))
+        .with_context(|| format!("invalid controller file {}", path.display()))?;
+    let limit_v = match control.actuators.first() {
+        Some(a) => a.max_voltage_v.unwrap_or_else(|| {
+            case.hydraulics.as_ref().map_or(10.0, |h| h.valve.full_scale_v)
+                * crate::physics::hydraulics::servovalve::SMALL_SIGNAL_FRACTION
+        }),
+        None => 0.0,
+    };
+    let rig = RigLoop::new(case, model, &control).with_context(|| format!("closing the loop of {}", path.display()))?;
+    let poles = rig.poles()?;
+    let points: Vec<RigPoint> = freqs.iter().filter_map(|&f| rig.at(f)).collect();
+    let peak = |closed: bool| {
+        points
+            .iter()
+            .map(|p| (if closed { p.closed_m_per_n } else { p.open_m_per_n }, p.frequency_hz))
+            .fold((0.0, 0.0), |a, b| if b.0 > a.0 { b } else { a })
+    };
+    let ((open, fo), (closed, fc)) = (peak(false), peak(true));
+    let signal = points.iter().map(|p| p.signal_v_per_n).fold(0.0, f64::max);
+    let per_kn = |x: f64| UM.from_si(x * KN.to_si(1.0));
+    eprintln!(
+        "rig loop ({}, gain {}): {}, smallest log dec {:.3}; X/F peak open {:.3} µm/kN at {fo:.1} Hz, closed {:.3} µm/kN at \
+         {fc:.1} Hz; valve signal up to {:.4} V/kN: the small-signal range ({limit_v:.2} V) holds to {:.0} N of shaker force",
+        path.display(),
+        control.gain,
+        if poles.stable() { "stable" } else { "UNSTABLE" },
+        poles.min_log_dec(),
+        per_kn(open),
+        per_kn(closed),
+        signal * KN.to_si(1.0),
+        if signal > 0.0 { limit_v / signal } else { f64::INFINITY }
+    );
+    Ok(RigLoopRows {
+        controller: path.display().to_string(),
+        gain: control.gain,
+        stable: poles.stable(),
+        min_log_dec: poles.min_log_dec(),
+        limit_v,
+        points,
+    })
+}
+
+/// One row per frequency: X/F open and closed [µm/kN, deg], the valve signal per force [V/kN].
+///
+/// # Errors
+/// CSV writer errors.
+pub fn rig_loop_csv(l: &RigLoopRows) -> Result<String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "frequency_hz",
+        "open_um_per_kn",
+        "open_phase_deg",
+        "closed_um_per_kn",
+        "closed_phase_deg",
+        "signal_v_per_kn",
+    ])?;
+    let per_kn = |x: f64| UM.from_si(x * KN.to_si(1.0));
+    for p in &l.points {
+        w.write_record([
+            format!("{}", p.frequency_hz),
+            format!("{}", per_kn(p.open_m_per_n)),
+            format!("{}", p.open_phase_deg),
+            format!("{}", per_kn(p.closed_m_per_n)),
+            format!("{}", p.closed_phase_deg),
+            format!("{}", p.signal_v_per_n * KN.to_si(1.0)),
+        ])?;
     }
     Ok(String::from_utf8(w.into_inner()?)?)
 }

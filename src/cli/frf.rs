@@ -26,6 +26,10 @@ pub struct FrfArgs<'a> {
     pub amplitude_v: Option<f64>,
     pub csv: Option<PathBuf>,
     pub json: Option<PathBuf>,
+    /// A controller file closing the loop on the rig.
+    pub control: Option<&'a Path>,
+    /// The rig's closed loop as CSV.
+    pub loop_csv: Option<PathBuf>,
 }
 
 /// Port names (`A`, `B`) of a case, in its order.
@@ -67,6 +71,13 @@ pub fn run(args: &FrfArgs<'_>) -> Result<()> {
         model.eccentricity_ratio,
         crate::units::BAR.from_si(h.supply_pressure_pa)
     );
+    let rig_loop = match args.control {
+        Some(path) => Some(super::control::rig_loop(path, &case, &model, &freqs)?),
+        None => None,
+    };
+    if rig_loop.is_none() && args.loop_csv.is_some() {
+        bail!("--loop-csv needs --control CONTROL.toml (the controller that closes the rig's loop)");
+    }
     let mut curves = FrfCurves::new(&sweep, &port_names(&case), title);
     if let Some(a) = args.amplitude_v {
         curves.check_signal(a, 0.1 * h.valve.full_scale_v);
@@ -85,9 +96,14 @@ pub fn run(args: &FrfArgs<'_>) -> Result<()> {
         write_file(p, curves.csv().as_bytes())?;
         announce(p);
     }
+    if let (Some(p), Some(l)) = (&args.loop_csv, &rig_loop) {
+        write_file(p, super::control::rig_loop_csv(l)?.as_bytes())?;
+        announce(p);
+    }
     if let Some(p) = &args.json {
         let doc = json!({
             "curves": curves,
+            "rig_loop": rig_loop,
             "seconds": { "equilibrium": model.report.seconds, "linearisation": model.linearise_seconds, "frf": sweep.seconds },
         });
         let mut text = serde_json::to_string_pretty(&doc)?;

@@ -237,12 +237,24 @@ pub enum Command {
         /// Onset speed at each of these loop gains: `G1,G2,…` or `FROM:TO:N`.
         #[arg(long, value_name = "GAINS", allow_hyphen_values = true)]
         gain_sweep: Option<String>,
-        /// Whole result as JSON (`-`: standard output).
+        /// Root locus at this speed [rpm] over the --gain-sweep gains (without it: 0 to twice the gain).
+        #[arg(long, value_name = "RPM")]
+        root_locus: Option<f64>,
+        /// Whole result as compact JSON (`-`: standard output).
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
+        /// Keep the Nyquist curves in the JSON (left out by default: they are most of its size).
+        #[arg(long)]
+        nyquist_curves: bool,
         /// One row per speed as CSV (`-`: standard output).
         #[arg(long, value_name = "OUT")]
         csv: Option<PathBuf>,
+        /// One row per gain of --gain-sweep (onset speed against the gain) as CSV.
+        #[arg(long, value_name = "OUT")]
+        gain_csv: Option<PathBuf>,
+        /// The root locus' poles as CSV (one row per gain and pole).
+        #[arg(long, value_name = "OUT")]
+        locus_csv: Option<PathBuf>,
     },
     /// Frequency responses of the controllable bearing (valve G1, line G2, film G3, G = G1·G2·G3 per port
     /// and force component; with `[hydraulics.rig]` the calibrated-shaker chain C, Ĥ, H).
@@ -268,6 +280,13 @@ pub enum Command {
         /// CSV of magnitude and phase per curve (`-`: standard output; the default without --json).
         #[arg(long, value_name = "OUT")]
         csv: Option<PathBuf>,
+        /// A controller file (`[control]`: the journal's vertical motion fed back to the valve) closing the
+        /// loop on the rig: X/F with control against without.
+        #[arg(long, value_name = "CONTROL.toml")]
+        control: Option<PathBuf>,
+        /// The rig's closed loop (X/F open and closed, valve signal per force) as CSV.
+        #[arg(long, value_name = "OUT")]
+        loop_csv: Option<PathBuf>,
         /// JSON of the curves, notes and timings.
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
@@ -456,9 +475,20 @@ pub fn run(command: Command) -> Result<()> {
             inputs::check_outputs(&[("case file", &case)], &[("--json", json.as_deref()), ("--csv", csv.as_deref())])?;
             modes::run(&modes::ModeArgs { case: &case, set: &set, count: usize::from(count), table, json, csv })
         }
-        Command::Frf { case, set, from, to, points, amplitude_v, csv, json } => {
+        Command::Frf { case, set, from, to, points, amplitude_v, csv, control, loop_csv, json } => {
             inputs::check_outputs(&[("case file", &case)], &[("--csv", csv.as_deref()), ("--json", json.as_deref())])?;
-            frf::run(&frf::FrfArgs { case: &case, set: &set, from_hz: from, to_hz: to, points, amplitude_v, csv, json })
+            frf::run(&frf::FrfArgs {
+                case: &case,
+                set: &set,
+                from_hz: from,
+                to_hz: to,
+                points,
+                amplitude_v,
+                csv,
+                json,
+                control: control.as_deref(),
+                loop_csv,
+            })
         }
         Command::Schema { rotor, json } => {
             use crate::model::{control_schema::CONTROL_KEYS, rotor_schema::ROTOR_KEYS, schema};
@@ -514,18 +544,33 @@ pub fn run(command: Command) -> Result<()> {
                 rotor::run(&args)
             }
         }
-        Command::Control { rotor, speeds, max_points, max_hours, gain, gain_sweep, json, csv } => {
-            control::run(&control::ControlArgs {
-                rotor: &rotor,
-                speeds: &speeds,
-                max_points,
-                max_hours,
-                gain,
-                gain_sweep: gain_sweep.as_deref(),
-                json,
-                csv,
-            })
-        }
+        Command::Control {
+            rotor,
+            speeds,
+            max_points,
+            max_hours,
+            gain,
+            gain_sweep,
+            root_locus,
+            json,
+            nyquist_curves,
+            csv,
+            gain_csv,
+            locus_csv,
+        } => control::run(&control::ControlArgs {
+            rotor: &rotor,
+            speeds: &speeds,
+            max_points,
+            max_hours,
+            gain,
+            gain_sweep: gain_sweep.as_deref(),
+            root_locus_rpm: root_locus,
+            json,
+            nyquist_curves,
+            csv,
+            gain_csv,
+            locus_csv,
+        }),
         Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => convergence_map::run(
             &root,
             &convergence_map::Selection { quick, step_deg, only },

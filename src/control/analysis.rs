@@ -15,6 +15,7 @@ use super::law::realise;
 use super::nyquist::{nyquist, Nyquist};
 use super::plant::{ActuatorPlant, Plant, ValvePlant};
 use super::state_space::StateSpace;
+use super::tuning::{root_locus, PlantSweep, RootLocus};
 use crate::bearing::film::coordinates::JOURNAL_DOFS;
 use crate::model::control::{ActuatorKind, Axis, Control};
 use crate::model::rotor::{BearingSupport, CoefficientModel, Rotor};
@@ -24,6 +25,9 @@ use crate::rotor::assembly::{NodeDof, ShaftModel, Weights};
 use crate::rotor::bearings::BearingSet;
 use crate::rotor::coupling::{assemble, BearingCoefficients};
 use crate::rotor::unbalance::{api617_limit_um, forces, Orbit};
+
+/// Poles kept on a root locus: up to this frequency [Hz] (the valves' and lines' poles lie far above).
+const LOCUS_MAX_HZ: f64 = 500.0;
 
 /// A force actuator's linear range when none is given [V].
 const FORCE_ACTUATOR_LIMIT_V: f64 = 10.0;
@@ -39,12 +43,14 @@ pub struct ControlParams {
     pub onset_tol: f64,
     /// Nyquist check and margins at every speed.
     pub nyquist: bool,
+    /// Speed of a root locus over [`Self::gains`] (or over 0 to twice the controller's gain, 21 steps) [rad/s].
+    pub root_locus_rad_s: Option<f64>,
 }
 
 impl ControlParams {
     #[must_use]
     pub fn new(speeds_rad_s: Vec<f64>) -> Self {
-        Self { speeds_rad_s, gains: Vec::new(), onset_tol: 1e-3, nyquist: true }
+        Self { speeds_rad_s, gains: Vec::new(), onset_tol: 1e-3, nyquist: true, root_locus_rad_s: None }
     }
 }
 
@@ -95,6 +101,9 @@ pub struct ControlResult {
     pub onset_closed: GainOnset,
     /// Onset at each gain of the sweep.
     pub gain_sweep: Vec<GainOnset>,
+    /// The root locus asked for ([`ControlParams::root_locus_rad_s`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub root_locus: Option<RootLocus>,
     /// Each actuator's linear range [V].
     pub limit_v: Vec<f64>,
     pub response_nodes: Vec<usize>,
@@ -117,6 +126,9 @@ pub struct ControlAnalysis {
     nodes: Vec<usize>,
     limits: Vec<f64>,
     plants: Vec<Plant>,
+    /// Plants at the onset bisections' probe speeds: every gain's bisection in the same bracket starts with
+    /// the same probes.
+    probes: Vec<(f64, Plant)>,
     done: Vec<SpeedResult>,
     eigen_solutions: usize,
     warnings: Vec<ControlWarning>,
@@ -171,6 +183,7 @@ impl ControlAnalysis {
             nodes,
             limits,
             plants: Vec::new(),
+            probes: Vec::new(),
             done: Vec::new(),
             eigen_solutions: 0,
             warnings: Vec::new(),
@@ -228,6 +241,39 @@ impl ControlAnalysis {
         let shaft = &self.shaft;
         let place = |node: usize, axis: Axis| shaft.weights(node, dof(axis));
         Plant::new(&sys, &place, &self.control.sensors, &actuators)
+    }
+
+    /// The speeds analysed so far.
+    #[must_use]
+    pub fn done(&self) -> &[SpeedResult] {
+        &self.done
+    }
+
+    /// The plants of the speeds analysed so far with their unbalance forces: the loop can be closed again
+    /// through another controller or gain without a bearing solve ([`super::tuning`]).
+    #[must_use]
+    pub fn sweep(&self) -> PlantSweep {
+        let forces = self
+            .done
+            .iter()
+            .zip(&self.plants)
+            .map(|(s, p)| {
+                (s.response.is_some())
+                    .then(|| forces(p.coordinates.nrows(), &self.shaft, &self.rotor.unbalances, s.speed_rad_s))
+            })
+            .collect();
+        let nodes = self
+            .nodes
+            .iter()
+            .map(|&n| (n, self.shaft.weights(n, NodeDof::X), self.shaft.weights(n, NodeDof::Y)))
+            .collect();
+        PlantSweep {
+            speeds_rad_s: self.done.iter().map(|s| s.speed_rad_s).collect(),
+            plants: self.plants.clone(),
+            forces,
+            nodes,
+            limits_v: self.limits.clone(),
+        }
     }
 
     fn place(&self, node: usize, axis: Axis) -> Weights {
@@ -313,9 +359,16 @@ impl ControlAnalysis {
     pub fn onset(&mut self, gain: f64) -> Result<GainOnset, ControlError> {
         let plants = std::mem::take(&mut self.plants);
         let mut stable = Vec::with_capacity(plants.len());
-        for p in &plants {
-            stable.push(poles(p, &self.controller, gain)?.stable());
-            self.eigen_solutions += 1;
+        for (p, done) in plants.iter().zip(&self.done) {
+            // the sweep's own poles at gain 0 and at the controller's gain are known
+            if gain == 0.0 {
+                stable.push(done.open.stable());
+            } else if gain == self.control.gain {
+                stable.push(done.closed.stable());
+            } else {
+                stable.push(poles(p, &self.controller, gain)?.stable());
+                self.eigen_solutions += 1;
+            }
         }
         self.plants = plants;
         let stable_at_first = stable.first().copied().unwrap_or(false);
@@ -330,9 +383,16 @@ impl ControlAnalysis {
         let mut probes = 0;
         while hi - lo > self.params.onset_tol * hi && probes < 60 {
             let mid = 0.5 * (lo + hi);
-            let plant = self.plant_at(mid)?;
+            let i = match self.probes.iter().position(|p| p.0 == mid) {
+                Some(i) => i,
+                None => {
+                    let plant = self.plant_at(mid)?;
+                    self.probes.push((mid, plant));
+                    self.probes.len() - 1
+                }
+            };
             self.eigen_solutions += 1;
-            if poles(&plant, &self.controller, gain)?.stable() {
+            if poles(&self.probes[i].1, &self.controller, gain)?.stable() {
                 lo = mid;
             } else {
                 hi = mid;
@@ -351,6 +411,20 @@ impl ControlAnalysis {
         let onset_closed = self.onset(self.control.gain)?;
         let gains = self.params.gains.clone();
         let gain_sweep = gains.iter().map(|&g| self.onset(g)).collect::<Result<Vec<_>, _>>()?;
+        let root_locus = match self.params.root_locus_rad_s {
+            Some(w) => {
+                let locus_gains = if gains.is_empty() {
+                    let top = if self.control.gain == 0.0 { 2.0 } else { 2.0 * self.control.gain };
+                    (0..=20).map(|i| top * f64::from(i) / 20.0).collect()
+                } else {
+                    gains
+                };
+                let plant = self.plant_at(w)?;
+                self.eigen_solutions += locus_gains.len();
+                Some(root_locus(&plant, &self.controller, w, &locus_gains, LOCUS_MAX_HZ)?)
+            }
+            None => None,
+        };
         let states = self.plants.last().map_or(0, |p| p.ss.states() + self.controller.states());
         self.warnings.dedup();
         Ok(ControlResult {
@@ -360,6 +434,7 @@ impl ControlAnalysis {
             onset_open,
             onset_closed,
             gain_sweep,
+            root_locus,
             limit_v: self.limits,
             response_nodes: self.nodes,
             states,

@@ -14,7 +14,7 @@ use nalgebra::{Complex, DMatrix};
 use super::closed_loop::{broken, poles};
 use super::law::realise;
 use super::nyquist::nyquist;
-use super::plant::{ActuatorPlant, Plant, ValvePlant};
+use super::plant::{ActuatorPlant, Plant};
 use super::state_space::C64;
 use crate::model::control::{Actuator, ActuatorKind, Axis, Control, Law, Quantity, SecondOrder, Sensor, SensorAt};
 use crate::rotor::assembly::Weights;
@@ -155,23 +155,8 @@ fn valve_chain_matches_the_frf_stage_on_the_rig() {
         damping: r.support_damping_ns_per_m,
     };
     let d = &frf.dynamics;
-    let n = d.k.nrows();
-    // system coordinates: journal y, then every pad coordinate (x held)
-    let keep: Vec<usize> = (1..n).collect();
-    let sub = |m: &DMatrix<f64>| DMatrix::from_fn(n - 1, n - 1, |i, j| m[(keep[i], keep[j])]);
-    let mut sys =
-        System { n_shaft: n - 1, appended: Vec::new(), mass: sub(&d.m), damping: sub(&d.c), stiffness: sub(&d.k) };
-    sys.mass[(0, 0)] += rig.mass;
-    sys.damping[(0, 0)] += rig.damping;
-    sys.stiffness[(0, 0)] += rig.stiffness;
-    let coordinates = (0..n).map(|c| if c == 0 { None } else { Some(vec![(c - 1, 1.0)]) }).collect();
-    let act = vec![ActuatorPlant::Valve(Box::new(ValvePlant {
-        hydraulics: hyd.clone(),
-        coupling: d.coupling.clone(),
-        coordinates,
-    }))];
-    let sensors = [Sensor { at: SensorAt::Journal(0), node: 0, direction: Axis::Y, quantity: Quantity::Displacement }];
-    let plant = Plant::new(&sys, &|_, _| vec![(0, 1.0)], &sensors, &act).unwrap();
+    let sensor = Sensor { at: SensorAt::Journal(0), node: 0, direction: Axis::Y, quantity: Quantity::Displacement };
+    let plant = super::rig::rig_plant(d, &hyd, rig, &sensor).unwrap();
     let mut worst: f64 = 0.0;
     for f in [0.0, 10.0, 30.0, 60.0, 120.0, 200.0] {
         let got = plant.ss.response(C64::new(0.0, std::f64::consts::TAU * f)).unwrap()[(0, 0)];

@@ -28,6 +28,9 @@ pub enum ControlError {
     /// The closed loop is singular at the forcing frequency.
     #[error("the closed loop is singular at {speed_rpm:.1} rpm")]
     Singular { speed_rpm: f64 },
+    /// A rig controller that is not one loop from the journal's vertical motion to the bearing's valve.
+    #[error("the rig's closed loop needs {what}")]
+    NotARigLoop { what: &'static str },
     /// A gain list that cannot be swept.
     #[error("--gain-sweep: gains must be finite (got {gain})")]
     Gain { gain: f64 },

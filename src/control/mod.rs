@@ -7,6 +7,8 @@
 //! - [`plant`]: the plant at one speed (rotor, pads, valve chains, force actuators);
 //! - [`closed_loop`]: the loop closed (poles, forced response) and broken at one actuator's input;
 //! - [`nyquist`]: the Nyquist criterion and the margins on the broken loop;
+//! - [`tuning`]: the loop closed again on plants already built (another gain, the root locus);
+//! - [`rig`]: the test rig's closed loop (X/F with control against without);
 //! - [`analysis`]: the speed sweep, the onset against the gain, the unbalance response with and without.
 //!
 //! SI inside; the loop is negative feedback, `u = −g K(s) y`.
@@ -19,6 +21,8 @@ pub mod error;
 pub mod law;
 pub mod nyquist;
 pub mod plant;
+pub mod rig;
 pub mod state_space;
+pub mod tuning;
 
 pub use error::{ControlError, ControlWarning};

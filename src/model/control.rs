@@ -242,7 +242,33 @@ pub struct PlantInfo<'a> {
     pub bearings: Vec<(usize, Option<&'a Case>)>,
 }
 
+/// A controller in a file of its own (`[control]` and nothing else): the test rig's, closed around the case's
+/// one bearing (bearing 0, its journal the only node).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ControlFile {
+    pub control: ControlTable,
+}
+
+/// Reads a controller file.
+///
+/// # Errors
+/// TOML syntax, unknown keys and wrong types, naming the key.
+pub fn parse_control_file(text: &str) -> Result<ControlFile, CaseError> {
+    let table: toml::Table = text.parse().map_err(|e: toml::de::Error| CaseError::Syntax { message: e.to_string() })?;
+    serde_path_to_error::deserialize::<_, ControlFile>(toml::Value::Table(table)).map_err(|e| {
+        let path = e.path().to_string();
+        super::load::schema_error(&path, &e.into_inner().to_string())
+    })
+}
+
 impl<'a> PlantInfo<'a> {
+    /// A bearing case on the test rig: one bearing (position 0) at node 0.
+    #[must_use]
+    pub fn rig(case: &'a Case) -> Self {
+        Self { n_nodes: 1, bearings: vec![(0, Some(case))] }
+    }
+
     /// The rotor's.
     #[must_use]
     pub fn rotor(rotor: &'a super::rotor::Rotor) -> Self {

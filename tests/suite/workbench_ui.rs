@@ -1368,3 +1368,28 @@ fn opening_without_a_portal_asks_for_the_path_in_the_workbench() {
     assert_eq!(rotor(&h).preset, tiltpad::app::views::rotor_view::ROTOR_PRESETS.len());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The Control view on the shipped active compressor rotor: with the shipped loop (gain 1) the closed-loop
+/// onset lies above the open loop's; the loop-gain slider moved to −1 (the loop's sign flipped) brings it
+/// below, without solving a bearing again.
+#[test]
+fn control_view_gain_slider_moves_the_onset() {
+    use tiltpad::app::views::control_view::ControlView;
+    let mut h = solved_app_at([1280.0, 720.0], None, |app| app.open::<ControlView>());
+    let view = |h: &Harness<'_, WorkbenchApp>| {
+        let v = h.state().view::<ControlView>().unwrap();
+        let t = v.tuned().expect("the loop closed at the sliders");
+        (v.onset_open_rad_s().unwrap(), t.tuning.gain, t.onset_rad_s.unwrap())
+    };
+    let (open, gain, closed) = view(&h);
+    eprintln!("onset open {:.0} rpm, gain {gain}: {:.0} rpm", RPM.from_si(open), RPM.from_si(closed));
+    assert_eq!(gain, 1.0);
+    assert!(closed > 1.02 * open, "{open} {closed}");
+    h.get_by_role_and_label(Role::Slider, "loop gain").set_value_accesskit(-1.0);
+    wait_for_solve(&mut h);
+    let (open2, gain, flipped) = view(&h);
+    eprintln!("gain {gain}: {:.0} rpm", RPM.from_si(flipped));
+    assert_eq!((gain, open2), (-1.0, open));
+    assert!(flipped < 0.98 * open, "{open} {flipped}");
+    h.get_by_label_contains("Onset of instability: loop open");
+}

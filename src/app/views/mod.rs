@@ -44,6 +44,7 @@ views! {
     rotor_view::RotorView,
     sweep_view::SweepView,
     pivot_loads::PivotLoadView,
+    control_view::ControlView,
 }
 
 #[cfg(test)]

@@ -1,0 +1,626 @@
+//! The Control view: the shipped active compressor rotor (`cases/rotors/compressor-rotor-active.toml`, its
+//! controllable bearings at preview fidelity) with its loop closed through the bearings' valves, and the
+//! sliders a designer turns — the loop gain and the PD gains of every loop — with, updated as they move:
+//!
+//! - the **root locus** at one speed over the loop gain (the lightly damped poles, the open loop and the
+//!   current gain marked), the gain and phase margins at each valve's input written on it;
+//! - the **stability map**: the smallest logarithmic decrement against speed, loop open and closed, each
+//!   onset marked;
+//! - the **unbalance response** at one node through the critical speeds, open and closed, with the valve
+//!   signal it needs against the valve's small-signal range.
+//!
+//! Two background jobs ([`crate::app::control_worker`]): the sweep solves the bearings once per speed and
+//! builds the plants ([`crate::control::analysis::ControlAnalysis`]); each slider change closes the loop
+//! again on those plants ([`crate::control::tuning`]: an eigen-solution and a complex solve per speed, no
+//! bearing solve). The onset on the map is interpolated between the sweep's speeds (`tiltpad control`
+//! bisects it with new bearing solves).
+
+use std::fmt::Write as _;
+use std::sync::Arc;
+
+use egui::{Color32, RichText, Ui};
+use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, Points, Text, VLine};
+
+use super::plot_kit::{labelled_spacer, legend_ui, PALETTE};
+use super::{View, ViewContext};
+use crate::app::control_worker::{Event, Runner, Work};
+use crate::app::frame_probe::Job;
+use crate::bearing::stages::StageId;
+use crate::control::analysis::{ControlAnalysis, ControlParams};
+use crate::control::closed_loop::broken;
+use crate::control::law::realise;
+use crate::control::nyquist::nyquist;
+use crate::control::tuning::{onset_on_grid, root_locus, PlantSweep, RootLocus, TunedSpeed};
+use crate::model::control::{Control, Law, PlantInfo, Rule};
+use crate::model::load_case;
+use crate::model::rotor::{parse_rotor_file, BearingSupport, Rotor};
+use crate::units::{MM, RPM, UM};
+
+/// The shipped active rotor and its bearing case.
+const ROTOR_NAME: &str = "compressor-rotor-active.toml";
+const ROTOR_TEXT: &str = include_str!("../../../cases/rotors/compressor-rotor-active.toml");
+const BEARING_NAME: &str = "compressor-bearing-active.toml";
+const BEARING_TEXT: &str = include_str!("../../../cases/compressor-bearing-active.toml");
+
+/// Speeds of the sweep [rpm]: from `FIRST_RPM` to `MAX_FACTOR` × the top of the operating range.
+const FIRST_RPM: f64 = 2000.0;
+const MAX_FACTOR: f64 = 1.3;
+const SPEEDS: usize = 25;
+/// The loop gain's slider range and the root locus' gains over it.
+pub const GAIN_RANGE: [f64; 2] = [-2.0, 4.0];
+const LOCUS_GAINS: usize = 25;
+/// The root locus shows poles up to this frequency [Hz] and damping ratio.
+const LOCUS_MAX_HZ: f64 = 150.0;
+const LOCUS_MAX_DAMPING: f64 = 0.25;
+/// Ranges of the PD sliders (every PD loop): kp [V/µm], kd [V per mm/s].
+const KP_RANGE: [f64; 2] = [-0.2, 0.2];
+const KD_RANGE: [f64; 2] = [-0.5, 0.5];
+
+const OPEN: Color32 = PALETTE[0];
+const CLOSED: Color32 = PALETTE[1];
+/// Warnings (saturation, a failed analysis).
+const LIMIT: Color32 = Color32::from_rgb(213, 94, 0);
+/// The API 617 line (dotted grey: the closed loop's colour is the warning's).
+const API: Color32 = Color32::from_gray(150);
+
+/// The sliders: what the loop is closed at.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tuning {
+    pub gain: f64,
+    /// The PD gains of every loop (`None`: the controller is not PD loops; the file's law is kept).
+    pub kp_v_per_um: Option<f64>,
+    pub kd_v_per_mm_s: Option<f64>,
+    /// Speed of the root locus and the margins (index in the sweep).
+    pub locus_at: usize,
+}
+
+/// The sweep's plants and the loop-open results.
+pub struct Built {
+    sweep: PlantSweep,
+    /// Loop open: per speed, the smallest log decrement and the unbalance orbits.
+    open_log_dec: Vec<f64>,
+    open_orbits: Vec<Vec<crate::rotor::unbalance::Orbit>>,
+    api617_um: Vec<f64>,
+}
+
+/// The loop closed at one [`Tuning`].
+pub struct Tuned {
+    pub tuning: Tuning,
+    pub speeds: Vec<TunedSpeed>,
+    pub onset_rad_s: Option<f64>,
+    pub locus: RootLocus,
+    /// Per actuator at the locus speed, the loop broken at its input: gain margin [dB], phase margin [deg]
+    /// and the broken loop's unstable poles (the Nyquist plot must then encircle −1 that often).
+    pub margins: Vec<(Option<f64>, Option<f64>, usize)>,
+}
+
+/// The first job: the bearings solved and the plants built at every speed.
+struct Build {
+    analysis: ControlAnalysis,
+}
+
+impl Work for Build {
+    type Output = Built;
+
+    fn step(&mut self) -> Result<Option<Built>, String> {
+        if !self.analysis.step().map_err(|e| e.to_string())? {
+            return Ok(None);
+        }
+        let done = self.analysis.done();
+        Ok(Some(Built {
+            sweep: self.analysis.sweep(),
+            open_log_dec: done.iter().map(|s| s.open.min_log_dec()).collect(),
+            open_orbits: done.iter().map(|s| s.response.as_ref().map(|r| r.open.clone()).unwrap_or_default()).collect(),
+            api617_um: done.iter().map(|s| s.api617_limit_um).collect(),
+        }))
+    }
+
+    fn progress(&self) -> (usize, usize) {
+        (self.analysis.done().len(), SPEEDS)
+    }
+}
+
+/// The second job: the loop closed at a tuning on the built plants.
+struct Tune {
+    built: Arc<Built>,
+    control: Control,
+    tuning: Tuning,
+    speeds: Vec<TunedSpeed>,
+}
+
+impl Work for Tune {
+    type Output = Tuned;
+
+    fn step(&mut self) -> Result<Option<Tuned>, String> {
+        let controller = realise(&self.control);
+        let sweep = &self.built.sweep;
+        let gain = self.tuning.gain;
+        if self.speeds.len() < sweep.len() {
+            self.speeds.push(sweep.at(self.speeds.len(), &controller, gain).map_err(|e| e.to_string())?);
+            return Ok(None);
+        }
+        let at = self.tuning.locus_at.min(sweep.len().saturating_sub(1));
+        let gains = locus_gains();
+        let locus = root_locus(&sweep.plants[at], &controller, sweep.speeds_rad_s[at], &gains, LOCUS_MAX_HZ)
+            .map_err(|e| e.to_string())?;
+        let mut margins = Vec::new();
+        for a in 0..sweep.limits_v.len() {
+            let n = nyquist(&broken(&sweep.plants[at], &controller, gain, a)).map_err(|e| e.to_string())?;
+            margins.push((n.gain_margin.map(|g| 20.0 * g.log10()), n.phase_margin_deg, n.open_unstable));
+        }
+        let log_dec: Vec<f64> = self.speeds.iter().map(|s| s.poles.min_log_dec()).collect();
+        Ok(Some(Tuned {
+            tuning: self.tuning,
+            onset_rad_s: onset_on_grid(&sweep.speeds_rad_s, &log_dec),
+            speeds: std::mem::take(&mut self.speeds),
+            locus,
+            margins,
+        }))
+    }
+
+    fn progress(&self) -> (usize, usize) {
+        (self.speeds.len(), self.built.sweep.len() + 1)
+    }
+}
+
+fn locus_gains() -> Vec<f64> {
+    #[allow(clippy::cast_precision_loss)]
+    (0..LOCUS_GAINS).map(|i| GAIN_RANGE[0] + (GAIN_RANGE[1] - GAIN_RANGE[0]) * i as f64 / (LOCUS_GAINS - 1) as f64).collect()
+}
+
+/// The view's state (runtime; nothing persisted).
+pub struct ControlView {
+    pub tuning: Tuning,
+    /// Response node shown (index in the sweep's response nodes).
+    pub node: usize,
+    loaded: Option<Result<(Rotor, Control), String>>,
+    build: Option<Runner<Build>>,
+    built: Option<Result<Arc<Built>, String>>,
+    progress: Option<(usize, usize)>,
+    tune: Option<Runner<Tune>>,
+    submitted: Option<Tuning>,
+    tuned: Option<Result<Tuned, String>>,
+}
+
+impl Default for ControlView {
+    fn default() -> Self {
+        Self {
+            tuning: Tuning { gain: 1.0, kp_v_per_um: None, kd_v_per_mm_s: None, locus_at: 0 },
+            node: 0,
+            loaded: None,
+            build: None,
+            built: None,
+            progress: None,
+            tune: None,
+            submitted: None,
+            tuned: None,
+        }
+    }
+}
+
+/// The shipped active rotor, its bearing cases at preview fidelity, and its controller.
+fn load() -> Result<(Rotor, Control), String> {
+    let file = parse_rotor_file(ROTOR_TEXT).map_err(|e| e.to_string())?;
+    let read = |name: &str| {
+        if name.rsplit('/').next() == Some(BEARING_NAME) {
+            Ok(BEARING_TEXT.to_string())
+        } else {
+            Err(format!("{name}: not shipped with the Control view"))
+        }
+    };
+    let mut rotor = file.resolve(&read).map_err(|e| e.to_string())?;
+    for (b, table) in rotor.bearings.iter_mut().zip(&file.rotor.bearing) {
+        if let BearingSupport::Case { case, .. } = &mut b.support {
+            let set: Vec<String> =
+                std::iter::once("mesh.fidelity=\"preview\"".to_string()).chain(table.set.clone()).collect();
+            **case = load_case(BEARING_TEXT, &set).map_err(|e| e.to_string())?.1;
+        }
+    }
+    let table = file.control.ok_or_else(|| crate::control::ControlError::NoController.to_string())?;
+    let control = table.resolve(&PlantInfo::rotor(&rotor)).map_err(|e| e.to_string())?;
+    Ok((rotor, control))
+}
+
+/// The response node (index) with the largest open-loop unbalance response over the sweep: the one the view
+/// opens on (through the first critical speed on the compressor rotor).
+fn largest_open_peak(b: &Built) -> usize {
+    let mut best = (0, 0.0);
+    for orbits in &b.open_orbits {
+        for (i, o) in orbits.iter().enumerate() {
+            if o.major_pp_m > best.1 {
+                best = (i, o.major_pp_m);
+            }
+        }
+    }
+    best.0
+}
+
+/// The sweep's speeds [rad/s].
+fn speeds(rotor: &Rotor) -> Vec<f64> {
+    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| RPM.from_si(b)) * MAX_FACTOR;
+    #[allow(clippy::cast_precision_loss)]
+    (0..SPEEDS).map(|i| RPM.to_si(FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64)).collect()
+}
+
+/// The PD gains shared by every loop [V/µm, V per mm/s] (`None` unless every loop is PD with the same gains).
+fn shared_pd(control: &Control) -> Option<(f64, f64)> {
+    let Law::Loops(loops) = &control.law else { return None };
+    let mut gains = loops.iter().map(|l| match l.rule {
+        Rule::Pd { kp, kd, .. } => Some((kp * UM.to_si(1.0), kd * MM.to_si(1.0))),
+        Rule::TransferFunction { .. } => None,
+    });
+    let first = gains.next()??;
+    gains.all(|g| g == Some(first)).then_some(first)
+}
+
+/// `control` with the sliders' PD gains in every loop.
+fn tuned_control(control: &Control, t: &Tuning) -> Control {
+    let mut c = control.clone();
+    if let (Law::Loops(loops), Some(kp), Some(kd)) = (&mut c.law, t.kp_v_per_um, t.kd_v_per_mm_s) {
+        for l in loops {
+            if let Rule::Pd { kp: p, kd: d, .. } = &mut l.rule {
+                *p = kp / UM.to_si(1.0);
+                *d = kd / MM.to_si(1.0);
+            }
+        }
+    }
+    c.gain = t.gain;
+    c
+}
+
+impl ControlView {
+    /// Nothing is being computed.
+    #[must_use]
+    pub fn is_idle(&self) -> bool {
+        self.build.as_ref().is_none_or(|r| !r.busy()) && self.tune.as_ref().is_none_or(|r| !r.busy())
+    }
+
+    /// The loop closed at the sliders, once computed.
+    #[must_use]
+    pub fn tuned(&self) -> Option<&Tuned> {
+        self.tuned.as_ref().and_then(|t| t.as_ref().ok())
+    }
+
+    /// The onset with the loop open [rad/s] (interpolated on the sweep), once the sweep is done.
+    #[must_use]
+    pub fn onset_open_rad_s(&self) -> Option<f64> {
+        let b = self.built.as_ref()?.as_ref().ok()?;
+        onset_on_grid(&b.sweep.speeds_rad_s, &b.open_log_dec)
+    }
+
+    /// Loads the rotor, starts the sweep, and closes the loop again when a slider moved.
+    fn drive(&mut self, ctx: &egui::Context) {
+        if self.loaded.is_none() {
+            let loaded = load();
+            if let Ok((rotor, control)) = &loaded {
+                if let Some((kp, kd)) = shared_pd(control) {
+                    (self.tuning.kp_v_per_um, self.tuning.kd_v_per_mm_s) = (Some(kp), Some(kd));
+                }
+                self.tuning.gain = control.gain;
+                self.tuning.locus_at = SPEEDS * 2 / 3;
+                let mut params = ControlParams::new(speeds(rotor));
+                params.nyquist = false;
+                match ControlAnalysis::new(rotor, control, params) {
+                    Ok(analysis) => {
+                        let mut runner = Runner::new(ctx.clone());
+                        runner.start(Build { analysis });
+                        self.build = Some(runner);
+                    }
+                    Err(e) => self.built = Some(Err(e.to_string())),
+                }
+            }
+            self.loaded = Some(loaded);
+        }
+        if let Some(runner) = self.build.as_mut() {
+            for e in runner.poll() {
+                match e {
+                    Event::Progress { done, of } => self.progress = Some((done, of)),
+                    Event::Done(r) => {
+                        if let Ok(b) = &r {
+                            self.node = largest_open_peak(b);
+                        }
+                        self.built = Some(r.map(Arc::new));
+                        self.progress = None;
+                    }
+                }
+            }
+        }
+        let (Some(Ok(built)), Some(Ok((_, control)))) = (&self.built, &self.loaded) else { return };
+        if self.submitted != Some(self.tuning) {
+            self.submitted = Some(self.tuning);
+            let work = Tune {
+                built: built.clone(),
+                control: tuned_control(control, &self.tuning),
+                tuning: self.tuning,
+                speeds: Vec::new(),
+            };
+            self.tune.get_or_insert_with(|| Runner::new(ctx.clone())).start(work);
+        }
+        if let Some(runner) = self.tune.as_mut() {
+            for e in runner.poll() {
+                if let Event::Done(r) = e {
+                    self.tuned = Some(r);
+                }
+            }
+        }
+    }
+}
+
+impl View for ControlView {
+    fn id(&self) -> &'static str {
+        "control"
+    }
+
+    fn label(&self) -> &'static str {
+        "Control"
+    }
+
+    /// Nothing of the edited case: the view analyses its shipped rotor in the background.
+    fn needs(&self) -> &'static [StageId] {
+        &[]
+    }
+
+    fn ui(&mut self, ui: &mut Ui, _cx: &mut ViewContext<'_>) {
+        control_ui(ui, self);
+    }
+
+    fn busy(&self) -> Option<Job> {
+        (!self.is_idle()).then_some(Job::Control)
+    }
+}
+
+/// Draws the view.
+pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
+    view.drive(ui.ctx());
+    let (title, control) = match &view.loaded {
+        Some(Ok(l)) => (l.0.title.clone(), l.1.clone()),
+        Some(Err(e)) => {
+            ui.label(RichText::new(format!("Cannot read {ROTOR_NAME}: {e}")).color(LIMIT));
+            return;
+        }
+        None => return,
+    };
+    ui.label(
+        RichText::new(format!("{title} — {ROTOR_NAME}, bearings at preview fidelity, {SPEEDS} speeds"))
+            .strong(),
+    );
+    let built = match &view.built {
+        Some(Ok(b)) => b.clone(),
+        Some(Err(e)) => {
+            ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT));
+            return;
+        }
+        None => {
+            ui.horizontal(|ui| {
+                ui.spinner();
+                let (done, of) = view.progress.unwrap_or((0, SPEEDS));
+                ui.label(format!("Solving the bearings and building the loop: speed {done} of {of}…"));
+            });
+            return;
+        }
+    };
+    sliders_ui(ui, view, &built);
+    let tuned = match &view.tuned {
+        Some(Ok(t)) => t,
+        Some(Err(e)) => {
+            ui.label(RichText::new(format!("Closing the loop failed: {e}")).color(LIMIT));
+            return;
+        }
+        None => {
+            ui.spinner();
+            return;
+        }
+    };
+    let nodes = built.sweep.response_nodes();
+    let onset_open = view.onset_open_rad_s();
+    let mut node = view.node.min(nodes.len().saturating_sub(1));
+    summary_ui(ui, &built, tuned, onset_open, node, control.actuators.len());
+    let height = (ui.available_height() - 8.0).max(240.0);
+    ui.columns(2, |cols| {
+        locus_ui(&mut cols[0], tuned, height);
+        let half = (height - 2.0 * cols[1].spacing().interact_size.y - 16.0) / 2.0;
+        stability_ui(&mut cols[1], &built, tuned, onset_open, half.max(100.0));
+        unbalance_ui(&mut cols[1], &built, tuned, &nodes, &mut node, half.max(100.0));
+    });
+    view.node = node;
+}
+
+fn sliders_ui(ui: &mut Ui, view: &mut ControlView, built: &Built) {
+    let t = &mut view.tuning;
+    let rpm: Vec<f64> = built.sweep.speeds_rad_s.iter().map(|w| RPM.from_si(*w)).collect();
+    let last = rpm.len().saturating_sub(1);
+    // Two sliders a row: the central panel between the editor and the results is about 500 points wide at
+    // 1280×720, and a row wider than it would widen the whole view under the side panels.
+    ui.spacing_mut().slider_width = 110.0;
+    ui.horizontal(|ui| {
+        ui.add(egui::Slider::new(&mut t.gain, GAIN_RANGE[0]..=GAIN_RANGE[1]).step_by(0.05).text("loop gain"))
+            .on_hover_text("Multiplies the whole controller: 0 opens the loop, −1 flips its sign.");
+        ui.add(
+            egui::Slider::new(&mut t.locus_at, 0..=last)
+                .custom_formatter(|v, _| {
+                    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                    let i = (v.round().max(0.0) as usize).min(last);
+                    format!("{:.0} rpm", rpm.get(i).copied().unwrap_or(0.0))
+                })
+                .text("root locus at"),
+        );
+    });
+    if t.kp_v_per_um.is_some() || t.kd_v_per_mm_s.is_some() {
+        ui.horizontal(|ui| {
+            if let Some(kp) = t.kp_v_per_um.as_mut() {
+                ui.add(egui::Slider::new(kp, KP_RANGE[0]..=KP_RANGE[1]).step_by(0.005).text("kp [V/µm]"))
+                    .on_hover_text("Displacement gain of every loop.");
+            }
+            if let Some(kd) = t.kd_v_per_mm_s.as_mut() {
+                ui.add(egui::Slider::new(kd, KD_RANGE[0]..=KD_RANGE[1]).step_by(0.01).text("kd [V/(mm/s)]"))
+                    .on_hover_text("Velocity gain of every loop.");
+            }
+        });
+    }
+}
+
+fn rpm_text(w: Option<f64>) -> String {
+    w.map_or_else(|| "none in the sweep".to_string(), |w| format!("{:.0} rpm", RPM.from_si(w)))
+}
+
+fn summary_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, onset_open: Option<f64>, node: usize, actuators: usize) {
+    let peak = |orbits: &mut dyn Iterator<Item = &Vec<crate::rotor::unbalance::Orbit>>| {
+        orbits.filter_map(|o| o.get(node)).map(|o| o.major_pp_m).fold(0.0, f64::max)
+    };
+    let open_peak = peak(&mut built.open_orbits.iter());
+    let closed_peak = peak(&mut tuned.speeds.iter().map(|s| &s.orbits));
+    let change = match (tuned.onset_rad_s, onset_open) {
+        (Some(c), Some(o)) => format!(" ({:+.1} %)", 100.0 * (c - o) / o),
+        _ => String::new(),
+    };
+    ui.label(format!(
+        "Onset of instability: loop open {}, closed {}{change}. Unbalance peak at the node shown: open {:.1} µm pp, closed {:.1} µm pp.",
+        rpm_text(onset_open),
+        rpm_text(tuned.onset_rad_s),
+        UM.from_si(open_peak),
+        UM.from_si(closed_peak)
+    ));
+    let mut saturates = Vec::new();
+    let mut text = String::from("Largest valve signal in that response:");
+    for a in 0..actuators {
+        let most = tuned.speeds.iter().filter_map(|s| s.signal_v.get(a)).copied().fold(0.0, f64::max);
+        let limit = built.sweep.limits_v.get(a).copied().unwrap_or(f64::INFINITY);
+        let _ = write!(text, " actuator {a} {most:.3} V of {limit:.2} V;");
+        if most > limit {
+            saturates.push(a);
+        }
+    }
+    if saturates.is_empty() {
+        ui.label(format!("{} inside the small-signal range.", text.trim_end_matches(';')));
+    } else {
+        ui.label(RichText::new(format!("{} saturates: actuators {saturates:?}.", text.trim_end_matches(';'))).color(LIMIT));
+    }
+}
+
+fn plot(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
+    let width = ui.available_width().min(ui.clip_rect().width());
+    Plot::new(id.to_string()).height(height).width(width).allow_scroll(false)
+}
+
+fn locus_ui(ui: &mut Ui, tuned: &Tuned, height: f32) {
+    let l = &tuned.locus;
+    let keep = |p: &[f64; 2]| {
+        let mag = p[0].hypot(std::f64::consts::TAU * p[1]);
+        -p[0] <= LOCUS_MAX_DAMPING * mag
+    };
+    let grey = Color32::from_gray(140);
+    legend_ui(
+        ui,
+        &[
+            (format!("locus, gain {:+} to {:+}", GAIN_RANGE[0], GAIN_RANGE[1]), grey),
+            ("loop open".into(), OPEN),
+            (format!("gain {:.2}", tuned.tuning.gain), CLOSED),
+        ],
+    );
+    let gain_index = |g: f64| l.gains.iter().position(|x| (x - g).abs() < 1e-12);
+    let locus: Vec<[f64; 2]> = l.poles.iter().flatten().filter(|p| keep(p)).copied().collect();
+    let open: Vec<[f64; 2]> = gain_index(0.0).map(|i| l.poles[i].iter().filter(|p| keep(p)).copied().collect()).unwrap_or_default();
+    let current: Vec<[f64; 2]> = tuned
+        .speeds
+        .get(tuned.tuning.locus_at.min(tuned.speeds.len().saturating_sub(1)))
+        .map(|s| {
+            s.poles
+                .modes
+                .iter()
+                .map(|m| [m.real_per_s, m.frequency_hz()])
+                .filter(|p| p[1] <= l.max_hz && keep(p))
+                .collect()
+        })
+        .unwrap_or_default();
+    let x_min = locus.iter().chain(&current).map(|p| p[0]).fold(-1.0, f64::min);
+    let x_max = locus.iter().chain(&current).map(|p| p[0]).fold(1.0, f64::max);
+    // Room above the poles for the margins written in the plot's top-left corner.
+    let y_top = 1.6 * locus.iter().chain(&current).map(|p| p[1]).fold(10.0, f64::max);
+    let mut margins = format!("{:.0} rpm, loop broken at each valve", RPM.from_si(l.speed_rad_s));
+    for (a, (gm, pm, p)) in tuned.margins.iter().enumerate() {
+        let gm = gm.map_or("—".to_string(), |g| format!("{g:.1} dB"));
+        let pm = pm.map_or("—".to_string(), |p| format!("{p:.0}°"));
+        let _ = write!(margins, "\nvalve {a}: GM {gm}, PM {pm}, P = {p}");
+    }
+    margins.push_str("\n(P: unstable poles of the broken loop)");
+    let height = (height - ui.spacing().interact_size.y - 8.0).max(200.0);
+    plot("control_root_locus", ui, height)
+        .x_axis_label("real part [1/s]")
+        .y_axis_label("damped frequency [Hz]")
+        .x_grid_spacer(labelled_spacer(60.0))
+        .y_grid_spacer(labelled_spacer(32.0))
+        .include_x(x_min * 1.05)
+        .include_x(x_max * 1.05)
+        .include_y(0.0)
+        .include_y(y_top)
+        .show(ui, |p| {
+            p.vline(VLine::new("stability boundary", 0.0).color(Color32::from_gray(120)));
+            p.points(Points::new("locus", locus).radius(1.5).color(grey));
+            p.points(Points::new("loop open", open).radius(4.0).shape(egui_plot::MarkerShape::Cross).color(OPEN));
+            p.points(Points::new(format!("gain {:.2}", tuned.tuning.gain), current).radius(3.5).filled(true).color(CLOSED));
+            p.text(
+                Text::new("margins", PlotPoint::new(x_min * 1.05, y_top), RichText::new(margins).small())
+                    .anchor(egui::Align2::LEFT_TOP),
+            );
+        });
+}
+
+fn stability_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, onset_open: Option<f64>, height: f32) {
+    let rpm: Vec<f64> = built.sweep.speeds_rad_s.iter().map(|w| RPM.from_si(*w)).collect();
+    let finite = |v: Vec<[f64; 2]>| v.into_iter().filter(|p| p[1].is_finite()).collect::<Vec<_>>();
+    let open = finite(rpm.iter().zip(&built.open_log_dec).map(|(x, y)| [*x, *y]).collect());
+    let closed = finite(rpm.iter().zip(&tuned.speeds).map(|(x, s)| [*x, s.poles.min_log_dec()]).collect());
+    // The onsets are the vertical lines (their speeds are in the summary above).
+    legend_ui(ui, &[("open (dashed)".to_string(), OPEN), (format!("gain {:.2}", tuned.tuning.gain), CLOSED)]);
+    plot("control_stability", ui, height)
+        .x_axis_label("speed [rpm]")
+        .y_axis_label("smallest log dec [–]")
+        .x_grid_spacer(labelled_spacer(70.0))
+        .y_grid_spacer(labelled_spacer(28.0))
+        .include_y(0.0)
+        .show(ui, |p| {
+            p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
+            p.line(Line::new("loop open", open).color(OPEN).style(LineStyle::dashed_loose()).width(1.6));
+            p.line(Line::new("loop closed", closed).color(CLOSED).width(2.0));
+            if let Some(w) = onset_open {
+                p.vline(VLine::new("onset open", RPM.from_si(w)).color(OPEN).style(LineStyle::dashed_loose()));
+            }
+            if let Some(w) = tuned.onset_rad_s {
+                p.vline(VLine::new("onset closed", RPM.from_si(w)).color(CLOSED).width(2.0));
+            }
+        });
+}
+
+fn unbalance_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, nodes: &[usize], node: &mut usize, height: f32) {
+    let rpm: Vec<f64> = built.sweep.speeds_rad_s.iter().map(|w| RPM.from_si(*w)).collect();
+    let curve = |orbits: &mut dyn Iterator<Item = &Vec<crate::rotor::unbalance::Orbit>>| -> Vec<[f64; 2]> {
+        rpm.iter().zip(orbits).filter_map(|(x, o)| o.get(*node).map(|o| [*x, UM.from_si(o.major_pp_m)])).collect()
+    };
+    let open = curve(&mut built.open_orbits.iter());
+    let closed = curve(&mut tuned.speeds.iter().map(|s| &s.orbits));
+    let api: Vec<[f64; 2]> = rpm.iter().zip(&built.api617_um).filter(|p| p.1.is_finite()).map(|(x, y)| [*x, *y]).collect();
+    ui.horizontal(|ui| {
+        let label = ui.label("Unbalance response at");
+        egui::ComboBox::from_id_salt("control-node")
+            .selected_text(format!("node {}", nodes.get(*node).copied().unwrap_or(0)))
+            .show_ui(ui, |ui| {
+                for (i, n) in nodes.iter().enumerate() {
+                    ui.selectable_value(node, i, format!("node {n}"));
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    legend_ui(ui, &[("open (dashed)".into(), OPEN), ("closed".into(), CLOSED), ("API 617 (dotted)".into(), API)]);
+    plot("control_unbalance", ui, height)
+        .x_axis_label("speed [rpm]")
+        .y_axis_label("orbit p-p [µm]")
+        .x_grid_spacer(labelled_spacer(70.0))
+        .y_grid_spacer(labelled_spacer(28.0))
+        .include_y(0.0)
+        .show(ui, |p| {
+            p.line(Line::new("loop open", open).color(OPEN).style(LineStyle::dashed_loose()).width(1.6));
+            p.line(Line::new("loop closed", closed).color(CLOSED).width(2.0));
+            p.line(Line::new("API 617 limit", api).color(API).style(LineStyle::dotted_dense()).width(1.5));
+        });
+}
