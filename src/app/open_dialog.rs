@@ -1,6 +1,6 @@
 //! "Open case…" and "Open rotor…" inside the workbench, for machines without a native file dialog (no
 //! desktop portal on the session bus): the user types a path, or picks one of the TOML files listed in the
-//! directory. Contract: nothing is read before the user asked for a file; a file that cannot be read (or is
+//! directory (its folders are listed too, to go into; `../` goes up). Contract: nothing is read before the user asked for a file; a file that cannot be read (or is
 //! not UTF-8 text) keeps the dialog open with the message naming it, and the case on screen is untouched
 //! until the read file goes through the unsaved-changes guard like any other opened case. The twin of
 //! [`super::save_dialog`].
@@ -50,6 +50,8 @@ pub struct OpenDialog {
     error: Option<String>,
     /// The `.toml` files of `listed_for`, sorted.
     listing: Vec<String>,
+    /// The folders of `listed_for`, sorted (clicking one goes into it).
+    folders: Vec<String>,
     listed_for: Option<String>,
     /// The name field got the keyboard focus when the dialog opened.
     focused: bool,
@@ -66,6 +68,7 @@ impl OpenDialog {
             name: String::new(),
             error: None,
             listing: Vec::new(),
+            folders: Vec::new(),
             listed_for: None,
             focused: false,
         }
@@ -85,6 +88,7 @@ impl OpenDialog {
             return;
         }
         self.listing = toml_files(Path::new(&dir));
+        self.folders = folders(Path::new(&dir));
         self.listed_for = Some(dir);
     }
 
@@ -118,7 +122,16 @@ impl OpenDialog {
                 self.error = None;
             }
             ui.label(RichText::new(format!("TOML files in this directory ({}):", self.listing.len())).weak());
+            let mut into = None;
             egui::ScrollArea::vertical().max_height(180.0).auto_shrink([false, true]).show(ui, |ui| {
+                if Path::new(self.directory.trim()).parent().is_some() && ui.selectable_label(false, "../").clicked() {
+                    into = Some("..".to_string());
+                }
+                for folder in &self.folders {
+                    if ui.selectable_label(false, format!("{folder}/")).clicked() {
+                        into = Some(folder.clone());
+                    }
+                }
                 for file in self.listing.iter().take(MAX_LISTED) {
                     if ui.selectable_label(self.name == *file, file).clicked() {
                         self.name.clone_from(file);
@@ -131,6 +144,9 @@ impl OpenDialog {
                     );
                 }
             });
+            if let Some(folder) = into {
+                self.enter(&folder);
+            }
             let target = self.target();
             if let Some(e) = &self.error {
                 ui.label(RichText::new(e).color(ink::ERROR.of(ui)));
@@ -152,6 +168,16 @@ impl OpenDialog {
             outcome = OpenOutcome::Cancelled;
         }
         outcome
+    }
+
+    /// Goes into the folder `name` of the directory (`..`: up one level).
+    fn enter(&mut self, name: &str) {
+        let dir = Path::new(self.directory.trim());
+        let next = if name == ".." { dir.parent().map(Path::to_path_buf) } else { Some(dir.join(name)) };
+        if let Some(next) = next {
+            self.directory = next.display().to_string();
+            self.error = None;
+        }
     }
 
     /// Reads `path`: the event for a read file, or the dialog stays open with the message.
@@ -180,6 +206,19 @@ fn toml_files(dir: &Path) -> Vec<String> {
         .filter_map(Result::ok)
         .filter(|e| e.path().is_file() && e.path().extension().is_some_and(|x| x.eq_ignore_ascii_case("toml")))
         .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// The names of the folders in `dir` that are not hidden, sorted.
+fn folders(dir: &Path) -> Vec<String> {
+    let Ok(entries) = std::fs::read_dir(dir) else { return Vec::new() };
+    let mut names: Vec<String> = entries
+        .filter_map(Result::ok)
+        .filter(|e| e.path().is_dir())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with('.'))
         .collect();
     names.sort();
     names
@@ -220,6 +259,14 @@ mod tests {
             std::fs::write(dir.join(f), "").unwrap();
         }
         assert_eq!(toml_files(&dir), ["a.TOML", "b.toml"]);
+        std::fs::create_dir_all(dir.join(".hidden")).unwrap();
+        assert_eq!(folders(&dir), ["sub.toml"]);
+        let mut d = OpenDialog::new(OpenKind::Case);
+        d.directory = dir.display().to_string();
+        d.enter("sub.toml");
+        assert_eq!(Path::new(&d.directory), dir.join("sub.toml"));
+        d.enter("..");
+        assert_eq!(Path::new(&d.directory), dir);
         assert!(toml_files(&dir.join("missing")).is_empty());
         std::fs::remove_dir_all(&dir).ok();
     }
