@@ -221,18 +221,11 @@ fn load() -> Result<(Rotor, Control), String> {
     Ok((rotor, control))
 }
 
-/// The response node (index) with the largest open-loop unbalance response over the sweep: the one the view
-/// opens on (through the first critical speed on the compressor rotor).
-fn largest_open_peak(b: &Built) -> usize {
-    let mut best = (0, 0.0);
-    for orbits in &b.open_orbits {
-        for (i, o) in orbits.iter().enumerate() {
-            if o.major_pp_m > best.1 {
-                best = (i, o.major_pp_m);
-            }
-        }
-    }
-    best.0
+/// The response node (index) the view opens on: the rotor's first unbalance (on the compressor rotor the
+/// mid-span impeller, whose response passes the first critical speed), else the first node.
+fn first_unbalance(b: &Built, rotor: &Rotor) -> usize {
+    let nodes = b.sweep.response_nodes();
+    rotor.unbalances.first().and_then(|u| nodes.iter().position(|n| *n == u.node)).unwrap_or(0)
 }
 
 /// The sweep's speeds [rad/s].
@@ -316,8 +309,8 @@ impl ControlView {
                 match e {
                     Event::Progress { done, of } => self.progress = Some((done, of)),
                     Event::Done(r) => {
-                        if let Ok(b) = &r {
-                            self.node = largest_open_peak(b);
+                        if let (Ok(b), Some(Ok((rotor, _)))) = (&r, &self.loaded) {
+                            self.node = first_unbalance(b, rotor);
                         }
                         self.built = Some(r.map(Arc::new));
                         self.progress = None;
@@ -565,6 +558,22 @@ fn locus_ui(ui: &mut Ui, tuned: &Tuned, height: f32) {
         });
 }
 
+/// A plot against speed [rpm] from 0 up.
+fn speed_plot(id: &str, y_label: &str, ui: &Ui, height: f32) -> Plot<'static> {
+    plot(id, ui, height)
+        .x_axis_label("speed [rpm]")
+        .y_axis_label(y_label.to_string())
+        .x_grid_spacer(labelled_spacer(70.0))
+        .y_grid_spacer(labelled_spacer(28.0))
+        .include_y(0.0)
+}
+
+/// The open loop dashed, the closed loop solid.
+fn open_and_closed(p: &mut egui_plot::PlotUi<'_>, open: Vec<[f64; 2]>, closed: Vec<[f64; 2]>) {
+    p.line(Line::new("loop open", open).color(OPEN).style(LineStyle::dashed_loose()).width(1.6));
+    p.line(Line::new("loop closed", closed).color(CLOSED).width(2.0));
+}
+
 fn stability_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, onset_open: Option<f64>, height: f32) {
     let rpm: Vec<f64> = built.sweep.speeds_rad_s.iter().map(|w| RPM.from_si(*w)).collect();
     let finite = |v: Vec<[f64; 2]>| v.into_iter().filter(|p| p[1].is_finite()).collect::<Vec<_>>();
@@ -572,16 +581,9 @@ fn stability_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, onset_open: Option<f6
     let closed = finite(rpm.iter().zip(&tuned.speeds).map(|(x, s)| [*x, s.poles.min_log_dec()]).collect());
     // The onsets are the vertical lines (their speeds are in the summary above).
     legend_ui(ui, &[("open (dashed)".to_string(), OPEN), (format!("gain {:.2}", tuned.tuning.gain), CLOSED)]);
-    plot("control_stability", ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label("smallest log dec [–]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .y_grid_spacer(labelled_spacer(28.0))
-        .include_y(0.0)
-        .show(ui, |p| {
+    speed_plot("control_stability", "smallest log dec [–]", ui, height).show(ui, |p| {
             p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
-            p.line(Line::new("loop open", open).color(OPEN).style(LineStyle::dashed_loose()).width(1.6));
-            p.line(Line::new("loop closed", closed).color(CLOSED).width(2.0));
+            open_and_closed(p, open, closed);
             if let Some(w) = onset_open {
                 p.vline(VLine::new("onset open", RPM.from_si(w)).color(OPEN).style(LineStyle::dashed_loose()));
             }
@@ -612,15 +614,8 @@ fn unbalance_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, nodes: &[usize], node
             .labelled_by(label.id);
     });
     legend_ui(ui, &[("open (dashed)".into(), OPEN), ("closed".into(), CLOSED), ("API 617 (dotted)".into(), API)]);
-    plot("control_unbalance", ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label("orbit p-p [µm]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .y_grid_spacer(labelled_spacer(28.0))
-        .include_y(0.0)
-        .show(ui, |p| {
-            p.line(Line::new("loop open", open).color(OPEN).style(LineStyle::dashed_loose()).width(1.6));
-            p.line(Line::new("loop closed", closed).color(CLOSED).width(2.0));
+    speed_plot("control_unbalance", "orbit p-p [µm]", ui, height).show(ui, |p| {
+            open_and_closed(p, open, closed);
             p.line(Line::new("API 617 limit", api).color(API).style(LineStyle::dotted_dense()).width(1.5));
         });
 }
