@@ -295,7 +295,7 @@ fn cli_writes_gain_rows_root_locus_and_compact_json() {
     eprintln!("JSON {} bytes; locus {} rows", json.len(), locus.lines().count() - 1);
 }
 
-/// The test rig's closed loop (`cases/test-rig-pub5-control.toml` on `cases/test-rig-pub5.toml`): X/F from the
+/// The test rig's closed loop (`cases/controllers/test-rig-pub5-control.toml` on `cases/test-rig-pub5.toml`): X/F from the
 /// FRF stage's transfers, `H/(1 + g K P)`, against the same loop in state space (lines in lumped segments)
 /// within 1e-3 from 10 to 200 Hz (measured below); at gain 0 the closed loop is the open rig exactly; the
 /// shipped loop is stable and cuts the resonance peak (measured 167 → 105 µm/kN), its sign flip raises it,
@@ -307,7 +307,9 @@ fn rig_closed_loop_frf_with_and_without_control() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("cases");
     let case = load_case(&std::fs::read_to_string(root.join("test-rig-pub5.toml")).unwrap(), &[]).unwrap().1;
     let frf = tiltpad::bearing::Stages::new().frf(&case, &tiltpad::bearing::NoCancel).unwrap();
-    let file = parse_control_file(&std::fs::read_to_string(root.join("test-rig-pub5-control.toml")).unwrap()).unwrap();
+    let file =
+        parse_control_file(&std::fs::read_to_string(root.join("controllers/test-rig-pub5-control.toml")).unwrap())
+            .unwrap();
     let mut control = file.control.resolve(&PlantInfo::rig(&case)).unwrap();
     let freqs: Vec<f64> = (10..=200).map(f64::from).collect();
     let peak = |l: &RigLoop, closed: bool| {
