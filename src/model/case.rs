@@ -187,9 +187,9 @@ pub struct Operating {
     /// Injection pressure at each pad's orifice entry [Pa] (one per pad).
     pub injection_pressure_pa: Vec<f64>,
     pub injection_temperature_c: f64,
-    /// Oil supply flow of the whole bearing [m³/s], shared equally by the pads' leading edges; `None`:
-    /// flooded pads.
-    pub supply_flow_m3_s: Option<f64>,
+    /// Oil supply flow of each pad's leading edge [m³/s] (the bearing's supply shared equally, or given per
+    /// pad); `None`: flooded pads.
+    pub supply_flow_m3_s: Option<Vec<f64>>,
     /// ω/Ω for the reduced coefficients.
     pub excitation_ratio: f64,
 }

@@ -112,6 +112,8 @@ pub enum Inconsistency {
     /// A starved inlet needs the film fraction, which only the mass-conserving cavitation model computes.
     #[error("a supply flow (starved pads) needs physics.cavitation = \"jfo\" (mass-conserving cavitation)")]
     SupplyFlowWithoutJfo,
+    #[error("give either the bearing's operating.supply_flow_l_per_min or the per-pad operating.pad_supply_flow_l_per_min, not both")]
+    SupplyFlowTwice,
     // ------------------------------------------------------------------------------ mesh and thermal
     #[error("the half model needs every orifice on the mid-plane (axial_frac = 0.5)")]
     HalfModelOffMidPlane,

@@ -242,6 +242,9 @@ pub struct OperatingFile {
     /// mass-conserving cavitation only). Absent: every pad is flooded.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub supply_flow_l_per_min: Option<f64>,
+    /// Oil supply flow of each pad (one value per pad, or one for every pad), instead of the bearing's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pad_supply_flow_l_per_min: Option<OneOrMany>,
     /// Excitation-to-running frequency ratio ω/Ω for the reduced coefficients (1: synchronous).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub excitation_ratio: Option<f64>,

@@ -500,11 +500,7 @@ fn resolve_operating(file: &CaseFile, n_pads: usize) -> Result<Operating, CaseEr
                 .collect::<Result<_, CaseError>>()?
         }
     };
-    let supply_flow = key!("operating.supply_flow_l_per_min");
-    let supply_flow_m3_s = supply_flow.optional(o.supply_flow_l_per_min)?;
-    if supply_flow_m3_s.is_some() && file.physics.cavitation != Some(Cavitation::Jfo) {
-        return Err(inconsistent(supply_flow.key, Inconsistency::SupplyFlowWithoutJfo));
-    }
+    let supply_flow_m3_s = resolve_supply_flow(file, n_pads)?;
     Ok(Operating {
         supply_flow_m3_s,
         speed_rad_s: speed,
@@ -547,6 +543,37 @@ fn resolve_mesh(file: &CaseFile, bearing: &Bearing) -> Result<MeshSpec, CaseErro
         pad_radial_elements: nr,
         max_nodes,
     })
+}
+
+/// Each pad's supply flow [m³/s]: the bearing's `operating.supply_flow_l_per_min` shared equally, or
+/// `operating.pad_supply_flow_l_per_min` per pad; `None` (flooded) without either. Both need the
+/// mass-conserving cavitation option.
+fn resolve_supply_flow(file: &CaseFile, n_pads: usize) -> Result<Option<Vec<f64>>, CaseError> {
+    let o = &file.operating;
+    let (bearing, pad) = (key!("operating.supply_flow_l_per_min"), key!("operating.pad_supply_flow_l_per_min"));
+    let flows = match (o.supply_flow_l_per_min, &o.pad_supply_flow_l_per_min) {
+        (None, None) => return Ok(None),
+        (Some(_), Some(_)) => {
+            return Err(inconsistent(pad.key, Inconsistency::SupplyFlowTwice));
+        }
+        #[allow(clippy::cast_precision_loss)]
+        (Some(q), None) => vec![bearing.value(Some(q))? / n_pads as f64; n_pads],
+        (None, Some(OneOrMany::One(q))) => vec![pad.value(Some(*q))?; n_pads],
+        (None, Some(OneOrMany::Many(v))) => {
+            if v.len() != n_pads {
+                return Err(inconsistent(pad.key, Inconsistency::PerPadValues { given: v.len(), pads: n_pads }));
+            }
+            v.iter()
+                .enumerate()
+                .map(|(i, q)| pad.value_at(&format!("{}[{i}]", pad.key), Some(*q)))
+                .collect::<Result<_, CaseError>>()?
+        }
+    };
+    if file.physics.cavitation != Some(Cavitation::Jfo) {
+        let key = if o.supply_flow_l_per_min.is_some() { bearing.key } else { pad.key };
+        return Err(inconsistent(key, Inconsistency::SupplyFlowWithoutJfo));
+    }
+    Ok(Some(flows))
 }
 
 /// `[thermal]`: the defaults are the rows' (isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply

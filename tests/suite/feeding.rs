@@ -143,3 +143,54 @@ fn bad_feeding_input_is_refused_naming_the_key() {
     assert!(err.contains("feeding.kind") && err.contains("leading_edge_groove"), "{err}");
     assert!(load(&[THD, "feeding.kind=\"spray_bar\"", "thermal.carry_over=0.5"]).is_ok());
 }
+
+/// A supply flow per pad (`operating.pad_supply_flow_l_per_min`): the bearing's 25 l/min written as five
+/// equal shares is the same solve bit for bit; with the same total shared unevenly (pad 2 offered 4 l/min,
+/// the loaded pad 3 6 l/min; isothermal, so no carried oil) pad 2 takes in exactly its own supply. (Much
+/// stronger starvation of one pad, 3 l/min, stops the mass-conserving equilibrium on its film-solve budget.)
+#[test]
+fn a_supply_flow_per_pad_feeds_each_pad_its_own_flow() {
+    let case = "compressor-bearing-starved.toml";
+    let shared = common::solve(case, &[PREVIEW]);
+    let per_pad =
+        common::solve(case, &[PREVIEW, "operating.supply_flow_l_per_min=", "operating.pad_supply_flow_l_per_min=5"]);
+    assert_eq!(shared.coordinates, per_pad.coordinates);
+    assert_eq!(shared.friction_power_w, per_pad.friction_power_w);
+    let uneven = common::solve(
+        case,
+        &[PREVIEW, "operating.supply_flow_l_per_min=", "operating.pad_supply_flow_l_per_min=[5.0, 5.0, 4.0, 6.0, 5.0]"],
+    );
+    let taken: Vec<f64> = uneven.pads.iter().map(|p| L_PER_MIN.from_si(p.flows_m3_per_s.leading_edge_in)).collect();
+    eprintln!("uneven supply: pads take {taken:.4?} l/min, friction {:.1} W", uneven.friction_power_w);
+    assert!((taken[2] - 4.0).abs() < 1e-9 * 4.0, "pad 2 takes {}", taken[2]);
+    for (q, offered) in taken.iter().zip([5.0, 5.0, 4.0, 6.0, 5.0]) {
+        assert!(*q <= offered * (1.0 + 1e-12));
+    }
+}
+
+/// Bad per-pad supply flows are refused naming the key: both supply keys at once, a list of the wrong
+/// length, a value out of range (naming the list entry), and a supply without the mass-conserving option.
+#[test]
+fn bad_per_pad_supply_flows_are_refused_naming_the_key() {
+    let text = std::fs::read_to_string(common::case_path("compressor-bearing-starved.toml")).unwrap();
+    let load = |set: &[&str]| {
+        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+        load_case(&text, &set).map(|_| ()).map_err(|e| e.to_string())
+    };
+    let err = load(&["operating.pad_supply_flow_l_per_min=5"]).unwrap_err();
+    assert!(err.contains("operating.pad_supply_flow_l_per_min") && err.contains("not both"), "{err}");
+    let err =
+        load(&["operating.supply_flow_l_per_min=", "operating.pad_supply_flow_l_per_min=[5.0, 5.0]"]).unwrap_err();
+    assert!(err.contains("operating.pad_supply_flow_l_per_min") && err.contains("2 values for 5 pads"), "{err}");
+    let err =
+        load(&["operating.supply_flow_l_per_min=", "operating.pad_supply_flow_l_per_min=[5.0, 5.0, -1.0, 5.0, 5.0]"])
+            .unwrap_err();
+    assert!(err.contains("operating.pad_supply_flow_l_per_min[2]") && err.contains("(0, 100000]"), "{err}");
+    let err = load(&[
+        "operating.supply_flow_l_per_min=",
+        "operating.pad_supply_flow_l_per_min=5",
+        "physics.cavitation=\"reynolds\"",
+    ])
+    .unwrap_err();
+    assert!(err.contains("operating.pad_supply_flow_l_per_min") && err.contains("jfo"), "{err}");
+}

@@ -39,7 +39,7 @@ fn compressor_bearing_scene() {
     let h_map = PadMap::new(&s, 3, FieldKind::FilmThickness).unwrap();
     assert!((h_map.min - s.pads[3].h_min_m).abs() < 1e-12);
     // No temperature in an isothermal solve: the view offers only what exists.
-    assert_eq!(FieldKind::available(&s), vec![FieldKind::Pressure, FieldKind::FilmThickness]);
+    assert_eq!(FieldKind::available(&s), vec![FieldKind::Pressure, FieldKind::FilmThickness, FieldKind::Reynolds]);
     assert!(PadMap::new(&s, 0, FieldKind::FilmTemperature).is_none());
 
     // Injection off: the orifices drain the loaded pad (sinks). The open hole holds its surroundings at

@@ -178,14 +178,13 @@ pub struct OperatingPoint {
     pub held_pads: Vec<bool>,
 }
 
-/// Each pad's leading-edge supply: flooded, or an equal share of the bearing's supply flow (docs/MODEL.md §2.3).
+/// Each pad's leading-edge supply: flooded, or its supply flow (the bearing's shared equally, or its own;
+/// docs/MODEL.md §2.3).
 #[must_use]
 pub fn pad_inlets(case: &Case) -> Vec<Inlet> {
-    let n = case.bearing.pads.len();
-    match case.operating.supply_flow_m3_s {
-        None => vec![Inlet::Flooded; n],
-        #[allow(clippy::cast_precision_loss)]
-        Some(q) => vec![Inlet::Supply { flow_m3_s: q / n as f64 }; n],
+    match &case.operating.supply_flow_m3_s {
+        None => vec![Inlet::Flooded; case.bearing.pads.len()],
+        Some(q) => q.iter().map(|&flow_m3_s| Inlet::Supply { flow_m3_s }).collect(),
     }
 }
 

@@ -46,7 +46,7 @@ pub struct EquilibriumInputs {
     pub injection_pressure_pa: Vec<f64>,
     pub injection_temperature_c: f64,
     /// Starved pads: the bearing's oil supply (the pads' inlet film fractions).
-    pub supply_flow_m3_s: Option<f64>,
+    pub supply_flow_m3_s: Option<Vec<f64>>,
     pub physics: Physics,
     /// Every tuning key (the equilibrium's and those of the stages after it, which key on these inputs).
     pub tuning: Tuning,
@@ -106,7 +106,7 @@ impl EquilibriumInputs {
             film_temperature_c: *film_temperature_c,
             injection_pressure_pa: injection_pressure_pa.clone(),
             injection_temperature_c: *injection_temperature_c,
-            supply_flow_m3_s: *supply_flow_m3_s,
+            supply_flow_m3_s: supply_flow_m3_s.clone(),
             physics: *physics,
             tuning: *tuning,
         }

@@ -129,7 +129,12 @@ pub(super) const KEYS: &[Key] = &[
         .default(Fallback::Rule("absent: flooded pads (as much oil as the films take)"))
         .edit(Operating, "Supply flow", Optional(2))
         .when(mass_conserving)
-        .meaning("Oil fed to the bearing, shared equally by the pads' leading edges (starved lubrication, to cut power loss). A pad offered less than its film drags in at the leading edge runs starved: its film starts partly filled (inlet film fraction = offered / full-inlet flow) and builds pressure later; offered more, it is flooded and the excess drains. Needs physics.cavitation = \"jfo\". Absent: flooded pads."),
+        .meaning("Oil fed to the bearing, shared equally by the pads' leading edges (starved lubrication, to cut power loss). A pad offered less than its film drags in at the leading edge runs starved: its film starts partly filled (inlet film fraction = offered / full-inlet flow) and builds pressure later; offered more, it is flooded and the excess drains. With the thermal model each pad is also offered the hot oil the journal carries from the pad upstream (feeding.kind). Needs physics.cavitation = \"jfo\". Absent: flooded pads (or operating.pad_supply_flow_l_per_min per pad)."),
+    Key::per_pad("operating.pad_supply_flow_l_per_min", L_PER_MIN, Range::open_lo(0.0, 1e5))
+        .typical(0.2, 100.0)
+        .default(Fallback::Rule("absent: the bearing's supply flow shared equally, or flooded pads"))
+        .when(mass_conserving)
+        .meaning("Oil fed to each pad's leading edge, one value per pad (or one value for every pad), instead of the bearing's operating.supply_flow_l_per_min shared equally: for feeds that differ around the bearing (a spray bar or groove per pad with its own orifice). Each pad is starved or flooded as with the bearing's supply. Needs physics.cavitation = \"jfo\"; give this or operating.supply_flow_l_per_min, not both."),
     Key::number("operating.excitation_ratio", ONE, Range::closed(0.0, 1e3))
         .typical(0.0, 3.0)
         .or(1.0)
