@@ -489,6 +489,10 @@ pub fn run(command: Command) -> Result<()> {
             }
         }
         Command::Control { rotor, speeds, max_points, max_hours, gain, gain_sweep, json, csv } => {
+            inputs::check_outputs(
+                &[("rotor file", &rotor)],
+                &[("--json", json.as_deref()), ("--csv", csv.as_deref())],
+            )?;
             control::run(&control::ControlArgs {
                 rotor: &rotor,
                 speeds: &speeds,
