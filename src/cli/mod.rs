@@ -557,20 +557,31 @@ pub fn run(command: Command) -> Result<()> {
             csv,
             gain_csv,
             locus_csv,
-        } => control::run(&control::ControlArgs {
-            rotor: &rotor,
-            speeds: &speeds,
-            max_points,
-            max_hours,
-            gain,
-            gain_sweep: gain_sweep.as_deref(),
-            root_locus_rpm: root_locus,
-            json,
-            nyquist_curves,
-            csv,
-            gain_csv,
-            locus_csv,
-        }),
+        } => {
+            inputs::check_outputs(
+                &[("rotor file", &rotor)],
+                &[
+                    ("--json", json.as_deref()),
+                    ("--csv", csv.as_deref()),
+                    ("--gain-csv", gain_csv.as_deref()),
+                    ("--locus-csv", locus_csv.as_deref()),
+                ],
+            )?;
+            control::run(&control::ControlArgs {
+                rotor: &rotor,
+                speeds: &speeds,
+                max_points,
+                max_hours,
+                gain,
+                gain_sweep: gain_sweep.as_deref(),
+                root_locus_rpm: root_locus,
+                json,
+                nyquist_curves,
+                csv,
+                gain_csv,
+                locus_csv,
+            })
+        }
         Command::ConvergenceMap { quick, step_deg, csv, update_doc, only, root } => convergence_map::run(
             &root,
             &convergence_map::Selection { quick, step_deg, only },

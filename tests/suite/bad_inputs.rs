@@ -213,8 +213,12 @@ fn messages_say_their_cause_once() {
 /// cannot take, reported as such with the pad and the (negative) film, never as a touchdown of a load.
 #[test]
 fn a_prescribed_position_that_closes_the_film_is_not_called_touchdown() {
-    let case =
-        common::case("compressor-bearing.toml", &["operating.eccentricity_ratio=3", "mesh.fidelity=\"preview\""]);
+    let at = |eccentricity_ratio: f64| {
+        let mut case = common::case("compressor-bearing.toml", &["mesh.fidelity=\"preview\""]);
+        case.operating.load = tiltpad::model::LoadSpec::Position { eccentricity_ratio, angle_rad: 0.3 };
+        case
+    };
+    let case = at(3.0);
     match tiltpad::bearing::solve_case(&case) {
         Err(e @ tiltpad::bearing::SolveError::PositionClosesFilm { h_min_um, .. }) => {
             assert!(h_min_um <= 0.0, "{e}");
@@ -224,8 +228,30 @@ fn a_prescribed_position_that_closes_the_film_is_not_called_touchdown() {
         other => panic!("expected the closed film of a prescribed position, got {other:?}"),
     }
     // A position inside the clearance still solves.
-    let ok =
-        common::case("compressor-bearing.toml", &["operating.eccentricity_ratio=0.5", "mesh.fidelity=\"preview\""]);
-    let s = tiltpad::bearing::solve_case(&ok).expect("ε = 0.5 is a position the bearing can take");
+    let s = tiltpad::bearing::solve_case(&at(0.5)).expect("ε = 0.5 is a position the bearing can take");
     assert!((s.eccentricity_ratio - 0.5).abs() < 1e-12, "{}", s.eccentricity_ratio);
+}
+
+/// A loaded journal at 0 rpm without injection has no film pressure to carry it: refused before the first
+/// film solve (it used to spend the whole work budget, 15 000 film solves, at a residual of 2e-17).
+#[test]
+fn a_loaded_journal_at_zero_speed_without_injection_is_refused_before_the_first_film_solve() {
+    let case = common::case("compressor-bearing.toml", &["operating.speed_rpm=0", "mesh.fidelity=\"preview\""]);
+    match tiltpad::bearing::solve_case(&case) {
+        Err(e @ tiltpad::bearing::SolveError::NoRotation { load_n }) => {
+            assert!((load_n - case_load(&case)).abs() <= 1e-9 * load_n, "{e}");
+            assert!(e.to_string().contains("operating.speed_rpm"), "{e}");
+        }
+        other => panic!("expected the no-rotation error, got {other:?}"),
+    }
+    // Any rotation at all is a pressure source again: 10 rpm is not refused up front.
+    let slow = common::case("compressor-bearing.toml", &["operating.speed_rpm=10", "mesh.fidelity=\"preview\""]);
+    assert!(!matches!(tiltpad::bearing::solve_case(&slow), Err(tiltpad::bearing::SolveError::NoRotation { .. })));
+}
+
+fn case_load(case: &tiltpad::model::Case) -> f64 {
+    match case.operating.load {
+        tiltpad::model::LoadSpec::Force { magnitude_n, .. } => magnitude_n,
+        tiltpad::model::LoadSpec::Position { .. } => 0.0,
+    }
 }

@@ -187,3 +187,24 @@ fn every_long_command_is_refused_up_front_with_its_estimate_and_the_flag_that_ra
         }
     }
 }
+
+/// `tiltpad control --json ROTOR` wrote its result over the rotor file it read (found by the bad-input
+/// harness): refused like every other command's output onto an input, and the file is unchanged.
+#[test]
+fn control_never_writes_over_its_rotor_file() {
+    let dir = temp_dir("control-onto");
+    let rotor = dir.join("active.toml");
+    std::fs::copy(rotor_path("compressor-rotor-active.toml"), &rotor).unwrap();
+    // Refused before the rotor file is read: the bearing cases it names need not be there.
+    let before = std::fs::read(&rotor).unwrap();
+    for flag in ["--json", "--csv"] {
+        let o = tiltpad()
+            .args(["control", rotor.to_str().unwrap(), "--speeds", "7000:8000:2", flag, rotor.to_str().unwrap()])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{err}");
+        assert!(err.contains("never overwrites an input"), "{err}");
+        assert_eq!(std::fs::read(&rotor).unwrap(), before, "{flag}: the rotor file changed");
+    }
+}

@@ -90,6 +90,12 @@ fn solve_inner(
         return Ok(Progress::Done(Found { u, pads, force, method: Method::PrescribedPosition }));
     }
 
+    // A journal that does not turn, without injection, has no pressure source: no film solve can carry a load.
+    let w = eval::external_load(ctx.op, 1.0);
+    if ctx.op.speed_rad_s == 0.0 && ctx.op.injection_pressure.iter().all(|p| *p <= 0.0) && w[0].hypot(w[1]) > 0.0 {
+        return Err(SolveError::NoRotation { load_n: w[0].hypot(w[1]) });
+    }
+
     // Initial guess: previous solution, else a small displacement along the load.
     let warm = start.filter(|s| s.len() == n && s.iter().all(|v| v.is_finite()));
     let u0 = warm.map_or_else(

@@ -104,6 +104,15 @@ pub enum SolveError {
          θ = {theta_deg:.1}°): the journal would cut into the pad; give a smaller operating.eccentricity_ratio"
     )]
     PositionClosesFilm { pad: usize, h_min_um: f64, theta_deg: f64, eccentricity_ratio: f64 },
+    /// A load on a journal that does not turn, with no injection: the steady film has no pressure source
+    /// (no wedge without sliding, no orifice pressure), so no position carries the load. Found before the
+    /// first film solve.
+    #[error(
+        "no rotation: at 0 rpm with no injection pressure the film has no pressure source and cannot carry the \
+         load of {load_n:.3e} N at any position; give operating.speed_rpm > 0, or inject \
+         (operating.injection_pressure_bar)"
+    )]
+    NoRotation { load_n: f64 },
     /// The bearing has no static stiffness along a direction in which the load has a component (e.g. two
     /// tilting pads whose pivot line is perpendicular to the load: their forces pass through the pivots).
     #[error(
