@@ -93,7 +93,8 @@ fn eccentricity_up_to_0_98_and_touchdown() {
     touches_down("fillon-a.toml", &["operating.load_n=5e6"]);
     // A prescribed position that closes the film is its own error (the position is given, not found), naming
     // the pad and its negative film.
-    match run("fillon-a.toml", &["operating.load_n=", "operating.load_angle_deg=", "operating.eccentricity_ratio=2.5"]) {
+    match run("fillon-a.toml", &["operating.load_n=", "operating.load_angle_deg=", "operating.eccentricity_ratio=2.5"])
+    {
         Err(SolveError::PositionClosesFilm { h_min_um, eccentricity_ratio, .. }) => {
             assert!(h_min_um < 0.0 && h_min_um.is_finite(), "{h_min_um}");
             assert_eq!(eccentricity_ratio, 2.5);
