@@ -116,23 +116,7 @@ pub fn phase_label(value: f64) -> String {
 mod tests {
     use super::*;
 
-    /// WCAG relative luminance of an sRGB colour.
-    fn luminance(c: Color32) -> f64 {
-        let lin = |v: u8| {
-            let v = f64::from(v) / 255.0;
-            if v <= 0.040_45 {
-                v / 12.92
-            } else {
-                ((v + 0.055) / 1.055).powf(2.4)
-            }
-        };
-        0.2126 * lin(c.r()) + 0.7152 * lin(c.g()) + 0.0722 * lin(c.b())
-    }
-
-    fn contrast(a: Color32, b: Color32) -> f64 {
-        let (la, lb) = (luminance(a), luminance(b));
-        (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
-    }
+    use crate::app::ink::contrast;
 
     /// Every curve colour against egui's dark and light panel fills, at least 3:1 (WCAG's minimum for
     /// graphics and large text).
