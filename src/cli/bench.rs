@@ -377,6 +377,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_control::section(root, repeats.min(3))?);
     md.push_str(&super::bench_sommerfeld::section(root, repeats.min(3))?);
     md.push_str(&super::bench_feeding::section(root, repeats.min(3))?);
+    md.push_str(&super::bench_estimates::section(root)?);
     let _ = writeln!(
         md,
         "\n## Notes\n\n\
@@ -448,4 +449,54 @@ pub fn replace_section(root: &Path, heading: &str, section: &str) -> Result<()> 
     write_atomic(&path, out.as_bytes())?;
     println!("updated {}", path.display());
     Ok(())
+}
+
+/// `bench --only SECTION` (or every section when `only` is `None`): replaces that section of
+/// docs/PERFORMANCE.md.
+///
+/// # Errors
+/// An unknown section, a failed measurement, I/O.
+pub fn run_only(root: &Path, only: Option<&str>, repeats: usize) -> Result<()> {
+    match only {
+        None => run(root, repeats.max(1)),
+        Some("frf") => {
+            replace_section(root, "## Controllable lubrication", &super::bench_frf::section(root, repeats.max(1))?)
+        }
+        Some("cavitation") => replace_section(
+            root,
+            super::bench_cavitation::HEADING,
+            &super::bench_cavitation::section(root, repeats.clamp(1, 3))?,
+        ),
+        Some("flex") => {
+            replace_section(root, "## Flexible pads", &super::bench_flex::section(root, repeats.clamp(1, 3))?)
+        }
+        Some("rotor") => {
+            replace_section(root, "## Rotor–bearing analysis", &super::bench_rotor::section(root, repeats.max(1))?)
+        }
+        Some("turbulence") => {
+            replace_section(root, "## Turbulence", &super::bench_turb::section(root, repeats.clamp(1, 3))?)
+        }
+        Some("control") => {
+            replace_section(root, "## Active control", &super::bench_control::section(root, repeats.clamp(1, 3))?)
+        }
+        Some("sommerfeld") => replace_section(
+            root,
+            super::bench_sommerfeld::HEADING,
+            &super::bench_sommerfeld::section(root, repeats.clamp(1, 3))?,
+        ),
+        Some("feeding") => replace_section(
+            root,
+            super::bench_feeding::HEADING,
+            &super::bench_feeding::section(root, repeats.clamp(1, 3))?,
+        ),
+        Some("estimates") => {
+            replace_section(root, super::bench_estimates::HEADING, &super::bench_estimates::section(root)?)
+        }
+        Some(other) => {
+            anyhow::bail!(
+                "--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control, sommerfeld, \
+                 feeding, estimates"
+            )
+        }
+    }
 }

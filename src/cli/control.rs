@@ -134,7 +134,12 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
         }
     }
     pb.set_message("onsets");
-    let mut result = analysis.finish().with_context(context)?;
+    if done == of {
+        pb.println("onsets: bisecting the stability onsets (Ctrl-C stops them and keeps the speeds)");
+    }
+    // Ctrl-C during the onset bisections stops them (each onset left is the middle of its bracket, with a
+    // warning); the speeds solved are written as after an interruption of the sweep.
+    let mut result = analysis.finish_until(&super::interrupt::Interrupt).with_context(context)?;
     pb.finish_and_clear();
     let done = result.speeds.len();
     if done == 0 {
@@ -171,10 +176,11 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
         write_atomic(out, locus_csv_text(&result)?.as_bytes())?;
         announce(out);
     }
-    if done < of {
+    if done < of || super::interrupt::requested() {
         let outputs: Vec<&Path> = [args.json.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
         let outputs = if outputs.is_empty() { vec![Path::new("-")] } else { outputs };
-        return Err(super::interrupt::Interrupted::new(done, of, "speeds", &outputs).into());
+        let what = if done < of { "speeds" } else { "speeds (onsets not refined)" };
+        return Err(super::interrupt::Interrupted::new(done, of, what, &outputs).into());
     }
     Ok(())
 }

@@ -11,7 +11,7 @@ use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::study::convergence::{
-    failures_beside_converged, generated_family, map_bearing, Class, Counts, MapBearing, MapPoint, MapSpec,
+    failures_beside_converged, generated_family, map_bearing_points, Class, Counts, MapBearing, MapPoint, MapSpec,
 };
 
 use super::write_atomic;
@@ -42,8 +42,14 @@ fn shipped(root: &Path) -> Result<Vec<MapBearing>> {
 }
 
 /// Solves the map of every bearing on `threads` threads.
-fn run_all(bearings: &[MapBearing], spec: &MapSpec, threads: usize) -> Result<Vec<MapPoint>> {
-    let per = spec.directions_deg().len() * spec.sommerfeld.len();
+fn run_all(bearings: &[MapBearing], spec: &MapSpec, points: &[Point], threads: usize) -> Result<Vec<MapPoint>> {
+    let keep = |d: f64, s: f64| points.is_empty() || points.iter().any(|p| p.direction_deg == d && p.sommerfeld == s);
+    let per = spec
+        .directions_deg()
+        .iter()
+        .flat_map(|&d| spec.sommerfeld.iter().map(move |&s| (d, s)))
+        .filter(|&(d, s)| keep(d, s))
+        .count();
     let pb = ProgressBar::new((bearings.len() * per) as u64);
     pb.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}")
@@ -62,7 +68,7 @@ fn run_all(bearings: &[MapBearing], spec: &MapSpec, threads: usize) -> Result<Ve
                 };
                 let Some(b) = bearings.get(i) else { return };
                 pb.set_message(b.name.clone());
-                let r = map_bearing(b, spec).with_context(|| format!("bearing {}", b.name));
+                let r = map_bearing_points(b, spec, &keep).with_context(|| format!("bearing {}", b.name));
                 pb.inc(per as u64);
                 if let Ok(mut o) = out.lock() {
                     o.push(r);
@@ -166,6 +172,45 @@ pub struct Selection {
     pub step_deg: f64,
     /// Only the bearings whose name contains this text.
     pub only: Option<String>,
+    /// Only these points of the grid (empty: every point).
+    pub points: Vec<Point>,
+}
+
+/// One point of the map's grid: a load direction and a Sommerfeld number.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Point {
+    pub direction_deg: f64,
+    pub sommerfeld: f64,
+}
+
+/// `--only-points`: `DIRECTION@S,…` (e.g. `65@0.1,200@0.1`), each a point of the grid.
+///
+/// # Errors
+/// A malformed item, or a point off the grid of `spec`, naming the item and the grid.
+pub fn parse_points(text: &str, spec: &MapSpec) -> Result<Vec<Point>> {
+    text.split(',')
+        .map(str::trim)
+        .map(|item| {
+            let (d, s) = item
+                .split_once('@')
+                .with_context(|| format!("--only-points {item:?}: expected DIRECTION_DEG@SOMMERFELD, e.g. 65@0.1"))?;
+            let (direction_deg, sommerfeld): (f64, f64) = (
+                d.trim().parse().with_context(|| format!("--only-points {item:?}: direction {d:?} is not a number"))?,
+                s.trim().parse().with_context(|| format!("--only-points {item:?}: S {s:?} is not a number"))?,
+            );
+            if !spec.directions_deg().contains(&direction_deg) {
+                bail!(
+                    "--only-points {item:?}: direction {direction_deg}° is not on the map's grid (multiples of {}° \
+                     from 0 to less than 360)",
+                    spec.direction_step_deg
+                );
+            }
+            if !spec.sommerfeld.contains(&sommerfeld) {
+                bail!("--only-points {item:?}: S = {sommerfeld} is not one of the map's {:?}", spec.sommerfeld);
+            }
+            Ok(Point { direction_deg, sommerfeld })
+        })
+        .collect()
 }
 
 /// Runs the map over the selected bearings and directions.
@@ -173,8 +218,8 @@ pub struct Selection {
 /// # Errors
 /// I/O, invalid cases, a missing marker in docs/VALIDATION.md, `--update-doc` with a partial selection.
 pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: bool) -> Result<()> {
-    if update_doc && sel.only.is_some() {
-        bail!("--update-doc writes the whole map's table: run it without --only");
+    if update_doc && (sel.only.is_some() || !sel.points.is_empty()) {
+        bail!("--update-doc writes the whole map's table: run it without --only and --only-points");
     }
     let spec = MapSpec { direction_step_deg: if sel.quick { 30.0 } else { sel.step_deg }, ..MapSpec::full() };
     let keep = |b: &MapBearing| sel.only.as_deref().is_none_or(|t| b.name.contains(t));
@@ -186,7 +231,7 @@ pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: boo
     }
     let all: Vec<MapBearing> = shipped.iter().chain(&family).cloned().collect();
     let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(2);
-    let points = run_all(&all, &spec, threads)?;
+    let points = run_all(&all, &spec, &sel.points, threads)?;
     let text = table(&shipped, &family, &points, &spec);
     eprint!("{text}");
     if let Some(p) = csv_out {

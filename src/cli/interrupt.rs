@@ -4,7 +4,7 @@
 //! ([`Interrupted`]). A second press ends the process at once; rows already streamed stay in their
 //! `.partial` files ([`crate::io::SafeFile`]).
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 use crate::bearing::Cancel;
 
@@ -18,6 +18,7 @@ pub const EXIT_STATUS: i32 = 130;
 pub fn install() {
     static INSTALLED: std::sync::Once = std::sync::Once::new();
     INSTALLED.call_once(|| {
+        line_printed();
         let installed = ctrlc::set_handler(|| {
             if REQUESTED.swap(true, Ordering::SeqCst) {
                 eprintln!("\ninterrupted again: stopping now (rows already written stay in their .partial files)");
@@ -39,12 +40,47 @@ pub fn requested() -> bool {
     REQUESTED.load(Ordering::SeqCst)
 }
 
-/// A [`Cancel`] that stops a solve when Ctrl-C was pressed.
+/// A [`Cancel`] that stops a solve when Ctrl-C was pressed. Every solve of the command line asks it at each
+/// of its safe points (an equilibrium iteration, an outer thermal iteration, a fallback step), so it also
+/// keeps a long single solve from looking hung: once a solve has run [`HEARTBEAT_SECONDS`] without a line on
+/// standard error, it prints `working: safe point N` (N counts the safe points since the command started, the
+/// same for the same input on any machine) and again every [`HEARTBEAT_SECONDS`].
 pub struct Interrupt;
 
 impl Cancel for Interrupt {
     fn cancelled(&self) -> bool {
+        heartbeat();
         requested()
+    }
+}
+
+/// Seconds between two `working:` lines of a long solve.
+pub const HEARTBEAT_SECONDS: f64 = 5.0;
+
+/// Safe points passed since the command started.
+static SAFE_POINTS: AtomicU64 = AtomicU64::new(0);
+
+/// When the last `working:` line (or the command's start) was.
+static LAST_LINE: std::sync::Mutex<Option<web_time::Instant>> = std::sync::Mutex::new(None);
+
+/// A progress line was just printed: the next `working:` line waits [`HEARTBEAT_SECONDS`] from now.
+pub fn line_printed() {
+    if let Ok(mut last) = LAST_LINE.lock() {
+        *last = Some(web_time::Instant::now());
+    }
+}
+
+fn heartbeat() {
+    let n = SAFE_POINTS.fetch_add(1, Ordering::Relaxed) + 1;
+    let Ok(mut last) = LAST_LINE.lock() else { return };
+    let now = web_time::Instant::now();
+    match *last {
+        None => *last = Some(now),
+        Some(t) if now.duration_since(t).as_secs_f64() >= HEARTBEAT_SECONDS => {
+            eprintln!("working: safe point {n} of the solve (Ctrl-C stops it)");
+            *last = Some(now);
+        }
+        Some(_) => {}
     }
 }
 

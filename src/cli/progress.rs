@@ -38,6 +38,7 @@ impl Progress {
         let due = self.last_line.is_none_or(|t| t.elapsed().as_secs_f64() >= 1.0) || self.pos == self.len;
         if due && self.pos > 0 {
             eprintln!("progress: {}/{} {}", self.pos, self.len, self.message);
+            super::interrupt::line_printed();
             self.last_line = Some(Instant::now());
         }
     }

@@ -9,6 +9,8 @@ use nalgebra::{Complex, DVector};
 use serde::{Deserialize, Serialize};
 use web_time::Instant;
 
+use crate::bearing::Cancel;
+
 use super::closed_loop::{broken, forced, poles, Poles};
 use super::error::{ControlError, ControlWarning};
 use super::law::realise;
@@ -357,6 +359,12 @@ impl ControlAnalysis {
     /// # Errors
     /// Bearing solves and eigen-solutions of the probes.
     pub fn onset(&mut self, gain: f64) -> Result<GainOnset, ControlError> {
+        self.onset_until(gain, &crate::bearing::NoCancel)
+    }
+
+    /// [`Self::onset`], stopping the bisection when `cancel` says so (Ctrl-C): the onset is then the middle
+    /// of the bracket reached, and a warning gives the bracket.
+    fn onset_until(&mut self, gain: f64, cancel: &dyn Cancel) -> Result<GainOnset, ControlError> {
         let plants = std::mem::take(&mut self.plants);
         let mut stable = Vec::with_capacity(plants.len());
         for (p, done) in plants.iter().zip(&self.done) {
@@ -382,6 +390,14 @@ impl ControlAnalysis {
         let (mut lo, mut hi) = (speeds[i], speeds[i + 1]);
         let mut probes = 0;
         while hi - lo > self.params.onset_tol * hi && probes < 60 {
+            if cancel.cancelled() {
+                self.warnings.push(ControlWarning::OnsetNotRefined {
+                    gain,
+                    from_rpm: crate::units::RPM.from_si(lo),
+                    to_rpm: crate::units::RPM.from_si(hi),
+                });
+                break;
+            }
             let mid = 0.5 * (lo + hi);
             let i = match self.probes.iter().position(|p| p.0 == mid) {
                 Some(i) => i,
@@ -406,11 +422,21 @@ impl ControlAnalysis {
     ///
     /// # Errors
     /// As [`Self::onset`].
-    pub fn finish(mut self) -> Result<ControlResult, ControlError> {
-        let onset_open = self.onset(0.0)?;
-        let onset_closed = self.onset(self.control.gain)?;
+    pub fn finish(self) -> Result<ControlResult, ControlError> {
+        self.finish_until(&crate::bearing::NoCancel)
+    }
+
+    /// [`Self::finish`], with onset bisections that stop when `cancel` says so (Ctrl-C on the command line):
+    /// each onset not yet refined is then the middle of its bracket, named by a
+    /// [`ControlWarning::OnsetNotRefined`]; the speeds solved are all kept.
+    ///
+    /// # Errors
+    /// As [`Self::onset`].
+    pub fn finish_until(mut self, cancel: &dyn Cancel) -> Result<ControlResult, ControlError> {
+        let onset_open = self.onset_until(0.0, cancel)?;
+        let onset_closed = self.onset_until(self.control.gain, cancel)?;
         let gains = self.params.gains.clone();
-        let gain_sweep = gains.iter().map(|&g| self.onset(g)).collect::<Result<Vec<_>, _>>()?;
+        let gain_sweep = gains.iter().map(|&g| self.onset_until(g, cancel)).collect::<Result<Vec<_>, _>>()?;
         let root_locus = match self.params.root_locus_rad_s {
             Some(w) => {
                 let locus_gains = if gains.is_empty() {

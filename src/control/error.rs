@@ -47,6 +47,9 @@ pub enum ControlWarning {
     /// The Nyquist count and the eigenvalues disagree at a speed (a loop too close to the critical point to
     /// decide, or a numerical failure): the eigenvalues are reported.
     NyquistDisagrees { speed_rpm: f64 },
+    /// The onset bisection was stopped (Ctrl-C) with the onset between these speeds; the onset given is
+    /// the middle of that bracket.
+    OnsetNotRefined { gain: f64, from_rpm: f64, to_rpm: f64 },
 }
 
 impl std::fmt::Display for ControlWarning {
@@ -63,6 +66,11 @@ impl std::fmt::Display for ControlWarning {
             Self::NyquistDisagrees { speed_rpm } => {
                 write!(f, "at {speed_rpm:.0} rpm the Nyquist count and the eigenvalues disagree")
             }
+            Self::OnsetNotRefined { gain, from_rpm, to_rpm } => write!(
+                f,
+                "gain {gain}: onset not refined (interrupted): between {from_rpm:.0} and {to_rpm:.0} rpm, \
+                 reported as the middle"
+            ),
         }
     }
 }

@@ -133,12 +133,25 @@ pub fn load_for_sommerfeld(case: &Case, s: f64) -> f64 {
 /// # Errors
 /// The bearing's case is invalid.
 pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>, CaseError> {
+    map_bearing_points(bearing, spec, &|_, _| true)
+}
+
+/// [`map_bearing`] at the points `keep(direction_deg, sommerfeld)` accepts only (each solved cold, so a
+/// subset gives the same answer at each point as the whole map).
+///
+/// # Errors
+/// The case text does not load.
+pub fn map_bearing_points(
+    bearing: &MapBearing,
+    spec: &MapSpec,
+    keep: &(dyn Fn(f64, f64) -> bool + Sync),
+) -> Result<Vec<MapPoint>, CaseError> {
     let (_, base) = load_case(&bearing.text, &bearing.set)?;
     let mut stages = Stages::new();
     let mut points = Vec::new();
     for &s in &spec.sommerfeld {
         let load_n = load_for_sommerfeld(&base, s);
-        for direction_deg in spec.directions_deg() {
+        for direction_deg in spec.directions_deg().into_iter().filter(|&d| keep(d, s)) {
             let mut case = base.clone();
             case.operating.load = LoadSpec::Force { magnitude_n: load_n, angle_rad: direction_deg.to_radians() };
             let t0 = Instant::now();

@@ -26,6 +26,17 @@ fn rotor_path(name: &str) -> PathBuf {
 /// Runs `args`, sends SIGINT once standard error shows `progress: K/` with K ≥ `after`, and returns the exit
 /// code and standard error.
 fn interrupted(args: &[&str], after: usize) -> (Option<i32>, String) {
+    interrupted_when(args, move |line| {
+        line.strip_prefix("progress: ")
+            .and_then(|r| r.split('/').next())
+            .and_then(|k| k.parse::<usize>().ok())
+            .is_some_and(|k| k >= after)
+    })
+}
+
+/// Runs `args`, sends SIGINT at the first line of standard error that `at` accepts, and returns the exit code
+/// and standard error.
+fn interrupted_when(args: &[&str], at: impl Fn(&str) -> bool + Send + 'static) -> (Option<i32>, String) {
     let mut child = tiltpad().args(args).stdout(Stdio::null()).stderr(Stdio::piped()).spawn().unwrap();
     let pid = child.id().to_string();
     let stderr = child.stderr.take().unwrap();
@@ -34,9 +45,7 @@ fn interrupted(args: &[&str], after: usize) -> (Option<i32>, String) {
         let mut sent = false;
         for line in BufReader::new(stderr).lines() {
             let line = line.unwrap();
-            let done =
-                line.strip_prefix("progress: ").and_then(|r| r.split('/').next()).and_then(|k| k.parse::<usize>().ok());
-            if !sent && done.is_some_and(|k| k >= after) {
+            if !sent && at(&line) {
                 let ok = Command::new("kill").args(["-INT", &pid]).status().unwrap().success();
                 assert!(ok, "kill -INT {pid}");
                 sent = true;
@@ -55,7 +64,7 @@ fn interrupted(args: &[&str], after: usize) -> (Option<i32>, String) {
         std::thread::sleep(Duration::from_millis(50));
     };
     let (text, sent) = reader.join().unwrap();
-    assert!(sent, "no progress line reached {after} before the end:\n{text}");
+    assert!(sent, "no line of standard error asked for the interrupt before the end:\n{text}");
     (status.code(), text)
 }
 
@@ -138,6 +147,41 @@ fn ctrl_c_on_rotor_and_control_writes_the_speeds_solved() {
         assert!((2..300).contains(&done), "{command}: {err}");
         assert_eq!(csv_rows(&out), done, "{command}: one row per solved speed");
     }
+}
+
+/// Ctrl-C during the control command's onset bisections (after every speed is solved) stops them: the
+/// speeds are all written, the onsets left are named as not refined, and the exit status is 130.
+#[test]
+fn ctrl_c_during_the_control_onsets_stops_them_and_keeps_the_speeds() {
+    let dir = temp_dir("control-onsets");
+    let (csv, json) = (dir.join("speeds.csv"), dir.join("result.json"));
+    let rotor = rotor_path("compressor-rotor-active.toml");
+    let (code, err) = interrupted_when(
+        &[
+            "control",
+            rotor.to_str().unwrap(),
+            "--speeds",
+            "6000:12000:4",
+            "--gain-sweep",
+            "0:2:6",
+            "--csv",
+            csv.to_str().unwrap(),
+            "--json",
+            json.to_str().unwrap(),
+        ],
+        |line| line.starts_with("onsets:"),
+    );
+    assert_eq!(code, Some(130), "{err}");
+    assert_eq!(done_of(&err, "speeds"), (4, 4), "every speed was solved before the onsets");
+    assert!(err.contains("(onsets not refined)"), "{err}");
+    assert_eq!(csv_rows(&csv), 4, "one row per solved speed");
+    let result: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let unrefined =
+        result["warnings"].as_array().unwrap().iter().filter(|w| w.get("OnsetNotRefined").is_some()).count();
+    assert!(unrefined >= 1, "the onsets left are named: {}", result["warnings"]);
+    // 6 gains + open + closed, each refined to 10⁻³ from a 2000 rpm bracket, would take ~8 probes each
+    let solves = result["bearing_solves"].as_u64().unwrap();
+    assert!(solves < 4 * 2 + 8 * 2, "the bisections stopped ({solves} bearing solves)");
 }
 
 #[test]

@@ -1,0 +1,255 @@
+//! Bench section: the work estimates every command prints (and refuses on) before its first solve, against
+//! the work it then does. Each command runs as a user runs it (this binary, a child process, outputs to a
+//! temporary directory) on the shipped cases; the estimate is computed by the same functions the command
+//! calls ([`crate::study::estimate`]). Measured: the wall time of the whole command (reading, solving,
+//! writing), the bearing solves it made (from its JSON output where it reports them) and, for `solve`, the
+//! film solves. The estimate is a property of the input at the reference rate, so on a loaded machine the
+//! measured times run high by the load; the section states the load average it saw.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+
+use crate::model::load_case;
+use crate::study::estimate::{duration_text, point_cost, Estimate};
+
+/// Heading of the section in docs/PERFORMANCE.md.
+pub const HEADING: &str = "## Work estimates";
+
+/// One command to run: its arguments (`{OUT}` is the temporary output directory), its estimate, and where
+/// its JSON output is (when it writes one).
+struct Run {
+    command: &'static str,
+    label: String,
+    args: Vec<String>,
+    estimate: Estimate,
+    json: Option<PathBuf>,
+}
+
+/// What a run did.
+struct Measured {
+    seconds: f64,
+    bearing_solves: Option<u64>,
+    film_solves: Option<u64>,
+}
+
+fn case_of(path: &Path) -> Result<crate::model::Case> {
+    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    Ok(load_case(&text, &[]).with_context(|| format!("invalid case {}", path.display()))?.1)
+}
+
+/// The first number under `key` anywhere in `v`.
+fn find_count(v: &serde_json::Value, key: &str) -> Option<u64> {
+    match v {
+        serde_json::Value::Object(m) => {
+            m.get(key).and_then(serde_json::Value::as_u64).or_else(|| m.values().find_map(|x| find_count(x, key)))
+        }
+        serde_json::Value::Array(a) => a.iter().find_map(|x| find_count(x, key)),
+        _ => None,
+    }
+}
+
+fn measure(run: &Run, out: &Path) -> Result<Measured> {
+    let exe = std::env::current_exe().context("cannot find this program to run the commands")?;
+    let args: Vec<String> = run.args.iter().map(|a| a.replace("{OUT}", &out.display().to_string())).collect();
+    let t = web_time::Instant::now();
+    let status = std::process::Command::new(exe)
+        .args(&args)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status()?;
+    let seconds = t.elapsed().as_secs_f64();
+    if !status.success() {
+        bail!("bench estimates: `tiltpad {}` failed ({status})", args.join(" "));
+    }
+    let json = match &run.json {
+        Some(p) => {
+            let p = PathBuf::from(p.display().to_string().replace("{OUT}", &out.display().to_string()));
+            let text = std::fs::read_to_string(&p).with_context(|| format!("cannot read {}", p.display()))?;
+            Some(serde_json::from_str::<serde_json::Value>(&text)?)
+        }
+        None => None,
+    };
+    // a thermal solve's film solves are its outer loop's total
+    let film_solves = json.as_ref().and_then(|j| {
+        j.get("thermal")
+            .and_then(|t| t.get("report"))
+            .and_then(|r| r.get("film_solves"))
+            .and_then(serde_json::Value::as_u64)
+            .or_else(|| j.get("report").and_then(|r| r.get("film_solves")).and_then(serde_json::Value::as_u64))
+    });
+    let bearing_solves = json.as_ref().and_then(|j| find_count(j, "bearing_solves"));
+    Ok(Measured { seconds, bearing_solves, film_solves })
+}
+
+/// The runs: `solve` on every shipped case as shipped, and each multi-point command on its shipped case.
+fn runs(root: &Path) -> Result<Vec<Run>> {
+    let cases = root.join("cases");
+    let mut names: Vec<String> = std::fs::read_dir(&cases)
+        .with_context(|| format!("cannot read {}", cases.display()))?
+        .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
+        .filter(|n| n.ends_with(".toml"))
+        .collect();
+    names.sort();
+    let mut out = Vec::new();
+    for n in &names {
+        let path = cases.join(n);
+        let estimate = Estimate::points("solve", 1, point_cost(&case_of(&path)?));
+        out.push(Run {
+            command: "solve",
+            label: format!("`{n}`"),
+            args: vec!["solve".into(), path.display().to_string(), "--json".into(), "{OUT}/s.json".into()],
+            estimate,
+            json: Some("{OUT}/s.json".into()),
+        });
+    }
+    let compressor = cases.join("compressor-bearing.toml");
+    let cost = point_cost(&case_of(&compressor)?);
+    let c = compressor.display().to_string();
+    out.push(Run {
+        command: "sweep",
+        label: "compressor, 6 speeds".into(),
+        args: vec![
+            "sweep".into(),
+            c.clone(),
+            "--vary".into(),
+            "operating.speed_rpm=4000:12000:6".into(),
+            "--csv".into(),
+            "{OUT}/p.csv".into(),
+        ],
+        estimate: Estimate::points("sweep", 6, cost),
+        json: None,
+    });
+    out.push(Run {
+        command: "coefficients",
+        label: "compressor, 6 speeds".into(),
+        args: vec![
+            "coefficients".into(),
+            c.clone(),
+            "--speed-rpm".into(),
+            "4000:12000:6".into(),
+            "--csv".into(),
+            "{OUT}/k.csv".into(),
+        ],
+        estimate: Estimate::points("coefficients", 6, cost),
+        json: None,
+    });
+    let designs = cases.join("designs-compressor.csv");
+    let rows = std::fs::read_to_string(&designs)?.lines().filter(|l| !l.starts_with('#')).count().saturating_sub(1);
+    out.push(Run {
+        command: "batch",
+        label: format!("`designs-compressor.csv`, {rows} designs"),
+        args: vec![
+            "batch".into(),
+            designs.display().to_string(),
+            "--case".into(),
+            c.clone(),
+            "--csv".into(),
+            "{OUT}/b.csv".into(),
+        ],
+        estimate: Estimate::points("batch", rows, cost),
+        json: None,
+    });
+    let active = cases.join("compressor-bearing-active.toml");
+    out.push(Run {
+        command: "frf",
+        label: "`compressor-bearing-active.toml`".into(),
+        args: vec!["frf".into(), active.display().to_string(), "--csv".into(), "{OUT}/f.csv".into()],
+        estimate: Estimate::points("frf", 1, point_cost(&case_of(&active)?)),
+        json: None,
+    });
+    let flexible = cases.join("compressor-bearing-flexible.toml");
+    out.push(Run {
+        command: "modes",
+        label: "`compressor-bearing-flexible.toml`".into(),
+        args: vec!["modes".into(), flexible.display().to_string(), "--csv".into(), "{OUT}/m.csv".into()],
+        estimate: Estimate::points("modes", 1, point_cost(&case_of(&flexible)?)),
+        json: None,
+    });
+    for (command, file, speeds) in [
+        ("rotor", "compressor-rotor.toml", "1000:13000:25"),
+        ("control", "compressor-rotor-active.toml", "6000:12000:13"),
+    ] {
+        let path = cases.join("rotors").join(file);
+        let rotor = super::rotor::read_rotor(&path)?;
+        let n = super::rotor::parse_speeds(speeds, usize::MAX)?.len();
+        // as the commands estimate: the onset bisections' probes on top of the speeds (control: open and closed)
+        let probes = if command == "rotor" { super::rotor::ONSET_PROBES } else { 2 * super::rotor::ONSET_PROBES };
+        out.push(Run {
+            command,
+            label: format!("`rotors/{file}`, {n} speeds"),
+            args: vec![
+                command.into(),
+                path.display().to_string(),
+                "--speeds".into(),
+                speeds.into(),
+                "--json".into(),
+                "{OUT}/r.json".into(),
+            ],
+            estimate: Estimate::rotor(command, &rotor, n, probes),
+            json: Some("{OUT}/r.json".into()),
+        });
+    }
+    Ok(out)
+}
+
+fn load_average() -> String {
+    std::fs::read_to_string("/proc/loadavg")
+        .ok()
+        .and_then(|s| s.split_whitespace().next().map(str::to_string))
+        .unwrap_or_else(|| "unknown".into())
+}
+
+/// The markdown section.
+///
+/// # Errors
+/// A missing case, or a command that fails.
+pub fn section(root: &Path) -> Result<String> {
+    eprintln!("bench: estimates");
+    let dir = std::env::temp_dir().join(format!("tiltpad-bench-estimates-{}", std::process::id()));
+    std::fs::create_dir_all(&dir)?;
+    let load_before = load_average();
+    let mut table = String::new();
+    let mut ratios = Vec::new();
+    for run in runs(root)? {
+        eprintln!("bench: estimates: {} {}", run.command, run.label);
+        let m = measure(&run, &dir)?;
+        let ratio = m.seconds / run.estimate.seconds;
+        ratios.push(ratio);
+        let made = match (run.command, m.bearing_solves) {
+            (_, Some(n)) => n.to_string(),
+            ("solve" | "frf" | "modes", None) => "1".into(),
+            _ => format!("{} (one per point)", run.estimate.solves),
+        };
+        let _ = writeln!(
+            table,
+            "| `{}` | {} | {} | {made} | {} | {} | {} | {ratio:.2} |",
+            run.command,
+            run.label,
+            run.estimate.solves,
+            m.film_solves.map_or("—".into(), |n| n.to_string()),
+            duration_text(run.estimate.seconds),
+            duration_text(m.seconds),
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    let load_after = load_average();
+    ratios.sort_by(f64::total_cmp);
+    let (lo, hi) = (ratios.first().copied().unwrap_or(0.0), ratios.last().copied().unwrap_or(0.0));
+    let median = ratios.get(ratios.len() / 2).copied().unwrap_or(0.0);
+    let mut md = format!(
+        "\n{HEADING} (`bench --only estimates`)\n\nEvery command estimates its work from its inputs before the first \
+         solve (bearing solves, and seconds at the reference rate of the cost-growth table: `src/study/estimate.rs`) \
+         and refuses what is over `--max-hours` or 8 GB. Here each command runs as a user runs it, on the shipped \
+         cases, and its wall time (reading, solving, writing) is set against the estimate. *Solves made*: the \
+         bearing solves the command reports (rotor, control: the sweep, the onset bisections, the critical \
+         speeds); *film solves*: those of the equilibrium (and of every outer thermal iteration). Measured / \
+         estimated: median {median:.2}, from {lo:.2} to {hi:.2}; load average {load_before} before and \
+         {load_after} after the run (a machine with other work runs slower than the reference rate by about \
+         its load).\n\n| command | input | estimated solves | solves made | film solves | estimated time | \
+         measured time | measured / estimated |\n|---|---|---|---|---|---|---|---|\n"
+    );
+    md.push_str(&table);
+    Ok(md)
+}
