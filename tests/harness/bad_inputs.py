@@ -448,6 +448,177 @@ class Harness:
         self.run("coefficients jfo turbulent ross", ["coefficients", c, "--speed-rpm", "6000:9000:3", "--node", "3,12",
                                                      "--ross", "r.toml"] + jfo + turb + pv, expect="any")
 
+    def new_inputs(self):
+        """Inputs added in the third round: feeding keys and per-pad supply lists, the turbulence band, controller
+        files, huge meshes, symlinks, read-only outputs, the Sommerfeld chart and the convergence map's points."""
+        c = "{C}/compressor-bearing.toml"
+        case_path = str(self.cases / "compressor-bearing.toml")
+        pv = ["--set", 'mesh.fidelity="preview"']
+        jfo = ["--set", 'physics.cavitation="jfo"']
+        thd = ["--set", 'thermal.model="thd"']
+        for name, a in {
+            "pad supply list short": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[1,2]"],
+            "pad supply list long": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[1,2,3,4,5,6,7]"],
+            "pad supply list nan": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[1,nan,1,1,1]"],
+            "pad supply list negative": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[-1,1,1,1,1]"],
+            "pad supply list zero": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[0,0,0,0,0]"],
+            "pad supply list strings": jfo + ["--set", 'operating.pad_supply_flow_l_per_min=["a"]'],
+            "pad supply list empty": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[]"],
+            "pad supply list tiny": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[1e-9,1e-9,1e-9,1e-9,1e-9]"],
+            "pad supply without jfo": ["--set", "operating.pad_supply_flow_l_per_min=[1,1,1,1,1]"],
+            "pad supply and supply flow": jfo + ["--set", "operating.pad_supply_flow_l_per_min=[1,1,1,1,1]", "--set",
+                                                 "operating.supply_flow_l_per_min=5"],
+            "feeding groove carry 1": thd + ["--set", 'feeding.kind="leading_edge_groove"', "--set",
+                                             "feeding.groove_carry_over=1"],
+            "feeding groove carry 2": thd + ["--set", 'feeding.kind="leading_edge_groove"', "--set",
+                                             "feeding.groove_carry_over=2"],
+            "feeding groove carry nan": thd + ["--set", 'feeding.kind="leading_edge_groove"', "--set",
+                                               "feeding.groove_carry_over=nan"],
+            "feeding kind unknown": thd + ["--set", 'feeding.kind="bath"'],
+            "feeding spray bar starved": thd + jfo + ["--set", 'feeding.kind="spray_bar"', "--set",
+                                                      "operating.supply_flow_l_per_min=0.5"],
+            "turbulence band empty": ["--set", 'physics.turbulence="auto"', "--set",
+                                      "physics.transition_reynolds_start=1500", "--set",
+                                      "physics.transition_reynolds_end=1500"],
+            "turbulence band huge": ["--set", 'physics.turbulence="auto"', "--set",
+                                     "physics.transition_reynolds_end=1e9"],
+            "turbulence at 1e6 rpm": ["--set", 'physics.turbulence="on"', "--set", "operating.speed_rpm=1e6"],
+            "turbulence thd jfo starved": ["--set", 'physics.turbulence="auto"'] + thd + jfo + [
+                "--set", "operating.supply_flow_l_per_min=1"],
+        }.items():
+            self.run(f"new solve {name}", ["solve", c] + a + pv + ["--json", "r.json"], expect="any")
+        # the issue's full-model mesh under the node cap, and meshes beyond the caps
+        for name, a in {
+            "full model 440x216": ["--set", "mesh.half_model=false", "--set", "mesh.circumferential_elements=440",
+                                   "--set", "mesh.axial_elements=216"],
+            "mesh 1e6 elements": ["--set", "mesh.circumferential_elements=1000000"],
+            "mesh nodes cap raised": ["--set", "mesh.circumferential_elements=3000", "--set",
+                                      "mesh.axial_elements=3000", "--set", "mesh.max_nodes=100000000"],
+            "mesh thd pad solids huge": thd + ["--set", "mesh.pad_radial_elements=1000"],
+        }.items():
+            self.run(f"new mesh {name}", ["solve", c] + a + ["--json", "r.json"], expect="any")
+        # controller files for the rig's closed loop (frf --control)
+        rig = "{C}/test-rig-pub5.toml"
+        ctl = (self.cases / "controllers/test-rig-pub5-control.toml").read_text()
+        bad_ctl = {
+            "empty": "",
+            "no control table": "title = 'x'\n",
+            "gain nan": ctl.replace("gain = 1.0", "gain = nan"),
+            "sensor bearing 7": ctl.replace("bearing = 0\ndirection", "bearing = 7\ndirection"),
+            "actuator missing": re.sub(r"(?s)\[\[control.actuator\]\].*?(?=\[\[control.loop)", "", ctl),
+            "loop sensor 9": ctl.replace("sensor = 0", "sensor = 9"),
+            "law unknown": ctl.replace('law = "pd"', 'law = "fuzzy"'),
+            "kp inf": re.sub(r"kp_v_per_um = .*", "kp_v_per_um = inf", ctl),
+            "kp 1e300": re.sub(r"kp_v_per_um = .*", "kp_v_per_um = 1e300", ctl),
+            "garbage": None,
+        }
+        for name, text in bad_ctl.items():
+            path = self.work / f"ctl-{name.replace(' ', '-')}.toml"
+            if text is None:
+                path.write_bytes(os.urandom(3000))
+            else:
+                path.write_text(text)
+            expect = "any" if name in ("kp 1e300",) else "error"
+            self.run(f"new frf control {name}", ["frf", rig, "--control", str(path), "--points", "10"] + pv,
+                     expect=expect)
+        self.run("new frf control is the case", ["frf", rig, "--control", rig, "--points", "10"] + pv, expect="error")
+        self.run("new frf control missing", ["frf", rig, "--control", "{W}/nope.toml", "--points", "10"] + pv,
+                 expect="error")
+        # symlinks
+        w = self.work
+        loop_a, loop_b = w / "loop-a.toml", w / "loop-b.toml"
+        if not loop_a.is_symlink():
+            os.symlink(loop_b, loop_a)
+            os.symlink(loop_a, loop_b)
+        self.run("new symlink loop case", ["solve", str(loop_a)], expect="error")
+        dangling = w / "dangling.toml"
+        if not dangling.is_symlink():
+            os.symlink(w / "gone.toml", dangling)
+        self.run("new symlink dangling case", ["solve", str(dangling)], expect="error")
+        link_to_case = w / "link-to-case.json"
+        if not link_to_case.is_symlink():
+            os.symlink(self.cases / "compressor-bearing.toml", link_to_case)
+        self.run("new json through a symlink onto the case", ["solve", c, "--json", str(link_to_case)] + pv,
+                 expect="error", inputs=[case_path])
+        self.run("new csv through a symlink onto the case", ["sweep", c, "--vary", "operating.speed_rpm=1000:2000:2",
+                                                             "--csv", str(link_to_case)] + pv,
+                 expect="error", inputs=[case_path])
+        hard = w / "hard-case.json"
+        if not hard.exists():
+            os.link(self.cases / "compressor-bearing.toml", hard)
+        self.run("new json onto a hard link of the case", ["solve", c, "--json", str(hard)] + pv, expect="error",
+                 inputs=[case_path])
+        # read-only outputs (meaningless as root, who may write anywhere)
+        ro = w / "readonly"
+        ro.mkdir(exist_ok=True)
+        (ro / "r.json").write_text("keep me\n")
+        os.chmod(ro / "r.json", 0o444)
+        os.chmod(ro, 0o555)
+        if os.geteuid() != 0:
+            self.run("new json into a read-only dir", ["solve", c, "--json", str(ro / "new.json")] + pv,
+                     expect="error")
+            self.run("new json onto a read-only file", ["solve", c, "--json", str(ro / "r.json")] + pv,
+                     expect="error", inputs=[str(ro / "r.json")])
+            self.run("new sweep csv into a read-only dir", ["sweep", c, "--vary", "operating.speed_rpm=1000:2000:2",
+                                                           "--csv", str(ro / "p.csv")] + pv, expect="error")
+            self.run("new rotor csv into a read-only dir", ["rotor", "{C}/rotors/compressor-rotor.toml", "--speeds",
+                                                           "7000:8000:2", "--csv", str(ro / "r.csv")],
+                     expect="error")
+        self.run("new json to /dev/full", ["solve", c, "--json", "/dev/full"] + pv, expect="error")
+        # the Sommerfeld chart
+        for name, a in {
+            "points 0": ["--points", "0"],
+            "points 1": ["--points", "1"],
+            "points 102": ["--points", "102"],
+            "points huge": ["--points", "1000000000000"],
+            "points garbage": ["--points", "x"],
+            "csv onto case": ["--csv", c],
+            "csv and json same": ["--csv", "x", "--json", "x"],
+        }.items():
+            self.run(f"new sommerfeld {name}", ["sommerfeld", c] + a + pv, expect="error",
+                     inputs=[case_path] if "onto" in name else ())
+        self.run("new sommerfeld zero load", ["sommerfeld", c, "--set", "operating.load_n=0"] + pv, expect="any")
+        self.run("new sommerfeld jfo starved", ["sommerfeld", c, "--points", "4"] + jfo + [
+            "--set", "operating.supply_flow_l_per_min=1"] + pv, expect="any")
+        self.run("new sommerfeld valid", ["sommerfeld", "{C}/plain-360-sommerfeld.toml", "--points", "4"] + pv,
+                 expect="ok")
+        # the convergence map's selections
+        for name, a in {
+            "points off grid": ["--only-points", "67@0.1"],
+            "points bad S": ["--only-points", "65@0.2"],
+            "points garbage": ["--only-points", "x"],
+            "points nan": ["--only-points", "nan@0.1"],
+            "points with update-doc": ["--only-points", "65@0.1", "--update-doc"],
+            "only nothing": ["--only", "no-such-bearing"],
+            "step 0": ["--step-deg", "0"],
+            "step nan": ["--step-deg", "nan"],
+        }.items():
+            self.run(f"new convergence-map {name}", ["convergence-map", "--root", str(ROOT)] + a, expect="error")
+        self.run("new convergence-map one point", ["convergence-map", "--root", str(ROOT), "--only", "someya",
+                                                   "--only-points", "90@1", "--csv", "m.csv"], expect="ok")
+        # the schema's outputs
+        self.run("new schema json onto a directory", ["schema", "--json", "{W}"], expect="error")
+        self.run("new schema rotor", ["schema", "--rotor"], expect="ok")
+        # batches with the keys added since
+        for name, text in {
+            "pad supply column": "operating.pad_supply_flow_l_per_min\n1\n",
+            "feeding kind column": "feeding.kind\nbath\n",
+            "turbulence column": "physics.turbulence\nsometimes\n",
+        }.items():
+            path = w / f"designs-new-{name.replace(' ', '-')}.csv"
+            path.write_text(text)
+            self.run(f"new batch {name}", ["batch", str(path), "--case", c] + pv, expect="error")
+        # rotors: a bearing case that is bad, and a rotor whose bearing case is the rotor itself
+        base = (self.cases / "rotors/compressor-rotor.toml").read_text()
+        (self.cases / "rotors/self.toml").write_text(base.replace("../compressor-bearing.toml", "self.toml"))
+        self.run("new rotor bearing case is the rotor", ["rotor", "{C}/rotors/self.toml", "--speeds", "7000:8000:2"],
+                 expect="error")
+        (self.cases / "rotors/nan-case.toml").write_text(base.replace("../compressor-bearing.toml", "../nan.toml"))
+        (self.cases / "nan.toml").write_text((self.cases / "compressor-bearing.toml").read_text()
+                                             .replace("load_n = ", "load_n = nan # ", 1))
+        self.run("new rotor bearing case with nan load", ["rotor", "{C}/rotors/nan-case.toml", "--speeds",
+                                                          "7000:8000:2"], expect="error")
+
     def misc(self):
         self.run("schema", ["schema"], expect="ok")
         self.run("unknown command", ["frobnicate"], expect="error")
@@ -481,9 +652,14 @@ def main():
     ap.add_argument("--mem-gb", type=float, default=8)
     ap.add_argument("--only", default=None, help="only the runs whose name contains one of these comma-separated words")
     ap.add_argument("--skip-keys", action="store_true", help="skip the per-key --set values")
+    ap.add_argument("--keys-only", action="store_true", help="only the per-key --set values (to run beside a "
+                    "--skip-keys run)")
     a = ap.parse_args()
     h = Harness(a.bin, a.out, a.timeout, a.mem_gb, a.only)
     try:
+        if a.keys_only:
+            h.set_keys()
+            return
         h.files()
         h.outputs()
         h.sweeps()
@@ -495,6 +671,7 @@ def main():
         h.control_runs()
         h.ross_runs()
         h.physics_options()
+        h.new_inputs()
         h.misc()
         h.solve_extremes()
         if not a.skip_keys:
