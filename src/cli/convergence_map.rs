@@ -51,6 +51,7 @@ fn run_all(bearings: &[MapBearing], spec: &MapSpec, points: &[Point], threads: u
         .filter(|&(d, s)| keep(d, s))
         .count();
     let pb = ProgressBar::new((bearings.len() * per) as u64);
+    super::interrupt::bar_shown(std::io::IsTerminal::is_terminal(&std::io::stderr()));
     pb.set_style(
         ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
@@ -77,6 +78,7 @@ fn run_all(bearings: &[MapBearing], spec: &MapSpec, points: &[Point], threads: u
         }
     });
     pb.finish_and_clear();
+    super::interrupt::bar_shown(false);
     let mut all = Vec::new();
     for r in out.into_inner().map_err(|_| anyhow::anyhow!("a worker thread panicked"))? {
         all.extend(r?);

@@ -18,7 +18,7 @@ pub const EXIT_STATUS: i32 = 130;
 pub fn install() {
     static INSTALLED: std::sync::Once = std::sync::Once::new();
     INSTALLED.call_once(|| {
-        line_printed();
+        start_heartbeat();
         let installed = ctrlc::set_handler(|| {
             if REQUESTED.swap(true, Ordering::SeqCst) {
                 eprintln!("\ninterrupted again: stopping now (rows already written stay in their .partial files)");
@@ -41,26 +41,27 @@ pub fn requested() -> bool {
 }
 
 /// A [`Cancel`] that stops a solve when Ctrl-C was pressed. Every solve of the command line asks it at each
-/// of its safe points (an equilibrium iteration, an outer thermal iteration, a fallback step), so it also
-/// keeps a long single solve from looking hung: once a solve has run [`HEARTBEAT_SECONDS`] without a line on
-/// standard error, it prints `working: safe point N` (N counts the safe points since the command started, the
-/// same for the same input on any machine) and again every [`HEARTBEAT_SECONDS`].
+/// of its safe points (an equilibrium iteration, an outer thermal iteration, a fallback step); it counts
+/// them for the heartbeat ([`install`]).
 pub struct Interrupt;
 
 impl Cancel for Interrupt {
     fn cancelled(&self) -> bool {
-        heartbeat();
+        SAFE_POINTS.fetch_add(1, Ordering::Relaxed);
         requested()
     }
 }
 
-/// Seconds between two `working:` lines of a long solve.
+/// Seconds without a line on standard error after which the heartbeat prints `working: …`.
 pub const HEARTBEAT_SECONDS: f64 = 5.0;
 
 /// Safe points passed since the command started.
 static SAFE_POINTS: AtomicU64 = AtomicU64::new(0);
 
-/// When the last `working:` line (or the command's start) was.
+/// A progress bar is drawn on the terminal (the heartbeat keeps quiet under it).
+static BAR_SHOWN: AtomicBool = AtomicBool::new(false);
+
+/// When the last line of progress (or the command's start) was.
 static LAST_LINE: std::sync::Mutex<Option<web_time::Instant>> = std::sync::Mutex::new(None);
 
 /// A progress line was just printed: the next `working:` line waits [`HEARTBEAT_SECONDS`] from now.
@@ -70,17 +71,34 @@ pub fn line_printed() {
     }
 }
 
-fn heartbeat() {
-    let n = SAFE_POINTS.fetch_add(1, Ordering::Relaxed) + 1;
-    let Ok(mut last) = LAST_LINE.lock() else { return };
-    let now = web_time::Instant::now();
-    match *last {
-        None => *last = Some(now),
-        Some(t) if now.duration_since(t).as_secs_f64() >= HEARTBEAT_SECONDS => {
-            eprintln!("working: safe point {n} of the solve (Ctrl-C stops it)");
-            *last = Some(now);
+/// Whether a progress bar is drawn (see [`BAR_SHOWN`]).
+pub fn bar_shown(shown: bool) {
+    BAR_SHOWN.store(shown, Ordering::Relaxed);
+    line_printed();
+}
+
+/// The heartbeat: a command that has printed nothing for [`HEARTBEAT_SECONDS`] (building a large mesh, a
+/// long single solve, a first point that takes minutes) prints `working: safe point N` and again every
+/// [`HEARTBEAT_SECONDS`], so a run watched through a pipe or a log never looks hung. N counts the solver's
+/// safe points so far (each equilibrium and thermal iteration); the line is information only, no outcome
+/// depends on it. A thread of its own, which sleeps between checks and ends with the process.
+fn start_heartbeat() {
+    line_printed();
+    let spawned = std::thread::Builder::new().name("heartbeat".into()).spawn(|| loop {
+        std::thread::sleep(std::time::Duration::from_millis(500));
+        if BAR_SHOWN.load(Ordering::Relaxed) {
+            continue;
         }
-        Some(_) => {}
+        let due =
+            LAST_LINE.lock().ok().and_then(|l| *l).is_some_and(|t| t.elapsed().as_secs_f64() >= HEARTBEAT_SECONDS);
+        if due {
+            let n = SAFE_POINTS.load(Ordering::Relaxed);
+            eprintln!("working: safe point {n} of the solver (Ctrl-C stops after the point being solved)");
+            line_printed();
+        }
+    });
+    if let Err(e) = spawned {
+        eprintln!("note: no heartbeat on standard error ({e})");
     }
 }
 

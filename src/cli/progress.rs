@@ -28,6 +28,7 @@ impl Progress {
             );
             pb
         });
+        super::interrupt::bar_shown(bar.is_some());
         Self { bar, pos: 0, len: len as u64, message: String::new(), last_line: None }
     }
 
@@ -86,5 +87,6 @@ impl Progress {
         if let Some(b) = &self.bar {
             b.finish_and_clear();
         }
+        super::interrupt::bar_shown(false);
     }
 }

@@ -190,6 +190,29 @@ fn ctrl_c_during_the_control_onsets_stops_them_and_keeps_the_speeds() {
     assert!(solves < 4 * 2 + 8 * 2, "the bisections stopped ({solves} bearing solves)");
 }
 
+/// A single solve that prints nothing for a while (a large mesh: building it and the cold start take many
+/// seconds before the first equilibrium iteration) shows a `working:` line through a pipe, and Ctrl-C then
+/// stops it at its next safe point with nothing written.
+#[test]
+fn a_long_single_solve_says_it_is_working_and_stops_on_ctrl_c() {
+    let case = common::case_path("compressor-bearing.toml");
+    let (code, err) = interrupted_when(
+        &[
+            "solve",
+            case.to_str().unwrap(),
+            "--set",
+            "mesh.half_model=false",
+            "--set",
+            "mesh.circumferential_elements=200",
+            "--set",
+            "mesh.axial_elements=100",
+        ],
+        |line| line.starts_with("working: safe point"),
+    );
+    assert_eq!(code, Some(130), "{err}");
+    assert_eq!(done_of(&err, "solves"), (0, 1), "{err}");
+}
+
 #[test]
 fn every_long_command_is_refused_up_front_with_its_estimate_and_the_flag_that_raises_the_bound() {
     let case = common::case_path("compressor-bearing.toml");
