@@ -86,14 +86,8 @@ fn measure(run: &Run, out: &Path) -> Result<Measured> {
 /// The runs: `solve` on every shipped case as shipped, and each multi-point command on its shipped case.
 fn runs(root: &Path) -> Result<Vec<Run>> {
     let cases = root.join("cases");
-    let mut names: Vec<String> = std::fs::read_dir(&cases)
-        .with_context(|| format!("cannot read {}", cases.display()))?
-        .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
-        .filter(|n| n.ends_with(".toml"))
-        .collect();
-    names.sort();
     let mut out = Vec::new();
-    for n in &names {
+    for n in &super::convergence_map::shipped_names(root)? {
         let path = cases.join(n);
         let estimate = Estimate::points("solve", 1, point_cost(&case_of(&path)?));
         out.push(Run {
@@ -194,6 +188,15 @@ fn runs(root: &Path) -> Result<Vec<Run>> {
     Ok(out)
 }
 
+/// Milliseconds below a second, else [`duration_text`].
+fn short_duration(seconds: f64) -> String {
+    if seconds < 1.0 {
+        format!("{:.0} ms", 1e3 * seconds)
+    } else {
+        duration_text(seconds)
+    }
+}
+
 fn load_average() -> String {
     std::fs::read_to_string("/proc/loadavg")
         .ok()
@@ -229,8 +232,8 @@ pub fn section(root: &Path) -> Result<String> {
             run.label,
             run.estimate.solves,
             m.film_solves.map_or("—".into(), |n| n.to_string()),
-            duration_text(run.estimate.seconds),
-            duration_text(m.seconds),
+            short_duration(run.estimate.seconds),
+            short_duration(m.seconds),
         );
     }
     let _ = std::fs::remove_dir_all(&dir);
@@ -244,7 +247,8 @@ pub fn section(root: &Path) -> Result<String> {
          and refuses what is over `--max-hours` or 8 GB. Here each command runs as a user runs it, on the shipped \
          cases, and its wall time (reading, solving, writing) is set against the estimate. *Solves made*: the \
          bearing solves the command reports (rotor, control: the sweep, the onset bisections, the critical \
-         speeds); *film solves*: those of the equilibrium (and of every outer thermal iteration). Measured / \
+         speeds; the estimate counts every bearing at every speed and the most probes a bisection may take, \
+         an upper bound: bearings that share a case share a solve); *film solves*: those of the equilibrium (and of every outer thermal iteration). Measured / \
          estimated: median {median:.2}, from {lo:.2} to {hi:.2}; load average {load_before} before and \
          {load_after} after the run (a machine with other work runs slower than the reference rate by about \
          its load).\n\n| command | input | estimated solves | solves made | film solves | estimated time | \
