@@ -37,7 +37,8 @@
 //! Every free node is either pressurised (`P`: unknown `p`, `θ = 1`) or cavitated (`C`: `p = 0`, unknown `θ`).
 //! For given sets the residual equations `r_i = 0` at the free nodes are one linear, non-symmetric system in
 //! the mixed unknowns (`p` on `P`, `θ` on `C`), solved by sparse LU (symbolic analysis once per mesh; the
-//! θ columns scaled to the pressure columns' size). Then nodes with `p < 0` move to `C` and nodes with
+//! θ columns scaled to the pressure columns' size; after the first step of a solve, a step that moves few
+//! nodes corrects the factorisation by a low-rank update instead, `jfo_update.rs`). Then nodes with `p < 0` move to `C` and nodes with
 //! `θ > 1` to `P`, until no node moves. The start is the previous solve's sets (warm) or the Reynolds
 //! (Swift–Stieber) active set, which places the ruptures nearly right; the iteration typically ends after
 //! 2–4 steps. At convergence every node satisfies the complementarity conditions and the discrete mass
@@ -99,6 +100,11 @@ pub(super) struct JfoState {
     pub(super) branch: Vec<u8>,
     /// The mixed system's values.
     pub(super) m: Vec<f64>,
+    /// The values the LU factorisation holds, and the cavitated set they belong to (`jfo_update.rs`).
+    pub(super) m_base: Vec<f64>,
+    pub(super) base_cav: Vec<bool>,
+    /// Low-rank correction of the factorisation for the columns changed since (`jfo_update.rs`).
+    pub(super) update: Option<crate::physics::reynolds::jfo_update::Update>,
     /// Scale of the θ columns [Pa]: the unknown of a cavitated node is `θ · scale`.
     pub(super) scale: f64,
     /// Inlet film fraction of the last solve.
@@ -151,6 +157,9 @@ impl JfoState {
             t: vec![0.0; nnz],
             branch: vec![0; nnz],
             m: vec![0.0; nnz],
+            m_base: vec![0.0; nnz],
+            base_cav: vec![false; n],
+            update: None,
             scale: 1.0,
             theta_in: 1.0,
             capacity12: 0.0,
@@ -252,8 +261,10 @@ impl JfoState {
         let mut next = out.cavitated.to_vec();
         loop {
             info.active_set_iterations += 1;
-            self.solve_sets(inp, out, &mut rhs, &mut known)?;
-            info.factorizations += 1;
+            let first = info.active_set_iterations == 1;
+            if self.solve_sets(inp, out, &mut rhs, &mut known, first)? {
+                info.factorizations += 1;
+            }
             let p_scale = out.p.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
             let mut changed = 0;
             for i in (0..n).filter(|&i| self.rule[i] == ThetaRule::Free) {
@@ -286,24 +297,27 @@ impl JfoState {
         Ok(info)
     }
 
-    /// One linear solve for the current sets: fills p, θ and the residual r.
+    /// One linear solve for the current sets: fills p, θ and the residual r. The first step of a solve
+    /// factorises; later steps update the factorisation when few columns changed (`jfo_update.rs`).
+    /// Returns whether it factorised.
     fn solve_sets(
         &mut self,
         inp: &JfoSolve<'_>,
         out: &mut JfoResult<'_>,
         rhs: &mut [f64],
         known: &mut [f64],
-    ) -> Result<(), FilmError> {
+        first: bool,
+    ) -> Result<bool, FilmError> {
         let n = self.pattern.n;
         self.fill_matrix(out.cavitated);
-        self.lu.factor(&self.pattern, &self.m)?;
+        let factorised = self.update_or_factor(out.cavitated, first)?;
         // Known film fractions (1 on P, θ_in at the inlet, copies of those) and known pressures (0).
         self.known_theta(out.cavitated, known);
         self.pattern.matvec(&self.t, known, rhs);
         for i in 0..n {
             rhs[i] = if self.rule[i] == ThetaRule::Free { inp.f[i] - rhs[i] } else { 0.0 };
         }
-        self.lu.solve_in_place(rhs, n)?;
+        self.solve_mixed(rhs)?;
         for i in 0..n {
             if self.rule[i] != ThetaRule::Free {
                 out.p[i] = 0.0;
@@ -322,7 +336,7 @@ impl JfoState {
         for i in 0..n {
             out.r[i] += rhs[i] - inp.f[i];
         }
-        Ok(())
+        Ok(factorised)
     }
 
     /// The mixed matrix for the cavitated set `cav`: A columns for pressurised nodes, scaled T̃ + S columns

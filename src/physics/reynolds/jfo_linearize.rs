@@ -28,7 +28,7 @@ impl JfoState {
                 }
             }
         }
-        self.lu.solve_in_place(rhs, n)?;
+        self.solve_mixed(rhs)?;
         for col in rhs.chunks_mut(n) {
             for i in 0..n {
                 if self.rule[i] != ThetaRule::Free || cav[i] {
