@@ -16,6 +16,7 @@ mod feeding;
 mod fidelity_arc;
 mod film_checks;
 mod flexible_pads;
+mod jfo_closed_form;
 mod literature_fillon;
 mod literature_someya;
 mod long_runs;

@@ -46,7 +46,9 @@
 //! This file holds the inputs, the solver state and the film thickness; `geometry.rs` what is built once
 //! per mesh (quadrature, pattern, sampled shapes, orifice operators); `solve.rs` assembly and both
 //! cavitation solves; `linearize.rs` forces and their perturbations; `outputs.rs` flows, friction and
-//! extrema; `injection.rs` the response to the injection pressure.
+//! extrema; `injection.rs` the response to the injection pressure; `jfo.rs`, `jfo_operators.rs` and
+//! `jfo_linearize.rs` the mass-conserving (JFO) solve, its operators and its linearisation, and
+//! `jfo_update.rs` the low-rank updates of its factorisation between active-set steps.
 
 use crate::fem::{SolverError, SpdSolver};
 use crate::model::Cavitation;
@@ -58,6 +60,11 @@ use thiserror::Error;
 mod geometry;
 mod injection;
 mod jfo;
+mod jfo_linearize;
+mod jfo_operators;
+#[cfg(test)]
+mod jfo_tests;
+mod jfo_update;
 mod linearize;
 mod outputs;
 mod solve;

@@ -1,0 +1,109 @@
+//! Low-rank updates of the mass-conserving film's factorisation between active-set steps (`jfo.rs`).
+//!
+//! ## Equation
+//! A step of the active set moves a few nodes between the pressurised and the cavitated set; in the mixed
+//! matrix only their columns change (a pressure column `A e_j` becomes a film-fraction column
+//! `T̃ e_j / scale`, or back). With the factorised matrix `M₀`, the `k` changed columns `J` and
+//! `U = (M − M₀) E_J` (`E_J` the unit columns of `J`):
+//!
+//! ```text
+//! M = M₀ + U E_Jᵀ,   M⁻¹ b = y − W (I + E_Jᵀ W)⁻¹ E_Jᵀ y,   y = M₀⁻¹ b,   W = M₀⁻¹ U   (Sherman–Morrison–Woodbury)
+//! ```
+//!
+//! `W` costs `k` back-substitutions with the existing factorisation and the `k × k` capacitance matrix a
+//! dense LU, against a full sparse LU per step otherwise. Contract: the caller fills the new values into `m`
+//! and asks [`JfoState::update_or_factor`]; it refactors (and makes `m` the new base) on the first step of a
+//! solve, when more than [`MAX_UPDATE_COLUMNS`] columns differ from the base, or when the capacitance matrix
+//! is near singular. [`JfoState::solve_mixed`] then solves with `M` either way, and so does the
+//! linearisation's back-substitution after convergence.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::physics::reynolds::jfo::{JfoState, ThetaRule};
+use crate::physics::reynolds::FilmError;
+
+/// Most changed columns handled by an update before a refactorisation (each costs one back-substitution).
+pub(super) const MAX_UPDATE_COLUMNS: usize = 12;
+
+/// Smallest pivot of the capacitance matrix, relative to its largest entry, accepted for an update.
+const MIN_PIVOT: f64 = 1e-8;
+
+/// The correction of the base factorisation: changed columns, `W = M₀⁻¹ U` (column-major, n × k) and the
+/// LU of the capacitance matrix `I + E_Jᵀ W`.
+#[derive(Debug, Clone)]
+pub(super) struct Update {
+    nodes: Vec<usize>,
+    w: Vec<f64>,
+    capacitance: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+}
+
+impl JfoState {
+    /// Makes the solver represent the mixed matrix in `m` for the cavitated set `cav`: by a low-rank update
+    /// of the base factorisation when allowed (`refactor` false) and few columns changed, else by a new
+    /// factorisation. Returns whether it factorised.
+    pub(super) fn update_or_factor(&mut self, cav: &[bool], refactor: bool) -> Result<bool, FilmError> {
+        if !refactor {
+            let changed: Vec<usize> = (0..self.pattern.n)
+                .filter(|&j| self.rule[j] == ThetaRule::Free && cav[j] != self.base_cav[j])
+                .collect();
+            if changed.is_empty() {
+                self.update = None;
+                return Ok(false);
+            }
+            if changed.len() <= MAX_UPDATE_COLUMNS {
+                if let Some(u) = self.low_rank(changed)? {
+                    self.update = Some(u);
+                    return Ok(false);
+                }
+            }
+        }
+        self.lu.factor(&self.pattern, &self.m)?;
+        self.m_base.copy_from_slice(&self.m);
+        self.base_cav.copy_from_slice(cav);
+        self.update = None;
+        Ok(true)
+    }
+
+    /// `W` and the capacitance LU for the changed columns, or `None` when the capacitance matrix is near
+    /// singular (the caller refactors).
+    fn low_rank(&mut self, nodes: Vec<usize>) -> Result<Option<Update>, FilmError> {
+        let n = self.pattern.n;
+        let k = nodes.len();
+        let mut w = vec![0.0; n * k];
+        for (c, &j) in nodes.iter().enumerate() {
+            for p in self.pattern.col_ptr[j]..self.pattern.col_ptr[j + 1] {
+                w[c * n + self.pattern.row_idx[p]] = self.m[p] - self.m_base[p];
+            }
+        }
+        self.lu.solve_in_place(&mut w, n)?;
+        let cap = DMatrix::from_fn(k, k, |r, c| f64::from(u8::from(r == c)) + w[c * n + nodes[r]]);
+        let big = cap.amax();
+        let capacitance = cap.lu();
+        let u = capacitance.u();
+        let small = (0..k).map(|i| u[(i, i)].abs()).fold(f64::INFINITY, f64::min);
+        // A NaN pivot fails the test too.
+        if small.is_nan() || small <= MIN_PIVOT * big {
+            return Ok(None);
+        }
+        Ok(Some(Update { nodes, w, capacitance }))
+    }
+
+    /// Solves `M x = b` in place for every column of `rhs` (length n each) with the base factorisation and
+    /// the current update.
+    pub(super) fn solve_mixed(&mut self, rhs: &mut [f64]) -> Result<(), FilmError> {
+        let n = self.pattern.n;
+        self.lu.solve_in_place(rhs, n)?;
+        if let Some(u) = &self.update {
+            for col in rhs.chunks_mut(n) {
+                let b = DVector::from_iterator(u.nodes.len(), u.nodes.iter().map(|&j| col[j]));
+                let z = u.capacitance.solve(&b).ok_or_else(|| FilmError::Input("singular active-set update".into()))?;
+                for (c, zc) in z.iter().enumerate() {
+                    for (x, wv) in col.iter_mut().zip(&u.w[c * n..(c + 1) * n]) {
+                        *x -= wv * zc;
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
