@@ -663,6 +663,7 @@ mod tests {
             cavitation,
             inlet,
             turbulence: crate::physics::turbulence::TurbulenceLaw::LAMINAR,
+            leading_edge_pressure: 0.0,
         }
     }
 
