@@ -279,3 +279,28 @@ fn bad_ram_pressure_and_groove_width_are_refused_naming_the_key() {
     let err = load(&[THD, "feeding.groove_width_deg=8"]).unwrap_err();
     assert!(err.contains("feeding.groove_width_deg") && err.contains("leading_edge_groove"), "{err}");
 }
+
+/// Switching `feeding.kind` on a case that writes another kind's carry-over replaces it (as alternative pad
+/// keys replace each other), and [`tiltpad::model::replaced_keys`] says what was dropped: the compressor case
+/// writes the flooded housing's `thermal.carry_over = 0.8`; a groove drops it, and switching back to the
+/// flooded housing drops the groove's keys.
+#[test]
+fn switching_the_feeding_kind_replaces_the_carry_over_it_does_not_use() {
+    let text = std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap();
+    let set = |s: &[&str]| s.iter().map(|v| (*v).to_string()).collect::<Vec<String>>();
+    let (_, case) = load_case(&text, &set(&[THD, GROOVE])).unwrap();
+    assert_eq!(case.thermal.feeding, tiltpad::model::Feeding::LeadingEdgeGroove { carry_over: 0.2 });
+    let notes = tiltpad::model::replaced_keys(&text, &set(&[THD, GROOVE])).unwrap();
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    let note = notes[0].to_string();
+    assert!(note.contains("feeding.kind replaces thermal.carry_over = 0.8") && note.contains("does not use"), "{note}");
+    let back = [THD, GROOVE, "feeding.groove_carry_over=0.3", "feeding.groove_width_deg=8", "feeding.kind=\"flooded\""];
+    let (_, case) = load_case(&text, &set(&back)).unwrap();
+    // The flooded housing's carry-over was dropped with the first switch: the row's default 0.8 applies.
+    assert_eq!(case.thermal.feeding, tiltpad::model::Feeding::Flooded { carry_over: 0.8 });
+    let removed: Vec<String> =
+        tiltpad::model::replaced_keys(&text, &set(&back)).unwrap().into_iter().map(|r| r.removed).collect();
+    assert_eq!(removed, ["thermal.carry_over", "feeding.groove_carry_over", "feeding.groove_width_deg"]);
+    // A spray bar keeps the flooded housing's carry-over (it uses it).
+    assert!(tiltpad::model::replaced_keys(&text, &set(&[THD, "feeding.kind=\"spray_bar\""])).unwrap().is_empty());
+}
