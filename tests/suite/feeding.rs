@@ -15,6 +15,12 @@ const GROOVE: &str = "feeding.kind=\"leading_edge_groove\"";
 /// The compressor case writes the flooded housing's carry-over, which a groove does not use.
 const NO_FLOODED_CARRY_OVER: &str = "thermal.carry_over=";
 
+/// Reads and validates case text with overrides; the error's message.
+fn validate(text: &str, set: &[&str]) -> Result<(), String> {
+    let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
+    load_case(text, &set).map(|_| ()).map_err(|e| e.to_string())
+}
+
 fn thermal(s: &Solution) -> &tiltpad::bearing::solution::ThermalResult {
     s.thermal.as_ref().expect("thermal result")
 }
@@ -129,10 +135,7 @@ fn starvation_with_the_thermal_model_takes_the_supply_share_plus_the_carried_oil
 #[test]
 fn bad_feeding_input_is_refused_naming_the_key() {
     let text = std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap();
-    let load = |set: &[&str]| {
-        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
-        load_case(&text, &set).map(|_| ()).map_err(|e| e.to_string())
-    };
+    let load = |set: &[&str]| validate(&text, set);
     let err = load(&[THD, GROOVE, NO_FLOODED_CARRY_OVER, "feeding.groove_carry_over=-0.1"]).unwrap_err();
     assert!(err.contains("feeding.groove_carry_over") && err.contains("-0.1") && err.contains("[0, 1]"), "{err}");
     let err = load(&[THD, GROOVE, "thermal.carry_over=0.5"]).unwrap_err();
@@ -173,10 +176,7 @@ fn a_supply_flow_per_pad_feeds_each_pad_its_own_flow() {
 #[test]
 fn bad_per_pad_supply_flows_are_refused_naming_the_key() {
     let text = std::fs::read_to_string(common::case_path("compressor-bearing-starved.toml")).unwrap();
-    let load = |set: &[&str]| {
-        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
-        load_case(&text, &set).map(|_| ()).map_err(|e| e.to_string())
-    };
+    let load = |set: &[&str]| validate(&text, set);
     let err = load(&["operating.pad_supply_flow_l_per_min=5"]).unwrap_err();
     assert!(err.contains("operating.pad_supply_flow_l_per_min") && err.contains("not both"), "{err}");
     let err =
@@ -255,10 +255,7 @@ fn a_ram_pressure_holds_every_leading_edge_at_its_value_and_loads_every_pad() {
 #[test]
 fn bad_ram_pressure_and_groove_width_are_refused_naming_the_key() {
     let text = std::fs::read_to_string(common::case_path("compressor-bearing.toml")).unwrap();
-    let load = |set: &[&str]| {
-        let set: Vec<String> = set.iter().map(|s| (*s).to_string()).collect();
-        load_case(&text, &set).map(|_| ()).map_err(|e| e.to_string())
-    };
+    let load = |set: &[&str]| validate(&text, set);
     let err = load(&["feeding.ram_pressure_coefficient=1.5"]).unwrap_err();
     assert!(err.contains("feeding.ram_pressure_coefficient") && err.contains("1.5") && err.contains("[0, 1]"), "{err}");
     let err = load(&["feeding.ram_pressure_coefficient=0.3", "physics.cavitation=\"jfo\""]).unwrap_err();
