@@ -230,6 +230,9 @@ pub struct Physics {
     pub transition_reynolds: [f64; 2],
     /// The equilibrium's work budget: film solves per pad over all its methods.
     pub max_film_solves_per_pad: usize,
+    /// Share of the dynamic pressure `ρ U²/2` the oil entering each film raises at the leading edge
+    /// (`feeding.ram_pressure_coefficient`; 0: ambient leading edges; docs/MODEL.md §2.2).
+    pub ram_pressure_coefficient: f64,
 }
 
 /// Film–pad heat exchange (docs/MODEL.md §3).

@@ -124,6 +124,19 @@ pub enum Inconsistency {
         "not used with feeding.kind = \"{kind}\" (its hot-oil carry-over is {used}): remove it, or change feeding.kind"
     )]
     CarryOverOfOtherFeeding { kind: String, used: String },
+    /// A leading-edge groove that does not fit in the gap ahead of a pad (`pad`: the first such pad).
+    #[error(
+        "{width_deg}° is a groove wider than the gap between pads: allowed (0, {gap_deg}]° (the gap ahead of pad {pad}, from the pads' leading edges and arcs)"
+    )]
+    GrooveWiderThanGap { width_deg: f64, gap_deg: f64, pad: usize },
+    /// A leading-edge groove width given for another feeding kind.
+    #[error("only used with feeding.kind = \"leading_edge_groove\"")]
+    OnlyWithGroove,
+    /// A leading-edge pressure with the mass-conserving inlet, whose condition is a film fraction.
+    #[error(
+        "a leading-edge (ram) pressure needs a full inlet: physics.cavitation = \"reynolds\" or \"gumbel\" (the mass-conserving inlet is a film fraction)"
+    )]
+    RamPressureWithJfo,
     // ------------------------------------------------------------------------------------ hydraulics
     #[error("must be below the supply pressure")]
     ReturnNotBelowSupply,

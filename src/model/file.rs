@@ -366,6 +366,12 @@ pub struct FeedingFile {
     /// Hot-oil carry-over past a leading-edge groove λg.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub groove_carry_over: Option<f64>,
+    /// Angular width of a leading-edge groove [°] (checked against the gap between pads).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub groove_width_deg: Option<f64>,
+    /// Share of the dynamic pressure ρU²/2 raised at each leading edge (ram pressure).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ram_pressure_coefficient: Option<f64>,
 }
 
 impl FeedingFile {

@@ -8,8 +8,10 @@
 //! The pad geometry has three alternative keys, [`PAD_GEOMETRY_KEYS`] (preload, pad clearance, pad bore
 //! radius; a file gives exactly one per pad table). Setting one of them, by `--set`, a sweep or batch point
 //! or the editor, replaces the others of the same table: `bearing.pads.preload=0.3` on a case that gives
-//! `bearing.pads.bore_radius_mm` drops the bore radius. [`replaced_keys`] lists what a set of overrides
-//! replaced, so callers can say so.
+//! `bearing.pads.bore_radius_mm` drops the bore radius. Likewise, setting `feeding.kind` drops the keys the
+//! new kind does not use (each feeding has its own hot-oil carry-over: `thermal.carry_over` for the flooded
+//! housing and the spray bar, `feeding.groove_carry_over` and `feeding.groove_width_deg` for the groove).
+//! [`replaced_keys`] lists what a set of overrides replaced, so callers can say so.
 
 use super::case::Case;
 use super::error::{CaseError, OverrideProblem};
@@ -54,8 +56,38 @@ pub struct Replaced {
 
 impl std::fmt::Display for Replaced {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{} replaces {} = {} (alternative pad-geometry keys)", self.set, self.removed, self.was)
+        let why = if self.set == FEEDING_KIND {
+            "a key the new feeding does not use"
+        } else {
+            "alternative pad-geometry keys"
+        };
+        write!(f, "{} replaces {} = {} ({why})", self.set, self.removed, self.was)
     }
+}
+
+const FEEDING_KIND: &str = "feeding.kind";
+
+/// The keys only some feeding kinds use, with the kinds that use them (the file's words).
+const FEEDING_KEYS: [(&str, &str, &[&str]); 3] = [
+    ("thermal", "carry_over", &["flooded", "spray_bar"]),
+    ("feeding", "groove_carry_over", &["leading_edge_groove"]),
+    ("feeding", "groove_width_deg", &["leading_edge_groove"]),
+];
+
+/// After `feeding.kind` was set to `kind`: removes the keys that kind does not use, returning them.
+fn drop_unused_feeding_keys(table: &mut toml::Table, kind: &str) -> Vec<Replaced> {
+    let mut replaced = Vec::new();
+    for (section, name, users) in FEEDING_KEYS {
+        if users.contains(&kind) {
+            continue;
+        }
+        if let Some(toml::Value::Table(t)) = table.get_mut(section) {
+            if let Some(was) = t.remove(name) {
+                replaced.push(Replaced { set: FEEDING_KIND.to_string(), removed: format!("{section}.{name}"), was });
+            }
+        }
+    }
+    replaced
 }
 
 /// The keys of `text` that `overrides` replaced by setting one of their alternatives ([`PAD_GEOMETRY_KEYS`]),
@@ -117,7 +149,12 @@ fn apply_override(table: &mut toml::Table, text: &str) -> Result<Vec<Replaced>, 
     }
     // An empty value removes the key (e.g. to switch from `load_n` to `eccentricity_ratio`).
     let value = (!raw.is_empty()).then(|| parse_value(raw));
-    set_path(table, &key.split('.').collect::<Vec<_>>(), value).map_err(bad)
+    let kind = value.as_ref().and_then(|v| v.as_str().map(str::to_string)).filter(|_| key == FEEDING_KIND);
+    let mut replaced = set_path(table, &key.split('.').collect::<Vec<_>>(), value).map_err(bad)?;
+    if let Some(kind) = kind {
+        replaced.extend(drop_unused_feeding_keys(table, &kind));
+    }
+    Ok(replaced)
 }
 
 /// Sets (`Some`) or removes (`None`) the value at a dotted path; a numeric segment indexes an array of

@@ -43,8 +43,10 @@ impl CaseFile {
             transition_reynolds: resolve_transition(self)?,
             max_film_solves_per_pad: key!("physics.max_film_solves_per_pad")
                 .count(self.physics.max_film_solves_per_pad)?,
+            ram_pressure_coefficient: thermal::resolve_ram_pressure(self)?,
         };
         let thermal = thermal::resolve_thermal(self)?;
+        thermal::check_groove_width(self, &bearing)?;
         let hydraulics = self
             .hydraulics
             .as_ref()

@@ -69,6 +69,7 @@ fn max_error(n: usize) -> f64 {
         cavitation: Cavitation::Reynolds,
         turbulence: tiltpad::physics::turbulence::TurbulenceLaw::LAMINAR,
         inlet: tiltpad::physics::reynolds::Inlet::Flooded,
+        leading_edge_pressure: 0.0,
     };
     film.solve(&inp, false).unwrap();
     let g = &film.geom;

@@ -70,6 +70,7 @@ fn adiabatic_slider_matches_the_closed_form_and_conserves_energy() {
         cavitation: Cavitation::Reynolds,
         turbulence: tiltpad::physics::turbulence::TurbulenceLaw::LAMINAR,
         inlet: tiltpad::physics::reynolds::Inlet::Flooded,
+        leading_edge_pressure: 0.0,
     };
     film.solve(&inp, false).unwrap();
     assert_eq!(film.cavitated.iter().filter(|c| **c).count(), 0, "a converging slider runs full");

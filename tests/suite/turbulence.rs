@@ -69,6 +69,7 @@ fn film(u: f64, mu: f64, turbulence: TurbulenceLaw) -> (PadFilm, FilmInputs<'sta
         cavitation: Cavitation::Reynolds,
         turbulence,
         inlet: tiltpad::physics::reynolds::Inlet::Flooded,
+        leading_edge_pressure: 0.0,
     };
     film.solve(&inp, false).unwrap();
     assert_eq!(film.cavitated.iter().filter(|c| **c).count(), 0, "a converging slider runs full");

@@ -170,6 +170,8 @@ pub struct OperatingPoint {
     pub turbulence: TurbulenceLaw,
     /// Oil supply at each pad's leading edge (flooded, or a share of the bearing's supply flow).
     pub inlet: Vec<Inlet>,
+    /// Pressure on every pad's leading edge [Pa]: the ram pressure `k_ram ρ U²/2` (docs/MODEL.md §2.2).
+    pub leading_edge_pressure: f64,
     pub load: LoadSpec,
     /// Film thickness below which an equilibrium is touchdown [m].
     pub touchdown_film: f64,
@@ -204,6 +206,7 @@ impl OperatingPoint {
             cavitation: case.physics.cavitation,
             turbulence: turbulence_law(case),
             inlet: pad_inlets(case),
+            leading_edge_pressure: ram_pressure(case),
             load: o.load,
             touchdown_film: case.physics.touchdown_film_m,
             held_pads: vec![false; case.bearing.pads.len()],
@@ -224,8 +227,17 @@ impl OperatingPoint {
             cavitation: self.cavitation,
             turbulence: self.turbulence,
             inlet: self.inlet[k],
+            leading_edge_pressure: self.leading_edge_pressure,
         }
     }
+}
+
+/// The ram pressure on the pads' leading edges [Pa] (docs/MODEL.md §2.2): the dynamic pressure of the journal
+/// surface speed, `ρ U²/2`, times `feeding.ram_pressure_coefficient` (0 without it).
+#[must_use]
+pub fn ram_pressure(case: &Case) -> f64 {
+    let u = case.operating.speed_rad_s * case.bearing.journal_radius_m;
+    case.physics.ram_pressure_coefficient * 0.5 * case.lubricant.density_kg_per_m3 * u * u
 }
 
 /// The turbulence law of a case's films (docs/MODEL.md §2.7).

@@ -92,6 +92,7 @@ impl EquilibriumInputs {
             turbulence: _,
             transition_reynolds: _,
             max_film_solves_per_pad: _,
+            ram_pressure_coefficient: _, // the leading-edge pressure of every film solve
         } = physics; // kept whole below (pad_modes: the films'; turbulence: every film solve)
         let structure = StructureInputs::of(case);
         Self {

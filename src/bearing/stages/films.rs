@@ -146,6 +146,7 @@ impl FilmsInputs {
             turbulence: _,
             transition_reynolds: _,
             max_film_solves_per_pad: _,
+            ram_pressure_coefficient: _,
         } = physics; // the equilibrium's (cavitation, turbulence); the modes
         let Bearing { journal_radius_m, length_m, assembled_clearance_m, pads } = bearing;
         let MeshSpec {

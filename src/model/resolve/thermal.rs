@@ -2,11 +2,14 @@
 //! coefficient only with BC2), the pads' conduction and surroundings, the thermal growth, and the feeding kind
 //! with the one carry-over it uses.
 
+use super::super::case::Bearing;
 use super::super::case::{Feeding, PadFilmBc, Thermal};
 use super::super::error::{CaseError, Inconsistency};
-use super::super::file::{CaseFile, FeedingKind, PadFilmBcFile};
+use super::super::file::{CaseFile, Cavitation, FeedingKind, PadFilmBcFile};
 use super::{inconsistent, missing};
 use crate::key;
+use crate::units::DEG;
+use std::f64::consts::TAU;
 
 /// `[thermal]`: the defaults are the rows' (isothermal model, BC1, H∞ = 100 W/(m² K), T∞ = supply
 /// temperature, pad conductivity 45 W/(m K), carry-over λ = 0.8, inlet and journal temperatures computed,
@@ -75,6 +78,50 @@ fn resolve_feeding(file: &CaseFile) -> Result<Feeding, CaseError> {
             }
         }
     })
+}
+
+/// `feeding.ram_pressure_coefficient`: in its row's range, and only with a full (pressurised) inlet.
+pub(super) fn resolve_ram_pressure(file: &CaseFile) -> Result<f64, CaseError> {
+    let row = key!("feeding.ram_pressure_coefficient");
+    let k = row.value(file.feeding.ram_pressure_coefficient)?;
+    if k > 0.0 && file.physics.cavitation == Some(Cavitation::Jfo) {
+        return Err(inconsistent(row.key, Inconsistency::RamPressureWithJfo));
+    }
+    Ok(k)
+}
+
+/// `feeding.groove_width_deg`: in its row's range, with a leading-edge groove only, and no wider than the
+/// gap ahead of any pad (the next pad's leading edge less this pad's leading edge and arc, around the bore).
+pub(super) fn check_groove_width(file: &CaseFile, bearing: &Bearing) -> Result<(), CaseError> {
+    let row = key!("feeding.groove_width_deg");
+    let Some(width) = row.optional(file.feeding.groove_width_deg)? else { return Ok(()) };
+    if file.feeding.kind != Some(FeedingKind::LeadingEdgeGroove) {
+        return Err(inconsistent(row.key, Inconsistency::OnlyWithGroove));
+    }
+    let pads = &bearing.pads;
+    let mut order: Vec<usize> = (0..pads.len()).collect();
+    order.sort_by(|&a, &b| {
+        pads[a].leading_edge_rad.rem_euclid(TAU).total_cmp(&pads[b].leading_edge_rad.rem_euclid(TAU))
+    });
+    // The gap ahead of each pad: from the end of the pad before it (around the bore) to its leading edge.
+    let (gap, pad) = (0..order.len())
+        .map(|i| {
+            let (prev, this) = (&pads[order[(i + order.len() - 1) % order.len()]], order[i]);
+            let end = prev.leading_edge_rad + prev.arc_rad;
+            ((pads[this].leading_edge_rad - end).rem_euclid(TAU), this)
+        })
+        .fold((f64::INFINITY, 0), |m, g| if g.0 < m.0 { g } else { m });
+    // A full 360° sector leaves no gap (rem_euclid of a whole turn).
+    let gap = if pads.iter().map(|p| p.arc_rad).sum::<f64>() >= TAU { 0.0 } else { gap };
+    if width > gap * (1.0 + 1e-12) {
+        // Rounded to a micro-degree, so that 72° − 60° reads 12.
+        let gap_deg = (DEG.from_si(gap) * 1e6).round() / 1e6;
+        return Err(inconsistent(
+            row.key,
+            Inconsistency::GrooveWiderThanGap { width_deg: (DEG.from_si(width) * 1e6).round() / 1e6, gap_deg, pad },
+        ));
+    }
+    Ok(())
 }
 
 /// A feeding kind as the case file writes it.

@@ -1,14 +1,14 @@
 //! Rows of `[feeding]`: how oil reaches the pads' leading edges, and so which oil enters each film and at what
 //! temperature (docs/MODEL.md §3.4). The film itself sees the feeding only through its inlet (flooded, or a
-//! supply flow with the mass-conserving cavitation option); the kinds differ in the groove mixing of the
-//! thermal model.
+//! supply flow with the mass-conserving cavitation option) and its pressure (the ram pressure, §2.2); the
+//! kinds differ in the groove mixing of the thermal model.
 
-use super::Group::Thermal;
+use super::Group::{Physics, Thermal};
 use super::Widget::{Choice, Optional};
 use super::{Fallback, KeySpec};
 use crate::model::error::Range;
 use crate::model::file::{CaseFile, FeedingKind, ThermalModelKind};
-use crate::units::ONE;
+use crate::units::{DEG, ONE};
 
 type Key = KeySpec;
 
@@ -39,4 +39,14 @@ pub(super) const KEYS: &[Key] = &[
         .edit(Thermal, "Groove carry-over λg", Optional(2))
         .when(groove)
         .meaning("Leading-edge groove only: fraction of the hot oil leaving the pad upstream that passes the groove on the journal and enters the next film (the flooded bearing's thermal.carry_over is typically 0.7–0.9; a groove leaves much less). The default 0.2 is chosen, not fitted to a test."),
+    Key::number_where("feeding.groove_width_deg", DEG, Range::open_lo(0.0, 90.0), "at most the gap between pads")
+        .typical(3.0, 10.0)
+        .edit(Thermal, "Groove width", Optional(1))
+        .when(groove)
+        .meaning("Leading-edge groove only: the groove's angular width on the bore. It must fit in the gap between the pads (the gap ahead of each pad follows from the pads' leading edges and arcs; with n equal, evenly spaced pads 360°/n − arc); a wider groove is refused naming the gap. The mixing model does not read the width: what passes the groove is set by feeding.groove_carry_over alone. Absent: not checked."),
+    Key::number("feeding.ram_pressure_coefficient", ONE, Range::closed(0.0, 1.0))
+        .typical(0.0, 0.5)
+        .or(0.0)
+        .edit(Physics, "Ram pressure k_ram", Optional(2))
+        .meaning("Leading-edge (ram) pressure of the oil entering each film: p_le = k_ram · ρU²/2, with U the journal surface speed, imposed along every pad's leading edge (the corners on the axial ends stay at ambient). 0: ambient leading edges (the default and the thesis' condition); 1: the oil brought to rest from the full journal speed (Bernoulli's bound). Measured inlet pressures are a fraction of ρU²/2; the coefficient is the model's handle, not fitted to a test. Reynolds and Gümbel cavitation only (a starved, mass-conserving inlet has no pressure)."),
 ];

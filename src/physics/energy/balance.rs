@@ -7,6 +7,7 @@
 //! mechanical power in  P = U ∫ (θ µ U/h + (h/2) ∂p/∂s) dA     journal shear (film fraction θ)
 //!                        + ∫ p v_inj dA                         pressure work of the injected oil
 //!                        + ∫ (p v_inj + (4/3) µ v_inj²/h) dA    explicit injection terms of docs/MODEL.md §3
+//!                        + p_le Q_le                            flow work of the oil entering at the ram pressure
 //! heat to the oil      H = ρ c_p Σ_edge nodes o_j (T_j − T_ref)  (Reynolds-consistent nodal flows)
 //!                        + ρ c_p Σ_interior o_j (T_j − T_ref)   (flows into/out of ruptured zones, FilmHeat doc)
 //!                        − ρ c_p Σ_j [∫ v⁺ N_j (T_inj − T_ref) + ∫ v⁻ N_j (T_j − T_ref)]
@@ -35,6 +36,10 @@ pub struct FilmHeat {
     pub injection_work_w: f64,
     /// ∫ Φ dA (equals shear + pumping power up to round-off).
     pub dissipation_w: f64,
+    /// Flow work of the oil entering through a pressurised leading edge, `p_le Q_le` (the ram pressure,
+    /// docs/MODEL.md §2.2; 0 with an ambient leading edge).
+    #[serde(default)]
+    pub inlet_pressure_work_w: f64,
     /// Enthalpy rise of the oil through the pad's edges and orifices, relative to the supply temperature.
     pub heat_to_oil_w: f64,
     /// Into the pad through the film-side surface (BC2/BC3; 0 for BC1, whose film is adiabatic).
@@ -56,7 +61,7 @@ impl FilmHeat {
     /// Mechanical power delivered to the film.
     #[must_use]
     pub fn power_in(&self) -> f64 {
-        self.shear_power_w + self.pumping_power_w + self.injection_work_w
+        self.shear_power_w + self.pumping_power_w + self.injection_work_w + self.inlet_pressure_work_w
     }
     /// Heat conducted out of the film (net).
     #[must_use]
@@ -71,6 +76,7 @@ impl FilmHeat {
             pumping_power_w: self.pumping_power_w + o.pumping_power_w,
             injection_work_w: self.injection_work_w + o.injection_work_w,
             dissipation_w: self.dissipation_w + o.dissipation_w,
+            inlet_pressure_work_w: self.inlet_pressure_work_w + o.inlet_pressure_work_w,
             heat_to_oil_w: self.heat_to_oil_w + o.heat_to_oil_w,
             heat_to_pad_w: self.heat_to_pad_w + o.heat_to_pad_w,
             heat_to_journal_w: self.heat_to_journal_w + o.heat_to_journal_w,
@@ -125,6 +131,7 @@ impl FilmEnergy {
             injection_work_w: st.injection_work,
             dissipation_w: st.dissipation,
             inlet_conduction_in_w: g.sym * inp.dirichlet_reaction,
+            inlet_pressure_work_w: film.leading_edge_pressure_work(),
             ..FilmHeat::default()
         };
         let (mut edges, mut leak) = (0.0, 0.0);

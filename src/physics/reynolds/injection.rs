@@ -106,6 +106,7 @@ mod tests {
             cavitation,
             turbulence: crate::physics::turbulence::TurbulenceLaw::LAMINAR,
             inlet: crate::physics::reynolds::Inlet::Flooded,
+            leading_edge_pressure: 0.0,
         }
     }
 

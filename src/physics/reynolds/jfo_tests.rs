@@ -106,6 +106,7 @@ fn inputs(cavitation: Cavitation, inlet: Inlet, p_inj: f64) -> FilmInputs<'stati
         cavitation,
         inlet,
         turbulence: crate::physics::turbulence::TurbulenceLaw::LAMINAR,
+        leading_edge_pressure: 0.0,
     }
 }
 

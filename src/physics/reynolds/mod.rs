@@ -8,7 +8,9 @@
 //! ```
 //!
 //! with `p = 0` (ambient) on the leading and trailing edges and the axial ends, `∂p/∂z = 0` on the symmetry
-//! plane of a half model, and periodicity in `s` for a 360° sector.
+//! plane of a half model, and periodicity in `s` for a 360° sector. The leading edge may instead carry a
+//! given pressure `p_le` (the ram pressure, docs/MODEL.md §2.2), imposed by lifting: the known nodal values
+//! move to the right-hand side, `A_ff p_f = b_f − A_fd p_d`.
 //!
 //! ## Weak form (bilinear rectangles, 2×2 Gauss), term by term
 //! For every test function `N_i` vanishing on the Dirichlet boundary:
@@ -51,6 +53,7 @@
 //! `jfo_update.rs` the low-rank updates of its factorisation between active-set steps.
 
 use crate::fem::{SolverError, SpdSolver};
+use crate::mesh::grid::NodeSite;
 use crate::model::Cavitation;
 use crate::physics::turbulence::{Factors, TurbulenceLaw};
 use nalgebra::DMatrix;
@@ -107,6 +110,9 @@ pub struct FilmInputs<'a> {
     pub turbulence: TurbulenceLaw,
     /// Oil supply at the leading edge (read by the mass-conserving cavitation option only).
     pub inlet: Inlet,
+    /// Pressure on the leading edge [Pa] (the ram pressure of the oil entering the gap; 0: ambient). The
+    /// leading-edge corners stay at ambient with the axial ends. Reynolds and Gümbel cavitation only.
+    pub leading_edge_pressure: f64,
 }
 
 /// Oil supply at a pad's leading edge.
@@ -234,6 +240,10 @@ pub struct PadFilm {
     /// The mass-conserving solver (built on its first use).
     jfo: Option<Box<jfo::JfoState>>,
     fixed: Vec<bool>,
+    /// Leading-edge nodes that carry the leading-edge pressure (the corners on the axial ends excluded).
+    leading: Vec<usize>,
+    /// The leading-edge pressure of the last solve [Pa].
+    leading_edge_pressure: f64,
     r: Vec<f64>,
     solved_with: Option<Cavitation>,
     extra_h: Option<SampledField>,
@@ -252,6 +262,13 @@ impl PadFilm {
         let nnz = geom.pattern.nnz();
         let ne = geom.elements.len();
         let solver = SpdSolver::new(&geom.pattern)?;
+        let last_row = geom.grid.n_rows() - 1;
+        let leading = (0..n)
+            .filter(|&k| {
+                let (_, j) = geom.grid.col_row(k);
+                geom.sites[k] == NodeSite::Leading && j != last_row && (geom.grid.half || j != 0)
+            })
+            .collect();
         Ok(Self {
             solver,
             a_raw: vec![0.0; nnz],
@@ -266,6 +283,8 @@ impl PadFilm {
             theta: vec![1.0; n],
             jfo: None,
             fixed: vec![false; n],
+            leading,
+            leading_edge_pressure: 0.0,
             r: vec![0.0; n],
             solved_with: None,
             extra_h: None,
@@ -360,10 +379,11 @@ impl PadFilm {
     /// right-hand side `b` is non-positive at every free node, and `b` is affine in the coordinate
     /// (`b = c + q_slot d`, only the Couette term depends on the thickness). `None` for Gümbel cavitation
     /// (whose pressure-free set needs a solve), for mass-conserving cavitation (whose film fraction carries oil
-    /// into the pad even without pressure) or when no such coordinate value exists.
+    /// into the pad even without pressure), for a pressurised leading edge (never pressure-free) or when no
+    /// such coordinate value exists.
     #[must_use]
     pub fn pressure_free_interval(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
-        if inp.cavitation != Cavitation::Reynolds {
+        if inp.cavitation != Cavitation::Reynolds || inp.leading_edge_pressure != 0.0 {
             return None;
         }
         let g = &self.geom;

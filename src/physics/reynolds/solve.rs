@@ -74,6 +74,14 @@ impl PadFilm {
         if !(inp.injection_viscosity > 0.0 && inp.injection_viscosity.is_finite()) {
             return Err(FilmError::Input(format!("injection viscosity {}", inp.injection_viscosity)));
         }
+        if !(inp.leading_edge_pressure >= 0.0 && inp.leading_edge_pressure.is_finite()) {
+            return Err(FilmError::Input(format!("leading-edge pressure {} Pa", inp.leading_edge_pressure)));
+        }
+        if inp.leading_edge_pressure != 0.0 && inp.cavitation == Cavitation::Jfo {
+            // The mass-conserving inlet is a film fraction, not a pressure (refused when the case is read).
+            return Err(FilmError::Input("a leading-edge pressure with mass-conserving cavitation".into()));
+        }
+        self.leading_edge_pressure = inp.leading_edge_pressure;
         self.set_viscosity(inp.viscosity)?;
         self.set_turbulence(inp)?;
         self.assemble(inp);
@@ -96,8 +104,22 @@ impl PadFilm {
         let g = &self.geom;
         g.pattern.fix_rows(&self.a_raw, &self.fixed, &mut self.a_work);
         self.solver.factor(&g.pattern, &self.a_work)?;
-        for i in 0..self.p.len() {
-            self.p[i] = if self.fixed[i] { 0.0 } else { self.b[i] };
+        let p_le = self.leading_edge_pressure;
+        if p_le == 0.0 {
+            for i in 0..self.p.len() {
+                self.p[i] = if self.fixed[i] { 0.0 } else { self.b[i] };
+            }
+        } else {
+            // Lifting: the leading-edge values p_d are known; A_ff p_f = b_f − A_fd p_d, and the fixed rows
+            // (identity after fix_rows) return p_d itself.
+            self.p.fill(0.0);
+            for &i in &self.leading {
+                self.p[i] = p_le;
+            }
+            g.pattern.sym_matvec(&self.a_raw, &self.p, &mut self.r);
+            for i in 0..self.p.len() {
+                self.p[i] = if self.fixed[i] { self.p[i] } else { self.b[i] - self.r[i] };
+            }
         }
         self.solver.solve_in_place(&mut self.p);
         // Residual of the unmodified equations: reactions at fixed nodes, ~0 elsewhere.
@@ -238,3 +260,7 @@ impl PadFilm {
         Ok(info)
     }
 }
+
+#[cfg(test)]
+#[path = "ram_tests.rs"]
+mod ram_tests;
