@@ -10,6 +10,8 @@
 //! [[control.loop]]          # one per actuator: actuator, sensor, law = "pd" (kp_v_per_um, kd_v_per_mm_s, rolloff_hz)
 //!                           #   | "transfer_function" (numerator, denominator)
 //! [control.mimo]            # or: gain matrices kp_v_per_um, kd_v_per_mm_s (a row per actuator), rolloff_hz
+//! [control.lqr]             # or: an LQR designed by tiltpad: design_speed_rpm, output_weight (per sensor),
+//!                           #   input_weight (per actuator), max_frequency_hz, sensor_noise
 //! ```
 //!
 //! Convention: every law is negative feedback, `u = −gain · K(s) y`, with `u` the actuators' control signals
@@ -87,6 +89,8 @@ pub struct ControlTable {
     pub loops: Vec<LoopTable>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mimo: Option<MimoTable>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lqr: Option<LqrTable>,
 }
 
 /// `[[control.sensor]]`
@@ -156,6 +160,22 @@ pub struct MimoTable {
     pub rolloff_hz: Option<f64>,
 }
 
+/// `[control.lqr]`
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LqrTable {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub design_speed_rpm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub output_weight: Vec<f64>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub input_weight: Vec<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_frequency_hz: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensor_noise: Option<f64>,
+}
+
 // ---------------------------------------------------------------------------------------------- SI form
 
 /// Where a sensor reads.
@@ -218,6 +238,22 @@ pub struct Loop {
     pub rule: Rule,
 }
 
+/// An LQR to design on the plant's reduced model ([`crate::control::lqr`]): the cost
+/// `∫ Σ_s q_s y_s² + Σ_a r_a u_a² dt` with the readings in µm (mm/s) and the signals in volts.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LqrSpec {
+    /// Speed of the plant it is designed on [rad/s]; `None` on the test rig (the case's speed).
+    pub design_speed_rad_s: Option<f64>,
+    /// `q_s`, one per sensor [per µm² or per (mm/s)²].
+    pub output_weight: Vec<f64>,
+    /// `r_a`, one per actuator [per V²].
+    pub input_weight: Vec<f64>,
+    /// The reduced model keeps the modes with `|λ|` below this [rad/s].
+    pub max_frequency_rad_s: f64,
+    /// The observer's sensor-noise intensity per unit input disturbance [reading unit² per V²].
+    pub sensor_noise: f64,
+}
+
 /// The control law.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum Law {
@@ -225,6 +261,8 @@ pub enum Law {
     Loops(Vec<Loop>),
     /// PD gain matrices (actuators × sensors) [V/m, V·s/m] with one roll-off.
     Mimo { kp: Vec<Vec<f64>>, kd: Vec<Vec<f64>>, rolloff_rad_s: Option<f64> },
+    /// A regulator designed by tiltpad with an observer (sensors in, actuators out).
+    Lqr(LqrSpec),
 }
 
 /// A validated controller [SI].
@@ -431,6 +469,7 @@ impl ControlTable {
         let given: Vec<String> = [
             (!self.loops.is_empty()).then(|| "[[control.loop]]".to_string()),
             self.mimo.is_some().then(|| "[control.mimo]".to_string()),
+            self.lqr.is_some().then(|| "[control.lqr]".to_string()),
         ]
         .into_iter()
         .flatten()
@@ -440,6 +479,8 @@ impl ControlTable {
         }
         let law = if let Some(m) = &self.mimo {
             resolve_mimo(m, &sensors, actuators.len())?
+        } else if let Some(l) = &self.lqr {
+            Law::Lqr(resolve_lqr(l, sensors.len(), actuators.len())?)
         } else {
             Law::Loops(resolve_loops(&self.loops, &sensors, actuators.len())?)
         };
@@ -612,6 +653,38 @@ fn resolve_mimo(m: &MimoTable, sensors: &[Sensor], n_actuators: usize) -> Result
     }
     Ok(Law::Mimo { kp, kd, rolloff_rad_s: rolloff })
 }
+
+/// `[control.lqr]` checked: weights per sensor and per actuator (1 each when absent), every one in range.
+fn resolve_lqr(l: &LqrTable, n_sensors: usize, n_actuators: usize) -> Result<LqrSpec, CaseError> {
+    let weights = |key: &str, given: &[f64], count: usize, row: &KeyRow| -> Result<Vec<f64>, CaseError> {
+        if given.is_empty() {
+            return (0..count).map(|_| row.value_at(key, None)).collect();
+        }
+        if given.len() != count {
+            return Err(CaseError::inconsistent(key, Inconsistency::WeightCount { given: given.len(), needs: count }));
+        }
+        given.iter().enumerate().map(|(i, &w)| row.value_at(&format!("{key}[{i}]"), Some(w))).collect()
+    };
+    Ok(LqrSpec {
+        design_speed_rad_s: control_key!("control.lqr.design_speed_rpm").optional(l.design_speed_rpm)?,
+        output_weight: weights(
+            "control.lqr.output_weight",
+            &l.output_weight,
+            n_sensors,
+            control_key!("control.lqr.output_weight"),
+        )?,
+        input_weight: weights(
+            "control.lqr.input_weight",
+            &l.input_weight,
+            n_actuators,
+            control_key!("control.lqr.input_weight"),
+        )?,
+        max_frequency_rad_s: control_key!("control.lqr.max_frequency_hz").value(l.max_frequency_hz)?,
+        sensor_noise: control_key!("control.lqr.sensor_noise").value(l.sensor_noise)?,
+    })
+}
+
+type KeyRow = super::schema::KeySpec<super::rotor::RotorFile>;
 
 #[cfg(test)]
 mod tests {

@@ -220,7 +220,7 @@ fn retuned_loop_root_locus_and_gain_rows_match_the_analysis() {
     while !a.step().unwrap() {}
     let sweep = a.sweep();
     let r = a.finish().unwrap();
-    let k = realise(&control);
+    let k = realise(&control).unwrap();
     let mut worst: f64 = 0.0;
     let mut log_dec = Vec::new();
     for (i, s) in r.speeds.iter().enumerate() {
