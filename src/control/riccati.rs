@@ -1,4 +1,4 @@
-//! The continuous algebraic Riccati equation of the linear–quadratic regulator (docs/MODEL.md §14.6):
+//! The continuous algebraic Riccati equation of the linear–quadratic regulator (docs/MODEL.md §14, "LQR on the reduced model"):
 //!
 //! ```text
 //! Aᵀ X + X A − X B R⁻¹ Bᵀ X + Q = 0,     K = R⁻¹ Bᵀ X,     A − B K stable
