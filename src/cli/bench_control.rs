@@ -13,7 +13,6 @@ use anyhow::Result;
 use crate::cli::control::read_controlled;
 use crate::cli::rotor::parse_speeds;
 use crate::control::analysis::{ControlAnalysis, ControlParams, ControlResult};
-use crate::control::law::realise;
 use crate::model::load_case;
 use crate::model::rotor::BearingSupport;
 use crate::units::RPM;
@@ -44,9 +43,9 @@ fn analyse(
     let mut a = ControlAnalysis::new(rotor, control, ControlParams::new(speeds.to_vec()))?;
     while !a.step()? {}
     let sweep = a.sweep();
+    let k = a.controller().clone();
     let r = a.finish()?;
     let cpu = cpu.zip(cpu_seconds()).map(|(a, b)| b - a);
-    let k = realise(control);
     let start = web_time::Instant::now();
     for i in 0..sweep.len() {
         sweep.at(i, &k, 2.0 * control.gain)?;

@@ -264,6 +264,25 @@ pub fn summary(r: &ControlResult) -> String {
         "loop gain {}; closed loop {} states; {} bearing solves, {} eigen-solutions, {:.2} s",
         r.gain, r.states, r.bearing_solves, r.eigen_solutions, r.seconds
     );
+    if let Some(d) = &r.lqr {
+        let _ = writeln!(
+            s,
+            "LQR designed at {:.0} rpm on a reduced model of {} states (of {}; modes at {} Hz)",
+            RPM.from_si(d.design_speed_rad_s),
+            d.reduced_states,
+            d.full_states,
+            d.kept_hz.iter().map(|f| format!("{f:.1}")).collect::<Vec<_>>().join(", ")
+        );
+        let poles = |p: &[(f64, f64)]| {
+            p.iter()
+                .filter(|z| z.1 > 0.0)
+                .map(|z| format!("{:.1} Hz ζ {:.3}", z.1 / std::f64::consts::TAU, -z.0 / z.0.hypot(z.1)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let _ = writeln!(s, "  regulator poles (reduced model): {}", poles(&d.regulator_poles));
+        let _ = writeln!(s, "  observer poles (reduced model): {}", poles(&d.observer_poles));
+    }
     let _ = writeln!(s, "instability onset, loop open: {}", onset_text(&r.onset_open));
     let _ = writeln!(s, "instability onset, loop closed: {}", onset_text(&r.onset_closed));
     for g in &r.gain_sweep {

@@ -13,7 +13,8 @@ use crate::bearing::Cancel;
 
 use super::closed_loop::{broken, forced, poles, Poles};
 use super::error::{ControlError, ControlWarning};
-use super::law::realise;
+use super::law::design;
+use super::lqr::LqrDesign;
 use super::nyquist::{nyquist, Nyquist};
 use super::plant::{ActuatorPlant, Plant, ValvePlant};
 use super::state_space::StateSpace;
@@ -106,6 +107,9 @@ pub struct ControlResult {
     /// The root locus asked for ([`ControlParams::root_locus_rad_s`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub root_locus: Option<RootLocus>,
+    /// The LQR designed on the reduced model (a `[control.lqr]` controller).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lqr: Option<LqrDesign>,
     /// Each actuator's linear range [V].
     pub limit_v: Vec<f64>,
     pub response_nodes: Vec<usize>,
@@ -122,6 +126,7 @@ pub struct ControlAnalysis {
     rotor: Rotor,
     control: Control,
     controller: StateSpace,
+    lqr: Option<LqrDesign>,
     shaft: ShaftModel,
     bearings: BearingSet,
     params: ControlParams,
@@ -138,10 +143,12 @@ pub struct ControlAnalysis {
 }
 
 impl ControlAnalysis {
-    /// Builds the shaft model, the bearing set and the controller.
+    /// Builds the shaft model, the bearing set and the controller (an LQR designed on the plant at its design
+    /// speed).
     ///
     /// # Errors
-    /// Bad speeds or gains; a valve actuator with reduced bearing coefficients; assembly errors.
+    /// Bad speeds or gains; a valve actuator with reduced bearing coefficients; assembly errors; an LQR
+    /// without a design speed or that cannot be designed.
     pub fn new(rotor: &Rotor, control: &Control, params: ControlParams) -> Result<Self, ControlError> {
         let s = &params.speeds_rad_s;
         if s.is_empty() || s.iter().any(|w| !w.is_finite() || *w < 0.0) || s.windows(2).any(|w| w[1] <= w[0]) {
@@ -175,10 +182,11 @@ impl ControlAnalysis {
             .collect();
         nodes.sort_unstable();
         nodes.dedup();
-        Ok(Self {
+        let mut analysis = Self {
             rotor: rotor.clone(),
             control: control.clone(),
-            controller: realise(control),
+            controller: StateSpace::gain(nalgebra::DMatrix::zeros(control.actuators.len(), control.sensors.len())),
+            lqr: None,
             shaft,
             bearings,
             params,
@@ -190,7 +198,22 @@ impl ControlAnalysis {
             eigen_solutions: 0,
             warnings: Vec::new(),
             started: Instant::now(),
-        })
+        };
+        let (controller, lqr) = design(control, |speed| {
+            let w = speed.ok_or_else(|| {
+                crate::model::CaseError::missing("control.lqr.design_speed_rpm", "the speed the LQR is designed at")
+            })?;
+            Ok((analysis.plant_at(w)?, w))
+        })?;
+        analysis.controller = controller;
+        analysis.lqr = lqr;
+        Ok(analysis)
+    }
+
+    /// The controller the loop closes through (designed, for an LQR).
+    #[must_use]
+    pub fn controller(&self) -> &StateSpace {
+        &self.controller
     }
 
     /// The plant at `omega` [rad/s].
@@ -461,6 +484,7 @@ impl ControlAnalysis {
             onset_closed,
             gain_sweep,
             root_locus,
+            lqr: self.lqr,
             limit_v: self.limits,
             response_nodes: self.nodes,
             states,

@@ -31,9 +31,34 @@ pub enum ControlError {
     /// A rig controller that is not one loop from the journal's vertical motion to the bearing's valve.
     #[error("the rig's closed loop needs {what}")]
     NotARigLoop { what: &'static str },
+    /// The LQR cannot be designed on the reduced model at the design speed.
+    #[error("control.lqr: the plant at {speed_rpm:.0} rpm (control.lqr.design_speed_rpm): {reason}")]
+    Lqr { speed_rpm: f64, reason: LqrFailure },
     /// A gain list that cannot be swept.
     #[error("--gain-sweep: gains must be finite (got {gain})")]
     Gain { gain: f64 },
+}
+
+/// Why an LQR design failed.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LqrFailure {
+    #[error(
+        "no mode of the plant lies below control.lqr.max_frequency_hz = {max_frequency_hz} Hz; allowed: a value above \
+         the rotor's first mode"
+    )]
+    NoModes { max_frequency_hz: f64 },
+    #[error(
+        "its unstable mode at {frequency_hz:.1} Hz is not moved by any actuator (the pair is not stabilisable): \
+         choose another control.lqr.design_speed_rpm or other actuators"
+    )]
+    NotStabilisable { frequency_hz: f64 },
+    #[error(
+        "its unstable mode at {frequency_hz:.1} Hz is not seen by any sensor (not detectable): add a sensor that \
+         reads it"
+    )]
+    NotDetectable { frequency_hz: f64 },
+    #[error("the Riccati equation has no stabilising solution ({message}); check control.lqr.output_weight")]
+    Riccati { message: String },
 }
 
 /// What a closed-loop analysis warns about.

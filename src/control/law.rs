@@ -8,19 +8,45 @@
 //! PD on a velocity:      K = kd/(1 + s/ω_f):          ẋ = −ω_f x + y,  v = kd ω_f x     (no roll-off: v = kd y)
 //! transfer function:     K = N(s)/D(s), D monic:      controllable canonical form (D(s) of degree n: n states)
 //! MIMO PD:               one roll-off state per sensor, v_a = Σ_s kp_as y_s + kd_as ẏ_f,s
+//! LQR:                   designed on the plant at its design speed ([`super::lqr`]): [`design`]
 //! ```
 
 use nalgebra::DMatrix;
 
+use super::error::ControlError;
+use super::lqr::LqrDesign;
+use super::plant::Plant;
 use super::state_space::StateSpace;
 use crate::model::control::{Control, Law, Quantity, Rule};
 
-/// The controller of `control` (sensors in, actuators out; without the loop gain).
+/// The controller of `control`, an LQR designed on the plant `plant_at(design speed)` returns (with the
+/// speed it was built at [rad/s]; asked for only for an LQR).
+///
+/// # Errors
+/// The plant's, and the LQR design's ([`ControlError::Lqr`]).
+pub fn design(
+    control: &Control,
+    plant_at: impl FnOnce(Option<f64>) -> Result<(Plant, f64), ControlError>,
+) -> Result<(StateSpace, Option<LqrDesign>), ControlError> {
+    match (&control.law, realise(control)) {
+        (_, Some(k)) => Ok((k, None)),
+        (Law::Lqr(spec), None) => {
+            let (plant, speed) = plant_at(spec.design_speed_rad_s)?;
+            let (k, report) = super::lqr::design(&plant, &control.sensors, spec, speed)?;
+            Ok((k, Some(report)))
+        }
+        (_, None) => Err(ControlError::NoController),
+    }
+}
+
+/// The controller of `control` (sensors in, actuators out; without the loop gain); `None` for an LQR, which
+/// needs its plant ([`design`]).
 #[must_use]
-pub fn realise(control: &Control) -> StateSpace {
+pub fn realise(control: &Control) -> Option<StateSpace> {
     let ns = control.sensors.len();
     let na = control.actuators.len();
-    match &control.law {
+    Some(match &control.law {
+        Law::Lqr(_) => return None,
         Law::Loops(loops) => {
             // one block per loop, stacked
             let blocks: Vec<(usize, usize, StateSpace)> = loops
@@ -88,7 +114,7 @@ pub fn realise(control: &Control) -> StateSpace {
             }
             ss
         }
-    }
+    })
 }
 
 /// One SISO law (one input, one output).

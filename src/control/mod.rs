@@ -4,6 +4,7 @@
 //!
 //! - [`state_space`]: state-space systems, balanced eigenvalues;
 //! - [`law`]: the controller as a state-space system;
+//! - [`riccati`], [`lqr`]: the LQR designed on a reduced model of the plant, with its observer;
 //! - [`plant`]: the plant at one speed (rotor, pads, valve chains, force actuators);
 //! - [`closed_loop`]: the loop closed (poles, forced response) and broken at one actuator's input;
 //! - [`nyquist`]: the Nyquist criterion and the margins on the broken loop;
@@ -19,8 +20,10 @@ mod closed_form;
 pub mod closed_loop;
 pub mod error;
 pub mod law;
+pub mod lqr;
 pub mod nyquist;
 pub mod plant;
+pub mod riccati;
 pub mod rig;
 pub mod state_space;
 pub mod tuning;

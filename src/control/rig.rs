@@ -19,7 +19,7 @@ use serde::{Deserialize, Serialize};
 
 use super::closed_loop::{closed, forced, Poles};
 use super::error::ControlError;
-use super::law::realise;
+use super::law::design;
 use super::plant::{ActuatorPlant, Plant, ValvePlant};
 use super::state_space::{eigenvalues, StateSpace, C64};
 use crate::bearing::frf::dynamics::{BearingDynamics, Hydraulics, Rig};
@@ -81,11 +81,13 @@ impl RigLoop {
         let rig = Rig { mass: r.mass_kg, stiffness: r.support_stiffness_n_per_m, damping: r.support_damping_ns_per_m };
         let hydraulics = frf.hydraulics(h);
         let plant = rig_plant(&frf.dynamics, &hydraulics, rig, sensor)?;
+        // an LQR on the rig is designed at the case's own speed
+        let (controller, _) = design(control, |_| Ok((plant.clone(), case.operating.speed_rad_s)))?;
         Ok(Self {
             dynamics: frf.dynamics.clone(),
             hydraulics,
             rig,
-            controller: realise(control),
+            controller,
             gain: control.gain,
             velocity: sensor.quantity == Quantity::Velocity,
             plant,

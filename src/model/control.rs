@@ -10,6 +10,8 @@
 //! [[control.loop]]          # one per actuator: actuator, sensor, law = "pd" (kp_v_per_um, kd_v_per_mm_s, rolloff_hz)
 //!                           #   | "transfer_function" (numerator, denominator)
 //! [control.mimo]            # or: gain matrices kp_v_per_um, kd_v_per_mm_s (a row per actuator), rolloff_hz
+//! [control.lqr]             # or: an LQR designed by tiltpad: design_speed_rpm, output_weight (per sensor),
+//!                           #   input_weight (per actuator), max_frequency_hz, sensor_noise
 //! ```
 //!
 //! Convention: every law is negative feedback, `u = −gain · K(s) y`, with `u` the actuators' control signals
@@ -24,17 +26,9 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::control_schema::control_row as row;
-use super::error::{CaseError, Inconsistency, Range};
-use super::hydraulics::ValvePort;
+pub use super::control_resolve::routh_unstable_roots;
+use super::error::CaseError;
 use super::Case;
-
-/// The row of a controller key, found while compiling.
-macro_rules! control_key {
-    ($key:literal) => {
-        const { row($key) }
-    };
-}
 
 // ------------------------------------------------------------------------------------------- file form
 
@@ -87,6 +81,8 @@ pub struct ControlTable {
     pub loops: Vec<LoopTable>,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub mimo: Option<MimoTable>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lqr: Option<LqrTable>,
 }
 
 /// `[[control.sensor]]`
@@ -156,6 +152,22 @@ pub struct MimoTable {
     pub rolloff_hz: Option<f64>,
 }
 
+/// `[control.lqr]`
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LqrTable {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub design_speed_rpm: Option<f64>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub output_weight: Vec<f64>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub input_weight: Vec<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max_frequency_hz: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensor_noise: Option<f64>,
+}
+
 // ---------------------------------------------------------------------------------------------- SI form
 
 /// Where a sensor reads.
@@ -218,6 +230,22 @@ pub struct Loop {
     pub rule: Rule,
 }
 
+/// An LQR to design on the plant's reduced model ([`crate::control::lqr`]): the cost
+/// `∫ Σ_s q_s y_s² + Σ_a r_a u_a² dt` with the readings in µm (mm/s) and the signals in volts.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LqrSpec {
+    /// Speed of the plant it is designed on [rad/s]; `None` on the test rig (the case's speed).
+    pub design_speed_rad_s: Option<f64>,
+    /// `q_s`, one per sensor [per µm² or per (mm/s)²].
+    pub output_weight: Vec<f64>,
+    /// `r_a`, one per actuator [per V²].
+    pub input_weight: Vec<f64>,
+    /// The reduced model keeps the modes with `|λ|` below this [rad/s].
+    pub max_frequency_rad_s: f64,
+    /// The observer's sensor-noise intensity per unit input disturbance [reading unit² per V²].
+    pub sensor_noise: f64,
+}
+
 /// The control law.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum Law {
@@ -225,6 +253,8 @@ pub enum Law {
     Loops(Vec<Loop>),
     /// PD gain matrices (actuators × sensors) [V/m, V·s/m] with one roll-off.
     Mimo { kp: Vec<Vec<f64>>, kd: Vec<Vec<f64>>, rolloff_rad_s: Option<f64> },
+    /// A regulator designed by tiltpad with an observer (sensors in, actuators out).
+    Lqr(LqrSpec),
 }
 
 /// A validated controller [SI].
@@ -284,356 +314,5 @@ impl<'a> PlantInfo<'a> {
             })
             .collect();
         Self { n_nodes: rotor.n_nodes(), bearings }
-    }
-}
-
-// ------------------------------------------------------------------------------------------- validation
-
-fn index(key: &str, value: usize, count: usize) -> Result<usize, CaseError> {
-    if value < count {
-        Ok(value)
-    } else {
-        #[allow(clippy::cast_precision_loss)]
-        Err(CaseError::OutOfRange {
-            key: key.into(),
-            value: value as f64,
-            allowed: if count == 0 {
-                "none (the list is empty)".into()
-            } else {
-                format!("integer in [0, {}]", count - 1)
-            },
-        })
-    }
-}
-
-/// Number of roots of `p` (highest power first, `p[0] ≠ 0`) with Re ≥ 0, by the Routh–Hurwitz array: the
-/// sign changes in its first column; a zero in the first column (a root on the imaginary axis, or a
-/// symmetric pair) counts as at least one.
-#[must_use]
-pub fn routh_unstable_roots(p: &[f64]) -> usize {
-    let n = p.len();
-    if n < 2 {
-        return 0;
-    }
-    let mut rows: Vec<Vec<f64>> =
-        vec![p.iter().step_by(2).copied().collect(), p.iter().skip(1).step_by(2).copied().collect()];
-    let width = rows[0].len();
-    rows[1].resize(width, 0.0);
-    for _ in 2..n {
-        let (a, b) = (&rows[rows.len() - 2], &rows[rows.len() - 1]);
-        if b[0] == 0.0 {
-            return 1.max(count_changes(&rows));
-        }
-        let next: Vec<f64> = (0..width)
-            .map(|j| {
-                let a1 = a.get(j + 1).copied().unwrap_or(0.0);
-                let b1 = b.get(j + 1).copied().unwrap_or(0.0);
-                (b[0] * a1 - a[0] * b1) / b[0]
-            })
-            .collect();
-        rows.push(next);
-    }
-    if rows.last().is_some_and(|r| r[0] == 0.0) {
-        return 1.max(count_changes(&rows));
-    }
-    count_changes(&rows)
-}
-
-fn count_changes(rows: &[Vec<f64>]) -> usize {
-    let col: Vec<f64> = rows.iter().map(|r| r[0]).filter(|v| *v != 0.0).collect();
-    col.windows(2).filter(|w| w[0].signum() != w[1].signum()).count()
-}
-
-/// A polynomial as written (`key`: its key for errors), finite, leading zeros removed.
-fn polynomial(key: &str, coefficients: &[f64]) -> Result<Vec<f64>, CaseError> {
-    for (i, &c) in coefficients.iter().enumerate() {
-        Range::closed(-1e300, 1e300).check(&format!("{key}[{i}]"), c)?;
-    }
-    let first = coefficients.iter().position(|c| *c != 0.0).unwrap_or(coefficients.len());
-    Ok(coefficients[first..].to_vec())
-}
-
-impl ControlTable {
-    /// Validates and converts to SI for the rotor described by `info`.
-    ///
-    /// # Errors
-    /// The first invalid value, named by its key, with the value and the allowed range.
-    #[allow(clippy::too_many_lines)]
-    pub fn resolve(&self, info: &PlantInfo<'_>) -> Result<Control, CaseError> {
-        let gain = control_key!("control.gain").value(self.gain)?;
-        if self.sensor.is_empty() || self.actuator.is_empty() {
-            let key = if self.sensor.is_empty() { "control.sensor" } else { "control.actuator" };
-            return Err(CaseError::inconsistent(key, Inconsistency::NothingToControl));
-        }
-        let n_bearings = info.bearings.len();
-        let mut sensors = Vec::new();
-        for (i, s) in self.sensor.iter().enumerate() {
-            let key = |k: &str| format!("control.sensor[{i}].{k}");
-            let (at, node) = match (s.node, s.bearing) {
-                (Some(n), None) => (SensorAt::Node(index(&key("node"), n, info.n_nodes)?), n),
-                (None, Some(b)) => {
-                    let b = index(&key("bearing"), b, n_bearings)?;
-                    (SensorAt::Journal(b), info.bearings[b].0)
-                }
-                _ => return Err(CaseError::inconsistent(key("node"), Inconsistency::SensorPlace)),
-            };
-            sensors.push(Sensor { at, node, direction: s.direction, quantity: s.quantity });
-        }
-        let mut actuators = Vec::new();
-        for (i, a) in self.actuator.iter().enumerate() {
-            let key = |k: &str| format!("control.actuator[{i}].{k}");
-            let max_voltage_v = control_key!("control.actuator[].max_voltage_v")
-                .optional(a.max_voltage_v)
-                .map_err(|e| at_index(e, &key("max_voltage_v")))?;
-            let kind = match a.kind {
-                ActuatorWord::Valve => {
-                    let b = a.bearing.ok_or_else(|| {
-                        CaseError::missing(key("bearing"), "the bearing whose valve this actuator drives")
-                    })?;
-                    let b = index(&key("bearing"), b, n_bearings)?;
-                    valve_bearing(&key("bearing"), b, info.bearings[b].1)?;
-                    if let Some(first) =
-                        actuators.iter().position(|x: &Actuator| x.kind == ActuatorKind::Valve { bearing: b })
-                    {
-                        return Err(CaseError::inconsistent(
-                            key("bearing"),
-                            Inconsistency::ValveTwice { bearing: b, first },
-                        ));
-                    }
-                    ActuatorKind::Valve { bearing: b }
-                }
-                ActuatorWord::Force => {
-                    let node =
-                        a.node.ok_or_else(|| CaseError::missing(key("node"), "the node a force actuator pushes"))?;
-                    let direction =
-                        a.direction.ok_or_else(|| CaseError::missing(key("direction"), "the direction it pushes"))?;
-                    let g = a.gain_n_per_v.ok_or_else(|| CaseError::missing(key("gain_n_per_v"), "force per volt"))?;
-                    let dynamics = match a.natural_frequency_hz {
-                        None => None,
-                        Some(f) => Some(SecondOrder {
-                            natural_frequency_rad_s: control_key!("control.actuator[].natural_frequency_hz")
-                                .value_at(&key("natural_frequency_hz"), Some(f))?,
-                            damping_ratio: control_key!("control.actuator[].damping_ratio")
-                                .value_at(&key("damping_ratio"), a.damping_ratio)?,
-                        }),
-                    };
-                    ActuatorKind::Force {
-                        node: index(&key("node"), node, info.n_nodes)?,
-                        direction,
-                        gain_n_per_v: control_key!("control.actuator[].gain_n_per_v")
-                            .value_at(&key("gain_n_per_v"), Some(g))?,
-                        dynamics,
-                    }
-                }
-            };
-            actuators.push(Actuator { kind, max_voltage_v });
-        }
-        let given: Vec<String> = [
-            (!self.loops.is_empty()).then(|| "[[control.loop]]".to_string()),
-            self.mimo.is_some().then(|| "[control.mimo]".to_string()),
-        ]
-        .into_iter()
-        .flatten()
-        .collect();
-        if given.len() != 1 {
-            return Err(CaseError::inconsistent("control", Inconsistency::ControlLaw { given }));
-        }
-        let law = if let Some(m) = &self.mimo {
-            resolve_mimo(m, &sensors, actuators.len())?
-        } else {
-            Law::Loops(resolve_loops(&self.loops, &sensors, actuators.len())?)
-        };
-        Ok(Control { gain, sensors, actuators, law })
-    }
-}
-
-/// `e` (an error at a row's key) at the indexed key `key`.
-fn at_index(e: CaseError, key: &str) -> CaseError {
-    match e {
-        CaseError::OutOfRange { value, allowed, .. } => CaseError::OutOfRange { key: key.into(), value, allowed },
-        other => other,
-    }
-}
-
-/// Checks that bearing position `b` holds a case whose valve feeds, through each port, a pad with an orifice.
-fn valve_bearing(key: &str, b: usize, case: Option<&Case>) -> Result<(), CaseError> {
-    let case = case.ok_or_else(|| CaseError::inconsistent(key, Inconsistency::BearingWithoutCase { bearing: b }))?;
-    let h = case
-        .hydraulics
-        .as_ref()
-        .ok_or_else(|| CaseError::inconsistent(key, Inconsistency::NoValve { bearing: b, name: case.title.clone() }))?;
-    for port in &h.ports {
-        if port.pads.iter().all(|&p| case.bearing.pads.get(p).is_none_or(|pad| pad.orifices.is_empty())) {
-            let name = if port.sign > 0.0 { ValvePort::A } else { ValvePort::B };
-            return Err(CaseError::inconsistent(
-                key,
-                Inconsistency::PortWithoutOrifice {
-                    port: if name == ValvePort::A { 'A' } else { 'B' },
-                    pads: port.pads.clone(),
-                },
-            ));
-        }
-    }
-    Ok(())
-}
-
-/// The SI value of one unit of a sensor's reading as the gains take it: µm, or mm/s for a velocity pickup.
-fn reading_unit(q: Quantity) -> f64 {
-    match q {
-        Quantity::Displacement => crate::units::UM.si,
-        Quantity::Velocity => crate::units::MM.si,
-    }
-}
-
-/// A PD term's gains for `sensor` (SI), checked: no proportional gain on a velocity pickup, a roll-off with a
-/// derivative of a displacement.
-fn pd_gains(
-    keys: [&str; 3],
-    given: [Option<f64>; 3],
-    sensor: (usize, Quantity),
-) -> Result<(f64, f64, Option<f64>), CaseError> {
-    let kp = control_key!("control.loop[].kp_v_per_um").value_at(keys[0], given[0].or(Some(0.0)))?;
-    let kd = control_key!("control.loop[].kd_v_per_mm_s").value_at(keys[1], given[1].or(Some(0.0)))?;
-    let rolloff = control_key!("control.loop[].rolloff_hz").optional(given[2]).map_err(|e| at_index(e, keys[2]))?;
-    if sensor.1 == Quantity::Velocity && kp != 0.0 {
-        return Err(CaseError::inconsistent(keys[0], Inconsistency::ProportionalOnVelocity { sensor: sensor.0 }));
-    }
-    if sensor.1 == Quantity::Displacement && kd != 0.0 && rolloff.is_none() {
-        return Err(CaseError::inconsistent(keys[2], Inconsistency::DerivativeWithoutRolloff));
-    }
-    Ok((kp, kd, rolloff))
-}
-
-fn resolve_loops(loops: &[LoopTable], sensors: &[Sensor], n_actuators: usize) -> Result<Vec<Loop>, CaseError> {
-    let mut out: Vec<Option<Loop>> = vec![None; n_actuators];
-    for (i, l) in loops.iter().enumerate() {
-        let key = |k: &str| format!("control.loop[{i}].{k}");
-        let a = index(&key("actuator"), l.actuator, n_actuators)?;
-        let s = index(&key("sensor"), l.sensor, sensors.len())?;
-        if out[a].is_some() {
-            let count = loops.iter().filter(|x| x.actuator == a).count();
-            return Err(CaseError::inconsistent(
-                key("actuator"),
-                Inconsistency::LoopsPerActuator { actuator: a, loops: count },
-            ));
-        }
-        let q = sensors[s].quantity;
-        let rule = match l.law {
-            LawWord::Pd => {
-                let (kp, kd, rolloff_rad_s) = pd_gains(
-                    [&key("kp_v_per_um"), &key("kd_v_per_mm_s"), &key("rolloff_hz")],
-                    [l.kp_v_per_um, l.kd_v_per_mm_s, l.rolloff_hz],
-                    (s, q),
-                )?;
-                Rule::Pd { kp, kd, rolloff_rad_s }
-            }
-            LawWord::TransferFunction => {
-                let num = polynomial(&key("numerator"), &l.numerator)?;
-                let den = polynomial(&key("denominator"), &l.denominator)?;
-                if l.numerator.is_empty() {
-                    return Err(CaseError::missing(key("numerator"), "the transfer function's numerator"));
-                }
-                let Some(&lead) = den.first() else {
-                    return Err(CaseError::inconsistent(key("denominator"), Inconsistency::ZeroDenominator));
-                };
-                if num.len() > den.len() {
-                    return Err(CaseError::inconsistent(
-                        key("numerator"),
-                        Inconsistency::ImproperTransferFunction {
-                            numerator: num.len() - 1,
-                            denominator: den.len() - 1,
-                        },
-                    ));
-                }
-                let unstable = routh_unstable_roots(&den);
-                if unstable > 0 {
-                    return Err(CaseError::inconsistent(
-                        key("denominator"),
-                        Inconsistency::UnstableController { poles: unstable },
-                    ));
-                }
-                // per SI reading, monic denominator
-                let scale = 1.0 / (reading_unit(q) * lead);
-                Rule::TransferFunction {
-                    numerator: num.iter().map(|c| c * scale).collect(),
-                    denominator: den.iter().map(|c| c / lead).collect(),
-                }
-            }
-        };
-        out[a] = Some(Loop { actuator: a, sensor: s, rule });
-    }
-    out.into_iter()
-        .enumerate()
-        .map(|(a, l)| {
-            l.ok_or_else(|| {
-                CaseError::inconsistent("control.loop", Inconsistency::LoopsPerActuator { actuator: a, loops: 0 })
-            })
-        })
-        .collect()
-}
-
-fn resolve_mimo(m: &MimoTable, sensors: &[Sensor], n_actuators: usize) -> Result<Law, CaseError> {
-    let shape = |key: &str, rows: &[Vec<f64>]| -> Result<Vec<Vec<f64>>, CaseError> {
-        if rows.is_empty() {
-            return Ok(vec![vec![0.0; sensors.len()]; n_actuators]);
-        }
-        let columns = rows.iter().map(Vec::len).max().unwrap_or(0);
-        if rows.len() != n_actuators || rows.iter().any(|r| r.len() != sensors.len()) {
-            return Err(CaseError::inconsistent(
-                key,
-                Inconsistency::GainMatrixShape {
-                    rows: rows.len(),
-                    columns,
-                    actuators: n_actuators,
-                    sensors: sensors.len(),
-                },
-            ));
-        }
-        Ok(rows.to_vec())
-    };
-    let kp_rows = shape("control.mimo.kp_v_per_um", &m.kp_v_per_um)?;
-    let kd_rows = shape("control.mimo.kd_v_per_mm_s", &m.kd_v_per_mm_s)?;
-    let mut kp = vec![vec![0.0; sensors.len()]; n_actuators];
-    let mut kd = kp.clone();
-    let mut rolloff = None;
-    for a in 0..n_actuators {
-        for (s, sensor) in sensors.iter().enumerate() {
-            let (p, d, r) = pd_gains(
-                [
-                    &format!("control.mimo.kp_v_per_um[{a}][{s}]"),
-                    &format!("control.mimo.kd_v_per_mm_s[{a}][{s}]"),
-                    "control.mimo.rolloff_hz",
-                ],
-                [Some(kp_rows[a][s]), Some(kd_rows[a][s]), m.rolloff_hz],
-                (s, sensor.quantity),
-            )?;
-            (kp[a][s], kd[a][s], rolloff) = (p, d, r);
-        }
-    }
-    Ok(Law::Mimo { kp, kd, rolloff_rad_s: rolloff })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn routh_counts_the_right_half_plane_roots() {
-        // (s + 1)(s + 2)(s + 3) = s³ + 6s² + 11s + 6: stable
-        assert_eq!(routh_unstable_roots(&[1.0, 6.0, 11.0, 6.0]), 0);
-        // (s − 1)(s + 2) = s² + s − 2: one
-        assert_eq!(routh_unstable_roots(&[1.0, 1.0, -2.0]), 1);
-        // s² − 2s + 5 (1 ± 2i): two
-        assert_eq!(routh_unstable_roots(&[1.0, -2.0, 5.0]), 2);
-        // s² + 4 (±2i, on the axis): counted
-        assert!(routh_unstable_roots(&[1.0, 0.0, 4.0]) >= 1);
-        // s (a pole at 0): counted
-        assert!(routh_unstable_roots(&[1.0, 0.0]) >= 1);
-        // first order
-        assert_eq!(routh_unstable_roots(&[1.0, 5.0]), 0);
-        assert_eq!(routh_unstable_roots(&[2.0]), 0);
-        // (s + 1)⁴ and (s − 0.5)(s + 1)³
-        assert_eq!(routh_unstable_roots(&[1.0, 4.0, 6.0, 4.0, 1.0]), 0);
-        assert_eq!(routh_unstable_roots(&[1.0, 2.5, 1.5, -0.5, -0.5]), 1);
     }
 }

@@ -6,7 +6,7 @@
 use super::error::Range;
 use super::rotor::RotorFile;
 use super::schema::{Fallback, KeySpec};
-use crate::units::{COUNT, HZ_ANGULAR, N_PER_V, ONE, VOLT, V_PER_MM_S, V_PER_UM};
+use crate::units::{COUNT, HZ_ANGULAR, N_PER_V, ONE, RPM, VOLT, V_PER_MM_S, V_PER_UM};
 
 type Key = KeySpec<RotorFile>;
 
@@ -92,6 +92,26 @@ pub const CONTROL_KEYS: &[Key] = &[
         .typical(100.0, 2000.0)
         .default(Fallback::Rule("none (required with kd on a displacement sensor)"))
         .meaning("First-order roll-off of every derivative term."),
+    Key::number("control.lqr.design_speed_rpm", RPM, Range::positive(1e6))
+        .typical(1000.0, 20000.0)
+        .default(Fallback::Rule("required on a rotor; the case's speed on the test rig"))
+        .meaning("Spin speed of the plant the LQR is designed on (its reduced model); the same controller then runs at every speed of the sweep."),
+    Key::number("control.lqr.output_weight", ONE, Range::closed(0.0, 1e12))
+        .typical(0.01, 100.0)
+        .or(1.0)
+        .meaning("Weight q of each sensor's reading squared in the cost ∫ Σ q y² + Σ r u² dt (y in µm, mm/s for a velocity pickup): one per sensor."),
+    Key::number("control.lqr.input_weight", ONE, Range::open_lo(0.0, 1e12))
+        .typical(0.01, 100.0)
+        .or(1.0)
+        .meaning("Weight r of each actuator's signal squared (u in volts): one per actuator; larger asks less of the valve."),
+    Key::number("control.lqr.max_frequency_hz", HZ_ANGULAR, Range::positive(1e6))
+        .typical(100.0, 1000.0)
+        .or(300.0)
+        .meaning("The reduced model keeps the plant's modes below this frequency (and every unstable one); the valve's and the lines' faster modes are left out of the design, not out of the closed loop."),
+    Key::number("control.lqr.sensor_noise", ONE, Range::open_lo(0.0, 1e12))
+        .typical(1e-4, 1.0)
+        .or(0.01)
+        .meaning("The observer (Kalman filter): sensor-noise intensity per unit disturbance at the actuator inputs (reading units² per V²); smaller trusts the sensors more (a faster observer)."),
 ];
 
 /// The row of a controller key (its row key, `[]` for array entries), found while compiling:

@@ -217,6 +217,8 @@ pub enum Inconsistency {
     ProportionalOnVelocity { sensor: usize },
     #[error("{rows}×{columns} entries; needs {actuators}×{sensors} (a row per actuator, a column per sensor)")]
     GainMatrixShape { rows: usize, columns: usize, actuators: usize, sensors: usize },
+    #[error("{given} weights; needs {needs} (one per sensor for output_weight, one per actuator for input_weight)")]
+    WeightCount { given: usize, needs: usize },
     #[error("needs at least one sensor and one actuator")]
     NothingToControl,
     // ------------------------------------------------------------------------------------ any layer

@@ -13,6 +13,7 @@
 pub mod budget;
 pub mod case;
 pub mod control;
+mod control_resolve;
 pub mod control_schema;
 pub mod edit;
 pub mod error;

@@ -220,7 +220,7 @@ fn retuned_loop_root_locus_and_gain_rows_match_the_analysis() {
     while !a.step().unwrap() {}
     let sweep = a.sweep();
     let r = a.finish().unwrap();
-    let k = realise(&control);
+    let k = realise(&control).unwrap();
     let mut worst: f64 = 0.0;
     let mut log_dec = Vec::new();
     for (i, s) in r.speeds.iter().enumerate() {
@@ -349,4 +349,75 @@ fn rig_closed_loop_frf_with_and_without_control() {
     assert!(closed < 0.7 * open, "{open} {closed}");
     assert!(peak(&flipped, true) > 2.0 * open);
     assert!(!high.poles().unwrap().stable());
+}
+
+/// The shipped LQR rotor (`cases/rotors/compressor-rotor-lqr.toml`) with `edit` applied, bearings at preview.
+fn load_lqr(edit: &dyn Fn(String) -> String) -> Result<(Rotor, Control), String> {
+    let text = read("compressor-rotor-lqr.toml")?;
+    let active = read("compressor-rotor-active.toml")?;
+    // the same rotor: reuse `load` on the active file with its [control] replaced by the LQR file's
+    let control = &text[text.find("[control]").unwrap()..];
+    let rotor_part = &active[..active.find("[control]").unwrap()];
+    let whole = format!("{rotor_part}{control}");
+    load(&|_| edit(whole.clone()))
+}
+
+/// The LQR designed by tiltpad on the reduced model at 9000 rpm (preview bearings), closed on the full plant:
+/// the reduced model keeps the 20 states below 300 Hz of 108; the loop-open onset stays the active rotor's
+/// (8754 rpm) and the closed loop is stable over 6000–12 000 rpm, where the open loop goes unstable
+/// (log dec at 12 000 rpm: −0.22 open, +0.016 closed, measured); at 9000 rpm, the design speed, every closed-loop
+/// pole lies in the left half-plane. Flipping the loop's sign (gain −1) makes it unstable from 6000 rpm.
+#[test]
+fn lqr_designed_on_the_reduced_model_stabilises_the_full_plant() {
+    let (rotor, control) = load_lqr(&|t| t).unwrap();
+    let mut params = ControlParams::new(speeds(6000.0, 12000.0, 4));
+    params.nyquist = false;
+    let r = run(&rotor, &control, params.clone()).unwrap();
+    let d = r.lqr.as_ref().expect("an LQR design");
+    assert_eq!((d.reduced_states, d.full_states), (20, 108), "{:?}", d.kept_hz);
+    assert!(d.kept_hz.iter().all(|f| *f <= 300.0));
+    let onset_open = RPM.from_si(r.onset_open.onset_rad_s.unwrap());
+    assert!((onset_open - 8754.0).abs() < 5.0, "open onset {onset_open}");
+    assert!(r.onset_closed.onset_rad_s.is_none() && r.onset_closed.stable_at_first, "{:?}", r.onset_closed);
+    let last = r.speeds.last().unwrap();
+    assert!(last.open.min_log_dec() < -0.2 && last.closed.min_log_dec() > 0.01, "{:?}", last.closed.min_log_dec());
+    // the sign flip
+    let mut flipped = control.clone();
+    flipped.gain = -1.0;
+    let f = run(&rotor, &flipped, params).unwrap();
+    assert!(!f.speeds[0].closed.stable(), "gain −1 at 6000 rpm: {}", f.speeds[0].closed.min_log_dec());
+}
+
+/// Bad LQR input is refused naming the key: a negative weight, a weight list of the wrong length, a zero valve
+/// weight, no design speed on a rotor, a cut-off below every mode.
+#[test]
+fn bad_lqr_input_is_refused_naming_the_key() {
+    let cases: [(&dyn Fn(String) -> String, &str); 3] = [
+        (
+            &|t| {
+                t.replace(
+                    "output_weight = [1.0, 1.0, 1.0, 1.0, 1.0, 1.0]",
+                    "output_weight = [1.0, -1.0, 1.0, 1.0, 1.0, 1.0]",
+                )
+            },
+            "control.lqr.output_weight[1]",
+        ),
+        (&|t| t.replace("input_weight = [1.0, 1.0]", "input_weight = [1.0]"), "control.lqr.input_weight"),
+        (&|t| t.replace("input_weight = [1.0, 1.0]", "input_weight = [1.0, 0.0]"), "control.lqr.input_weight[1]"),
+    ];
+    for (edit, want) in cases {
+        let err = load_lqr(edit).err().unwrap_or_default();
+        eprintln!("{err}");
+        assert!(err.contains(want), "`{want}` not in: {err}");
+    }
+    let params = ControlParams::new(speeds(6000.0, 8000.0, 2));
+    let (rotor, control) = load_lqr(&|t| t.replace("design_speed_rpm = 9000.0\n", "")).unwrap();
+    let err = run(&rotor, &control, params.clone()).err().map(|e| e.to_string()).unwrap_or_default();
+    assert!(err.contains("control.lqr.design_speed_rpm"), "{err}");
+    // below the onset (every mode stable) a 1 Hz cut-off keeps nothing; above it the unstable mode is kept
+    let (rotor, control) =
+        load_lqr(&|t| t.replace("max_frequency_hz = 300.0", "max_frequency_hz = 1.0").replace("= 9000.0", "= 6000.0"))
+            .unwrap();
+    let err = run(&rotor, &control, params).err().map(|e| e.to_string()).unwrap_or_default();
+    assert!(err.contains("max_frequency_hz = 1 Hz"), "{err}");
 }

@@ -81,6 +81,8 @@ pub struct Built {
     open_log_dec: Vec<f64>,
     open_orbits: Vec<Vec<crate::rotor::unbalance::Orbit>>,
     api617_um: Vec<f64>,
+    /// The analysis' controller (the file's; an LQR as designed).
+    controller: crate::control::state_space::StateSpace,
 }
 
 /// The loop closed at one [`Tuning`].
@@ -112,6 +114,7 @@ impl Work for Build {
             open_log_dec: done.iter().map(|s| s.open.min_log_dec()).collect(),
             open_orbits: done.iter().map(|s| s.response.as_ref().map(|r| r.open.clone()).unwrap_or_default()).collect(),
             api617_um: done.iter().map(|s| s.api617_limit_um).collect(),
+            controller: self.analysis.controller().clone(),
         }))
     }
 
@@ -132,7 +135,8 @@ impl Work for Tune {
     type Output = Tuned;
 
     fn step(&mut self) -> Result<Option<Tuned>, String> {
-        let controller = realise(&self.control);
+        // the sliders' PD gains, or the designed LQR (its loop gain still slides)
+        let controller = realise(&self.control).unwrap_or_else(|| self.built.controller.clone());
         let sweep = &self.built.sweep;
         let gain = self.tuning.gain;
         if self.speeds.len() < sweep.len() {
