@@ -30,6 +30,8 @@ use tiltpad::scene::summary::sig4;
 use tiltpad::scene::sweep::SweepSpec;
 use tiltpad::units::{MPA, RPM, UM};
 
+use crate::common::painted_text;
+
 const SIZE: [f32; 2] = [1400.0, 860.0];
 
 /// The app on a shipped case (the compressor bearing unless `preset_toml` is given), set up by `setup`
@@ -388,7 +390,7 @@ fn deformation_view_shows_the_loaded_pad_and_its_modes() {
             let pos = egui::pos2(500.0 + 28.0 * col as f32, anchor.bottom() + 40.0 + 16.0 * row as f32);
             h.hover_at(pos);
             h.run_steps(1);
-            if let Some(n) = h.query_by_label_contains("Film-face radial displacement u (mechanical) at θ") {
+            if let Some(n) = h.query_by_label_contains("Film-face u (mechanical) at θ") {
                 found = Some(text_of(&n));
                 break 'sweep;
             }
@@ -1392,4 +1394,83 @@ fn control_view_gain_slider_moves_the_onset() {
     assert_eq!((gain, open2), (-1.0, open));
     assert!(flipped < 0.98 * open, "{open} {flipped}");
     h.get_by_label_contains("Onset of instability: loop open");
+}
+
+/// Strings that cover one another in the last frame, anywhere in the window, as "a" / "b" at their rects.
+fn overlapping_texts(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let texts = painted_text::painted_texts(&h.output().shapes);
+    let screen = h.ctx.content_rect();
+    painted_text::overlapping(&texts, screen, 2.0)
+        .into_iter()
+        .map(|(a, b)| format!("{:?} at {:?} / {:?} at {:?}", a.text, a.shown, b.text, b.shown))
+        .collect()
+}
+
+/// Widgets (labels, buttons, fields, boxes, sliders) that cover one another in the last frame: in the
+/// editor, the view and the results panel, each widget whole inside its area (a widget scrolled partly
+/// out of its panel is laid out where it would be, not where it shows).
+fn overlapping_widgets(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let Some(view) = h.state().view_rect() else { return Vec::new() };
+    let (screen, top) = (h.ctx.content_rect(), h.get_by_label("File").rect().bottom());
+    let areas = [
+        egui::Rect::from_min_max(egui::pos2(screen.left(), top), egui::pos2(view.left() - 1.0, view.bottom())),
+        view,
+        egui::Rect::from_min_max(egui::pos2(view.right() + 1.0, top), egui::pos2(screen.right(), view.bottom())),
+    ];
+    let roles =
+        [Role::Label, Role::Button, Role::CheckBox, Role::ComboBox, Role::SpinButton, Role::TextInput, Role::Slider];
+    let nodes: Vec<(String, egui::Rect)> = roles
+        .iter()
+        .flat_map(|&role| h.query_all_by_role(role).map(move |n| (format!("{role:?} {:?}", text_of(&n)), n.rect())))
+        .collect();
+    let mut found = Vec::new();
+    for area in areas {
+        let inside: Vec<&(String, egui::Rect)> = nodes.iter().filter(|(_, r)| area.contains_rect(*r)).collect();
+        for (i, a) in inside.iter().enumerate() {
+            // Two labels: a label wrapped beside another spans both lines; their glyphs are checked by
+            // `overlapping_texts`.
+            for b in inside[i + 1..].iter().filter(|b| !(a.0.starts_with("Label") && b.0.starts_with("Label"))) {
+                let common = a.1.intersect(b.1);
+                if common.width() > 1.0 && common.height() > 1.0 {
+                    found.push(format!("{} at {:?} / {} at {:?}", a.0, a.1, b.0, b.1));
+                }
+            }
+        }
+    }
+    found
+}
+
+/// Strings inside the open view cut by their clip rectangle (drawn past the edge of what holds them).
+fn cut_texts_in_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let Some(view) = h.state().view_rect() else { return Vec::new() };
+    painted_text::painted_texts(&h.output().shapes)
+        .into_iter()
+        .filter(|t| view.contains_rect(t.shown) && t.shown.width() + 1.0 < t.full.width())
+        .map(|t| format!("{:?} shown {:?} of {:?}", t.text, t.shown, t.full))
+        .collect()
+}
+
+/// Every view of the list at 1280×720 and 1920×1080: no two strings cover one another anywhere in the
+/// window (editor, tabs, view, results), no two widgets in the editor, the view or the results panel, and
+/// no string in the view is cut at the edge of its area.
+#[test]
+fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080() {
+    let mut found = Vec::new();
+    for size in [[1280.0, 720.0], [1920.0, 1080.0]] {
+        for view in tiltpad::app::views::all() {
+            let id = view.id();
+            let mut h = solved_app_at(size, None, move |app| assert!(app.open_for_snapshot(id)));
+            h.run_steps(4);
+            for o in overlapping_texts(&h) {
+                found.push(format!("{id} at {size:?}: overlap {o}"));
+            }
+            for o in overlapping_widgets(&h) {
+                found.push(format!("{id} at {size:?}: widgets {o}"));
+            }
+            for c in cut_texts_in_view(&h) {
+                found.push(format!("{id} at {size:?}: cut {c}"));
+            }
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
 }

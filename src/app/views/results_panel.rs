@@ -22,24 +22,29 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
                         ui.set_max_width(VALUE_WIDTH);
                         ui.add(egui::Label::new(RichText::new(value).monospace()).wrap()).on_hover_text(row.meaning);
                     });
-                    ui.label(row.unit);
+                    ui.label(&row.unit);
                     ui.end_row();
                 }
             });
         });
     }
     egui::CollapsingHeader::new(RichText::new("Pads").strong()).default_open(true).show(ui, |ui| {
+        // The loads share the engineering prefix of the largest (kN for the compressor).
+        let loads: Vec<f64> = summary.pads.iter().map(|p| p.load_n).collect();
+        let (loads, load_unit) = crate::number::eng_values(&loads, "N");
+        let load_header = format!("load [{load_unit}]");
         Grid::new("pads").striped(true).show(ui, |ui| {
-            for h in ["pad", "tilt [mrad]", "h_min [µm]", "p_max [MPa]", "load [N]", "orifice [l/min]", "cavitated"] {
+            for h in ["pad", "tilt [mrad]", "h_min [µm]", "p_max [MPa]", &load_header, "orifice [l/min]", "cavitated"]
+            {
                 ui.label(RichText::new(h).small());
             }
             ui.end_row();
-            for p in &summary.pads {
+            for (p, load) in summary.pads.iter().zip(&loads) {
                 ui.label(format!("{}{}", p.index, if p.unloaded { " (unloaded)" } else { "" }));
                 ui.label(p.tilt_mrad.map_or("fixed".into(), |t| format!("{t:.4}")));
                 ui.label(format!("{:.2}", p.h_min_um));
                 ui.label(format!("{:.3}", p.p_max_mpa));
-                ui.label(format!("{:.0}", p.load_n));
+                ui.label(load);
                 ui.label(p.orifice_flow_l_min.map_or("–".into(), |q| format!("{q:.3}")));
                 ui.label(format!("{:.0} %", p.cavitated_percent));
                 ui.end_row();
