@@ -908,8 +908,8 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     wait_for_solve(&mut h);
     let slow = h.state().shown.clone().unwrap().solution;
     h.get_by_label("Live vs \"pin 1\"");
-    // The ε row: live, pinned and their difference.
-    for v in [slow.eccentricity_ratio, fast.eccentricity_ratio, slow.eccentricity_ratio - fast.eccentricity_ratio] {
+    // The ε row: live and pinned (at 1280 points the panel shows Δ % and keeps Δ for its hover).
+    for v in [slow.eccentricity_ratio, fast.eccentricity_ratio] {
         assert!(h.query_all_by_label(&sig4(v)).next().is_some(), "{} not shown", sig4(v));
     }
     h.get_by_label_contains("Pinned \"pin 1\" (dashed");
@@ -924,6 +924,9 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     let shared = p_max_mpa(&slow).max(p_max_mpa(&fast));
     assert_eq!(colour_scale(&h), (sig4(0.0), sig4(shared)));
     snapshot(&mut h, "compare_fields_side_by_side_1280x720");
+    // Both panels open, the live and pinned pads side by side: no angle label over another.
+    let texts = overlapping_texts(&h);
+    assert!(texts.is_empty(), "{}", texts.join("\n"));
     h.get_by_label("difference map").click();
     h.run_steps(3);
     let live = PadMap::all(&slow, FieldKind::Pressure);
@@ -943,6 +946,55 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     h.run_steps(2);
     assert!(h.state().persisted.pins.is_empty());
     assert!(h.query_by_label_contains("Wide faint dashed").is_none());
+}
+
+/// The comparison table's cells: (text, rect) of every label right of the view, below the "Live vs" line.
+fn comparison_cells(h: &Harness<'_, WorkbenchApp>) -> Vec<(String, egui::Rect)> {
+    let view = h.state().view_rect().unwrap();
+    let below = h.get_by_label_contains("Live vs").rect().bottom();
+    h.query_all_by_role(Role::Label)
+        .map(|n| (text_of(&n), n.rect()))
+        .filter(|(_, r)| r.left() > view.right() && r.top() > below)
+        .collect()
+}
+
+/// In the frame right after "Pin current result" (before any other input), at 1280×720 and 1920×1080:
+/// the comparison table's cells cover nothing, every column of the table lies inside the results panel
+/// (fixed widths: nothing to scroll sideways to), the quantities read with their prefixed units, and
+/// the whole window has no text over text. At 1280 the Δ column gives way to Δ % (Δ on its hover).
+#[test]
+fn a_new_pin_lays_out_its_table_inside_the_results_panel_at_once() {
+    for (size, columns) in [([1280.0, 720.0], 4), ([1920.0, 1080.0], 5)] {
+        let mut h = solved_app_at(size, None, |_| {});
+        h.get_by_label("Pin current result").click();
+        h.run_steps(1);
+        assert_eq!(h.state().persisted.pins.len(), 1);
+        let screen = h.ctx.content_rect();
+        let cells = comparison_cells(&h);
+        let header: Vec<&str> =
+            cells.iter().filter(|(_, r)| (r.top() - cells[0].1.top()).abs() < 1.0).map(|(t, _)| t.as_str()).collect();
+        assert_eq!(header.len(), columns, "{size:?}: {header:?}");
+        assert_eq!(header.contains(&"Δ"), columns == 5, "{size:?}: {header:?}");
+        for (text, r) in &cells {
+            assert!(
+                r.right() <= screen.right() - 4.0,
+                "{size:?}: {text:?} at {r:?} past the panel's edge {}",
+                screen.right()
+            );
+        }
+        // The compressor carries 1.918 kN: the load row reads in kN, live and pinned alike.
+        let load = cells.iter().find(|(t, _)| t == "load [kN]").expect("the load row").1;
+        let row: Vec<&str> = cells
+            .iter()
+            .filter(|(_, r)| (r.center().y - load.center().y).abs() < 1.0)
+            .map(|(t, _)| t.as_str())
+            .collect();
+        assert_eq!(row[..3], ["load [kN]", "1.918", "1.918"], "{size:?}");
+        let widgets = overlapping_widgets(&h);
+        assert!(widgets.is_empty(), "{size:?}: {}", widgets.join("\n"));
+        let texts = overlapping_texts(&h);
+        assert!(texts.is_empty(), "{size:?}: {}", texts.join("\n"));
+    }
 }
 
 /// The pin dialog refuses "live" (the export's name for the live row) and a name already pinned, saying

@@ -43,8 +43,11 @@ fn value(v: Option<f64>, scale: f64) -> String {
 const NUMBER_WIDTH: f32 = 58.0;
 /// Width of the Δ % column [points].
 const PERCENT_WIDTH: f32 = 48.0;
-/// Narrowest quantity column [points]; longer names are cut with "…" and read in full on hover.
+/// Quantity column [points] below which Δ gives way; names longer than their column are cut with "…"
+/// and read in full on hover.
 const QUANTITY_MIN: f32 = 120.0;
+/// Narrowest quantity column [points], in a panel too narrow for the numbers and a full name.
+const QUANTITY_LEAST: f32 = 80.0;
 /// Widest quantity column [points]: the longest name with its unit.
 const QUANTITY_MAX: f32 = 230.0;
 
@@ -56,7 +59,7 @@ pub fn column_widths(room: f32, gap: f32) -> Vec<f32> {
     let numbers = |n: usize| n as f32 * (NUMBER_WIDTH + gap) + PERCENT_WIDTH + gap;
     let with_delta = room - numbers(3) >= QUANTITY_MIN;
     let n = if with_delta { 3 } else { 2 };
-    let quantity = (room - numbers(n)).clamp(QUANTITY_MIN, QUANTITY_MAX);
+    let quantity = (room - numbers(n)).clamp(QUANTITY_LEAST, QUANTITY_MAX);
     let mut widths = vec![quantity];
     widths.extend(std::iter::repeat_n(NUMBER_WIDTH, n));
     widths.push(PERCENT_WIDTH);
@@ -65,7 +68,10 @@ pub fn column_widths(room: f32, gap: f32) -> Vec<f32> {
 
 /// One cell of `width` points: `text` aligned by `align`, cut with "…" (full text on hover) when longer.
 fn cell(ui: &mut Ui, width: f32, text: RichText, align: egui::Align) -> egui::Response {
-    let layout = egui::Layout::left_to_right(egui::Align::Center).with_main_align(align);
+    let layout = match align {
+        egui::Align::Max => egui::Layout::right_to_left(egui::Align::Center),
+        _ => egui::Layout::left_to_right(egui::Align::Center),
+    };
     let height = ui.spacing().interact_size.y;
     ui.allocate_ui_with_layout(egui::vec2(width, height), layout, |ui| {
         ui.set_min_width(width);
@@ -129,7 +135,10 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
                     remove = Some(k);
                 }
             });
-            let widths = column_widths(ui.available_width(), ui.spacing().item_spacing.x);
+            // The room that shows (the panel scrolls both ways, so its available width is not what shows),
+            // less the width of the floating scroll bar.
+            let room = ui.clip_rect().right() - ui.cursor().left() - ui.spacing().scroll.bar_width;
+            let widths = column_widths(room, ui.spacing().item_spacing.x);
             let with_delta = widths.len() == 5;
             let (right, left) = (egui::Align::Max, egui::Align::Min);
             Grid::new(("compare", k)).num_columns(widths.len()).striped(true).show(ui, |ui| {
@@ -173,13 +182,13 @@ mod tests {
     use super::{column_widths, row_unit};
 
     /// The results panel at 1280 points (384 wide, about 340 inside) has no room for Δ beside Δ %; at
-    /// 1920 (576) it has; the quantity column never falls below its minimum nor grows past its maximum.
+    /// 1920 (576) it has; the quantity column never falls below its least width nor grows past its most.
     #[test]
     fn the_delta_column_shows_only_where_it_fits() {
         assert_eq!(column_widths(340.0, 8.0), vec![152.0, 58.0, 58.0, 48.0]);
         assert_eq!(column_widths(380.0, 8.0), vec![126.0, 58.0, 58.0, 58.0, 48.0]);
         assert_eq!(column_widths(540.0, 8.0), vec![230.0, 58.0, 58.0, 58.0, 48.0]);
-        assert_eq!(column_widths(100.0, 8.0)[0], 120.0);
+        assert_eq!(column_widths(250.0, 8.0), vec![80.0, 58.0, 58.0, 48.0]);
     }
 
     /// The compressor's kxx live 30.17 MN/m against 43.42 MN/m pinned reads in MN/m; units chosen for

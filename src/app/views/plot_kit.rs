@@ -114,6 +114,25 @@ pub fn phase_label(value: f64) -> String {
     format!("{value:.0}°")
 }
 
+/// Paints `text` at `pos` (anchored by `align`) on one line of at most `width` points, cut with "…" when
+/// longer; returns where it was painted.
+pub fn text_within(
+    painter: &egui::Painter,
+    pos: egui::Pos2,
+    align: egui::Align2,
+    text: &str,
+    font: egui::FontId,
+    color: Color32,
+    width: f32,
+) -> egui::Rect {
+    let mut job = egui::text::LayoutJob::simple_singleline(text.to_string(), font, color);
+    job.wrap = egui::text::TextWrapping::truncate_at_width(width.max(0.0));
+    let galley = painter.layout_job(job);
+    let rect = align.anchor_size(pos, galley.size());
+    painter.galley(rect.min, galley, color);
+    rect
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -179,23 +198,4 @@ mod tests {
         // Each piece is continuous.
         assert!(pieces.iter().all(|s| s.windows(2).all(|w| (w[1][1] - w[0][1]).abs() <= 10.0 + 1e-9)));
     }
-}
-
-/// Paints `text` at `pos` (anchored by `align`) on one line of at most `width` points, cut with "…" when
-/// longer; returns where it was painted.
-pub fn text_within(
-    painter: &egui::Painter,
-    pos: egui::Pos2,
-    align: egui::Align2,
-    text: &str,
-    font: egui::FontId,
-    color: Color32,
-    width: f32,
-) -> egui::Rect {
-    let mut job = egui::text::LayoutJob::simple_singleline(text.to_string(), font, color);
-    job.wrap = egui::text::TextWrapping::truncate_at_width(width.max(0.0));
-    let galley = painter.layout_job(job);
-    let rect = align.anchor_size(pos, galley.size());
-    painter.galley(rect.min, galley, color);
-    rect
 }
