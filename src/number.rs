@@ -7,6 +7,9 @@
 //!   on what the user typed (sweep values, speeds, frequencies, range bounds), which read back within 5e-12
 //!   relative without the round-off digits. Solver outputs in data files keep Rust's shortest round-trip
 //!   text (`{:?}`), so a CSV cell and the JSON of the same result are the same number.
+//! - [`eng`], [`eng_values`]: values of an SI unit in engineering notation with the prefixed unit
+//!   (`1.95 GN/m`, `2.259 kN`): how the workbench shows forces, stiffnesses, damping, powers and torques,
+//!   in the results, the pads table and the comparison of pins alike.
 //! - [`ticks`]: labels of evenly spaced ticks, all with the decimals their step needs (`0`, `0.5`, `1`,
 //!   `1.5` → "0.0", "0.5", "1.0", "1.5").
 //!
@@ -85,6 +88,24 @@ pub fn eng_prefix(max_abs: f64) -> (f64, &'static str) {
     PREFIXES.into_iter().find(|(f, _)| rounded >= *f).unwrap_or(PREFIXES[6])
 }
 
+/// Values of one SI unit sharing one engineering prefix, chosen by the largest magnitude, each with 4
+/// significant digits: `eng_values(&[2.5e8, -1.2e7], "N/m")` = (["250", "-12"], "MN/m"). A row of
+/// several values (Kxx, Kxy) so reads in one unit.
+#[must_use]
+pub fn eng_values(values: &[f64], unit: &str) -> (Vec<String>, String) {
+    let largest = values.iter().filter(|v| v.is_finite()).fold(0.0_f64, |m, v| m.max(v.abs()));
+    let (scale, prefix) = eng_prefix(largest);
+    (values.iter().map(|&v| sig(v / scale, 4)).collect(), format!("{prefix}{unit}"))
+}
+
+/// One value of an SI unit in engineering notation with its prefixed unit, 4 significant digits:
+/// `eng(1_950_103_829.0, "N/m")` = "1.95 GN/m", `eng(2259.1, "N")` = "2.259 kN".
+#[must_use]
+pub fn eng(x: f64, unit: &str) -> String {
+    let (values, unit) = eng_values(&[x], unit);
+    format!("{} {unit}", values[0])
+}
+
 /// Drops trailing zeros after a decimal point, and the point itself when nothing follows it.
 fn trim(s: &str) -> String {
     if s.contains('.') {
@@ -128,6 +149,22 @@ mod tests {
         assert_eq!(eng_prefix(0.0), (1.0, ""));
         assert_eq!(eng_prefix(f64::NAN), (1.0, ""));
         assert_eq!(eng_prefix(4e12), (1e9, "G"));
+    }
+
+    /// The numbers that overflowed the results panel read with a prefix; a row shares the prefix of its
+    /// largest value.
+    #[test]
+    fn engineering_notation_carries_the_prefix_into_the_unit() {
+        assert_eq!(eng(1_950_103_829.0, "N/m"), "1.95 GN/m");
+        assert_eq!(eng(2259.1, "N"), "2.259 kN");
+        assert_eq!(eng(-65_972.0, "N·s/m"), "-65.97 kN·s/m");
+        assert_eq!(eng(5.745, "N·m"), "5.745 N·m");
+        assert_eq!(eng(0.0, "W"), "0 W");
+        assert_eq!(eng(f64::NAN, "W"), "NaN W");
+        let (v, unit) = eng_values(&[4.636e7, -1.839e6], "N/m");
+        assert_eq!((v, unit.as_str()), (vec!["46.36".to_string(), "-1.839".to_string()], "MN/m"));
+        let (v, unit) = eng_values(&[2.5e8, -1.2e7], "N/m");
+        assert_eq!((v, unit.as_str()), (vec!["250".to_string(), "-12".to_string()], "MN/m"));
     }
 
     #[test]

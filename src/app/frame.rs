@@ -94,7 +94,8 @@ impl WorkbenchApp {
         egui::Panel::right("results")
             .resizable(true)
             .size_range(RESULTS_RANGE[0] * width..=RESULTS_RANGE[1] * width)
-            .default_size(330.0_f32.min(0.25 * width))
+            // Its widest by default: the comparison of a pin needs the room (the view keeps > 40 %).
+            .default_size(RESULTS_RANGE[1] * width)
             .show_collapsible(ui, &mut results_open, |ui| self.results_ui(ui));
         self.persisted.results_open = results_open;
         let t2 = web_time::Instant::now();

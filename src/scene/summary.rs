@@ -5,14 +5,15 @@
 //! number.
 
 use crate::bearing::solution::Solution;
-use crate::units::{KNS_PER_M, L_PER_MIN, MN_PER_M, MPA, MPA_S, MRAD, MS, UM};
+use crate::units::{L_PER_MIN, MPA, MPA_S, MRAD, MS, UM};
 
 /// One labelled value.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
     pub label: &'static str,
     pub value: String,
-    pub unit: &'static str,
+    /// The unit as shown: an SI unit with its engineering prefix (`kN`) or a unit chosen for reading (µm).
+    pub unit: String,
     /// Physical meaning, for a tooltip.
     pub meaning: &'static str,
 }
@@ -47,7 +48,14 @@ pub struct Summary {
 }
 
 fn row(label: &'static str, value: String, unit: &'static str, meaning: &'static str) -> Row {
-    Row { label, value, unit, meaning }
+    Row { label, value, unit: unit.to_string(), meaning }
+}
+
+/// A row of values of one SI unit in engineering notation ([`crate::number::eng_values`]): the values
+/// share the prefix of the largest (`Kxx, Kxy` = "46.36, -1.839" MN/m).
+fn eng_row(label: &'static str, values_si: &[f64], unit_si: &str, meaning: &'static str) -> Row {
+    let (values, unit) = crate::number::eng_values(values_si, unit_si);
+    Row { label, value: values.join(", "), unit, meaning }
 }
 
 /// A relative residual or balance: round-off (below 1e-12) is shown as such, not as its noise digits.
@@ -76,7 +84,7 @@ pub fn summary(s: &Solution) -> Summary {
         title: "Operating point",
         rows: vec![
             row("Speed", sig4(s.derived.speed_rpm), "rpm", "Journal speed Ω."),
-            row("Load", sig4(s.load_magnitude_n), "N", "Static load carried by the film, equal and opposite to the film force."),
+            eng_row("Load", &[s.load_magnitude_n], "N", "Static load carried by the film, equal and opposite to the film force."),
             row("Eccentricity ε", format!("{:.4}", s.eccentricity_ratio), "–", "Journal displacement from the bearing centre divided by the assembled clearance Cb."),
             row(
                 "Attitude angle",
@@ -104,8 +112,8 @@ pub fn summary(s: &Solution) -> Summary {
                     "Largest film or pad temperature. The isothermal model uses one film temperature; switch the physics to THD to compute temperatures.",
                 ),
             },
-            row("Power loss", sig4(s.friction_power_w), "W", "Viscous shear power dissipated in the films (friction loss)."),
-            row("Friction torque", sig4(s.friction_torque_nm), "N·m", "Drag torque of the films on the journal."),
+            eng_row("Power loss", &[s.friction_power_w], "W", "Viscous shear power dissipated in the films (friction loss)."),
+            eng_row("Friction torque", &[s.friction_torque_nm], "N·m", "Drag torque of the films on the journal."),
             row(
                 "Sommerfeld S",
                 s.sommerfeld.map_or_else(|| "— (no load)".into(), sig4),
@@ -137,30 +145,10 @@ pub fn summary(s: &Solution) -> Summary {
                 "–",
                 "Excitation frequency ratio used for the reduction of the pad coordinates.",
             ),
-            row(
-                "Kxx, Kxy",
-                format!("{}, {}", sig4(MN_PER_M.from_si(k[0][0])), sig4(MN_PER_M.from_si(k[0][1]))),
-                "MN/m",
-                "Stiffness: force in x per displacement in x, y.",
-            ),
-            row(
-                "Kyx, Kyy",
-                format!("{}, {}", sig4(MN_PER_M.from_si(k[1][0])), sig4(MN_PER_M.from_si(k[1][1]))),
-                "MN/m",
-                "Stiffness: force in y per displacement in x, y.",
-            ),
-            row(
-                "Cxx, Cxy",
-                format!("{}, {}", sig4(KNS_PER_M.from_si(c[0][0])), sig4(KNS_PER_M.from_si(c[0][1]))),
-                "kN·s/m",
-                "Damping: force in x per velocity in x, y.",
-            ),
-            row(
-                "Cyx, Cyy",
-                format!("{}, {}", sig4(KNS_PER_M.from_si(c[1][0])), sig4(KNS_PER_M.from_si(c[1][1]))),
-                "kN·s/m",
-                "Damping: force in y per velocity in x, y.",
-            ),
+            eng_row("Kxx, Kxy", &k[0], "N/m", "Stiffness: force in x per displacement in x, y."),
+            eng_row("Kyx, Kyy", &k[1], "N/m", "Stiffness: force in y per displacement in x, y."),
+            eng_row("Cxx, Cxy", &c[0], "N·s/m", "Damping: force in x per velocity in x, y."),
+            eng_row("Cyx, Cyy", &c[1], "N·s/m", "Damping: force in y per velocity in x, y."),
         ],
     };
     let solver = Group {
@@ -211,7 +199,7 @@ fn thermal_group(t: &crate::bearing::solution::ThermalResult) -> Group {
             row("Pad T max", t.t_max_pad_c.map_or_else(|| "—".into(), |v| format!("{v:.1}")), "°C", "Hottest point of the pads (the babbitt limit is ~120–130 °C)."),
             row("Journal T", format!("{:.1}", t.journal_temperature_c), "°C", "Journal surface temperature: given, or from zero net heat flux into the journal."),
             row("Inlet T per pad", inlets.join(", "), "°C", "Leading-edge oil temperature of each pad from the groove mixing of hot carried-over oil with fresh supply."),
-            row("Heat to oil, conducted", format!("{}, {}", sig4(t.heat_carried_by_oil_w), sig4(t.heat_conducted_w)), "W", "Friction power leaves as enthalpy of the oil and by conduction into pads and journal."),
+            eng_row("Heat to oil, conducted", &[t.heat_carried_by_oil_w, t.heat_conducted_w], "W", "Friction power leaves as enthalpy of the oil and by conduction into pads and journal."),
             row("Energy balance", small(t.energy_balance_closure), "–", "(power − heat to oil − heat conducted) / power: the discrete energy balance, should be small."),
             row("Thermal loop", rep.outer_iterations.to_string(), "iterations", "Outer iterations of equilibrium + temperatures until the viscosity field converged."),
             row("Thermal loop time", format!("{:.0}", MS.from_si(rep.seconds)), "ms", "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing)."),

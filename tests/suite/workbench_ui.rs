@@ -30,6 +30,8 @@ use tiltpad::scene::summary::sig4;
 use tiltpad::scene::sweep::SweepSpec;
 use tiltpad::units::{MPA, RPM, UM};
 
+use crate::common::painted_text;
+
 const SIZE: [f32; 2] = [1400.0, 860.0];
 
 /// The app on a shipped case (the compressor bearing unless `preset_toml` is given), set up by `setup`
@@ -388,7 +390,7 @@ fn deformation_view_shows_the_loaded_pad_and_its_modes() {
             let pos = egui::pos2(500.0 + 28.0 * col as f32, anchor.bottom() + 40.0 + 16.0 * row as f32);
             h.hover_at(pos);
             h.run_steps(1);
-            if let Some(n) = h.query_by_label_contains("Film-face radial displacement u (mechanical) at θ") {
+            if let Some(n) = h.query_by_label_contains("Film-face u (mechanical) at θ") {
                 found = Some(text_of(&n));
                 break 'sweep;
             }
@@ -906,8 +908,8 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     wait_for_solve(&mut h);
     let slow = h.state().shown.clone().unwrap().solution;
     h.get_by_label("Live vs \"pin 1\"");
-    // The ε row: live, pinned and their difference.
-    for v in [slow.eccentricity_ratio, fast.eccentricity_ratio, slow.eccentricity_ratio - fast.eccentricity_ratio] {
+    // The ε row: live and pinned (at 1280 points the panel shows Δ % and keeps Δ for its hover).
+    for v in [slow.eccentricity_ratio, fast.eccentricity_ratio] {
         assert!(h.query_all_by_label(&sig4(v)).next().is_some(), "{} not shown", sig4(v));
     }
     h.get_by_label_contains("Pinned \"pin 1\" (dashed");
@@ -922,6 +924,9 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     let shared = p_max_mpa(&slow).max(p_max_mpa(&fast));
     assert_eq!(colour_scale(&h), (sig4(0.0), sig4(shared)));
     snapshot(&mut h, "compare_fields_side_by_side_1280x720");
+    // Both panels open, the live and pinned pads side by side: no angle label over another.
+    let texts = overlapping_texts(&h);
+    assert!(texts.is_empty(), "{}", texts.join("\n"));
     h.get_by_label("difference map").click();
     h.run_steps(3);
     let live = PadMap::all(&slow, FieldKind::Pressure);
@@ -941,6 +946,55 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     h.run_steps(2);
     assert!(h.state().persisted.pins.is_empty());
     assert!(h.query_by_label_contains("Wide faint dashed").is_none());
+}
+
+/// The comparison table's cells: (text, rect) of every label right of the view, below the "Live vs" line.
+fn comparison_cells(h: &Harness<'_, WorkbenchApp>) -> Vec<(String, egui::Rect)> {
+    let view = h.state().view_rect().unwrap();
+    let below = h.get_by_label_contains("Live vs").rect().bottom();
+    h.query_all_by_role(Role::Label)
+        .map(|n| (text_of(&n), n.rect()))
+        .filter(|(_, r)| r.left() > view.right() && r.top() > below)
+        .collect()
+}
+
+/// In the frame right after "Pin current result" (before any other input), at 1280×720 and 1920×1080:
+/// the comparison table's cells cover nothing, every column of the table lies inside the results panel
+/// (fixed widths: nothing to scroll sideways to), the quantities read with their prefixed units, and
+/// the whole window has no text over text. At 1280 the Δ column gives way to Δ % (Δ on its hover).
+#[test]
+fn a_new_pin_lays_out_its_table_inside_the_results_panel_at_once() {
+    for (size, columns) in [([1280.0, 720.0], 4), ([1920.0, 1080.0], 5)] {
+        let mut h = solved_app_at(size, None, |_| {});
+        h.get_by_label("Pin current result").click();
+        h.run_steps(1);
+        assert_eq!(h.state().persisted.pins.len(), 1);
+        let screen = h.ctx.content_rect();
+        let cells = comparison_cells(&h);
+        let header: Vec<&str> =
+            cells.iter().filter(|(_, r)| (r.top() - cells[0].1.top()).abs() < 1.0).map(|(t, _)| t.as_str()).collect();
+        assert_eq!(header.len(), columns, "{size:?}: {header:?}");
+        assert_eq!(header.contains(&"Δ"), columns == 5, "{size:?}: {header:?}");
+        for (text, r) in &cells {
+            assert!(
+                r.right() <= screen.right() - 4.0,
+                "{size:?}: {text:?} at {r:?} past the panel's edge {}",
+                screen.right()
+            );
+        }
+        // The compressor carries 1.918 kN: the load row reads in kN, live and pinned alike.
+        let load = cells.iter().find(|(t, _)| t == "load [kN]").expect("the load row").1;
+        let row: Vec<&str> = cells
+            .iter()
+            .filter(|(_, r)| (r.center().y - load.center().y).abs() < 1.0)
+            .map(|(t, _)| t.as_str())
+            .collect();
+        assert_eq!(row[..3], ["load [kN]", "1.918", "1.918"], "{size:?}");
+        let widgets = overlapping_widgets(&h);
+        assert!(widgets.is_empty(), "{size:?}: {}", widgets.join("\n"));
+        let texts = overlapping_texts(&h);
+        assert!(texts.is_empty(), "{size:?}: {}", texts.join("\n"));
+    }
 }
 
 /// The pin dialog refuses "live" (the export's name for the live row) and a name already pinned, saying
@@ -1392,4 +1446,83 @@ fn control_view_gain_slider_moves_the_onset() {
     assert_eq!((gain, open2), (-1.0, open));
     assert!(flipped < 0.98 * open, "{open} {flipped}");
     h.get_by_label_contains("Onset of instability: loop open");
+}
+
+/// Strings that cover one another in the last frame, anywhere in the window, as "a" / "b" at their rects.
+fn overlapping_texts(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let texts = painted_text::painted_texts(&h.output().shapes);
+    let screen = h.ctx.content_rect();
+    painted_text::overlapping(&texts, screen, 2.0)
+        .into_iter()
+        .map(|(a, b)| format!("{:?} at {:?} / {:?} at {:?}", a.text, a.shown, b.text, b.shown))
+        .collect()
+}
+
+/// Widgets (labels, buttons, fields, boxes, sliders) that cover one another in the last frame: in the
+/// editor, the view and the results panel, each widget whole inside its area (a widget scrolled partly
+/// out of its panel is laid out where it would be, not where it shows).
+fn overlapping_widgets(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let Some(view) = h.state().view_rect() else { return Vec::new() };
+    let (screen, top) = (h.ctx.content_rect(), h.get_by_label("File").rect().bottom());
+    let areas = [
+        egui::Rect::from_min_max(egui::pos2(screen.left(), top), egui::pos2(view.left() - 1.0, view.bottom())),
+        view,
+        egui::Rect::from_min_max(egui::pos2(view.right() + 1.0, top), egui::pos2(screen.right(), view.bottom())),
+    ];
+    let roles =
+        [Role::Label, Role::Button, Role::CheckBox, Role::ComboBox, Role::SpinButton, Role::TextInput, Role::Slider];
+    let nodes: Vec<(String, egui::Rect)> = roles
+        .iter()
+        .flat_map(|&role| h.query_all_by_role(role).map(move |n| (format!("{role:?} {:?}", text_of(&n)), n.rect())))
+        .collect();
+    let mut found = Vec::new();
+    for area in areas {
+        let inside: Vec<&(String, egui::Rect)> = nodes.iter().filter(|(_, r)| area.contains_rect(*r)).collect();
+        for (i, a) in inside.iter().enumerate() {
+            // Two labels: a label wrapped beside another spans both lines; their glyphs are checked by
+            // `overlapping_texts`.
+            for b in inside[i + 1..].iter().filter(|b| !(a.0.starts_with("Label") && b.0.starts_with("Label"))) {
+                let common = a.1.intersect(b.1);
+                if common.width() > 1.0 && common.height() > 1.0 {
+                    found.push(format!("{} at {:?} / {} at {:?}", a.0, a.1, b.0, b.1));
+                }
+            }
+        }
+    }
+    found
+}
+
+/// Strings inside the open view cut by their clip rectangle (drawn past the edge of what holds them).
+fn cut_texts_in_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let Some(view) = h.state().view_rect() else { return Vec::new() };
+    painted_text::painted_texts(&h.output().shapes)
+        .into_iter()
+        .filter(|t| view.contains_rect(t.shown) && t.shown.width() + 1.0 < t.full.width())
+        .map(|t| format!("{:?} shown {:?} of {:?}", t.text, t.shown, t.full))
+        .collect()
+}
+
+/// Every view of the list at 1280×720 and 1920×1080: no two strings cover one another anywhere in the
+/// window (editor, tabs, view, results), no two widgets in the editor, the view or the results panel, and
+/// no string in the view is cut at the edge of its area.
+#[test]
+fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080() {
+    let mut found = Vec::new();
+    for size in [[1280.0, 720.0], [1920.0, 1080.0]] {
+        for view in tiltpad::app::views::all() {
+            let id = view.id();
+            let mut h = solved_app_at(size, None, move |app| assert!(app.open_for_snapshot(id)));
+            h.run_steps(4);
+            for o in overlapping_texts(&h) {
+                found.push(format!("{id} at {size:?}: overlap {o}"));
+            }
+            for o in overlapping_widgets(&h) {
+                found.push(format!("{id} at {size:?}: widgets {o}"));
+            }
+            for c in cut_texts_in_view(&h) {
+                found.push(format!("{id} at {size:?}: cut {c}"));
+            }
+        }
+    }
+    assert!(found.is_empty(), "{}", found.join("\n"));
 }

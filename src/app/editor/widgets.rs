@@ -257,7 +257,12 @@ pub fn count_ui(
     out
 }
 
-/// A list of one number per pad, in a wrapping row of small fields named "pad k".
+/// Fields of a per-pad list on one line of its cell.
+const PADS_PER_LINE: usize = 2;
+
+/// A list of one number per pad: small fields named "pad k", [`PADS_PER_LINE`] to a line of a grid of
+/// its own. (A wrapping row inside the editor's grid let its last line fall over the row below: the
+/// outer grid sized the row before the wrap.)
 pub fn per_pad_ui(
     ui: &mut Ui,
     doc: &mut Document,
@@ -267,10 +272,13 @@ pub fn per_pad_ui(
 ) -> EditOutput {
     let mut out = EditOutput::default();
     label_ui(ui, n.label, &n.tooltip());
-    ui.horizontal_wrapped(|ui| {
+    egui::Grid::new((n.key, "per-pad")).num_columns(2 * PADS_PER_LINE).spacing([4.0, 2.0]).show(ui, |ui| {
         for (k, &value) in values.iter().enumerate() {
             let pad_label = ui.label(format!("pad {k}"));
             out.merge(drag_ui(ui, doc, n, pad_label, value, |f, x| set(f, k, x)));
+            if (k + 1) % PADS_PER_LINE == 0 {
+                ui.end_row();
+            }
         }
     });
     ui.label(n.unit());

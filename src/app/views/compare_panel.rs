@@ -38,8 +38,48 @@ fn value(v: Option<f64>, scale: f64) -> String {
     v.map_or_else(|| "—".into(), |x| sig4(x / scale))
 }
 
-/// Width of the number columns [points]: four significant digits, a sign and an exponent fit.
-const NUMBER_WIDTH: f32 = 64.0;
+/// Width of the number columns [points]: four significant digits, a sign and a decimal point fit
+/// (values of SI units carry a prefix, so they stay below 1000).
+const NUMBER_WIDTH: f32 = 58.0;
+/// Width of the Δ % column [points].
+const PERCENT_WIDTH: f32 = 48.0;
+/// Quantity column [points] below which Δ gives way; names longer than their column are cut with "…"
+/// and read in full on hover.
+const QUANTITY_MIN: f32 = 120.0;
+/// Narrowest quantity column [points], in a panel too narrow for the numbers and a full name.
+const QUANTITY_LEAST: f32 = 80.0;
+/// Widest quantity column [points]: the longest name with its unit.
+const QUANTITY_MAX: f32 = 230.0;
+
+/// The comparison table's column widths in a panel `room` points wide with `gap` between columns: the
+/// quantity, live, pinned, Δ (only when it fits beside the others: it is in the export and the hover of
+/// Δ %) and Δ %. Fixed from the first frame, so a new pin's table never lays out over itself.
+#[must_use]
+pub fn column_widths(room: f32, gap: f32) -> Vec<f32> {
+    let numbers = |n: usize| n as f32 * (NUMBER_WIDTH + gap) + PERCENT_WIDTH + gap;
+    let with_delta = room - numbers(3) >= QUANTITY_MIN;
+    let n = if with_delta { 3 } else { 2 };
+    let quantity = (room - numbers(n)).clamp(QUANTITY_LEAST, QUANTITY_MAX);
+    let mut widths = vec![quantity];
+    widths.extend(std::iter::repeat_n(NUMBER_WIDTH, n));
+    widths.push(PERCENT_WIDTH);
+    widths
+}
+
+/// One cell of `width` points: `text` aligned by `align`, cut with "…" (full text on hover) when longer.
+fn cell(ui: &mut Ui, width: f32, text: RichText, align: egui::Align) -> egui::Response {
+    let layout = match align {
+        egui::Align::Max => egui::Layout::right_to_left(egui::Align::Center),
+        _ => egui::Layout::left_to_right(egui::Align::Center),
+    };
+    let height = ui.spacing().interact_size.y;
+    ui.allocate_ui_with_layout(egui::vec2(width, height), layout, |ui| {
+        ui.set_min_width(width);
+        ui.set_max_width(width);
+        ui.add(egui::Label::new(text).truncate())
+    })
+    .inner
+}
 
 /// Draws the panel; `case_toml` is the edited case's text (stored with a new pin).
 pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: Option<&str>) -> Option<CompareAction> {
@@ -62,9 +102,6 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
                     Ok(n) => {
                         pins.push(Pin::new(&n, case_toml.unwrap_or_default(), live));
                         action = Some(CompareAction::Pinned);
-                        // The new table's columns are measured in this frame: lay it out again at once
-                        // rather than overlapping until the next input.
-                        ui.ctx().request_discard("a pin was added");
                         (name, error) = (String::new(), None);
                     }
                     Err(e) => error = Some(e.to_string()),
@@ -98,24 +135,37 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
                     remove = Some(k);
                 }
             });
-            Grid::new(("compare", k)).num_columns(5).min_col_width(NUMBER_WIDTH).striped(true).show(ui, |ui| {
-                for h in ["quantity", "live", "pinned", "Δ", "Δ %"] {
-                    ui.label(RichText::new(h).small());
+            // The room that shows (the panel scrolls both ways, so its available width is not what shows),
+            // less the width of the floating scroll bar.
+            let room = ui.clip_rect().right() - ui.cursor().left() - ui.spacing().scroll.bar_width;
+            let widths = column_widths(room, ui.spacing().item_spacing.x);
+            let with_delta = widths.len() == 5;
+            let (right, left) = (egui::Align::Max, egui::Align::Min);
+            Grid::new(("compare", k)).num_columns(widths.len()).striped(true).show(ui, |ui| {
+                let headers: &[&str] = if with_delta { &["quantity", "live", "pinned", "Δ", "Δ %"] } else { &["quantity", "live", "pinned", "Δ %"] };
+                for (h, w) in headers.iter().zip(&widths) {
+                    cell(ui, *w, RichText::new(*h).small(), if *h == "quantity" { left } else { right });
                 }
                 ui.end_row();
                 for r in compare(live, pin) {
                     let (scale, unit) = row_unit(r.unit, r.live, r.pinned);
-                    ui.label(if unit.is_empty() { r.label.clone() } else { format!("{} [{unit}]", r.label) });
-                    ui.label(RichText::new(value(r.live, scale)).monospace());
-                    ui.label(RichText::new(value(r.pinned, scale)).monospace());
+                    let name = if unit.is_empty() { r.label.clone() } else { format!("{} [{unit}]", r.label) };
+                    cell(ui, widths[0], RichText::new(name), left);
+                    cell(ui, NUMBER_WIDTH, RichText::new(value(r.live, scale)).monospace(), right);
+                    cell(ui, NUMBER_WIDTH, RichText::new(value(r.pinned, scale)).monospace(), right);
                     // Round-off (the same value given twice) is no difference.
                     let size = r.live.unwrap_or(0.0).abs().max(r.pinned.unwrap_or(0.0).abs());
                     let difference = r.difference.map(|d| if d.abs() <= 1e-9 * size { 0.0 } else { d });
                     let relative = r.relative.map(|x| if difference == Some(0.0) { 0.0 } else { x });
                     let changed = difference.is_some_and(|d| d != 0.0);
                     let color = if changed { ui.visuals().warn_fg_color } else { ui.visuals().weak_text_color() };
-                    ui.label(RichText::new(value(difference, scale)).monospace().color(color));
-                    ui.label(RichText::new(relative.map_or_else(|| "—".into(), |x| format!("{:+.1}", 100.0 * x))).monospace().color(color));
+                    let delta = value(difference, scale);
+                    if with_delta {
+                        cell(ui, NUMBER_WIDTH, RichText::new(delta.clone()).monospace().color(color), right);
+                    }
+                    let percent = relative.map_or_else(|| "—".into(), |x| format!("{:+.1}", 100.0 * x));
+                    cell(ui, PERCENT_WIDTH, RichText::new(percent).monospace().color(color), right)
+                        .on_hover_text(format!("Δ = {delta} {unit}"));
                     ui.end_row();
                 }
             });
@@ -129,7 +179,17 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
 
 #[cfg(test)]
 mod tests {
-    use super::row_unit;
+    use super::{column_widths, row_unit};
+
+    /// The results panel at 1280 points (384 wide, about 340 inside) has no room for Δ beside Δ %; at
+    /// 1920 (576) it has; the quantity column never falls below its least width nor grows past its most.
+    #[test]
+    fn the_delta_column_shows_only_where_it_fits() {
+        assert_eq!(column_widths(340.0, 8.0), vec![152.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(380.0, 8.0), vec![126.0, 58.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(540.0, 8.0), vec![230.0, 58.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(250.0, 8.0), vec![80.0, 58.0, 58.0, 48.0]);
+    }
 
     /// The compressor's kxx live 30.17 MN/m against 43.42 MN/m pinned reads in MN/m; units chosen for
     /// reading stay as they are.

@@ -24,6 +24,7 @@ use crate::scene::summary::sig4;
 use crate::units::{MM, UM};
 
 use super::field_view::colour_bar;
+use super::plot_kit::text_within;
 
 /// Texture size of a rasterised map.
 const RASTER: (usize, usize) = (200, 140);
@@ -168,7 +169,8 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     let u = &scene.displacement;
     let range = symmetric(u.min, u.max);
     let kind = scene.shown.label().to_lowercase();
-    let title = format!("Pad {pad} at mid-plane — {kind} deformation ×{}", sig4(scene.exaggeration));
+    // The line above names the pad and the exaggeration: the drawing's title says only what it shows.
+    let title = format!("{} deformation", scene.shown.label());
     let mut hover =
         section_ui(&painter, section_rect, &scene.section, range, hover_pos, &title, ui.visuals().text_color());
     hover = hover.or(maps_ui(ui, view, &painter, maps_rect, &scene, range, hover_pos));
@@ -285,7 +287,7 @@ fn section_ui(
     title: &str,
     text: Color32,
 ) -> Option<Hover> {
-    painter.text(rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text);
+    text_within(painter, rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text, rect.width());
     let inner = rect.shrink2(Vec2::new(10.0, 22.0));
     let all: Vec<[f64; 2]> = section.rigid.iter().chain(&section.deformed).copied().collect();
     let frame = ScreenFromSection::fit(inner, &all);
@@ -357,7 +359,7 @@ fn map_ui(
 ) -> Option<Hover> {
     let MapSpec { map, name, title, range } = *spec;
     let text = ui.visuals().text_color();
-    painter.text(rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text);
+    text_within(painter, rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text, rect.width());
     let inner = rect.shrink2(Vec2::new(4.0, 18.0));
     let (arc, len) = (map.arc_length_m(), map.length_m());
     if arc <= 0.0 || len <= 0.0 {
@@ -399,7 +401,7 @@ fn maps_ui(
             Pos2::new(rect.right() - bar_w + 22.0, r.bottom() - 10.0),
         )
     };
-    let u_title = format!("Film-face radial displacement u ({})", scene.shown.label().to_lowercase());
+    let u_title = format!("Film-face u ({})", scene.shown.label().to_lowercase());
     let u = MapSpec { map: &scene.displacement, name: "u", title: &u_title, range };
     let mut hover = map_ui(ui, view, painter, upper, &u, hover_pos);
     colour_bar(painter, bar(upper), ColorMap::Viridis, "u [µm]", UM.from_si(1.0), range, text);
@@ -411,7 +413,7 @@ fn maps_ui(
             let left = Rect::from_min_size(lower.min, Vec2::new(w, lower.height()));
             let right = Rect::from_min_max(Pos2::new(lower.left() + w, lower.top()), lower.max);
             let flexible = MapSpec { map: &scene.film_flexible, name: "h", title: "Film h", range: h };
-            let rigid = MapSpec { map: &scene.film_rigid, name: "h-rigid", title: "Film h − u, without u", range: h };
+            let rigid = MapSpec { map: &scene.film_rigid, name: "h-rigid", title: "Film h − u", range: h };
             hover = hover.or(map_ui(ui, view, painter, left, &flexible, hover_pos));
             hover = hover.or(map_ui(ui, view, painter, right, &rigid, hover_pos));
             colour_bar(painter, bar(lower), ColorMap::Viridis, "h [µm]", UM.from_si(1.0), h, text);
@@ -439,12 +441,14 @@ fn gallery_ui(
     hover_pos: Option<Pos2>,
 ) -> Option<Hover> {
     let text = ui.visuals().text_color();
-    painter.text(
+    text_within(
+        painter,
         rect.left_top(),
         Align2::LEFT_TOP,
-        "Retained bending modes (on the pivot; each shape drawn with its peak at 15 % of the thickness)",
+        "Retained bending modes (on the pivot; each peak drawn at 15 % of the thickness)",
         FontId::proportional(12.0),
         text,
+        rect.width(),
     );
     let body = Rect::from_min_max(rect.min + Vec2::new(0.0, 18.0), rect.max);
     let w = body.width() / scene.modes.len().max(1) as f32;

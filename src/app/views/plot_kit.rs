@@ -4,7 +4,9 @@
 //!   controls (egui_plot's legend is drawn inside the plot frame);
 //! - [`decade_label`]: tick labels of a log10 axis as the numbers they stand for (`0.01`, `1`, `1k`);
 //! - [`wrapped_phase`]: a phase curve folded into (−180°, 180°], cut where it wraps, with [`PHASE_TICKS`]
-//!   (labelled every 90°) as the axis' grid.
+//!   (labelled every 90°) as the axis' grid;
+//! - [`text_within`]: a title painted into a drawing, cut with "…" at the width it has rather than over
+//!   its neighbours.
 
 use egui::{Color32, RichText, Ui};
 
@@ -110,6 +112,25 @@ pub fn wrapped_phase(x: &[f64], phase_deg: &[f64]) -> Vec<Vec<[f64; 2]>> {
 #[must_use]
 pub fn phase_label(value: f64) -> String {
     format!("{value:.0}°")
+}
+
+/// Paints `text` at `pos` (anchored by `align`) on one line of at most `width` points, cut with "…" when
+/// longer; returns where it was painted.
+pub fn text_within(
+    painter: &egui::Painter,
+    pos: egui::Pos2,
+    align: egui::Align2,
+    text: &str,
+    font: egui::FontId,
+    color: Color32,
+    width: f32,
+) -> egui::Rect {
+    let mut job = egui::text::LayoutJob::simple_singleline(text.to_string(), font, color);
+    job.wrap = egui::text::TextWrapping::truncate_at_width(width.max(0.0));
+    let galley = painter.layout_job(job);
+    let rect = align.anchor_size(pos, galley.size());
+    painter.galley(rect.min, galley, color);
+    rect
 }
 
 #[cfg(test)]

@@ -6,6 +6,9 @@ use egui::{Grid, RichText, Ui};
 
 use crate::scene::summary::Summary;
 
+/// What the mark of an unloaded pad means.
+const UNLOADED: &str = "unloaded: the film carries (almost) no load on this pad.";
+
 /// Widest column of a result group [points]: about 28 monospace characters.
 const VALUE_WIDTH: f32 = 220.0;
 
@@ -22,29 +25,53 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
                         ui.set_max_width(VALUE_WIDTH);
                         ui.add(egui::Label::new(RichText::new(value).monospace()).wrap()).on_hover_text(row.meaning);
                     });
-                    ui.label(row.unit);
+                    ui.label(&row.unit);
                     ui.end_row();
                 }
             });
         });
     }
     egui::CollapsingHeader::new(RichText::new("Pads").strong()).default_open(true).show(ui, |ui| {
-        Grid::new("pads").striped(true).show(ui, |ui| {
-            for h in ["pad", "tilt [mrad]", "h_min [µm]", "p_max [MPa]", "load [N]", "orifice [l/min]", "cavitated"] {
-                ui.label(RichText::new(h).small());
+        // The loads share the engineering prefix of the largest (kN for the compressor).
+        let loads: Vec<f64> = summary.pads.iter().map(|p| p.load_n).collect();
+        let (loads, load_unit) = crate::number::eng_values(&loads, "N");
+        // Names above their units: seven columns fit the panel at 1280 points.
+        let load_header = format!("load\n[{load_unit}]");
+        Grid::new("pads").striped(true).spacing([6.0, 4.0]).min_col_width(0.0).show(ui, |ui| {
+            let headers = [
+                ("pad", "Pad number, from the first pad in the direction of rotation."),
+                ("tilt\n[mrad]", "Tilt angle of the pad about its pivot."),
+                ("h_min\n[µm]", "Smallest film thickness on the pad."),
+                ("p_max\n[MPa]", "Largest film pressure on the pad."),
+                (load_header.as_str(), "Magnitude of the film force on the pad."),
+                (
+                    "orifice\n[l/min]",
+                    "Net flow through the pad's orifices into the film (negative: out through the hole).",
+                ),
+                ("cav.\n[%]", "Share of the pad's film area that is cavitated (ruptured, p = 0)."),
+            ];
+            for (h, meaning) in headers {
+                ui.label(RichText::new(h).small()).on_hover_text(meaning);
             }
             ui.end_row();
-            for p in &summary.pads {
-                ui.label(format!("{}{}", p.index, if p.unloaded { " (unloaded)" } else { "" }));
+            for (p, load) in summary.pads.iter().zip(&loads) {
+                if p.unloaded {
+                    ui.label(format!("{} *", p.index)).on_hover_text(UNLOADED);
+                } else {
+                    ui.label(p.index.to_string());
+                }
                 ui.label(p.tilt_mrad.map_or("fixed".into(), |t| format!("{t:.4}")));
                 ui.label(format!("{:.2}", p.h_min_um));
                 ui.label(format!("{:.3}", p.p_max_mpa));
-                ui.label(format!("{:.0}", p.load_n));
+                ui.label(load);
                 ui.label(p.orifice_flow_l_min.map_or("–".into(), |q| format!("{q:.3}")));
-                ui.label(format!("{:.0} %", p.cavitated_percent));
+                ui.label(format!("{:.0}", p.cavitated_percent));
                 ui.end_row();
             }
         });
+        if summary.pads.iter().any(|p| p.unloaded) {
+            ui.label(RichText::new(format!("* {UNLOADED}")).small());
+        }
     });
     if summary.warnings.is_empty() {
         ui.label(RichText::new("No solver warnings").weak());

@@ -73,3 +73,6 @@ supply_temperature_c = 40.0
 circumferential_elements = 360
 axial_elements = 32
 "#;
+
+#[cfg(feature = "gui")]
+pub mod painted_text;
