@@ -131,6 +131,7 @@ fn solve(ns: u32) -> Measured {
         cavitation: Cavitation::Jfo,
         inlet: Inlet::Flooded,
         turbulence: TurbulenceLaw::LAMINAR,
+        leading_edge_pressure: 0.0,
     };
     f.set_coordinates(&[0.0]).unwrap();
     let info = f.solve(&inp, false).unwrap();
