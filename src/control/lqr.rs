@@ -31,7 +31,7 @@ use super::error::{ControlError, LqrFailure};
 use super::plant::Plant;
 use super::riccati::{care, RiccatiError};
 use super::state_space::{eigen, StateSpace, C64};
-use crate::model::control::{LqrSpec, Quantity, Sensor};
+use crate::model::control::{LqrSpec, Sensor};
 
 /// The reduced model and how it was cut.
 #[derive(Debug, Clone, PartialEq)]
@@ -59,14 +59,6 @@ pub struct LqrDesign {
     pub observer_poles: Vec<(f64, f64)>,
 }
 
-/// The value of one unit of a reading as the weights take it: µm, or mm/s.
-fn reading_unit(q: Quantity) -> f64 {
-    match q {
-        Quantity::Displacement => crate::units::UM.si,
-        Quantity::Velocity => crate::units::MM.si,
-    }
-}
-
 /// The plant's modes kept below `max_rad_s` (and every unstable one), in real modal coordinates, its outputs
 /// in µm (mm/s) per `sensors`.
 ///
@@ -78,7 +70,7 @@ pub fn reduce(plant: &Plant, sensors: &[Sensor], max_rad_s: f64) -> Result<Reduc
     let (values, v) = eigen(&p.a)?;
     let w = v.clone().try_inverse().ok_or(ControlError::Eigen { size: n })?;
     let cb = p.b.map(C64::from);
-    let cc = DMatrix::from_fn(p.c.nrows(), n, |i, j| C64::from(p.c[(i, j)] / reading_unit(sensors[i].quantity)));
+    let cc = DMatrix::from_fn(p.c.nrows(), n, |i, j| C64::from(p.c[(i, j)] / sensors[i].quantity.reading_unit()));
     let wb = &w * cb;
     let cv = cc * &v;
     // kept: real poles and the upper member of each pair
@@ -194,7 +186,7 @@ pub fn design(
     // the compensator: readings in SI in, volts out
     let to_units = DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(
         sensors.len(),
-        sensors.iter().map(|s| 1.0 / reading_unit(s.quantity)),
+        sensors.iter().map(|s| 1.0 / s.quantity.reading_unit()),
     ));
     let controller = StateSpace {
         a: &r.a - &r.b * &k - &l * &r.c,
@@ -224,7 +216,7 @@ mod tests {
     use super::*;
     use crate::control::closed_loop::closed;
     use crate::control::state_space::eigenvalues;
-    use crate::model::control::{Axis, SensorAt};
+    use crate::model::control::{Axis, Quantity, SensorAt};
 
     /// A Jeffcott rotor (m 10 kg, c 50 N·s/m, k 1 MN/m) with a flat force actuator (100 N/V), displacement
     /// and velocity sensors: kept whole (no truncation), the compensator closed on the plant has exactly the

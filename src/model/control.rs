@@ -49,6 +49,17 @@ pub enum Quantity {
     Velocity,
 }
 
+impl Quantity {
+    /// The SI value of one unit of a reading as gains and weights take it: µm, or mm/s for a velocity pickup.
+    #[must_use]
+    pub fn reading_unit(self) -> f64 {
+        match self {
+            Quantity::Displacement => crate::units::UM.si,
+            Quantity::Velocity => crate::units::MM.si,
+        }
+    }
+}
+
 /// `control.actuator[].kind`
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -209,14 +209,6 @@ fn valve_bearing(key: &str, b: usize, case: Option<&Case>) -> Result<(), CaseErr
     Ok(())
 }
 
-/// The SI value of one unit of a sensor's reading as the gains take it: µm, or mm/s for a velocity pickup.
-fn reading_unit(q: Quantity) -> f64 {
-    match q {
-        Quantity::Displacement => crate::units::UM.si,
-        Quantity::Velocity => crate::units::MM.si,
-    }
-}
-
 /// A PD term's gains for `sensor` (SI), checked: no proportional gain on a velocity pickup, a roll-off with a
 /// derivative of a displacement.
 fn pd_gains(
@@ -285,7 +277,7 @@ fn resolve_loops(loops: &[LoopTable], sensors: &[Sensor], n_actuators: usize) ->
                     ));
                 }
                 // per SI reading, monic denominator
-                let scale = 1.0 / (reading_unit(q) * lead);
+                let scale = 1.0 / (q.reading_unit() * lead);
                 Rule::TransferFunction {
                     numerator: num.iter().map(|c| c * scale).collect(),
                     denominator: den.iter().map(|c| c / lead).collect(),
