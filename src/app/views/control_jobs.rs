@@ -1,0 +1,136 @@
+//! The Control view's two background jobs ([`crate::app::control_worker`]), and what they hand the view:
+//!
+//! - [`Build`]: the bearings solved and the plants built at each of the sweep's [`SPEEDS`] speeds
+//!   ([`ControlAnalysis`]), with the loop-open results ([`Built`]);
+//! - [`Tune`]: on those plants, the loop closed at the sliders' [`Tuning`] — per speed an eigen-solution and a
+//!   complex solve, no bearing solve — with the root locus over [`GAIN_RANGE`] at one speed and the gain and
+//!   phase margins at each valve's input (Nyquist, the loop broken there) ([`Tuned`]).
+
+use std::sync::Arc;
+
+use crate::app::control_worker::Work;
+use crate::control::analysis::ControlAnalysis;
+use crate::control::closed_loop::broken;
+use crate::control::law::realise;
+use crate::control::nyquist::nyquist;
+use crate::control::tuning::{onset_on_grid, root_locus, PlantSweep, RootLocus, TunedSpeed};
+use crate::model::control::Control;
+
+/// Speeds of the sweep.
+pub const SPEEDS: usize = 25;
+/// The loop gain's slider range and the root locus' gains over it.
+pub const GAIN_RANGE: [f64; 2] = [-2.0, 4.0];
+const LOCUS_GAINS: usize = 25;
+/// The root locus shows poles up to this frequency [Hz].
+pub const LOCUS_MAX_HZ: f64 = 150.0;
+
+/// The sliders: what the loop is closed at.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tuning {
+    pub gain: f64,
+    /// The PD gains of every loop (`None`: the controller is not PD loops; the file's law is kept).
+    pub kp_v_per_um: Option<f64>,
+    pub kd_v_per_mm_s: Option<f64>,
+    /// Speed of the root locus and the margins (index in the sweep).
+    pub locus_at: usize,
+}
+
+/// The sweep's plants and the loop-open results.
+pub struct Built {
+    pub sweep: PlantSweep,
+    /// Loop open: per speed, the smallest log decrement and the unbalance orbits.
+    pub open_log_dec: Vec<f64>,
+    pub open_orbits: Vec<Vec<crate::rotor::unbalance::Orbit>>,
+    pub api617_um: Vec<f64>,
+    /// The analysis' controller (the file's; an LQR as designed).
+    pub controller: crate::control::state_space::StateSpace,
+}
+
+/// The loop closed at one [`Tuning`].
+pub struct Tuned {
+    pub tuning: Tuning,
+    pub speeds: Vec<TunedSpeed>,
+    pub onset_rad_s: Option<f64>,
+    pub locus: RootLocus,
+    /// Per actuator at the locus speed, the loop broken at its input: gain margin [dB], phase margin [deg]
+    /// and the broken loop's unstable poles (the Nyquist plot must then encircle −1 that often).
+    pub margins: Vec<(Option<f64>, Option<f64>, usize)>,
+}
+
+/// The first job: the bearings solved and the plants built at every speed.
+pub struct Build {
+    pub analysis: ControlAnalysis,
+}
+
+impl Work for Build {
+    type Output = Built;
+
+    fn step(&mut self) -> Result<Option<Built>, String> {
+        if !self.analysis.step().map_err(|e| e.to_string())? {
+            return Ok(None);
+        }
+        let done = self.analysis.done();
+        Ok(Some(Built {
+            sweep: self.analysis.sweep(),
+            open_log_dec: done.iter().map(|s| s.open.min_log_dec()).collect(),
+            open_orbits: done.iter().map(|s| s.response.as_ref().map(|r| r.open.clone()).unwrap_or_default()).collect(),
+            api617_um: done.iter().map(|s| s.api617_limit_um).collect(),
+            controller: self.analysis.controller().clone(),
+        }))
+    }
+
+    fn progress(&self) -> (usize, usize) {
+        (self.analysis.done().len(), SPEEDS)
+    }
+}
+
+/// The second job: the loop closed at a tuning on the built plants.
+pub struct Tune {
+    pub built: Arc<Built>,
+    pub control: Control,
+    pub tuning: Tuning,
+    pub speeds: Vec<TunedSpeed>,
+}
+
+impl Work for Tune {
+    type Output = Tuned;
+
+    fn step(&mut self) -> Result<Option<Tuned>, String> {
+        // the sliders' PD gains, or the designed LQR (its loop gain still slides)
+        let controller = realise(&self.control).unwrap_or_else(|| self.built.controller.clone());
+        let sweep = &self.built.sweep;
+        let gain = self.tuning.gain;
+        if self.speeds.len() < sweep.len() {
+            self.speeds.push(sweep.at(self.speeds.len(), &controller, gain).map_err(|e| e.to_string())?);
+            return Ok(None);
+        }
+        let at = self.tuning.locus_at.min(sweep.len().saturating_sub(1));
+        let gains = locus_gains();
+        let locus = root_locus(&sweep.plants[at], &controller, sweep.speeds_rad_s[at], &gains, LOCUS_MAX_HZ)
+            .map_err(|e| e.to_string())?;
+        let mut margins = Vec::new();
+        for a in 0..sweep.limits_v.len() {
+            let n = nyquist(&broken(&sweep.plants[at], &controller, gain, a)).map_err(|e| e.to_string())?;
+            margins.push((n.gain_margin.map(|g| 20.0 * g.log10()), n.phase_margin_deg, n.open_unstable));
+        }
+        let log_dec: Vec<f64> = self.speeds.iter().map(|s| s.poles.min_log_dec()).collect();
+        Ok(Some(Tuned {
+            tuning: self.tuning,
+            onset_rad_s: onset_on_grid(&sweep.speeds_rad_s, &log_dec),
+            speeds: std::mem::take(&mut self.speeds),
+            locus,
+            margins,
+        }))
+    }
+
+    fn progress(&self) -> (usize, usize) {
+        (self.speeds.len(), self.built.sweep.len() + 1)
+    }
+}
+
+fn locus_gains() -> Vec<f64> {
+    #[allow(clippy::cast_precision_loss)]
+    (0..LOCUS_GAINS)
+        .map(|i| GAIN_RANGE[0] + (GAIN_RANGE[1] - GAIN_RANGE[0]) * i as f64 / (LOCUS_GAINS - 1) as f64)
+        .collect()
+}
