@@ -15,13 +15,13 @@
 
 mod actions;
 mod compare_views;
-pub mod control_worker;
 pub mod document;
 pub mod editor;
 pub mod files;
 mod frame;
 pub mod frame_probe;
 pub mod ink;
+pub mod job_runner;
 pub mod open_dialog;
 pub mod pinned;
 pub mod presets;

@@ -1,23 +1,20 @@
 //! Runs a rotor analysis ([`crate::rotor::analysis::Analysis`]) off the UI thread.
 //!
-//! - Native: one named thread per job loops [`Analysis::step`] (one speed: its bearing solves and the
-//!   eigen-solution), reports progress over a channel and wakes the UI with `request_repaint`; a newer job
-//!   (or dropping the runner) raises the old job's cancel flag, checked between speeds.
+//! - Native: the shared runner ([`super::job_runner`]) loops [`Analysis::step`] (one speed: its bearing solves
+//!   and the eigen-solution) on a named thread, reports progress over a channel and wakes the UI; a newer job
+//!   (or dropping the runner) cancels the old one between speeds.
 //! - Web: a web worker runs the analysis ([`super::web_solver::RotorLink`]); where no worker can run,
 //!   [`RotorRunner::poll`] does one step per frame — one speed, or the finishing onset bisection — and asks
 //!   for the next frame (a bearing solve is not split between frames then).
 
 use std::sync::Arc;
 
+use super::job_runner::Event;
 use crate::model::rotor::Rotor;
 use crate::rotor::analysis::{Analysis, AnalysisParams, AnalysisResult, Step};
 
-/// What a job reports.
-#[derive(Debug, Clone)]
-pub enum RotorEvent {
-    Progress { done: usize, of: usize },
-    Done(Result<Arc<AnalysisResult>, String>),
-}
+/// What a rotor analysis reports.
+pub type RotorEvent = Event<Arc<AnalysisResult>>;
 
 /// Steps an analysis once: its progress, or the result when it finished (the analysis is then taken).
 pub(super) fn advance(analysis: &mut Option<Analysis>) -> RotorEvent {
@@ -35,15 +32,43 @@ pub(super) fn advance(analysis: &mut Option<Analysis>) -> RotorEvent {
     }
 }
 
+/// A rotor analysis as the shared runner's work (an analysis that could not start fails at its first step).
+#[cfg(not(target_arch = "wasm32"))]
+struct RotorWork {
+    analysis: Result<Option<Analysis>, String>,
+    progress: (usize, usize),
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+impl super::job_runner::Work for RotorWork {
+    type Output = Arc<AnalysisResult>;
+    const THREAD: &'static str = "tiltpad-rotor";
+
+    fn step(&mut self) -> Result<Option<Arc<AnalysisResult>>, String> {
+        let analysis = self.analysis.as_mut().map_err(|e| e.clone())?;
+        match advance(analysis) {
+            Event::Progress { done, of } => {
+                self.progress = (done, of);
+                Ok(None)
+            }
+            Event::Done(r) => r.map(Some),
+        }
+    }
+
+    fn progress(&self) -> (usize, usize) {
+        self.progress
+    }
+}
+
 /// The background rotor analysis.
 pub struct RotorRunner {
-    repaint: egui::Context,
     #[cfg(not(target_arch = "wasm32"))]
-    job: Option<native::Job>,
+    runner: super::job_runner::Runner<RotorWork>,
+    #[cfg(target_arch = "wasm32")]
+    repaint: egui::Context,
     #[cfg(target_arch = "wasm32")]
     link: Option<super::web_solver::RotorLink>,
-    /// A job that could not start, reported at the next poll.
-    failed: Option<String>,
+    #[cfg(target_arch = "wasm32")]
     busy: bool,
 }
 
@@ -51,119 +76,53 @@ impl RotorRunner {
     #[must_use]
     pub fn new(repaint: egui::Context) -> Self {
         Self {
-            repaint,
             #[cfg(not(target_arch = "wasm32"))]
-            job: None,
+            runner: super::job_runner::Runner::new(repaint),
+            #[cfg(target_arch = "wasm32")]
+            repaint,
             #[cfg(target_arch = "wasm32")]
             link: None,
-            failed: None,
+            #[cfg(target_arch = "wasm32")]
             busy: false,
         }
     }
 
     /// Starts analysing `rotor` at `params`, cancelling a running job.
     pub fn start(&mut self, rotor: &Rotor, params: AnalysisParams) {
-        self.busy = true;
         #[cfg(not(target_arch = "wasm32"))]
         {
-            self.job = None;
+            let analysis = Analysis::new(rotor, params).map(Some).map_err(|e| e.to_string());
+            self.runner.start(RotorWork { analysis, progress: (0, 1) });
         }
         #[cfg(target_arch = "wasm32")]
         {
+            self.busy = true;
             self.link = Some(super::web_solver::RotorLink::start(rotor, params, &self.repaint));
             self.repaint.request_repaint();
         }
-        #[cfg(not(target_arch = "wasm32"))]
-        self.start_native(rotor, params);
     }
 
-    #[cfg(not(target_arch = "wasm32"))]
-    fn start_native(&mut self, rotor: &Rotor, params: AnalysisParams) {
-        let analysis = match Analysis::new(rotor, params) {
-            Ok(a) => a,
-            Err(e) => {
-                self.failed = Some(e.to_string());
-                self.repaint.request_repaint();
-                return;
-            }
-        };
-        self.job = Some(native::Job::spawn(analysis, self.repaint.clone()));
-        self.repaint.request_repaint();
-    }
-
-    /// Events since the last call (on the web, one step of the work happens here).
+    /// Events since the last call (on the web without a worker, one step of the work happens here).
     pub fn poll(&mut self) -> Vec<RotorEvent> {
-        if let Some(e) = self.failed.take() {
-            self.busy = false;
-            return vec![RotorEvent::Done(Err(e))];
-        }
         #[cfg(not(target_arch = "wasm32"))]
-        let events: Vec<RotorEvent> = self.job.as_ref().map(native::Job::drain).unwrap_or_default();
+        return self.runner.poll();
         #[cfg(target_arch = "wasm32")]
-        let events: Vec<RotorEvent> = self.link.as_mut().map(super::web_solver::RotorLink::poll).unwrap_or_default();
-        if events.iter().any(|e| matches!(e, RotorEvent::Done(_))) {
-            self.busy = false;
+        {
+            let events: Vec<RotorEvent> =
+                self.link.as_mut().map(super::web_solver::RotorLink::poll).unwrap_or_default();
+            if events.iter().any(|e| matches!(e, RotorEvent::Done(_))) {
+                self.busy = false;
+            }
+            events
         }
-        events
     }
 
     /// A job is running or its result has not been polled yet.
     #[must_use]
     pub fn busy(&self) -> bool {
+        #[cfg(not(target_arch = "wasm32"))]
+        return self.runner.busy();
+        #[cfg(target_arch = "wasm32")]
         self.busy
-    }
-}
-
-#[cfg(not(target_arch = "wasm32"))]
-mod native {
-    use std::sync::atomic::{AtomicBool, Ordering};
-    use std::sync::mpsc::{channel, Receiver};
-    use std::sync::Arc;
-
-    use super::{advance, RotorEvent};
-    use crate::rotor::analysis::Analysis;
-
-    /// One analysis on its own thread.
-    pub struct Job {
-        events: Receiver<RotorEvent>,
-        cancel: Arc<AtomicBool>,
-    }
-
-    impl Job {
-        pub fn spawn(analysis: Analysis, repaint: egui::Context) -> Self {
-            let (tx, events) = channel();
-            let cancel = Arc::new(AtomicBool::new(false));
-            let flag = cancel.clone();
-            let mut analysis = Some(analysis);
-            let spawned = std::thread::Builder::new().name("tiltpad-rotor".into()).spawn(move || {
-                while !flag.load(Ordering::Relaxed) {
-                    let event = advance(&mut analysis);
-                    let done = matches!(event, RotorEvent::Done(_));
-                    if tx.send(event).is_err() {
-                        return;
-                    }
-                    repaint.request_repaint();
-                    if done {
-                        return;
-                    }
-                }
-            });
-            if let Err(e) = spawned {
-                let (tx, events) = channel();
-                let _ = tx.send(RotorEvent::Done(Err(format!("cannot start the rotor thread: {e}"))));
-                return Self { events, cancel };
-            }
-            Self { events, cancel }
-        }
-
-        pub fn drain(&self) -> Vec<RotorEvent> {
-            self.events.try_iter().collect()
-        }
-    }
-
-    impl Drop for Job {
-        fn drop(&mut self) {
-            self.cancel.store(true, Ordering::Relaxed);
-        }
     }
 }

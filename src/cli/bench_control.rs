@@ -3,7 +3,8 @@
 //! 50 speeds over 2000–12 000 rpm at preview and standard bearing fidelity: the whole analysis (bearing solves,
 //! FRF linearisations, closed-loop poles open and closed, the Nyquist check at both valves, the unbalance
 //! response with and without control, the onset bisections), the median of repeated runs; and the onset
-//! speeds open and closed with the preview's change against standard.
+//! speeds open and closed with the preview's change against standard; then the LQR rotor
+//! (`cases/rotors/compressor-rotor-lqr.toml`): its design, its closed-loop sweep and its onsets, timed apart.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -121,6 +122,69 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         md,
         "\nTarget: a closed-loop sweep of 50 speeds at preview fidelity ≤ {TARGET_S} s: {t:.2} s wall ({} CPU), {status}.",
         cpu.map_or("—".to_string(), |c| format!("{c:.2} s"))
+    );
+    md.push_str(&lqr_rows(root, &bearing_text, repeats)?);
+    Ok(md)
+}
+
+/// Speeds of the LQR rows: the range over which its onset lies (docs/VALIDATION.md).
+const LQR_SPEEDS: &str = "2000:20000:37";
+
+/// The LQR rotor (`cases/rotors/compressor-rotor-lqr.toml`, bearings at preview fidelity): the design (the shaft
+/// model, the plant at the design speed — one bearing solve per bearing — its reduction, the two Riccati
+/// equations), the closed-loop sweep over `LQR_SPEEDS`, the onset bisections; wall and CPU time, median of
+/// `repeats` runs.
+fn lqr_rows(root: &Path, bearing_text: &str, repeats: usize) -> Result<String> {
+    let (mut rotor, control) = read_controlled(&root.join("cases").join("rotors").join("compressor-rotor-lqr.toml"))?;
+    for b in &mut rotor.bearings {
+        if let BearingSupport::Case { case, .. } = &mut b.support {
+            **case = load_case(bearing_text, &["mesh.fidelity=\"preview\"".to_string()])?.1;
+        }
+    }
+    let speeds = parse_speeds(LQR_SPEEDS, usize::MAX)?;
+    let mut runs = Vec::new();
+    let mut last = None;
+    for _ in 0..repeats.max(1) {
+        let (wall, cpu) = (web_time::Instant::now(), cpu_seconds());
+        let mut a = ControlAnalysis::new(&rotor, &control, ControlParams::new(speeds.clone()))?;
+        let design = (wall.elapsed().as_secs_f64(), cpu.zip(cpu_seconds()).map(|(a, b)| b - a));
+        let (wall, cpu) = (web_time::Instant::now(), cpu_seconds());
+        while !a.step()? {}
+        let sweep = (wall.elapsed().as_secs_f64(), cpu.zip(cpu_seconds()).map(|(a, b)| b - a));
+        let (wall, cpu) = (web_time::Instant::now(), cpu_seconds());
+        let r = a.finish()?;
+        let onsets = (wall.elapsed().as_secs_f64(), cpu.zip(cpu_seconds()).map(|(a, b)| b - a));
+        runs.push((design, sweep, onsets));
+        last = Some(r);
+    }
+    runs.sort_by(|a, b| (a.0 .0 + a.1 .0 + a.2 .0).total_cmp(&(b.0 .0 + b.1 .0 + b.2 .0)));
+    let (design, sweep, onsets) = runs[runs.len() / 2];
+    let r = last.ok_or_else(|| anyhow::anyhow!("no run"))?;
+    let d = r.lqr.as_ref().ok_or_else(|| anyhow::anyhow!("the LQR rotor has no LQR design"))?;
+    let t = |(w, c): (f64, Option<f64>)| format!("{w:.2} s ({})", c.map_or("—".to_string(), |c| format!("{c:.2} s")));
+    let rpm = |w: Option<f64>| w.map_or("—".to_string(), |w| format!("{:.0} rpm", RPM.from_si(w)));
+    let mut md = String::new();
+    let _ = writeln!(
+        md,
+        "\n### LQR designed by tiltpad\n\n`cases/rotors/compressor-rotor-lqr.toml` (the same rotor, six probes, an LQR with a \
+         Kalman observer designed at {:.0} rpm), bearings at preview fidelity, speeds `{LQR_SPEEDS}` rpm, median of {} runs. \
+         *Design*: the shaft model, the plant at the design speed (its bearing solves), the reduction to the modes \
+         below the cut-off and the two Riccati equations; *sweep*: the bearing solves and the closed loop at every \
+         speed; *onsets*: the bisections open and closed (to 0.1 %). Wall time (CPU time of the process).\n\n\
+         | reduced / full states | design | sweep ({} speeds) | onsets | bearing solves | onset open | onset closed |\n\
+         |---|---|---|---|---|---|---|\n\
+         | {} / {} | {} | {} | {} | {} | {} | {} |",
+        RPM.from_si(d.design_speed_rad_s),
+        repeats.max(1),
+        speeds.len(),
+        d.reduced_states,
+        d.full_states,
+        t(design),
+        t(sweep),
+        t(onsets),
+        r.bearing_solves,
+        rpm(r.onset_open.onset_rad_s),
+        rpm(r.onset_closed.onset_rad_s)
     );
     Ok(md)
 }

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 
 use crate::control::analysis::{ControlAnalysis, ControlParams, ControlResult, GainOnset};
-use crate::control::rig::{RigLoop, RigPoint};
+use crate::control::rig::{RigLoop, RigSweep};
 use crate::model::control::{parse_control_file, Control, PlantInfo};
 use crate::model::rotor::{parse_rotor_file, Rotor};
 use crate::study::estimate::Estimate;
@@ -407,13 +407,8 @@ pub fn csv_text(r: &ControlResult) -> Result<String> {
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct RigLoopRows {
     pub controller: String,
-    pub gain: f64,
-    /// Stable by the closed loop's eigenvalues (lines in lumped segments).
-    pub stable: bool,
-    pub min_log_dec: f64,
-    /// The valve's small-signal range [V].
-    pub limit_v: f64,
-    pub points: Vec<RigPoint>,
+    #[serde(flatten)]
+    pub sweep: RigSweep,
 }
 
 /// Closes the rig's loop of `case` (its FRF `model`) with the controller file at `path`; prints a summary
@@ -434,45 +429,25 @@ pub fn rig_loop(
         .control
         .resolve(&PlantInfo::rig(case))
         .with_context(|| format!("invalid controller file {}", path.display()))?;
-    let limit_v = match control.actuators.first() {
-        Some(a) => a.max_voltage_v.unwrap_or_else(|| {
-            case.hydraulics.as_ref().map_or(10.0, |h| h.valve.full_scale_v)
-                * crate::physics::hydraulics::servovalve::SMALL_SIGNAL_FRACTION
-        }),
-        None => 0.0,
-    };
     let rig = RigLoop::new(case, model, &control).with_context(|| format!("closing the loop of {}", path.display()))?;
-    let poles = rig.poles()?;
-    let points: Vec<RigPoint> = freqs.iter().filter_map(|&f| rig.at(f)).collect();
-    let peak = |closed: bool| {
-        points
-            .iter()
-            .map(|p| (if closed { p.closed_m_per_n } else { p.open_m_per_n }, p.frequency_hz))
-            .fold((0.0, 0.0), |a, b| if b.0 > a.0 { b } else { a })
-    };
-    let ((open, fo), (closed, fc)) = (peak(false), peak(true));
-    let signal = points.iter().map(|p| p.signal_v_per_n).fold(0.0, f64::max);
+    let sweep = rig.sweep(freqs)?;
+    let ((open, fo), (closed, fc)) = (sweep.peak(false), sweep.peak(true));
+    let signal = sweep.signal_v_per_n();
+    let limit_v = sweep.limit_v;
     let per_kn = |x: f64| UM.from_si(x * KN.to_si(1.0));
     eprintln!(
         "rig loop ({}, gain {}): {}, smallest log dec {:.3}; X/F peak open {:.3} µm/kN at {fo:.1} Hz, closed {:.3} µm/kN at \
          {fc:.1} Hz; valve signal up to {:.4} V/kN: the small-signal range ({limit_v:.2} V) holds to {:.0} N of shaker force",
         path.display(),
         control.gain,
-        if poles.stable() { "stable" } else { "UNSTABLE" },
-        poles.min_log_dec(),
+        if sweep.stable { "stable" } else { "UNSTABLE" },
+        sweep.min_log_dec,
         per_kn(open),
         per_kn(closed),
         signal * KN.to_si(1.0),
         if signal > 0.0 { limit_v / signal } else { f64::INFINITY }
     );
-    Ok(RigLoopRows {
-        controller: path.display().to_string(),
-        gain: control.gain,
-        stable: poles.stable(),
-        min_log_dec: poles.min_log_dec(),
-        limit_v,
-        points,
-    })
+    Ok(RigLoopRows { controller: path.display().to_string(), sweep })
 }
 
 /// One row per frequency: X/F open and closed [µm/kN, deg], the valve signal per force [V/kN].
@@ -490,7 +465,7 @@ pub fn rig_loop_csv(l: &RigLoopRows) -> Result<String> {
         "signal_v_per_kn",
     ])?;
     let per_kn = |x: f64| UM.from_si(x * KN.to_si(1.0));
-    for p in &l.points {
+    for p in &l.sweep.points {
         w.write_record([
             format!("{}", p.frequency_hz),
             format!("{}", per_kn(p.open_m_per_n)),

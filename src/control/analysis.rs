@@ -216,6 +216,12 @@ impl ControlAnalysis {
         &self.controller
     }
 
+    /// What the LQR design produced (`None` for another law).
+    #[must_use]
+    pub fn lqr(&self) -> Option<&LqrDesign> {
+        self.lqr.as_ref()
+    }
+
     /// The plant at `omega` [rad/s].
     ///
     /// # Errors

@@ -26,6 +26,7 @@ use crate::bearing::frf::dynamics::{BearingDynamics, Hydraulics, Rig};
 use crate::bearing::frf::model::FrfModel;
 use crate::model::control::{ActuatorKind, Axis, Control, Quantity, Sensor};
 use crate::model::Case;
+use crate::physics::hydraulics::servovalve::SMALL_SIGNAL_FRACTION;
 use crate::rotor::coupling::System;
 
 /// The closed loop's X/F at one frequency.
@@ -53,6 +54,37 @@ pub struct RigLoop {
     velocity: bool,
     /// The loop in state space (journal y and the pad coordinates, x held).
     plant: Plant,
+    /// The valve's small-signal range [V] (the actuator's `max_voltage_v`, else the valve's).
+    limit_v: f64,
+}
+
+/// The rig's loop over a band: what `tiltpad frf --control` writes and the Control view draws.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RigSweep {
+    pub gain: f64,
+    /// Stable by the closed loop's eigenvalues (lines in lumped segments).
+    pub stable: bool,
+    pub min_log_dec: f64,
+    /// The valve's small-signal range [V].
+    pub limit_v: f64,
+    pub points: Vec<RigPoint>,
+}
+
+impl RigSweep {
+    /// The largest X/F over the band [m/N] and its frequency [Hz], loop open or closed.
+    #[must_use]
+    pub fn peak(&self, closed: bool) -> (f64, f64) {
+        self.points
+            .iter()
+            .map(|p| (if closed { p.closed_m_per_n } else { p.open_m_per_n }, p.frequency_hz))
+            .fold((0.0, 0.0), |a, b| if b.0 > a.0 { b } else { a })
+    }
+
+    /// The largest valve signal per shaker force over the band [V/N].
+    #[must_use]
+    pub fn signal_v_per_n(&self) -> f64 {
+        self.points.iter().map(|p| p.signal_v_per_n).fold(0.0, f64::max)
+    }
 }
 
 impl RigLoop {
@@ -81,6 +113,7 @@ impl RigLoop {
         let rig = Rig { mass: r.mass_kg, stiffness: r.support_stiffness_n_per_m, damping: r.support_damping_ns_per_m };
         let hydraulics = frf.hydraulics(h);
         let plant = rig_plant(&frf.dynamics, &hydraulics, rig, sensor)?;
+        let limit_v = actuator.max_voltage_v.unwrap_or(h.valve.full_scale_v * SMALL_SIGNAL_FRACTION);
         // an LQR on the rig is designed at the case's own speed
         let (controller, _) = design(control, |_| Ok((plant.clone(), case.operating.speed_rad_s)))?;
         Ok(Self {
@@ -91,6 +124,23 @@ impl RigLoop {
             gain: control.gain,
             velocity: sensor.quantity == Quantity::Velocity,
             plant,
+            limit_v,
+        })
+    }
+
+    /// X/F open and closed at each of `freqs` [Hz] (a frequency where a transfer is singular is left out),
+    /// with the loop's stability.
+    ///
+    /// # Errors
+    /// [`ControlError::Eigen`].
+    pub fn sweep(&self, freqs: &[f64]) -> Result<RigSweep, ControlError> {
+        let poles = self.poles()?;
+        Ok(RigSweep {
+            gain: self.gain,
+            stable: poles.stable(),
+            min_log_dec: poles.min_log_dec(),
+            limit_v: self.limit_v,
+            points: freqs.iter().filter_map(|&f| self.at(f)).collect(),
         })
     }
 

@@ -1,4 +1,4 @@
-//! The Control view's two background jobs ([`crate::app::control_worker`]), and what they hand the view:
+//! The Control view's two background jobs ([`crate::app::job_runner`]), and what they hand the view:
 //!
 //! - [`Build`]: the bearings solved and the plants built at each of the sweep's [`SPEEDS`] speeds
 //!   ([`ControlAnalysis`]), with the loop-open results ([`Built`]);
@@ -8,7 +8,7 @@
 
 use std::sync::Arc;
 
-use crate::app::control_worker::Work;
+use crate::app::job_runner::Work;
 use crate::control::analysis::ControlAnalysis;
 use crate::control::closed_loop::broken;
 use crate::control::law::realise;
@@ -44,6 +44,8 @@ pub struct Built {
     pub api617_um: Vec<f64>,
     /// The analysis' controller (the file's; an LQR as designed).
     pub controller: crate::control::state_space::StateSpace,
+    /// What the LQR design produced (`None` for another law).
+    pub lqr: Option<crate::control::lqr::LqrDesign>,
 }
 
 /// The loop closed at one [`Tuning`].
@@ -76,6 +78,7 @@ impl Work for Build {
             open_orbits: done.iter().map(|s| s.response.as_ref().map(|r| r.open.clone()).unwrap_or_default()).collect(),
             api617_um: done.iter().map(|s| s.api617_limit_um).collect(),
             controller: self.analysis.controller().clone(),
+            lqr: self.analysis.lqr().cloned(),
         }))
     }
 

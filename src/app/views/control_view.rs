@@ -1,6 +1,15 @@
-//! The Control view: the shipped active compressor rotor (`cases/rotors/compressor-rotor-active.toml`, its
-//! controllable bearings at preview fidelity) with its loop closed through the bearings' valves, and the
-//! sliders a designer turns — the loop gain and the PD gains of every loop — with, updated as they move:
+//! The Control view: a shipped system with its loop closed through the controllable bearings' valves, chosen
+//! in the view ([`System`]):
+//!
+//! - the active compressor rotor (`cases/rotors/compressor-rotor-active.toml`, PD loops) or the same rotor
+//!   with the LQR tiltpad designs (`cases/rotors/compressor-rotor-lqr.toml`: its weights, the designed
+//!   compensator's gains at the design speed's running frequency, its reduced model), bearings at preview
+//!   fidelity;
+//! - the test rig closed by its shipped controller: X/F with control against without
+//!   ([`super::control_rig`]).
+//!
+//! On a rotor, the sliders a designer turns — the loop gain and the PD gains of every loop — with, updated as
+//! they move:
 //!
 //! - the **root locus** at one speed over the loop gain (the lightly damped poles, the open loop and the
 //!   current gain marked), the gain and phase margins at each valve's input written on it;
@@ -9,7 +18,7 @@
 //! - the **unbalance response** at one node through the critical speeds, open and closed, with the valve
 //!   signal it needs against the valve's small-signal range.
 //!
-//! Two background jobs ([`super::control_jobs`], run by [`crate::app::control_worker`]): the sweep solves
+//! Two background jobs ([`super::control_jobs`], run by [`crate::app::job_runner`]): the sweep solves
 //! the bearings once per speed and builds the plants ([`crate::control::analysis::ControlAnalysis`]); each
 //! slider change closes the loop again on those plants ([`crate::control::tuning`]: an eigen-solution and a
 //! complex solve per speed, no bearing solve). The onset on the map is interpolated between the sweep's
@@ -22,27 +31,32 @@ use egui::{Color32, RichText, Ui};
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, Points, Text, VLine};
 
 use super::control_jobs::{Build, Built, Tune, Tuned, Tuning, GAIN_RANGE, SPEEDS};
+use super::control_rig::{rig_ui, RigPage};
 use super::plot_kit::{labelled_spacer, legend_ui, PALETTE};
 use super::{View, ViewContext};
-use crate::app::control_worker::{Event, Runner};
+use crate::app::job_runner::{Event, Runner};
 use crate::app::frame_probe::Job;
 use crate::bearing::stages::StageId;
 use crate::control::analysis::{ControlAnalysis, ControlParams};
 use crate::control::tuning::onset_on_grid;
-use crate::model::control::{Control, Law, PlantInfo, Rule};
+use crate::model::control::{Control, Law, LqrSpec, PlantInfo, Quantity, Rule, SensorAt};
 use crate::model::load_case;
 use crate::model::rotor::{parse_rotor_file, BearingSupport, Rotor};
 use crate::units::{MM, RPM, UM};
 
-/// The shipped active rotor and its bearing case.
+/// The shipped active rotors (PD loops, LQR) and their bearing case.
 const ROTOR_NAME: &str = "compressor-rotor-active.toml";
 const ROTOR_TEXT: &str = include_str!("../../../cases/rotors/compressor-rotor-active.toml");
+const LQR_NAME: &str = "compressor-rotor-lqr.toml";
+const LQR_TEXT: &str = include_str!("../../../cases/rotors/compressor-rotor-lqr.toml");
 const BEARING_NAME: &str = "compressor-bearing-active.toml";
 const BEARING_TEXT: &str = include_str!("../../../cases/compressor-bearing-active.toml");
 
-/// Speeds of the sweep [rpm]: from `FIRST_RPM` to `MAX_FACTOR` × the top of the operating range.
+/// Speeds of the sweep [rpm]: from `FIRST_RPM` to `MAX_FACTOR` × the top of the operating range (the LQR
+/// raises the onset far above it: its sweep goes to `LQR_MAX_FACTOR` ×).
 const FIRST_RPM: f64 = 2000.0;
 const MAX_FACTOR: f64 = 1.3;
+const LQR_MAX_FACTOR: f64 = 2.0;
 /// The root locus shows poles up to [`super::control_jobs::LOCUS_MAX_HZ`] and this damping ratio.
 const LOCUS_MAX_DAMPING: f64 = 0.25;
 /// Ranges of the PD sliders (every PD loop): kp [V/µm], kd [V per mm/s].
@@ -56,8 +70,45 @@ const LIMIT: Color32 = Color32::from_rgb(213, 94, 0);
 /// The API 617 line (dotted grey: the closed loop's colour is the warning's).
 const API: Color32 = Color32::from_gray(150);
 
+/// The shipped systems the view closes a loop on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum System {
+    /// The active compressor rotor, each journal's displacement fed back to its valve (PD loops).
+    #[default]
+    RotorPd,
+    /// The same rotor with the LQR tiltpad designs on its reduced model.
+    RotorLqr,
+    /// The test rig, its journal's vertical displacement fed back to its valve.
+    Rig,
+}
+
+impl System {
+    pub const ALL: [System; 3] = [System::RotorPd, System::RotorLqr, System::Rig];
+
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            System::RotorPd => "Compressor rotor, PD loops",
+            System::RotorLqr => "Compressor rotor, LQR",
+            System::Rig => "Test rig, X/F with and without control",
+        }
+    }
+
+    /// The rotor file's name and text (`None`: the rig).
+    fn rotor(self) -> Option<(&'static str, &'static str)> {
+        match self {
+            System::RotorPd => Some((ROTOR_NAME, ROTOR_TEXT)),
+            System::RotorLqr => Some((LQR_NAME, LQR_TEXT)),
+            System::Rig => None,
+        }
+    }
+}
+
 /// The view's state (runtime; nothing persisted).
 pub struct ControlView {
+    /// The system shown (switching starts its analysis afresh).
+    pub system: System,
+    pub rig: RigPage,
     pub tuning: Tuning,
     /// Response node shown (index in the sweep's response nodes).
     pub node: usize,
@@ -73,6 +124,8 @@ pub struct ControlView {
 impl Default for ControlView {
     fn default() -> Self {
         Self {
+            system: System::default(),
+            rig: RigPage::default(),
             tuning: Tuning { gain: 1.0, kp_v_per_um: None, kd_v_per_mm_s: None, locus_at: 0 },
             node: 0,
             loaded: None,
@@ -86,9 +139,9 @@ impl Default for ControlView {
     }
 }
 
-/// The shipped active rotor, its bearing cases at preview fidelity, and its controller.
-fn load() -> Result<(Rotor, Control), String> {
-    let file = parse_rotor_file(ROTOR_TEXT).map_err(|e| e.to_string())?;
+/// A shipped active rotor (`text`), its bearing cases at preview fidelity, and its controller.
+fn load(text: &str) -> Result<(Rotor, Control), String> {
+    let file = parse_rotor_file(text).map_err(|e| e.to_string())?;
     let read = |name: &str| {
         if name.rsplit('/').next() == Some(BEARING_NAME) {
             Ok(BEARING_TEXT.to_string())
@@ -116,9 +169,11 @@ fn first_unbalance(b: &Built, rotor: &Rotor) -> usize {
     rotor.unbalances.first().and_then(|u| nodes.iter().position(|n| *n == u.node)).unwrap_or(0)
 }
 
-/// The sweep's speeds [rad/s].
-fn speeds(rotor: &Rotor) -> Vec<f64> {
-    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| RPM.from_si(b)) * MAX_FACTOR;
+/// The sweep's speeds [rad/s] (the LQR's sweep reaches further).
+#[must_use]
+pub fn speeds(rotor: &Rotor, control: &Control) -> Vec<f64> {
+    let factor = if matches!(control.law, Law::Lqr(_)) { LQR_MAX_FACTOR } else { MAX_FACTOR };
+    let top_rpm = rotor.operating_range.map_or(12_000.0, |[_, b]| RPM.from_si(b)) * factor;
     #[allow(clippy::cast_precision_loss)]
     (0..SPEEDS).map(|i| RPM.to_si(FIRST_RPM + (top_rpm - FIRST_RPM) * i as f64 / (SPEEDS - 1) as f64)).collect()
 }
@@ -153,7 +208,22 @@ impl ControlView {
     /// Nothing is being computed.
     #[must_use]
     pub fn is_idle(&self) -> bool {
-        self.build.as_ref().is_none_or(|r| !r.busy()) && self.tune.as_ref().is_none_or(|r| !r.busy())
+        self.build.as_ref().is_none_or(|r| !r.busy())
+            && self.tune.as_ref().is_none_or(|r| !r.busy())
+            && self.rig.is_idle()
+    }
+
+    /// Shows `system`: its analysis starts afresh (a running one is cancelled).
+    pub fn show(&mut self, system: System) {
+        if system != self.system {
+            *self = Self { system, ..Self::default() };
+        }
+    }
+
+    /// What the LQR design produced, once the sweep is done (`None` for another law).
+    #[must_use]
+    pub fn lqr(&self) -> Option<&crate::control::lqr::LqrDesign> {
+        self.built.as_ref()?.as_ref().ok()?.lqr.as_ref()
     }
 
     /// The loop closed at the sliders, once computed.
@@ -171,15 +241,16 @@ impl ControlView {
 
     /// Loads the rotor, starts the sweep, and closes the loop again when a slider moved.
     fn drive(&mut self, ctx: &egui::Context) {
+        let Some((_, text)) = self.system.rotor() else { return };
         if self.loaded.is_none() {
-            let loaded = load();
+            let loaded = load(text);
             if let Ok((rotor, control)) = &loaded {
                 if let Some((kp, kd)) = shared_pd(control) {
                     (self.tuning.kp_v_per_um, self.tuning.kd_v_per_mm_s) = (Some(kp), Some(kd));
                 }
                 self.tuning.gain = control.gain;
                 self.tuning.locus_at = SPEEDS * 2 / 3;
-                let mut params = ControlParams::new(speeds(rotor));
+                let mut params = ControlParams::new(speeds(rotor, control));
                 params.nyquist = false;
                 match ControlAnalysis::new(rotor, control, params) {
                     Ok(analysis) => {
@@ -252,19 +323,36 @@ impl View for ControlView {
 
 /// Draws the view.
 pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
+    let mut system = view.system;
+    ui.horizontal(|ui| {
+        let label = ui.label("System");
+        egui::ComboBox::from_id_salt("control-system")
+            .selected_text(system.label())
+            .show_ui(ui, |ui| {
+                for s in System::ALL {
+                    ui.selectable_value(&mut system, s, s.label());
+                }
+            })
+            .response
+            .labelled_by(label.id);
+    });
+    view.show(system);
+    let Some((name, _)) = view.system.rotor() else {
+        rig_ui(ui, &mut view.rig);
+        return;
+    };
     view.drive(ui.ctx());
     let (title, control) = match &view.loaded {
         Some(Ok(l)) => (l.0.title.clone(), l.1.clone()),
         Some(Err(e)) => {
-            ui.label(RichText::new(format!("Cannot read {ROTOR_NAME}: {e}")).color(LIMIT));
+            ui.label(RichText::new(format!("Cannot read {name}: {e}")).color(LIMIT));
             return;
         }
         None => return,
     };
-    ui.label(
-        RichText::new(format!("{title} — {ROTOR_NAME}, bearings at preview fidelity, {SPEEDS} speeds"))
-            .strong(),
-    );
+    // The rotor's title on hover: one line, so the plots keep their height at 1280×720.
+    ui.label(RichText::new(format!("{name} — bearings at preview fidelity, {SPEEDS} speeds")).strong())
+        .on_hover_text(title);
     let built = match &view.built {
         Some(Ok(b)) => b.clone(),
         Some(Err(e)) => {
@@ -296,6 +384,9 @@ pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
     let onset_open = view.onset_open_rad_s();
     let mut node = view.node.min(nodes.len().saturating_sub(1));
     summary_ui(ui, &built, tuned, onset_open, node, control.actuators.len());
+    if let (Law::Lqr(spec), Some(design)) = (&control.law, &built.lqr) {
+        lqr_ui(ui, spec, design, &built.controller, &control);
+    }
     let height = (ui.available_height() - 8.0).max(240.0);
     ui.columns(2, |cols| {
         locus_ui(&mut cols[0], tuned, height);
@@ -506,4 +597,69 @@ fn unbalance_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, nodes: &[usize], node
             open_and_closed(p, open, closed);
             p.line(Line::new("API 617 limit", api).color(API).style(LineStyle::dotted_dense()).width(1.5));
         });
+}
+
+/// A sensor's place and direction, as the table names it ("journal 0 x", "node 26 y").
+fn sensor_name(s: &crate::model::control::Sensor) -> String {
+    let dir = match s.direction {
+        crate::model::control::Axis::X => "x",
+        crate::model::control::Axis::Y => "y",
+    };
+    match s.at {
+        SensorAt::Journal(b) => format!("journal {b} {dir}"),
+        SensorAt::Node(n) => format!("node {n} {dir}"),
+    }
+}
+
+/// The LQR's weights and what the design made of them: per sensor its weight and the compensator's gain to
+/// each valve at the design speed's running frequency (magnitude and phase; the compensator is dynamic, its
+/// gain depends on the frequency), the valves' weights, the reduced model.
+fn lqr_ui(
+    ui: &mut Ui,
+    spec: &LqrSpec,
+    design: &crate::control::lqr::LqrDesign,
+    controller: &crate::control::state_space::StateSpace,
+    control: &Control,
+) {
+    let hz = design.design_speed_rad_s / std::f64::consts::TAU;
+    ui.label(format!(
+        "LQR at {:.0} rpm on {} of the plant's {} states (modes below {:.0} Hz), observer noise {}; the \
+         compensator's gains at the running frequency:",
+        RPM.from_si(design.design_speed_rad_s),
+        design.reduced_states,
+        design.full_states,
+        spec.max_frequency_rad_s / std::f64::consts::TAU,
+        spec.sensor_noise
+    ));
+    let k = controller.response(crate::control::state_space::C64::new(0.0, design.design_speed_rad_s));
+    let valves = control.actuators.len();
+    egui::Grid::new("control-lqr-gains").striped(true).spacing([10.0, 0.0]).show(ui, |ui| {
+        ui.label("sensor");
+        ui.label("weight q");
+        for a in 0..valves {
+            ui.label(format!("valve {a} at {hz:.0} Hz"));
+        }
+        ui.end_row();
+        for (i, sensor) in control.sensors.iter().enumerate() {
+            let (unit, gain_unit) = match sensor.quantity {
+                Quantity::Displacement => ("1/µm²", "V/µm"),
+                Quantity::Velocity => ("1/(mm/s)²", "V/(mm/s)"),
+            };
+            ui.label(sensor_name(sensor));
+            ui.label(format!("{} {unit}", spec.output_weight.get(i).copied().unwrap_or(0.0)));
+            for a in 0..valves {
+                let g = k.as_ref().map(|k| k[(a, i)] * sensor.quantity.reading_unit());
+                ui.label(g.map_or("—".to_string(), |g| {
+                    format!("{:.4} {gain_unit}, {:+.0}°", g.norm(), g.arg().to_degrees())
+                }));
+            }
+            ui.end_row();
+        }
+        ui.label("valve weight r");
+        ui.label("");
+        for a in 0..valves {
+            ui.label(format!("{} 1/V²", spec.input_weight.get(a).copied().unwrap_or(0.0)));
+        }
+        ui.end_row();
+    });
 }

@@ -1,5 +1,6 @@
-//! Runs the Control view's work off the UI thread: any steppable [`Work`] (the speed sweep that solves the
-//! bearings and builds the plants; the loop closed again at the sliders' gains).
+//! Runs a view's work off the UI thread: any steppable [`Work`] (the Control view's speed sweep that solves
+//! the bearings and builds the plants, its loop closed again at the sliders' gains, its test-rig loop; the
+//! rotor view's analysis, [`super::rotor_worker`]).
 //!
 //! - Native: one named thread per job loops [`Work::step`], reports progress over a channel and wakes the UI
 //!   with `request_repaint`; a newer job (or dropping the runner) raises the old job's cancel flag, checked
@@ -17,6 +18,8 @@ pub trait Work: Send + 'static {
     fn step(&mut self) -> Result<Option<Self::Output>, String>;
     /// Steps done and in all.
     fn progress(&self) -> (usize, usize);
+    /// The name of the native thread that runs it.
+    const THREAD: &'static str = "tiltpad-work";
 }
 
 /// What a job reports.
@@ -129,7 +132,7 @@ mod native {
             let (tx, events) = channel();
             let cancel = Arc::new(AtomicBool::new(false));
             let flag = cancel.clone();
-            let spawned = std::thread::Builder::new().name("tiltpad-control".into()).spawn(move || {
+            let spawned = std::thread::Builder::new().name(W::THREAD.into()).spawn(move || {
                 while !flag.load(Ordering::Relaxed) {
                     let event = match work.step() {
                         Ok(None) => {
@@ -151,7 +154,7 @@ mod native {
             });
             if let Err(e) = spawned {
                 let (tx, events) = channel();
-                let _ = tx.send(Event::Done(Err(format!("cannot start the control thread: {e}"))));
+                let _ = tx.send(Event::Done(Err(format!("cannot start the thread {}: {e}", W::THREAD))));
                 return Self { events, cancel };
             }
             Self { events, cancel }
