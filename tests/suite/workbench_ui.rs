@@ -1660,6 +1660,8 @@ fn control_view_shows_the_lqr_design_and_the_onset_the_cli_gives() {
     h.get_by_label("node 26 y");
     assert_eq!(h.query_all_by_label_contains(" V/µm, ").count(), 12);
     assert_eq!(h.query_all_by_label("1 1/V²").count(), 2);
+    // the journal-0 vertical probe to valve 0 at 150 Hz, in V/µm (the design's compensator)
+    h.get_by_label("0.1175 V/µm, +40°");
     h.get_by_label_contains("Onset of instability: loop open");
     snapshot(&mut h, "control_lqr");
 }
