@@ -50,6 +50,8 @@ pub struct EquilibriumInputs {
     pub physics: Physics,
     /// Every tuning key (the equilibrium's and those of the stages after it, which key on these inputs).
     pub tuning: Tuning,
+    /// Scale on the flooded housing's churning loss (reported with the solution; 0 for directed feeding).
+    pub churning_factor: f64,
 }
 
 impl EquilibriumInputs {
@@ -63,7 +65,7 @@ impl EquilibriumInputs {
             operating,
             mesh: _,
             physics,
-            thermal: _,
+            thermal, // its feeding's churning factor (the rest: the thermal stage's)
             hydraulics: _,
             limits: _,
             tuning,
@@ -110,6 +112,7 @@ impl EquilibriumInputs {
             supply_flow_m3_s: supply_flow_m3_s.clone(),
             physics: *physics,
             tuning: *tuning,
+            churning_factor: thermal.feeding.churning_factor(),
         }
     }
 }

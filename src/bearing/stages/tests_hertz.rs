@@ -2,25 +2,15 @@
 //! budget): the pivots' load iteration pauses inside its equilibria and between its load steps, and the
 //! resumed solve reaches the solution of the solve run in one go — isothermal and THD, on the rocker case.
 
-use crate::bearing::report::progress::{Cancel, NoCancel};
+use crate::bearing::report::progress::NoCancel;
 use crate::bearing::solution::Solution;
 use crate::bearing::stages::equilibrium::MAX_SUSPENSIONS;
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::Step;
 use crate::bearing::stages::registry::Stages;
 use crate::bearing::stages::request::Request;
+use crate::bearing::stages::tests::AlwaysSuspend;
 use crate::model::{load_case, Case};
-
-/// Asks every solve to pause as soon as it may (the web stepper with a spent frame budget).
-struct AlwaysSuspend;
-impl Cancel for AlwaysSuspend {
-    fn cancelled(&self) -> bool {
-        false
-    }
-    fn suspend(&self) -> bool {
-        true
-    }
-}
 
 fn rocker(set: &[&str]) -> Case {
     let text = include_str!("../../../cases/compressor-bearing-rocker-pivot.toml");
