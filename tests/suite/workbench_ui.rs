@@ -1541,7 +1541,10 @@ fn the_per_pad_supply_flow_row_edits_one_pads_flow() {
     h.run_steps(2);
     assert_eq!(h.state().doc.file().operating.supply_flow_l_per_min, None);
     assert_eq!(per_pad(&h), Some(tiltpad::model::file::OneOrMany::Many(vec![5.0; 5])));
-    spin_button(&h, "pad 2").set_value_accesskit(4.0);
+    // The pads group's per-pad pivot angles come first; the supply row's fields are the operating group's.
+    let fields: Vec<_> = h.get_all_by_role_and_label(Role::SpinButton, "pad 2").collect();
+    assert_eq!(fields.len(), 2, "pivot angle and supply flow of pad 2");
+    fields[1].set_value_accesskit(4.0);
     h.run_steps(2);
     assert_eq!(per_pad(&h), Some(tiltpad::model::file::OneOrMany::Many(vec![5.0, 5.0, 4.0, 5.0, 5.0])));
     wait_for_solve(&mut h);

@@ -131,7 +131,7 @@ struct Suspensions {
 /// Where a paused solve resumes: an equilibrium's iterate, or the pivots' load iteration.
 enum Paused {
     Equilibrium(Resume),
-    Pivots(pivots::PivotRun),
+    Pivots(Box<pivots::PivotRun>),
 }
 
 impl Suspensions {
@@ -209,7 +209,7 @@ impl Stage for EquilibriumStage {
                     }
                     Paused::Pivots(mut run) => {
                         so_far.add(std::mem::take(&mut run.part));
-                        Suspensions { pivots: Some(run), ..so_far }
+                        Suspensions { pivots: Some(*run), ..so_far }
                     }
                 };
                 self.suspended.put(inputs.clone(), next);
@@ -243,7 +243,7 @@ fn solve(
     if let Some(run) = run {
         return Ok(match pivots::step_solve(model, case, op, run, params, cancel)? {
             Progress::Done((eq, p)) => Progress::Done((eq, Some(p))),
-            Progress::Suspended(r) => Progress::Suspended(Paused::Pivots(r)),
+            Progress::Suspended(r) => Progress::Suspended(Paused::Pivots(Box::new(r))),
         });
     }
     Ok(match step_equilibrium(model, op, params, start, cancel)? {
