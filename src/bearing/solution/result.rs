@@ -246,6 +246,10 @@ impl Solution {
     /// The housing's churning loss, every gap [W] (0 without churning).
     #[must_use]
     pub fn churning_power_w(&self) -> f64 {
+        // An empty f64 sum is −0.0; no churning reads as 0.
+        if self.churning.is_empty() {
+            return 0.0;
+        }
         self.churning.iter().map(|g| g.power_w).sum()
     }
 
