@@ -120,10 +120,20 @@ impl Solution {
     fn p_max_mpa(&self) -> f64 {
         MPA.from_si(self.sol.p_max_pa)
     }
-    /// Friction power loss [W].
+    /// Friction power loss of the films [W].
     #[getter]
     fn friction_power_w(&self) -> f64 {
         self.sol.friction_power_w
+    }
+    /// Churning loss of a flooded housing between the pads [W] (0 without churning).
+    #[getter]
+    fn churning_power_w(&self) -> f64 {
+        self.sol.churning_power_w()
+    }
+    /// The bearing's power loss: the films' friction and the housing's churning [W].
+    #[getter]
+    fn total_power_loss_w(&self) -> f64 {
+        self.sol.total_power_loss_w()
     }
     /// Friction torque on the journal [N·m].
     #[getter]

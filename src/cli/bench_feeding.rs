@@ -1,7 +1,7 @@
 //! Bench section: oil feeding (`[feeding]`, docs/MODEL.md §3.4). The compressor bearing with the thermal model
 //! (BC1) fed by leading-edge grooves, per fidelity level, with its errors against the reference-fine mesh;
 //! then the three feedings and a starved groove-fed bearing at the standard level: time, ratio to the
-//! flooded housing, friction power, film peak and mean inlet temperature, film inflow and energy closure;
+//! flooded housing, friction power, churning and total loss, film peak and mean inlet temperature, film inflow and energy closure;
 //! and the ram pressure (docs/MODEL.md §2.2) per fidelity level and at the standard level.
 
 use std::fmt::Write as _;
@@ -54,11 +54,12 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         let _ = writeln!(md, "{}", level_cells(r));
     }
     md.push_str(
-        "\nThe feedings at the standard level (median time; ratio to the flooded housing; friction power, film peak \
+        "\nThe feedings at the standard level (median time; ratio to the flooded housing; the films' friction power, the \
+         flooded housing's churning between the pads (docs/MODEL.md §3.8; none with directed feeding) and their sum, film peak \
          temperature, mean inlet temperature, film inflow at the leading edges, energy-balance closure). The starved rows \
          use `cases/compressor-bearing-starved.toml` (25 l/min, mass-conserving cavitation):\n\n\
-         | case | feeding | time | ratio | friction | film T_max | mean T_in | inflow | closure |\n\
-         |---|---|---|---|---|---|---|---|---|\n",
+         | case | feeding | time | ratio | film friction | churning | total loss | film T_max | mean T_in | inflow | closure |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let starved = read("compressor-bearing-starved")?;
     let spray = ["feeding.kind=\"spray_bar\"".to_string()];
@@ -86,9 +87,11 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         let t_in = t.inlet_temperatures_c.iter().sum::<f64>() / t.inlet_temperatures_c.len().max(1) as f64;
         let _ = writeln!(
             md,
-            "| {label} | {feeding} | {ms:.1} ms | {:.2} | {:.2} kW | {:.2} °C | {t_in:.2} °C | {:.1} l/min | {:.1e} |",
+            "| {label} | {feeding} | {ms:.1} ms | {:.2} | {:.2} kW | {:.2} kW | {:.2} kW | {:.2} °C | {t_in:.2} °C | {:.1} l/min | {:.1e} |",
             ms / base,
             s.friction_power_w / 1e3,
+            s.churning_power_w() / 1e3,
+            s.total_power_loss_w() / 1e3,
             t.t_max_film_c,
             L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in),
             t.energy_balance_closure,

@@ -31,10 +31,12 @@ pub fn summary_text(s: &Solution) -> String {
     );
     let _ = writeln!(
         o,
-        "  h_min {:.2} µm  p_max {:.3} MPa  friction {:.1} W  flows: LE in {:.3} l/min, orifices {:+.3} l/min, sides {:.3} l/min",
+        "  h_min {:.2} µm  p_max {:.3} MPa  power loss {:.1} W (film friction {:.1} W, housing churning {:.1} W)  flows: LE in {:.3} l/min, orifices {:+.3} l/min, sides {:.3} l/min",
         UM.from_si(s.h_min_m),
         MPA.from_si(s.p_max_pa),
+        s.total_power_loss_w(),
         s.friction_power_w,
+        s.churning_power_w(),
         L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in),
         L_PER_MIN.from_si(s.flows_m3_per_s.orifices_in),
         L_PER_MIN.from_si(s.flows_m3_per_s.sides_out)

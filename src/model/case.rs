@@ -281,8 +281,9 @@ pub struct Thermal {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Feeding {
-    /// Oil bath: the carried hot oil (`carry_over` of the upstream outflow) enters first.
-    Flooded { carry_over: f64 },
+    /// Oil bath: the carried hot oil (`carry_over` of the upstream outflow) enters first; the journal churns
+    /// the oil between the pads (`churning_factor` scales that loss, §3.8).
+    Flooded { carry_over: f64, churning_factor: f64 },
     /// Supply at each leading edge: only `carry_over` (small) of the hot oil passes the groove, and enters first.
     LeadingEdgeGroove { carry_over: f64 },
     /// Supply sprayed between pads: the carried hot oil and the sprayed oil mix fully before the film takes its
@@ -295,9 +296,19 @@ impl Feeding {
     #[must_use]
     pub fn carry_over(self) -> f64 {
         match self {
-            Self::Flooded { carry_over } | Self::LeadingEdgeGroove { carry_over } | Self::SprayBar { carry_over } => {
-                carry_over
-            }
+            Self::Flooded { carry_over, .. }
+            | Self::LeadingEdgeGroove { carry_over }
+            | Self::SprayBar { carry_over } => carry_over,
+        }
+    }
+
+    /// The scale on the churning loss of the oil between the pads: `feeding.churning_factor` for a flooded
+    /// housing; 0 for directed feeding, whose housing drains (docs/MODEL.md §3.8).
+    #[must_use]
+    pub fn churning_factor(self) -> f64 {
+        match self {
+            Self::Flooded { churning_factor, .. } => churning_factor,
+            Self::LeadingEdgeGroove { .. } | Self::SprayBar { .. } => 0.0,
         }
     }
 }

@@ -132,6 +132,11 @@ pub enum Inconsistency {
     /// A leading-edge groove width given for another feeding kind.
     #[error("only used with feeding.kind = \"leading_edge_groove\"")]
     OnlyWithGroove,
+    /// The churning loss of a flooded housing scaled for a directed feeding, whose housing drains.
+    #[error(
+        "only used with feeding.kind = \"flooded\" (with feeding.kind = \"{kind}\" the housing drains: no churning loss)"
+    )]
+    OnlyWithFlooded { kind: String },
     /// A leading-edge pressure with the mass-conserving inlet, whose condition is a film fraction.
     #[error(
         "a leading-edge (ram) pressure needs a full inlet: physics.cavitation = \"reynolds\" or \"gumbel\" (the mass-conserving inlet is a film fraction)"

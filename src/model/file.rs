@@ -372,6 +372,9 @@ pub struct FeedingFile {
     /// Share of the dynamic pressure ρU²/2 raised at each leading edge (ram pressure).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ram_pressure_coefficient: Option<f64>,
+    /// Scale on the flooded housing's churning loss between the pads (0: none).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub churning_factor: Option<f64>,
 }
 
 impl FeedingFile {

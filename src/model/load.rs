@@ -68,10 +68,11 @@ impl std::fmt::Display for Replaced {
 const FEEDING_KIND: &str = "feeding.kind";
 
 /// The keys only some feeding kinds use, with the kinds that use them (the file's words).
-const FEEDING_KEYS: [(&str, &str, &[&str]); 3] = [
+const FEEDING_KEYS: [(&str, &str, &[&str]); 4] = [
     ("thermal", "carry_over", &["flooded", "spray_bar"]),
     ("feeding", "groove_carry_over", &["leading_edge_groove"]),
     ("feeding", "groove_width_deg", &["leading_edge_groove"]),
+    ("feeding", "churning_factor", &["flooded"]),
 ];
 
 /// After `feeding.kind` was set to `kind`: removes the keys that kind does not use, returning them.

@@ -15,6 +15,7 @@
 //! - [`hertz`]: Hertz contact of a pivot (rocker, ball in socket): approach and stiffness, nonlinear in load.
 //! - [`hydraulics`]: servovalve, injection lines and nozzles of the controllable bearing, linearised.
 
+pub mod churning;
 pub mod energy;
 pub mod hertz;
 pub mod hydraulics;

@@ -214,19 +214,26 @@ pub fn eddy_conduction(re: f64, a: f64) -> (f64, f64) {
         return (1.0, 1.0);
     }
     let plane = 1.0 + a * reichardt_integral(half) / half;
-    // ∫₀^{h⁺/2} dy⁺/(1 + a ε/ν) on cubically graded segments, two Gauss points each.
+    let resistance = wall_integral(half, ACROSS_SEGMENTS, |y| 1.0 / (1.0 + a * reichardt(y)));
+    (plane, half / resistance)
+}
+
+/// `∫₀^half f(y⁺) dy⁺` on `segments` cubically graded segments (fine at the wall, where the viscous sublayer
+/// holds the variation), two Gauss points each.
+#[must_use]
+pub fn wall_integral(half: f64, segments: usize, f: impl Fn(f64) -> f64) -> f64 {
     let g = 0.5 / 3.0_f64.sqrt();
-    let mut resistance = 0.0;
+    let mut sum = 0.0;
     #[allow(clippy::cast_precision_loss)]
-    for i in 0..ACROSS_SEGMENTS {
-        let y0 = half * (i as f64 / ACROSS_SEGMENTS as f64).powi(3);
-        let y1 = half * ((i + 1) as f64 / ACROSS_SEGMENTS as f64).powi(3);
+    for i in 0..segments {
+        let y0 = half * (i as f64 / segments as f64).powi(3);
+        let y1 = half * ((i + 1) as f64 / segments as f64).powi(3);
         let (mid, len) = (0.5 * (y0 + y1), y1 - y0);
         for y in [mid - g * len, mid + g * len] {
-            resistance += 0.5 * len / (1.0 + a * reichardt(y));
+            sum += 0.5 * len * f(y);
         }
     }
-    (plane, half / resistance)
+    sum
 }
 
 #[cfg(test)]

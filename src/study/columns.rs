@@ -35,6 +35,8 @@ pub const COLUMNS: &[Column] = &[
     Column { name: "t_max_pad_c", value: |s| s.thermal.as_ref().and_then(|t| t.t_max_pad_c) },
     Column { name: "t_journal_c", value: |s| s.thermal.as_ref().map(|t| t.journal_temperature_c) },
     Column { name: "friction_power_w", value: |s| Some(s.friction_power_w) },
+    Column { name: "churning_power_w", value: |s| Some(s.churning_power_w()) },
+    Column { name: "total_power_loss_w", value: |s| Some(s.total_power_loss_w()) },
     Column {
         name: "flow_leading_edges_in_l_per_min",
         value: |s| Some(L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in)),

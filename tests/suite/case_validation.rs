@@ -313,7 +313,7 @@ fn defaults_and_units_come_from_the_key_table() {
     let (_, c) = load_case(&base(), &removed.map(String::from)).unwrap();
     assert_eq!(c.thermal.pad_conductivity_w_per_m_k, 45.0);
     assert_eq!(c.thermal.convection_w_per_m2_k, 100.0);
-    assert_eq!(c.thermal.feeding, tiltpad::model::Feeding::Flooded { carry_over: 0.8 });
+    assert_eq!(c.thermal.feeding, tiltpad::model::Feeding::Flooded { carry_over: 0.8, churning_factor: 1.0 });
     assert_eq!(c.thermal.ambient_temperature_c, 50.0, "the supply temperature");
     let pad = &c.bearing.pads[0];
     assert_eq!((pad.density_kg_per_m3, pad.youngs_modulus_pa, pad.poisson_ratio), (7800.0, 200e9, 0.3));

@@ -28,7 +28,7 @@ use tiltpad::scene::field_compare::difference_maps;
 use tiltpad::scene::rotor::unbalance_bode;
 use tiltpad::scene::summary::sig4;
 use tiltpad::scene::sweep::SweepSpec;
-use tiltpad::units::{MPA, RPM, UM};
+use tiltpad::units::{L_PER_MIN, MPA, RPM, UM};
 
 use crate::common::painted_text;
 
@@ -1664,4 +1664,40 @@ fn control_view_shows_the_lqr_design_and_the_onset_the_cli_gives() {
     h.get_by_label("0.1175 V/µm, +40°");
     h.get_by_label_contains("Onset of instability: loop open");
     snapshot(&mut h, "control_lqr");
+}
+
+/// The per-pad supply flow row (`operating.pad_supply_flow_l_per_min`) on the starved compressor bearing
+/// (mass-conserving films, 25 l/min): ticking "Supply flow per pad" replaces the bearing's supply by its five
+/// equal shares (the two keys exclude each other); editing pad 2's field changes that pad's flow alone, and
+/// the re-solve offers pad 2 its new flow.
+#[test]
+fn the_per_pad_supply_flow_row_edits_one_pads_flow() {
+    let text = include_str!("../../cases/compressor-bearing-starved.toml").replace("\"standard\"", "\"preview\"");
+    let mut h = solved_app_at([1400.0, 2600.0], Some(Box::leak(text.into_boxed_str())), |_| {});
+    let per_pad = |h: &Harness<'_, WorkbenchApp>| h.state().doc.file().operating.pad_supply_flow_l_per_min.clone();
+    assert_eq!(per_pad(&h), None);
+    h.get_by_label("Supply flow per pad").click();
+    h.run_steps(2);
+    assert_eq!(h.state().doc.file().operating.supply_flow_l_per_min, None);
+    assert_eq!(per_pad(&h), Some(tiltpad::model::file::OneOrMany::Many(vec![5.0; 5])));
+    // The pads group's per-pad pivot angles come first; the supply row's fields are the operating group's.
+    let fields: Vec<_> = h.get_all_by_role_and_label(Role::SpinButton, "pad 2").collect();
+    assert_eq!(fields.len(), 2, "pivot angle and supply flow of pad 2");
+    fields[1].set_value_accesskit(4.0);
+    h.run_steps(2);
+    assert_eq!(per_pad(&h), Some(tiltpad::model::file::OneOrMany::Many(vec![5.0, 5.0, 4.0, 5.0, 5.0])));
+    wait_for_solve(&mut h);
+    let s = h.state().shown.clone().unwrap().solution;
+    let offered: Vec<f64> = s
+        .inputs
+        .operating
+        .supply_flow_m3_s
+        .clone()
+        .expect("per-pad supply")
+        .iter()
+        .map(|q| L_PER_MIN.from_si(*q))
+        .collect();
+    for (k, (q, want)) in offered.iter().zip([5.0, 5.0, 4.0, 5.0, 5.0]).enumerate() {
+        assert!((q - want).abs() < 1e-9, "pad {k}: {q} l/min");
+    }
 }

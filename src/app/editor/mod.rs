@@ -52,6 +52,7 @@ const HOOKS: &[Hook] = &[
     Hook::Array("bearing.pads.orifice", bearing::orifices_ui),
     Hook::Before("operating.load_n", operation::load_mode_ui),
     Hook::Custom("operating.injection_pressure_bar", operation::injection_ui),
+    Hook::Custom("operating.pad_supply_flow_l_per_min", operation::pad_supply_ui),
     Hook::Custom("mesh.half_model", operation::half_model_ui),
     Hook::Before("mesh.circumferential_elements", operation::fidelity_note_ui),
     Hook::Start(Group::Hydraulics, hydraulics::absent_ui),

@@ -1,5 +1,5 @@
 //! The editor's own code for how the bearing runs and is modelled: how the journal position is given (not a
-//! key), the injection pressure (one value, or one per pad), the half model (automatic, or forced either
+//! key), the injection pressure (one value, or one per pad), the per-pad supply flow, the half model (automatic, or forced either
 //! way) and what the chosen fidelity costs. Every other row of the lubricant, operating point, physics and
 //! fidelity groups is drawn from the key table.
 
@@ -93,6 +93,59 @@ pub fn injection_ui(ui: &mut Ui, doc: &mut Document, row: &'static KeySpec) -> E
         out.merge(number_ui(ui, doc, &n, value, |f, v| f.operating.injection_pressure_bar = Some(OneOrMany::One(v))));
     }
     out
+}
+
+/// Supply flow per pad: absent (the bearing's supply, or flooded pads), or one value per pad [l/min]. Ticking
+/// it starts every pad at its equal share of the bearing's supply (which it replaces: the two keys exclude
+/// each other), or at the key's lowest typical value when there is none.
+pub fn pad_supply_ui(ui: &mut Ui, doc: &mut Document, row: &'static KeySpec) -> EditOutput {
+    let mut out = EditOutput::default();
+    let label = row.editor.map_or(row.key, |e| e.label);
+    let n = Num { key: row.key, label, decimals: 2 };
+    let mut separate = doc.file().operating.pad_supply_flow_l_per_min.is_some();
+    ui.label("");
+    if ui
+        .checkbox(&mut separate, "Supply flow per pad")
+        .on_hover_text("Give each pad its own oil supply (e.g. a groove per pad with its own orifice).")
+        .changed()
+    {
+        let count = per_pad_count(doc.file());
+        let first = row.typical.map_or(1.0, |(lo, _)| lo);
+        doc.edit(n.key, false, |f| {
+            let o = &mut f.operating;
+            if separate {
+                #[allow(clippy::cast_precision_loss)]
+                let share = o.supply_flow_l_per_min.take().map_or(first, |q| q / count.max(1) as f64);
+                o.pad_supply_flow_l_per_min = Some(OneOrMany::Many(vec![share; count]));
+            } else {
+                o.pad_supply_flow_l_per_min = None;
+            }
+        });
+        out.changed = true;
+    }
+    ui.end_row();
+    if separate {
+        let values = pad_supply(doc.file());
+        out.merge(per_pad_ui(ui, doc, &n, &values, |f, k, v| {
+            let count = per_pad_count(f);
+            let mut all = pad_supply(f);
+            all.resize(count, all.last().copied().unwrap_or(v));
+            if let Some(x) = all.get_mut(k) {
+                *x = v;
+            }
+            f.operating.pad_supply_flow_l_per_min = Some(OneOrMany::Many(all));
+        }));
+    }
+    out
+}
+
+/// The supply flow of every pad as the file gives it [l/min] (one value repeated for every pad).
+fn pad_supply(f: &CaseFile) -> Vec<f64> {
+    match &f.operating.pad_supply_flow_l_per_min {
+        Some(OneOrMany::Many(v)) => v.clone(),
+        Some(OneOrMany::One(q)) => vec![*q; per_pad_count(f)],
+        None => Vec::new(),
+    }
 }
 
 /// Use of the symmetry plane.

@@ -21,13 +21,14 @@ use crate::bearing::report::error::InternalError;
 use crate::model::{Case, LoadSpec};
 use crate::physics::hertz::{ContactState, PivotContact};
 
-use crate::bearing::equilibrium::solve::solve_equilibrium;
+use crate::bearing::equilibrium::solve::{solve_equilibrium, step_equilibrium};
 use crate::bearing::equilibrium::state::{Equilibrium, EquilibriumParams, PadState};
 use crate::bearing::film::coordinates::{Coord, PadDof};
 use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::report::error::SolveError;
-use crate::bearing::report::progress::Cancel;
+use crate::bearing::report::progress::{Cancel, NoSuspend, Progress};
 use crate::bearing::report::warning::Warning;
+use crate::bearing::report::SolveReport;
 
 /// Relative change of every secant stiffness at which the load iteration stops.
 pub const RTOL: f64 = 1e-6;
@@ -225,7 +226,8 @@ impl HertzPivots {
 
 /// Solves the operating point with each Hertz pivot's stiffness at its pad's load (module docs): the
 /// equilibrium, and the load iteration (`None` without pivot contacts) whose states and tangents the
-/// solution takes ([`crate::bearing::solution::assemble::assemble_solution`]).
+/// solution takes ([`crate::bearing::solution::assemble::assemble_solution`]). The same iteration as
+/// [`step_solve`], run without pauses.
 ///
 /// # Errors
 /// The equilibrium's errors; [`SolveError::PivotContact`] for a contact outside Hertz theory at its load.
@@ -237,24 +239,103 @@ pub fn solve(
     params: EquilibriumParams,
     cancel: &dyn Cancel,
 ) -> Result<(Equilibrium, Option<HertzPivots>), SolveError> {
-    let Some(mut pivots) = HertzPivots::new(model, case)? else {
+    let Some(run) = PivotRun::new(model, case, start)? else {
         return Ok((solve_equilibrium(model, op, params, start, cancel)?, None));
     };
-    let mut earlier: Option<crate::bearing::report::SolveReport> = None;
-    let mut u: Option<Vec<f64>> = start.map(<[f64]>::to_vec);
-    let eq = loop {
-        pivots.install(model);
-        let mut eq = solve_equilibrium(model, op, params, u.as_deref(), cancel)?;
-        let change = pivots.update(case, &eq)?;
-        if let Some(r) = earlier.take() {
+    match step_solve(model, case, op, run, params, &NoSuspend(cancel))? {
+        Progress::Done((eq, pivots)) => Ok((eq, Some(pivots))),
+        // NoSuspend never asks for a pause.
+        Progress::Suspended(r) => Err(SolveError::Internal(InternalError::Paused {
+            what: "Hertz pivot load iteration".into(),
+            parts: r.part.iterations,
+        })),
+    }
+}
+
+/// A load iteration under way ([`step_solve`]): the springs and where the current equilibrium resumes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PivotRun {
+    /// The springs.
+    pivots: HertzPivots,
+    /// Where the current equilibrium starts or resumes (the previous load step's coordinates, or the
+    /// caller's warm start), and the pads its cold start has placed.
+    start: Option<Vec<f64>>,
+    placed_pads: usize,
+    /// Work of the load steps finished since the last pause (reported with the next part).
+    finished: Option<SolveReport>,
+    /// Work of the part that paused: the caller adds it to the final report.
+    pub part: SolveReport,
+}
+
+impl PivotRun {
+    /// A new iteration for the case's contact pads (each spring at the secant of the static load), its first
+    /// equilibrium warm-started from `start` when given; `None` when no pad has a contact.
+    ///
+    /// # Errors
+    /// As [`HertzPivots::new`].
+    pub fn new(model: &BearingModel, case: &Case, start: Option<&[f64]>) -> Result<Option<Self>, SolveError> {
+        Ok(HertzPivots::new(model, case)?.map(|pivots| Self {
+            pivots,
+            start: start.map(<[f64]>::to_vec),
+            placed_pads: 0,
+            finished: None,
+            part: SolveReport::default(),
+        }))
+    }
+
+    /// Load steps finished so far.
+    #[must_use]
+    pub fn load_steps(&self) -> usize {
+        self.pivots.iterations()
+    }
+}
+
+/// The load iteration of [`solve`], resumable: it pauses when `cancel` asks for it ([`Cancel::suspend`]),
+/// inside an equilibrium (the coupled Newton's own safe points) or between load steps, and returns the run
+/// to resume from (its [`PivotRun::part`] holds the work of the part that paused). Resumed until done it
+/// takes the same load steps, each from the same start, as the run without pauses.
+///
+/// # Errors
+/// As [`solve`].
+pub fn step_solve(
+    model: &mut BearingModel,
+    case: &Case,
+    op: &OperatingPoint,
+    mut run: PivotRun,
+    params: EquilibriumParams,
+    cancel: &dyn Cancel,
+) -> Result<Progress<(Equilibrium, HertzPivots), PivotRun>, SolveError> {
+    run.part = SolveReport::default();
+    loop {
+        run.pivots.install(model);
+        let p = EquilibriumParams { placed_pads: run.placed_pads, ..params };
+        let mut eq = match step_equilibrium(model, op, p, run.start.as_deref(), cancel)? {
+            Progress::Done(eq) => eq,
+            Progress::Suspended(r) => {
+                let mut part = r.report;
+                if let Some(f) = run.finished.take() {
+                    part.add_earlier(f);
+                }
+                run.part = part;
+                run.start = Some(r.coordinates);
+                run.placed_pads = r.placed_pads;
+                return Ok(Progress::Suspended(run));
+            }
+        };
+        let change = run.pivots.update(case, &eq)?;
+        if let Some(r) = run.finished.take() {
             eq.report.add_earlier(r);
         }
-        if change < RTOL || pivots.iterations() >= MAX_ITERATIONS {
-            break eq;
+        if change < RTOL || run.pivots.iterations() >= MAX_ITERATIONS {
+            // `eq` was solved with the previous secant stiffnesses; the states hold the loads it produced.
+            return Ok(Progress::Done((eq, run.pivots)));
         }
-        u = Some(eq.u.clone());
-        earlier = Some(eq.report);
-    };
-    // `eq` was solved with the previous secant stiffnesses; the states hold the loads it produced.
-    Ok((eq, Some(pivots)))
+        run.start = Some(eq.u.clone());
+        run.placed_pads = 0;
+        run.finished = Some(eq.report);
+        if cancel.suspend() {
+            run.part = run.finished.take().unwrap_or_default();
+            return Ok(Progress::Suspended(run));
+        }
+    }
 }

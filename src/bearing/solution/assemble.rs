@@ -15,6 +15,7 @@ use crate::bearing::equilibrium::Equilibrium;
 use crate::bearing::film::coordinates::PadDof;
 use crate::bearing::film::model::{BearingModel, OperatingPoint};
 use crate::bearing::report::warning::Warning;
+use crate::bearing::solution::churning::churning;
 use crate::bearing::solution::coefficients::{full_coefficients, reduce};
 use crate::bearing::solution::result::{
     BearingFlows, Derived, PadField, PadFlex, PadResult, PadSolidField, PadThermalGrowth, PadThermalResult, Solution,
@@ -75,6 +76,9 @@ pub fn assemble_thd_solution(model: &mut BearingModel, case: &Case, state: &ThdS
                 .map(|t| PadSolidField { radii_m: st.pad_radii_m.clone(), temperature_c: t.clone() }),
         });
     }
+    // The oil in the gap ahead of each pad is the mixed oil that pad's film takes in.
+    let law = case.lubricant.viscosity;
+    sol.churning = churning(case, state.op.speed_rad_s, |k| law.at(state.pads[k].inlet_temperature_c));
     let pad_max = state
         .pads
         .iter()
@@ -256,6 +260,7 @@ pub fn assemble_solution(
         pads,
         friction_power_w: power,
         friction_torque_nm: torque,
+        churning: churning(case, op.speed_rad_s, |_| op.viscosity),
         flows_m3_per_s: flows,
         full,
         reduced,

@@ -222,8 +222,11 @@ pub struct Solution {
     pub pads: Vec<PadResult>,
     pub h_min_m: f64,
     pub p_max_pa: f64,
+    /// Friction power of the films (every pad's shear) [W]; the housing's churning is apart ([`Self::churning`]).
     pub friction_power_w: f64,
     pub friction_torque_nm: f64,
+    /// Churning loss of a flooded housing: the gap ahead of each pad (empty: none; docs/MODEL.md §3.8).
+    pub churning: Vec<crate::physics::churning::GapLoss>,
     pub flows_m3_per_s: BearingFlows,
     pub full: FullCoefficients,
     pub reduced: ReducedCoefficients,
@@ -240,6 +243,22 @@ pub struct Solution {
 }
 
 impl Solution {
+    /// The housing's churning loss, every gap [W] (0 without churning).
+    #[must_use]
+    pub fn churning_power_w(&self) -> f64 {
+        // An empty f64 sum is −0.0; no churning reads as 0.
+        if self.churning.is_empty() {
+            return 0.0;
+        }
+        self.churning.iter().map(|g| g.power_w).sum()
+    }
+
+    /// The bearing's power loss: the films' friction and the housing's churning [W].
+    #[must_use]
+    pub fn total_power_loss_w(&self) -> f64 {
+        self.friction_power_w + self.churning_power_w()
+    }
+
     /// Angle of the load direction used for the attitude angle [rad].
     #[must_use]
     pub fn load_angle_rad(&self) -> f64 {

@@ -1,6 +1,6 @@
 //! The equilibrium stage: the isothermal static equilibrium — with the Hertz pivots' load iteration when
-//! the pads have them ([`pivots::solve`]) — and its solution with the full linearisation, resumable between
-//! frames.
+//! the pads have them ([`pivots::step_solve`]) — and its solution with the full linearisation, resumable
+//! between frames (inside an equilibrium and between the pivots' load steps).
 //!
 //! Suspension is a return value: when the caller asks to pause ([`Cancel::suspend`]) the solve returns
 //! its iterate, kept here under the inputs it works towards, and the next poll resumes from it; after
@@ -50,6 +50,8 @@ pub struct EquilibriumInputs {
     pub physics: Physics,
     /// Every tuning key (the equilibrium's and those of the stages after it, which key on these inputs).
     pub tuning: Tuning,
+    /// Scale on the flooded housing's churning loss (reported with the solution; 0 for directed feeding).
+    pub churning_factor: f64,
 }
 
 impl EquilibriumInputs {
@@ -63,7 +65,7 @@ impl EquilibriumInputs {
             operating,
             mesh: _,
             physics,
-            thermal: _,
+            thermal, // its feeding's churning factor (the rest: the thermal stage's)
             hydraulics: _,
             limits: _,
             tuning,
@@ -110,6 +112,7 @@ impl EquilibriumInputs {
             supply_flow_m3_s: supply_flow_m3_s.clone(),
             physics: *physics,
             tuning: *tuning,
+            churning_factor: thermal.feeding.churning_factor(),
         }
     }
 }
@@ -119,8 +122,16 @@ impl EquilibriumInputs {
 struct Suspensions {
     coordinates: Vec<f64>,
     placed_pads: usize,
+    /// With Hertz pivots: their load iteration under way.
+    pivots: Option<pivots::PivotRun>,
     suspensions: usize,
     report: SolveReport,
+}
+
+/// Where a paused solve resumes: an equilibrium's iterate, or the pivots' load iteration.
+enum Paused {
+    Equilibrium(Resume),
+    Pivots(Box<pivots::PivotRun>),
 }
 
 impl Suspensions {
@@ -178,23 +189,30 @@ impl Stage for EquilibriumStage {
             placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads),
             ..EquilibriumParams::of(&case)
         };
-        let attempt = match solve(model, &case, &op, start.as_deref(), params, cancel) {
+        let run = resumed.as_ref().and_then(|r| r.pivots.clone());
+        let attempt = match solve(model, &case, &op, start.as_deref(), run, params, cancel) {
             // A failed warm start retries cold before giving up.
             Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled) => {
                 self.warm.clear();
-                solve(model, &case, &op, None, EquilibriumParams::of(&case), &NoSuspend(cancel))
+                solve(model, &case, &op, None, None, EquilibriumParams::of(&case), &NoSuspend(cancel))
             }
             r => r,
         };
         let (eq, contacts) = match attempt? {
             Progress::Done(found) => found,
-            Progress::Suspended(r) => {
+            Progress::Suspended(paused) => {
                 let mut so_far = resumed.unwrap_or_default();
-                so_far.add(r.report);
-                self.suspended.put(
-                    inputs.clone(),
-                    Suspensions { coordinates: r.coordinates, placed_pads: r.placed_pads, ..so_far },
-                );
+                let next = match paused {
+                    Paused::Equilibrium(r) => {
+                        so_far.add(r.report);
+                        Suspensions { coordinates: r.coordinates, placed_pads: r.placed_pads, pivots: None, ..so_far }
+                    }
+                    Paused::Pivots(mut run) => {
+                        so_far.add(std::mem::take(&mut run.part));
+                        Suspensions { pivots: Some(*run), ..so_far }
+                    }
+                };
+                self.suspended.put(inputs.clone(), next);
                 return Ok(Progress::Suspended(0.5));
             }
         };
@@ -207,21 +225,29 @@ impl Stage for EquilibriumStage {
     }
 }
 
-/// The equilibrium of an operating point: with Hertz pivots, their load iteration run to the end (a few
-/// warm-started equilibria); otherwise resumable when `cancel` asks to pause ([`Cancel::suspend`]).
+/// The equilibrium of an operating point, resumable when `cancel` asks to pause ([`Cancel::suspend`]): with
+/// Hertz pivots their load iteration (resumed from `run` when given), otherwise the equilibrium alone.
 fn solve(
     model: &mut BearingModel,
     case: &Case,
     op: &OperatingPoint,
     start: Option<&[f64]>,
+    run: Option<pivots::PivotRun>,
     params: EquilibriumParams,
     cancel: &dyn Cancel,
-) -> Result<Progress<(Equilibrium, Option<pivots::HertzPivots>), Resume>, SolveError> {
-    if pivots::has_contacts(case) {
-        return pivots::solve(model, case, op, start, params, &NoSuspend(cancel)).map(Progress::Done);
+) -> Result<Progress<(Equilibrium, Option<pivots::HertzPivots>), Paused>, SolveError> {
+    let run = match run {
+        Some(r) => Some(r),
+        None => pivots::PivotRun::new(model, case, start)?,
+    };
+    if let Some(run) = run {
+        return Ok(match pivots::step_solve(model, case, op, run, params, cancel)? {
+            Progress::Done((eq, p)) => Progress::Done((eq, Some(p))),
+            Progress::Suspended(r) => Progress::Suspended(Paused::Pivots(Box::new(r))),
+        });
     }
     Ok(match step_equilibrium(model, op, params, start, cancel)? {
         Progress::Done(eq) => Progress::Done((eq, None)),
-        Progress::Suspended(r) => Progress::Suspended(r),
+        Progress::Suspended(r) => Progress::Suspended(Paused::Equilibrium(r)),
     })
 }

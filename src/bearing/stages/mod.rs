@@ -68,3 +68,5 @@ pub use wire::{from_bytes, to_bytes, OutputData, UnnamedOutput, WireError};
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_hertz;

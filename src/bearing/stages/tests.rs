@@ -240,7 +240,7 @@ fn pad_modes_are_computed_once_per_pad_shape_and_kept_across_operating_edits() {
 }
 
 /// Asks every solve to pause as soon as it may (the web stepper with a spent frame budget).
-struct AlwaysSuspend;
+pub(super) struct AlwaysSuspend;
 impl Cancel for AlwaysSuspend {
     fn cancelled(&self) -> bool {
         false

@@ -175,7 +175,7 @@ mod tests {
 
     #[test]
     fn flooded_and_groove_take_the_carried_hot_oil_first() {
-        let flooded = Feeding::Flooded { carry_over: 0.8 };
+        let flooded = Feeding::Flooded { carry_over: 0.8, churning_factor: 1.0 };
         assert!((carried_flow(flooded, Q_HOT, Q_IN, None) - 1.6e-4).abs() < 1e-18);
         // More hot oil than the film takes: the film is all hot oil.
         assert!((carried_flow(flooded, 1e-3, Q_IN, None) - Q_IN).abs() < 1e-18);

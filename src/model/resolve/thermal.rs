@@ -53,6 +53,14 @@ fn resolve_feeding(file: &CaseFile) -> Result<Feeding, CaseError> {
     // Ranges first: a value out of range is named as such whatever the feeding.
     let flooded = flooded_key.optional(file.thermal.carry_over)?;
     let groove = groove_key.optional(file.feeding.groove_carry_over)?;
+    let churning_key = key!("feeding.churning_factor");
+    let churning = churning_key.optional(file.feeding.churning_factor)?;
+    if churning.is_some() && kind != FeedingKind::Flooded {
+        return Err(inconsistent(
+            churning_key.key,
+            Inconsistency::OnlyWithFlooded { kind: kind_word(kind).to_string() },
+        ));
+    }
     let unused = |key: &str, used: &str| {
         inconsistent(
             key,
@@ -72,7 +80,7 @@ fn resolve_feeding(file: &CaseFile) -> Result<Feeding, CaseError> {
             }
             let carry_over = flooded_key.value(flooded)?;
             if kind == FeedingKind::Flooded {
-                Feeding::Flooded { carry_over }
+                Feeding::Flooded { carry_over, churning_factor: churning_key.value(churning)? }
             } else {
                 Feeding::SprayBar { carry_over }
             }

@@ -15,6 +15,9 @@ type Key = KeySpec;
 fn thd(f: &CaseFile) -> bool {
     f.thermal.model == Some(ThermalModelKind::Thd)
 }
+fn flooded(f: &CaseFile) -> bool {
+    matches!(f.feeding.kind, None | Some(FeedingKind::Flooded))
+}
 fn groove(f: &CaseFile) -> bool {
     thd(f) && f.feeding.kind == Some(FeedingKind::LeadingEdgeGroove)
 }
@@ -44,6 +47,12 @@ pub(super) const KEYS: &[Key] = &[
         .edit(Thermal, "Groove width", Optional(1))
         .when(groove)
         .meaning("Leading-edge groove only: the groove's angular width on the bore. It must fit in the gap between the pads (the gap ahead of each pad follows from the pads' leading edges and arcs; with n equal, evenly spaced pads 360°/n − arc); a wider groove is refused naming the gap. The mixing model does not read the width: what passes the groove is set by feeding.groove_carry_over alone. Absent: not checked."),
+    Key::number("feeding.churning_factor", ONE, Range::closed(0.0, 10.0))
+        .typical(0.0, 2.0)
+        .or(1.0)
+        .edit(Thermal, "Churning factor", Optional(2))
+        .when(flooded)
+        .meaning("Flooded housing only: scale on the churning loss, the drag of the journal over the oil-filled cavities between the pads (docs/MODEL.md §3.8: each cavity taken as a turbulent Couette layer as deep as the pad, by the law of the wall of the film's turbulence model). It is reported apart from the film's friction and added to it in the total power loss; it does not heat the films (the housing oil takes it away). 1: the model's estimate (the default); 0: no churning. Directed feeding (leading-edge groove, spray bar) drains the housing: no churning, and this key is refused."),
     Key::number("feeding.ram_pressure_coefficient", ONE, Range::closed(0.0, 1.0))
         .typical(0.0, 0.5)
         .or(0.0)

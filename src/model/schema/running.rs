@@ -133,6 +133,7 @@ pub(super) const KEYS: &[Key] = &[
     Key::per_pad("operating.pad_supply_flow_l_per_min", L_PER_MIN, Range::open_lo(0.0, 1e5))
         .typical(0.2, 100.0)
         .default(Fallback::Rule("absent: the bearing's supply flow shared equally, or flooded pads"))
+        .edit(Operating, "Supply flow per pad", Custom)
         .when(mass_conserving)
         .meaning("Oil fed to each pad's leading edge, one value per pad (or one value for every pad), instead of the bearing's operating.supply_flow_l_per_min shared equally: for feeds that differ around the bearing (a spray bar or groove per pad with its own orifice). Each pad is starved or flooded as with the bearing's supply. Needs physics.cavitation = \"jfo\"; give this or operating.supply_flow_l_per_min, not both."),
     Key::number("operating.excitation_ratio", ONE, Range::closed(0.0, 1e3))
