@@ -104,15 +104,14 @@ fn bad_supply_flows_are_refused_naming_the_key() {
     }
 }
 
-/// Active-set steps that move few nodes update the LU factorisation (low rank) instead of refactoring,
-/// and the next solve of a pad refines against its last factorisation instead of refactorising: the
-/// compressor bearing's equilibrium and coefficients need fewer factorisations (the Reynolds start's
-/// Cholesky included) than 1.4 per film solve. Measured (isothermal, standard): 83 factorisations for 66
-/// film solves; 117 with the low-rank updates alone, 168 when every step refactorised.
+/// Active-set steps that move few nodes update the LU factorisation (low rank) instead of refactoring:
+/// the compressor bearing's equilibrium and coefficients need fewer factorisations than twice its film
+/// solves. Measured (isothermal, standard): 117 factorisations for 66 film solves; 168 when every step
+/// refactorised.
 #[test]
 fn active_set_steps_reuse_the_factorisation() {
     let s = common::solve("compressor-bearing.toml", &[JFO, "thermal.model=\"isothermal\""]);
     let (f, n) = (s.report.factorizations, s.report.film_solves);
     eprintln!("{f} factorisations, {n} film solves");
-    assert!(10 * f < 14 * n, "{f} factorisations for {n} film solves");
+    assert!(f < 2 * n, "{f} factorisations for {n} film solves");
 }

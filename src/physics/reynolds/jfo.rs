@@ -37,10 +37,8 @@
 //! Every free node is either pressurised (`P`: unknown `p`, `θ = 1`) or cavitated (`C`: `p = 0`, unknown `θ`).
 //! For given sets the residual equations `r_i = 0` at the free nodes are one linear, non-symmetric system in
 //! the mixed unknowns (`p` on `P`, `θ` on `C`), solved by sparse LU (symbolic analysis once per mesh; the
-//! θ columns scaled to the pressure columns' size). A step that moves few nodes corrects the last
-//! factorisation by a low-rank update instead, and a new thickness (the next solve) refines against the
-//! last factorisation rather than refactorising while that contracts fast (`jfo_update.rs`); both solve
-//! the current matrix to round-off. Then nodes with `p < 0` move to `C` and nodes with
+//! θ columns scaled to the pressure columns' size; after the first step of a solve, a step that moves few
+//! nodes corrects the factorisation by a low-rank update instead, `jfo_update.rs`). Then nodes with `p < 0` move to `C` and nodes with
 //! `θ > 1` to `P`, until no node moves. The start is the previous solve's sets (warm) or the Reynolds
 //! (Swift–Stieber) active set, which places the ruptures nearly right; the iteration typically ends after
 //! 2–4 steps. At convergence every node satisfies the complementarity conditions and the discrete mass
@@ -107,14 +105,6 @@ pub(super) struct JfoState {
     pub(super) base_cav: Vec<bool>,
     /// Low-rank correction of the factorisation for the columns changed since (`jfo_update.rs`).
     pub(super) update: Option<crate::physics::reynolds::jfo_update::Update>,
-    /// Whether `lu` holds a factorisation.
-    pub(super) factorised: bool,
-    /// The factorisation belongs to another thickness: solves refine against `m` (`jfo_update.rs`).
-    pub(super) stale: bool,
-    /// The cavitated set `m` was filled for.
-    pub(super) m_cav: Vec<bool>,
-    /// Back-substitutions and forced refactorisations (`jfo_update.rs`).
-    pub(super) work: crate::physics::reynolds::jfo_update::Work,
     /// Scale of the θ columns [Pa]: the unknown of a cavitated node is `θ · scale`.
     pub(super) scale: f64,
     /// Inlet film fraction of the last solve.
@@ -170,10 +160,6 @@ impl JfoState {
             m_base: vec![0.0; nnz],
             base_cav: vec![false; n],
             update: None,
-            factorised: false,
-            stale: false,
-            m_cav: vec![false; n],
-            work: crate::physics::reynolds::jfo_update::Work::default(),
             scale: 1.0,
             theta_in: 1.0,
             capacity12: 0.0,
@@ -270,7 +256,6 @@ impl JfoState {
             }
         }
         let mut info = FilmSolveInfo::default();
-        let work0 = self.work;
         let mut rhs = vec![0.0; n];
         let mut known = vec![0.0; n];
         let mut next = out.cavitated.to_vec();
@@ -309,16 +294,12 @@ impl JfoState {
             out.cavitated.copy_from_slice(&next);
         }
         info.cavitated_nodes = out.cavitated.iter().filter(|&&c| c).count();
-        // Refactorisations forced by a refinement (here, or in the last linearisation: counted now).
-        info.factorizations += self.work.refactorizations;
-        info.back_substitutions = self.work.back_substitutions - work0.back_substitutions;
-        self.work.refactorizations = 0;
         Ok(info)
     }
 
-    /// One linear solve for the current sets: fills p, θ and the residual r. `first`: the first step of a
-    /// solve (new matrix values); the factorisation is updated or refined when that is cheaper
-    /// (`jfo_update.rs`). Returns whether it factorised.
+    /// One linear solve for the current sets: fills p, θ and the residual r. The first step of a solve
+    /// factorises; later steps update the factorisation when few columns changed (`jfo_update.rs`).
+    /// Returns whether it factorised.
     fn solve_sets(
         &mut self,
         inp: &JfoSolve<'_>,
@@ -362,7 +343,6 @@ impl JfoState {
     /// for cavitated ones (with the columns of the outflow nodes that copy them folded in), identity rows
     /// for the boundary nodes.
     fn fill_matrix(&mut self, cav: &[bool]) {
-        self.m_cav.copy_from_slice(cav);
         let p = &self.pattern;
         for c in 0..p.n {
             let range = p.col_ptr[c]..p.col_ptr[c + 1];

@@ -150,8 +150,6 @@ pub enum FilmError {
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct FilmSolveInfo {
     pub factorizations: usize,
-    /// Back-substitutions with a factorisation (mass-conserving option; each right-hand side counts one).
-    pub back_substitutions: usize,
     pub active_set_iterations: usize,
     pub cavitated_nodes: usize,
     /// Largest complementarity violation relative to the peak pressure (0 when converged).
