@@ -309,6 +309,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     let (pts, exponent) = growth(&texts[0].1, repeats.min(3))?;
     eprintln!("bench: thermal loop cost");
     let thermal = thermal_cost(&texts, repeats)?;
+    let (cavitation, flow_note) = super::bench_cavitation::measured(root, repeats.min(3))?;
     let machine = machine();
     let date = today();
     let mut md = String::new();
@@ -326,6 +327,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     for r in &rows {
         let _ = writeln!(md, "| {} {}", r.case, level_cells(r));
     }
+    md.push_str(&flow_note);
     let _ = writeln!(md, "\n![error vs time](performance-error-vs-time.svg)\n");
     let _ = writeln!(md, "## Targets (compressor bearing, 5 pads)\n\n| target | measured | status |\n|---|---|---|");
     for (level, limit) in [("preview", 15.0), ("standard", 100.0)] {
@@ -371,7 +373,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_batch::section(root, repeats.min(3))?);
     md.push_str(&super::bench_frf::section(root, repeats)?);
     md.push_str(&super::bench_flex::section(root, repeats.min(3))?);
-    md.push_str(&super::bench_cavitation::section(root, repeats.min(3))?);
+    md.push_str(&cavitation);
     md.push_str(&super::bench_rotor::section(root, repeats.min(3))?);
     md.push_str(&super::bench_turb::section(root, repeats.min(3))?);
     md.push_str(&super::bench_control::section(root, repeats.min(3))?);
