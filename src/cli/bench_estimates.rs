@@ -181,7 +181,10 @@ fn runs(root: &Path, dir: &Path) -> Result<Vec<Run>> {
         json: None,
     });
     let uniform = dir.join("uniform-400.toml");
-    std::fs::write(&uniform, super::rotor::uniform_rotor(400, &compressor))?;
+    // the rotor file is in a temporary directory: its bearing case by an absolute path
+    let bearing =
+        std::fs::canonicalize(&compressor).with_context(|| format!("cannot find {}", compressor.display()))?;
+    std::fs::write(&uniform, super::rotor::uniform_rotor(400, &bearing))?;
     for (command, file, speeds, shaft) in [
         ("rotor", cases.join("rotors/compressor-rotor.toml"), "1000:13000:25", None),
         ("rotor", cases.join("rotors/compressor-rotor.toml"), "1000:13000:25", Some(0)),
