@@ -30,6 +30,9 @@ struct Run {
 /// What a run did.
 struct Measured {
     seconds: f64,
+    /// CPU time of the child process (user and system) [s]; `None` where `/proc` does not tell.
+    cpu_seconds: Option<f64>,
+    eigen_solutions: Option<u64>,
     bearing_solves: Option<u64>,
     film_solves: Option<u64>,
 }
@@ -50,9 +53,22 @@ fn find_count(v: &serde_json::Value, key: &str) -> Option<u64> {
     }
 }
 
+/// CPU time (user and system) of the children this process has waited for [s], from `/proc/self/stat`
+/// (fields `cutime` and `cstime`, in clock ticks of 1/100 s, Linux's `USER_HZ`).
+fn children_cpu_seconds() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // the fields after the command name (which may hold spaces) closed by the last ')'
+    let rest = &stat[stat.rfind(')')? + 1..];
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    // fields 16 and 17 of the whole line are the 14th and 15th after the name
+    let (u, s): (f64, f64) = (f.get(13)?.parse().ok()?, f.get(14)?.parse().ok()?);
+    Some((u + s) / 100.0)
+}
+
 fn measure(run: &Run, out: &Path) -> Result<Measured> {
     let exe = std::env::current_exe().context("cannot find this program to run the commands")?;
     let args: Vec<String> = run.args.iter().map(|a| a.replace("{OUT}", &out.display().to_string())).collect();
+    let cpu_before = children_cpu_seconds();
     let t = web_time::Instant::now();
     let status = std::process::Command::new(exe)
         .args(&args)
@@ -60,6 +76,7 @@ fn measure(run: &Run, out: &Path) -> Result<Measured> {
         .stderr(std::process::Stdio::null())
         .status()?;
     let seconds = t.elapsed().as_secs_f64();
+    let cpu_seconds = children_cpu_seconds().zip(cpu_before).map(|(a, b)| a - b);
     if !status.success() {
         bail!("bench estimates: `tiltpad {}` failed ({status})", args.join(" "));
     }
@@ -80,11 +97,13 @@ fn measure(run: &Run, out: &Path) -> Result<Measured> {
             .or_else(|| j.get("report").and_then(|r| r.get("film_solves")).and_then(serde_json::Value::as_u64))
     });
     let bearing_solves = json.as_ref().and_then(|j| find_count(j, "bearing_solves"));
-    Ok(Measured { seconds, bearing_solves, film_solves })
+    let eigen_solutions = json.as_ref().and_then(|j| find_count(j, "eigen_solutions"));
+    Ok(Measured { seconds, cpu_seconds, eigen_solutions, bearing_solves, film_solves })
 }
 
-/// The runs: `solve` on every shipped case as shipped, and each multi-point command on its shipped case.
-fn runs(root: &Path) -> Result<Vec<Run>> {
+/// The runs: `solve` on every shipped case as shipped, and each multi-point command on its shipped case
+/// (`dir`: where generated inputs go).
+fn runs(root: &Path, dir: &Path) -> Result<Vec<Run>> {
     let cases = root.join("cases");
     let mut out = Vec::new();
     for n in &super::convergence_map::shipped_names(root)? {
@@ -158,34 +177,60 @@ fn runs(root: &Path) -> Result<Vec<Run>> {
         command: "modes",
         label: "`compressor-bearing-flexible.toml`".into(),
         args: vec!["modes".into(), flexible.display().to_string(), "--csv".into(), "{OUT}/m.csv".into()],
-        estimate: Estimate::points("modes", 1, point_cost(&case_of(&flexible)?)),
+        estimate: Estimate::pad_modes(&case_of(&flexible)?, 3, &[]),
         json: None,
     });
-    for (command, file, speeds) in [
-        ("rotor", "compressor-rotor.toml", "1000:13000:25"),
-        ("control", "compressor-rotor-active.toml", "6000:12000:13"),
+    let uniform = dir.join("uniform-400.toml");
+    // the rotor file is in a temporary directory: its bearing case by an absolute path
+    let bearing =
+        std::fs::canonicalize(&compressor).with_context(|| format!("cannot find {}", compressor.display()))?;
+    std::fs::write(&uniform, super::rotor::uniform_rotor(400, &bearing))?;
+    for (command, file, speeds, shaft) in [
+        ("rotor", cases.join("rotors/compressor-rotor.toml"), "1000:13000:25", None),
+        ("rotor", cases.join("rotors/compressor-rotor.toml"), "1000:13000:25", Some(0)),
+        ("rotor", uniform, "3000:4000:2", None),
+        ("control", cases.join("rotors/compressor-rotor-active.toml"), "6000:12000:13", None),
     ] {
-        let path = cases.join("rotors").join(file);
-        let rotor = super::rotor::read_rotor(&path)?;
+        let path = file;
+        let mut rotor = super::rotor::read_rotor(&path)?;
+        let mut extra = Vec::new();
+        if let Some(m) = shaft {
+            rotor.shaft_modes = m;
+            extra = vec!["--shaft-modes".to_string(), m.to_string()];
+        }
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let file = if path.starts_with(&cases) { format!("rotors/{name}") } else { format!("{name} (generated)") };
         let n = super::rotor::parse_speeds(speeds, usize::MAX)?.len();
         // as the commands estimate: the onset bisections' probes on top of the speeds (control: open and closed)
         let probes = if command == "rotor" { super::rotor::ONSET_PROBES } else { 2 * super::rotor::ONSET_PROBES };
+        let full = if rotor.shaft_modes == 0 { ", full shaft" } else { "" };
+        let mut args =
+            vec![command.into(), path.display().to_string(), "--speeds".into(), speeds.into(), "--json".into()];
+        args.push("{OUT}/r.json".into());
+        args.extend(extra);
         out.push(Run {
             command,
-            label: format!("`rotors/{file}`, {n} speeds"),
-            args: vec![
-                command.into(),
-                path.display().to_string(),
-                "--speeds".into(),
-                speeds.into(),
-                "--json".into(),
-                "{OUT}/r.json".into(),
-            ],
+            label: format!("`{file}`, {} elements{full}, {n} speeds", rotor.elements.len()),
+            args,
             estimate: Estimate::rotor(command, &rotor, n, probes),
             json: Some("{OUT}/r.json".into()),
         });
     }
     Ok(out)
+}
+
+/// The estimate of the work a run made: for a rotor, the same cost model with the bearing solves and
+/// eigen-solutions it reports (bisections stop early, bearings sharing a case share a solve); otherwise the
+/// estimate itself.
+fn made_estimate(e: &Estimate, m: &Measured) -> f64 {
+    let (Some(eigen), Some(solves), Some(solutions)) = (e.eigen, m.bearing_solves, m.eigen_solutions) else {
+        return e.seconds;
+    };
+    #[allow(clippy::cast_precision_loss)]
+    let per_solve = if e.solves == 0 { 0.0 } else { (e.seconds - eigen.seconds()) / e.solves as f64 };
+    #[allow(clippy::cast_precision_loss)]
+    let made = solves as f64 * per_solve + solutions as f64 * eigen.seconds_each + eigen.shaft_seconds;
+    made
 }
 
 /// Milliseconds below a second, else [`duration_text`].
@@ -215,25 +260,36 @@ pub fn section(root: &Path) -> Result<String> {
     let load_before = load_average();
     let mut table = String::new();
     let mut ratios = Vec::new();
-    for run in runs(root)? {
+    for run in runs(root, &dir)? {
         eprintln!("bench: estimates: {} {}", run.command, run.label);
         let m = measure(&run, &dir)?;
-        let ratio = m.seconds / run.estimate.seconds;
+        let made = made_estimate(&run.estimate, &m);
+        let ratio = m.cpu_seconds.unwrap_or(m.seconds) / made;
         ratios.push(ratio);
-        let made = match (run.command, m.bearing_solves) {
+        let made_solves = match (run.command, m.bearing_solves) {
             (_, Some(n)) => n.to_string(),
-            ("solve" | "frf" | "modes", None) => "1".into(),
+            ("solve" | "frf", None) => "1".into(),
+            ("modes", None) => "0".into(),
             _ => format!("{} (one per point)", run.estimate.solves),
+        };
+        let eigen = match (&run.estimate.eigen, m.eigen_solutions) {
+            (Some(e), Some(n)) => format!("{} of {} states / {n}", e.solutions, e.states),
+            _ => "—".into(),
+        };
+        let estimated = if (made - run.estimate.seconds).abs() > 1e-9 * made {
+            format!("{} ({} for the work made)", short_duration(run.estimate.seconds), short_duration(made))
+        } else {
+            short_duration(run.estimate.seconds)
         };
         let _ = writeln!(
             table,
-            "| `{}` | {} | {} | {made} | {} | {} | {} | {ratio:.2} |",
+            "| `{}` | {} | {} / {made_solves} | {eigen} | {} | {estimated} | {} | {} | {ratio:.2} |",
             run.command,
             run.label,
             run.estimate.solves,
             m.film_solves.map_or("—".into(), |n| n.to_string()),
-            short_duration(run.estimate.seconds),
             short_duration(m.seconds),
+            m.cpu_seconds.map_or("—".into(), short_duration),
         );
     }
     let _ = std::fs::remove_dir_all(&dir);
@@ -244,15 +300,21 @@ pub fn section(root: &Path) -> Result<String> {
     let mut md = format!(
         "\n{HEADING} (`bench --only estimates`)\n\nEvery command estimates its work from its inputs before the first \
          solve (bearing solves, and seconds at the reference rate of the cost-growth table: `src/study/estimate.rs`) \
-         and refuses what is over `--max-hours` or 8 GB. Here each command runs as a user runs it, on the shipped \
-         cases, and its wall time (reading, solving, writing) is set against the estimate. *Solves made*: the \
-         bearing solves the command reports (rotor, control: the sweep, the onset bisections, the critical \
-         speeds; the estimate counts every bearing at every speed and the most probes a bisection may take, \
-         an upper bound: bearings that share a case share a solve); *film solves*: those of the equilibrium (and of every outer thermal iteration). Measured / \
-         estimated: median {median:.2}, from {lo:.2} to {hi:.2}; load average {load_before} before and \
-         {load_after} after the run (a machine with other work runs slower than the reference rate by about \
-         its load).\n\n| command | input | estimated solves | solves made | film solves | estimated time | \
-         measured time | measured / estimated |\n|---|---|---|---|---|---|---|---|\n"
+         and refuses what is over `--max-hours` or 8 GB; a rotor's estimate adds its dense eigen-solutions \
+         (the cube of the state size, once per speed and bisection probe) and a flexible pad's its modal \
+         solution. Here each command runs as a user runs it, on the shipped cases (and one generated \
+         400-element full shaft, the largest the rotor file allows), and its CPU time (user and system, \
+         reading, solving, writing: what a quiet machine's wall time would be, the solver being \
+         single-threaded below 2500 film nodes per pad) is set against the estimate. *Bearing solves*: \
+         estimated / made (rotor, control: the estimate counts every bearing at every speed and the most \
+         probes a bisection may take, an upper bound: bearings that share a case share a solve); \
+         *eigen-solutions*: estimated (states) / made; *film solves*: those of the equilibrium (and of every \
+         outer thermal iteration). For a rotor the ratio is taken against the estimate of the work it made \
+         (the same cost model with the solves and eigen-solutions it reports). CPU / estimated: median \
+         {median:.2}, from {lo:.2} to {hi:.2}; load average {load_before} before and {load_after} after the run \
+         (wall times run high by about the load; CPU times far less).\n\n| command | input | bearing solves | \
+         eigen-solutions | film solves | estimated time | wall time | CPU time | CPU / estimated |\n\
+         |---|---|---|---|---|---|---|---|---|\n"
     );
     md.push_str(&table);
     Ok(md)

@@ -151,16 +151,8 @@ pub enum Command {
     Rotor {
         /// Rotor file (TOML; bearing cases relative to it).
         rotor: PathBuf,
-        /// Spin speeds, rpm: `FROM:TO:N` (N at most --max-points).
-        #[arg(long, value_name = "FROM:TO:N")]
-        speeds: String,
-        /// Most speeds (refused before the first solve beyond it).
-        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
-        max_points: usize,
-        /// Most estimated hours of work (speeds × bearing solves by the work model; refused before the first
-        /// solve beyond it).
-        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
-        max_hours: f64,
+        #[command(flatten)]
+        range: SpeedRange,
         /// Override the rotor's bearing coefficients: `full` or `reduced`.
         #[arg(long, value_parser = ["full", "reduced"])]
         coefficients: Option<String>,
@@ -185,16 +177,8 @@ pub enum Command {
     Control {
         /// Rotor file (TOML) with a `[control]` section.
         rotor: PathBuf,
-        /// Spin speeds, rpm: `FROM:TO:N` (N at most --max-points).
-        #[arg(long, value_name = "FROM:TO:N")]
-        speeds: String,
-        /// Most speeds (refused before the first solve beyond it).
-        #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
-        max_points: usize,
-        /// Most estimated hours of work (speeds × bearing solves by the work model; refused before the first
-        /// solve beyond it).
-        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
-        max_hours: f64,
+        #[command(flatten)]
+        range: SpeedRange,
         /// Override `control.gain` (0 opens the loop, −1 flips its sign).
         #[arg(long, allow_hyphen_values = true)]
         gain: Option<f64>,
@@ -294,7 +278,8 @@ pub enum Command {
         #[arg(long)]
         update_doc: bool,
         /// Only the bearings whose name contains this text (a case file name such as `fillon-a`, or a family
-        /// group such as `3 pads,`); not with --update-doc.
+        /// group such as `3 pads,`); with --update-doc (shipped cases only) their rows of the table are
+        /// replaced and the **all** row's counts moved by the difference.
         #[arg(long, value_name = "TEXT")]
         only: Option<String>,
         /// Only these points of the grid, `DIRECTION_DEG@S,…` (e.g. `65@0.1,200@0.1`); not with --update-doc.
@@ -323,4 +308,20 @@ fn parse_amplitude(s: &str) -> std::result::Result<f64, String> {
         return Err(format!("{v} V: the control amplitude must be a finite positive voltage"));
     }
     Ok(v)
+}
+
+/// The speeds of a rotor or control run and the bounds on them (refused before the first solve beyond
+/// either).
+#[derive(clap::Args, Debug)]
+pub struct SpeedRange {
+    /// Spin speeds, rpm: `FROM:TO:N` (N at most --max-points).
+    #[arg(long, value_name = "FROM:TO:N")]
+    pub speeds: String,
+    /// Most speeds (refused before the first solve beyond it).
+    #[arg(long, value_name = "N", default_value_t = inputs::DEFAULT_MAX_POINTS)]
+    pub max_points: usize,
+    /// Most estimated hours of work (speeds × bearing solves and eigen-solutions by the work model; refused
+    /// before the first solve beyond it).
+    #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
+    pub max_hours: f64,
 }

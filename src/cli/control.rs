@@ -121,11 +121,14 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     // the speed being solved and writes the speeds done.
     let of = params.speeds_rad_s.len();
     let mut pb = super::sweep::progress(of);
+    let step = super::rotor::StepText::new(&estimate, &params.speeds_rad_s);
     pb.set_message("shaft and controller");
+    super::interrupt::doing(step.shaft());
     let mut analysis = ControlAnalysis::new(&rotor, &control, params).with_context(context)?;
     pb.set_message("speeds");
     let mut done = 0;
     while !super::interrupt::requested() {
+        super::interrupt::doing(step.speed(done));
         let finished = analysis.step().with_context(context)?;
         done = (done + 1).min(of);
         pb.set_position(done as u64);
@@ -139,7 +142,9 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     }
     // Ctrl-C during the onset bisections stops them (each onset left is the middle of its bracket, with a
     // warning); the speeds solved are written as after an interruption of the sweep.
+    super::interrupt::doing(step.onset());
     let mut result = analysis.finish_until(&super::interrupt::Interrupt).with_context(context)?;
+    super::interrupt::doing("");
     pb.finish_and_clear();
     let done = result.speeds.len();
     if done == 0 {

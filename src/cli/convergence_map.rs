@@ -156,6 +156,83 @@ fn table(shipped: &[MapBearing], family: &[MapBearing], points: &[MapPoint], spe
     out
 }
 
+/// The table `old` (the section between the markers) with the rows of the `rerun` bearings replaced by
+/// their new points: their failure lines too, and the **all** row's counts moved by the difference (its
+/// slowest point is the slowest row's; its median film solves cannot be recomputed from the rows and stays
+/// the last full run's, which a note under the table says).
+///
+/// # Errors
+/// A row of `rerun` or the **all** row missing from `old`, or a cell that is not a number.
+fn replace_rows(old: &str, rerun: &[MapBearing], points: &[MapPoint], spec: &MapSpec) -> Result<String> {
+    let cells = |line: &str| -> Vec<String> {
+        line.trim().trim_matches('|').split('|').map(|c| c.trim().to_string()).collect()
+    };
+    let mut lines: Vec<String> = old.lines().map(str::to_string).collect();
+    let mut moved = [0_i64; 7];
+    let mut names = Vec::new();
+    for b in rerun {
+        let label = format!("`cases/{}.toml`", b.name);
+        let Some(i) = lines.iter().position(|l| l.starts_with(&format!("| {label} |"))) else {
+            bail!("the map's table has no row {label}: run the whole map (--update-doc without --only)");
+        };
+        let p: Vec<MapPoint> = points.iter().filter(|p| p.bearing == b.name).cloned().collect();
+        let mut new = String::new();
+        row(&mut new, &label, 1, &p, spec);
+        let (was, now) = (cells(&lines[i]), cells(&new));
+        for (k, m) in moved.iter_mut().enumerate() {
+            let n =
+                |c: &[String]| c[2 + k].parse::<i64>().with_context(|| format!("cell {:?} of row {label}", c[2 + k]));
+            *m += n(&now)? - n(&was)?;
+        }
+        lines[i] = new.trim_end().to_string();
+        names.push(b.name.clone());
+    }
+    let Some(all) = lines.iter().position(|l| l.starts_with("| **all** |")) else {
+        bail!("the map's table has no **all** row: run the whole map (--update-doc without --only)");
+    };
+    let mut c = cells(&lines[all]);
+    for (k, m) in moved.iter().enumerate() {
+        let v: i64 = c[2 + k].parse().with_context(|| format!("cell {:?} of the **all** row", c[2 + k]))?;
+        c[2 + k] = (v + m).to_string();
+    }
+    let slowest = lines[..all]
+        .iter()
+        .filter(|l| l.starts_with("| `cases/") || l.starts_with("| generated"))
+        .filter_map(|l| cells(l).last().and_then(|v| v.trim_end_matches(" s").parse::<f64>().ok()))
+        .fold(0.0, f64::max);
+    c[10] = format!("{slowest:.2} s");
+    lines[all] = format!("| {} |", c.join(" | "));
+    // the failure lines: those of the rerun bearings replaced by the new ones
+    let is_rerun = |l: &str| names.iter().any(|n| l.starts_with(&format!("- {n} at ")));
+    lines.retain(|l| !is_rerun(l) && !l.starts_with("Rows re-run alone") && l != "Failures:");
+    while lines.last().is_some_and(|l| l.trim().is_empty()) {
+        lines.pop();
+    }
+    let mut failures: Vec<String> = lines.iter().filter(|l| l.starts_with("- ")).cloned().collect();
+    lines.retain(|l| !l.starts_with("- "));
+    while lines.last().is_some_and(|l| l.trim().is_empty()) {
+        lines.pop();
+    }
+    for f in points.iter().filter(|p| p.class == Class::Failure && names.contains(&p.bearing)) {
+        failures.push(format!("- {} at {}°, S = {}: {}", f.bearing, f.direction_deg, f.sommerfeld, f.detail));
+    }
+    let mut out = lines.join("\n");
+    out.push('\n');
+    let _ = writeln!(
+        out,
+        "\nRows re-run alone (`convergence-map --only … --update-doc`): {}; the **all** row's counts and slowest point \
+         include them, its median film solves is the last full run's.",
+        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", ")
+    );
+    if !failures.is_empty() {
+        out.push_str("\nFailures:\n\n");
+        for f in failures.iter().take(40) {
+            let _ = writeln!(out, "{f}");
+        }
+    }
+    Ok(out)
+}
+
 fn csv(points: &[MapPoint]) -> String {
     let mut s = String::from("bearing,direction_deg,sommerfeld,load_n,class,film_solves,seconds,detail\n");
     for p in points {
@@ -229,8 +306,11 @@ pub fn parse_points(text: &str, spec: &MapSpec) -> Result<Vec<Point>> {
 /// # Errors
 /// I/O, invalid cases, a missing marker in docs/VALIDATION.md, `--update-doc` with a partial selection.
 pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: bool) -> Result<()> {
-    if update_doc && (sel.only.is_some() || !sel.points.is_empty()) {
-        bail!("--update-doc writes the whole map's table: run it without --only and --only-points");
+    if update_doc && (!sel.points.is_empty() || sel.quick || sel.step_deg != MapSpec::full().direction_step_deg) {
+        bail!(
+            "--update-doc writes whole rows of the map's table: run it on the full grid (without --only-points, \
+             --quick, --step-deg)"
+        );
     }
     let spec = MapSpec { direction_step_deg: if sel.quick { 30.0 } else { sel.step_deg }, ..MapSpec::full() };
     let keep = |b: &MapBearing| sel.only.as_deref().is_none_or(|t| b.name.contains(t));
@@ -239,6 +319,9 @@ pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: boo
         generated_family().into_iter().filter(|b| !sel.quick || b.name.starts_with("4 pads,")).filter(keep).collect();
     if shipped.is_empty() && family.is_empty() {
         bail!("--only {:?}: no shipped case or family member has that in its name", sel.only.as_deref().unwrap_or(""));
+    }
+    if update_doc && sel.only.is_some() && !family.is_empty() {
+        bail!("--update-doc with --only replaces the rows of shipped cases: {:?} selects family members", sel.only);
     }
     let all: Vec<MapBearing> = shipped.iter().chain(&family).cloned().collect();
     let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(2);
@@ -254,9 +337,72 @@ pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: boo
         let (Some(a), Some(b)) = (doc.find(BEGIN), doc.find(END)) else {
             bail!("{} has no convergence-map markers", path.display())
         };
+        let text = if sel.only.is_some() {
+            let old = &doc[a + BEGIN.len()..b];
+            replace_rows(old.trim_start_matches('\n'), &shipped, &points, &spec)?
+        } else {
+            text
+        };
         let new = format!("{}{BEGIN}\n{text}{}", &doc[..a], &doc[b..]);
         write_atomic(&path, new.as_bytes())?;
         eprintln!("updated {}", path.display());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const OLD: &str =
+        "Intro.\n\n| bearings | count | points | converged | touchdown | no stiffness | force gap | failure | \
+beside converged | median film solves | slowest point |\n|---|---|---|---|---|---|---|---|---|---|---|\n\
+| `cases/a.toml` | 1 | 4 | 3 | 1 | 0 | 0 | 0 | 0 | 10 | 122.09 s |\n\
+| `cases/b.toml` | 1 | 4 | 4 | 0 | 0 | 0 | 0 | 0 | 20 | 1.50 s |\n\
+| generated, 2 pads | 24 | 96 | 90 | 6 | 0 | 0 | 0 | 0 | 30 | 0.95 s |\n\
+| **all** | 26 | 104 | 97 | 7 | 0 | 0 | 0 | 0 | 25 | 122.09 s |\n\nFailures:\n\n- b at 5°, S = 1: old\n";
+
+    fn point(direction_deg: f64, class: Class, film_solves: usize, seconds: f64) -> MapPoint {
+        MapPoint {
+            bearing: "a".into(),
+            direction_deg,
+            sommerfeld: 0.1,
+            load_n: 1.0,
+            class,
+            detail: "spent its budget".into(),
+            film_solves,
+            seconds,
+        }
+    }
+
+    #[test]
+    fn one_rerun_row_replaces_its_row_and_moves_the_all_row_by_the_difference() {
+        let spec = MapSpec { direction_step_deg: 90.0, sommerfeld: vec![0.1] };
+        let a = MapBearing { name: "a".into(), text: String::new(), set: Vec::new() };
+        let points = vec![
+            point(0.0, Class::Converged, 12, 0.5),
+            point(90.0, Class::Converged, 14, 2.5),
+            point(180.0, Class::Failure, 0, 9.0),
+            point(270.0, Class::Converged, 16, 0.7),
+        ];
+        let new = replace_rows(OLD, &[a], &points, &spec).unwrap();
+        let lines: Vec<&str> = new.lines().collect();
+        // the row: 3 converged, 0 touchdown, 1 failure (beside converged), median 14, slowest 9.00 s
+        assert!(lines.contains(&"| `cases/a.toml` | 1 | 4 | 3 | 0 | 0 | 0 | 1 | 1 | 14 | 9.00 s |"), "{new}");
+        // the **all** row: touchdown −1, failure +1, beside +1; slowest now the largest row's (9.00 s)
+        assert!(lines.contains(&"| **all** | 26 | 104 | 97 | 6 | 0 | 0 | 1 | 1 | 25 | 9.00 s |"), "{new}");
+        assert!(lines.contains(&"| `cases/b.toml` | 1 | 4 | 4 | 0 | 0 | 0 | 0 | 0 | 20 | 1.50 s |"), "{new}");
+        // the other bearing's failure line is kept, the new one added, the note says which rows were re-run
+        assert!(new.contains("- b at 5°, S = 1: old") && new.contains("- a at 180°, S = 0.1: spent its budget"));
+        assert!(new.contains("Rows re-run alone") && new.contains("`a`"), "{new}");
+        // a second rerun does not repeat the note or the failure header
+        let again = replace_rows(
+            &new,
+            &[MapBearing { name: "a".into(), text: String::new(), set: Vec::new() }],
+            &points,
+            &spec,
+        )
+        .unwrap();
+        assert_eq!(again, new);
+    }
 }

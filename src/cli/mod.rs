@@ -171,16 +171,16 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
-        Command::Rotor { rotor, speeds, max_points, max_hours, coefficients, shaft_modes, critical_map, json, csv } => {
+        Command::Rotor { rotor, range, coefficients, shaft_modes, critical_map, json, csv } => {
             inputs::check_outputs(
                 &[("rotor file", &rotor)],
                 &[("--json", json.as_deref()), ("--csv", csv.as_deref())],
             )?;
             let args = rotor::RotorArgs {
                 rotor: &rotor,
-                speeds: &speeds,
-                max_points,
-                max_hours,
+                speeds: &range.speeds,
+                max_points: range.max_points,
+                max_hours: range.max_hours,
                 coefficients: coefficients.map(|c| {
                     if c == "full" {
                         crate::model::rotor::CoefficientModel::Full
@@ -200,9 +200,7 @@ pub fn run(command: Command) -> Result<()> {
         }
         Command::Control {
             rotor,
-            speeds,
-            max_points,
-            max_hours,
+            range,
             gain,
             gain_sweep,
             root_locus,
@@ -223,9 +221,9 @@ pub fn run(command: Command) -> Result<()> {
             )?;
             control::run(&control::ControlArgs {
                 rotor: &rotor,
-                speeds: &speeds,
-                max_points,
-                max_hours,
+                speeds: &range.speeds,
+                max_points: range.max_points,
+                max_hours: range.max_hours,
                 gain,
                 gain_sweep: gain_sweep.as_deref(),
                 root_locus_rpm: root_locus,

@@ -152,9 +152,14 @@ fn csv(rows: &[ModeRow], table: &[ModeTableRow]) -> String {
 /// Invalid case, elastic-model failure, or an output that cannot be written.
 pub fn run(args: &ModeArgs<'_>) -> Result<()> {
     let (_, case) = read_case(args.case, args.set)?;
-    let cost = crate::study::estimate::point_cost(&case);
-    super::inputs::check_work(&crate::study::estimate::Estimate::points("modes", 1, cost), f64::INFINITY)?;
     let count = args.count;
+    let table_unknowns: Vec<usize> = if args.table {
+        TABLE_MESHES.iter().map(|&(nc, nz, layers)| 3 * (nc + 1) * (nz + 1) * (layers + 1)).collect()
+    } else {
+        Vec::new()
+    };
+    let estimate = crate::study::estimate::Estimate::pad_modes(&case, count, &table_unknowns);
+    super::inputs::check_work(&estimate, f64::INFINITY)?;
     let rows = pad_mode_rows(&case, count).with_context(|| format!("pad modes of {}", args.case.display()))?;
     let first = case.bearing.pads.iter().position(|p| p.kind == crate::model::PadKind::Tilting && p.thickness_m > 0.0);
     let table = match (args.table, first) {

@@ -26,6 +26,8 @@ impl Progress {
                 ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed_precise} eta {eta} {msg}")
                     .unwrap_or_else(|_| ProgressStyle::default_bar()),
             );
+            // the elapsed time keeps moving through a long point (a large rotor's eigen-solution)
+            pb.enable_steady_tick(std::time::Duration::from_millis(500));
             pb
         });
         super::interrupt::bar_shown(bar.is_some());

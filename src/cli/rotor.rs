@@ -65,6 +65,32 @@ pub fn parse_speeds(spec: &str, max_points: usize) -> Result<Vec<f64>> {
     Ok((0..n).map(|i| RPM.to_si(a + (b - a) * i as f64 / (n - 1) as f64)).collect())
 }
 
+/// A rotor file: a uniform shaft of `elements` elements (four equal sections, `elements` a multiple of 4 up
+/// to the file's 400) with one impeller and its unbalance at mid-span, on two bearings given by the case
+/// `bearing` (an absolute path), analysed on the full shaft (`shaft_modes = 0`): the eigen-solutions are
+/// most of its work (the bench of the estimates and the tests of its progress use it).
+pub fn uniform_rotor(elements: usize, bearing: &Path) -> String {
+    let section = elements / 4;
+    let mut t = format!(
+        "title = \"Uniform shaft, {elements} elements, full shaft (generated)\"\n\n[rotor]\nshaft_modes = 0\n\
+         coefficients = \"full\"\n"
+    );
+    for _ in 0..4 {
+        t.push_str(&format!(
+            "\n[[rotor.section]]\nlength_mm = 300.0\nouter_diameter_mm = 101.6\nelements = {section}\n"
+        ));
+    }
+    let (a, mid, b) = (elements / 20, elements / 2, elements - elements / 20);
+    t.push_str(&format!(
+        "\n[[rotor.disk]]\nnode = {mid}\nmass_kg = 46.0\npolar_inertia_kg_m2 = 0.92\ntransverse_inertia_kg_m2 = 0.47\n\
+         \n[[rotor.unbalance]]\nnode = {mid}\namount_g_mm = 720.0\n"
+    ));
+    for node in [a, b] {
+        t.push_str(&format!("\n[[rotor.bearing]]\nnode = {node}\ncase = {:?}\n", bearing.display().to_string()));
+    }
+    t
+}
+
 /// Arguments of `tiltpad rotor`.
 pub struct RotorArgs<'a> {
     pub rotor: &'a Path,
@@ -93,14 +119,24 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
         rotor.shaft_modes = m;
     }
     let speeds = parse_speeds(args.speeds, args.max_points)?;
-    super::inputs::check_work(&Estimate::rotor("rotor", &rotor, speeds.len(), ONSET_PROBES), args.max_hours)?;
+    let estimate = Estimate::rotor("rotor", &rotor, speeds.len(), ONSET_PROBES);
+    super::inputs::check_work(&estimate, args.max_hours)?;
     let context = || format!("analysing {}", args.rotor.display());
-    // One bearing solve and one eigen-solution per speed: a bar on standard error shows them go by.
+    // One bearing solve and one eigen-solution per speed: a bar on standard error shows them go by, and the
+    // heartbeat names the speed being solved when one takes long (a large full shaft).
     let mut pb = super::sweep::progress(speeds.len());
+    let step = StepText::new(&estimate, &speeds);
     pb.set_message("shaft model");
+    super::interrupt::doing(step.shaft());
     let mut analysis = Analysis::new(&rotor, AnalysisParams::new(speeds)).with_context(context)?;
     let of = analysis.speeds_to_do();
-    while let Step::More { done, .. } = analysis.step().with_context(context)? {
+    let mut next = 0;
+    loop {
+        let text = step.speed(next);
+        pb.set_message(text.clone());
+        super::interrupt::doing(text);
+        let Step::More { done, .. } = analysis.step().with_context(context)? else { break };
+        next = done;
         pb.set_position(done as u64);
         if super::interrupt::requested() {
             analysis.stop();
@@ -108,7 +144,9 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
         }
     }
     pb.set_message("onset and critical speeds");
+    super::interrupt::doing(step.onset());
     let result = analysis.finish().with_context(context)?;
+    super::interrupt::doing("");
     pb.finish_and_clear();
     let done = result.speeds.len();
     if done == 0 {
@@ -116,6 +154,47 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     }
     emit(args, &summary(&rotor, &result), &result, || csv_text(&result))?;
     stopped(done, of, args)
+}
+
+/// What a rotor run is doing, for its bar and its heartbeat: the speed and its work by the estimate.
+pub(super) struct StepText {
+    speeds_rpm: Vec<f64>,
+    eigen: Option<crate::study::estimate::EigenWork>,
+}
+
+impl StepText {
+    pub(super) fn new(estimate: &Estimate, speeds_rad_s: &[f64]) -> Self {
+        Self { speeds_rpm: speeds_rad_s.iter().map(|&w| RPM.from_si(w)).collect(), eigen: estimate.eigen }
+    }
+
+    fn eigen_text(&self) -> String {
+        self.eigen.map_or(String::new(), |e| {
+            format!(
+                " and an eigen-solution of {} states (about {} at the reference rate)",
+                e.states,
+                crate::study::estimate::duration_text(e.seconds_each)
+            )
+        })
+    }
+
+    /// Building the shaft model.
+    pub(super) fn shaft(&self) -> String {
+        let t = self.eigen.map_or(String::new(), |e| {
+            format!(" (about {} at the reference rate)", crate::study::estimate::duration_text(e.shaft_seconds))
+        });
+        format!("shaft model{t}")
+    }
+
+    /// Speed `i` (from 0).
+    pub(super) fn speed(&self, i: usize) -> String {
+        let rpm = self.speeds_rpm.get(i).copied().unwrap_or(f64::NAN);
+        format!("speed {} of {} ({rpm:.0} rpm): bearing solves{}", i + 1, self.speeds_rpm.len(), self.eigen_text())
+    }
+
+    /// The onset bisection and the critical speeds.
+    pub(super) fn onset(&self) -> String {
+        format!("onset bisection: up to {ONSET_PROBES} more speeds, each with bearing solves{}", self.eigen_text())
+    }
 }
 
 /// The interruption, after the outputs of the speeds done were written (`Ok` when every speed was done).

@@ -17,15 +17,42 @@
 //! reference fidelity and 29 % low for THD at reference fidelity (the pad solids' share grows with the
 //! mesh): good enough to refuse hours of work up front, not a prediction to plan by.
 //!
-//! Memory of a point: about 2 kB per mesh node (film and pad solid; docs/PERFORMANCE.md and
-//! [`crate::model::budget`]). The rotor's shaft model holds dense matrices of its `n = 4 (elements + 1)`
+//! Memory of a point: at most 2.3 kB per mesh node (film and pad solid; measured peaks in [`BYTES_PER_NODE`],
+//! docs/PERFORMANCE.md and [`crate::model::budget`]). The rotor's shaft model holds dense matrices of its `n = 4 (elements + 1)`
 //! coordinates and the eigen-solution dense complex matrices of the `2n` states: `224 n²` bytes.
+//!
+//! ## Flexible pads
+//! With `physics.pad_modes = m > 0` a solve first builds each distinct pad solid (identical pads share one;
+//! `u = 3 n_film (layers + 1)` unknowns) and its lowest modes by subspace iteration, then carries `m` more
+//! coordinates per pad through the equilibrium:
+//! ```text
+//! t = t_rigid · (1 + m) + Σ_distinct pads  t_modes,   t_modes = 0.29 s · (u / 14 820)^1.4 · (m + 1.5) / 4.5
+//! ```
+//! measured on the compressor's flexible pads at standard fidelity (CPU time, release build): 4940 solid nodes
+//! per pad (14 820 unknowns as counted here; 14 337 after the supports) take 0.17 s for one mode and 0.29 s
+//! for three, and the 8-layer table mesh (96 897 unknowns) 15 times as long. `tiltpad modes` is the modal
+//! term alone (and its `--table` the table's seven meshes).
+//!
+//! ## The rotor's eigen-solutions
+//! At each speed (and each probe of the onset bisection) the rotor analysis solves the damped eigen-problem
+//! of the whole system in first-order form: a dense non-symmetric eigen-decomposition with eigenvectors of
+//! the `s = 2 n_sys` states, `n_sys` the shaft's working coordinates (all `4 (elements + 1)` for the full
+//! shaft, the attached nodes' x, y and `2 · shaft_modes` modes for the reduced one) plus the pad coordinates
+//! the full bearing coefficients append. Its work grows as `s³` whatever the machine, so the work unit is
+//! one `s³` and its time at the reference rate is the measured constant [`EIGEN_SECONDS_PER_UNIT`]:
+//! ```text
+//! t_eigen = c_eig · s³   per speed,        t_shaft = c_shaft · n³   once (free–free modes, reduction)
+//! ```
+//! with `c_eig = 7e-10 s` (measured per speed, CPU time of the release build: 6.8e-10 at 1788 states,
+//! 7.1e-10 at 3108) and `c_shaft = 1.3e-9 s` (the reduction of a 385-element shaft; the full shaft only
+//! computes one plane's free–free modes, `(n/2)³`).
+//! A 400-element full shaft (s ≈ 3200) costs tens of seconds per speed this way, far more than its bearings.
 
 use std::fmt;
 
 use crate::model::budget;
-use crate::model::rotor::{BearingSupport, Rotor};
-use crate::model::{Case, Cavitation, PadFilmBc, ThermalModelKind};
+use crate::model::rotor::{BearingSupport, CoefficientModel, Rotor};
+use crate::model::{Case, Cavitation, PadFilmBc, PadKind, ThermalModelKind};
 
 /// Film nodes of the reference point.
 const REF_NODES: f64 = 4940.0;
@@ -33,8 +60,25 @@ const REF_NODES: f64 = 4940.0;
 const REF_SECONDS: f64 = 0.0432;
 /// Growth of the time with the film nodes.
 const EXPONENT: f64 = 1.19;
-/// Memory per mesh node [bytes].
-const BYTES_PER_NODE: f64 = 2048.0;
+/// Memory per mesh node [bytes]: an upper bound on the measured peaks (release build, `/usr/bin/time -v`):
+/// 2.0 kB per node for the 478 485-node full compressor mesh (0.94 GB), 1.95 kB already before the first
+/// equilibrium iteration of the 3.98 M-node one (7.74 GB; the fill of the sparse factorisations grows a little
+/// faster than the nodes), whose peak, by the smaller mesh's rise from that point to its peak (×1.10), is
+/// about 8.5 GB, over the 8 GB bound. With 2.3 kB planned the 3.98 M-node mesh is refused up front.
+const BYTES_PER_NODE: f64 = 2355.0;
+/// Time of one work unit (the cube of the state size) of a rotor's damped eigen-solution at the reference
+/// rate [s]: measured with the full 400-element shaft, release build (docs/PERFORMANCE.md, work estimates).
+pub const EIGEN_SECONDS_PER_UNIT: f64 = 7.0e-10;
+/// Time of one work unit of the shaft built once [s]: the cube of the nodal shaft coordinates when it is
+/// reduced (the fixed-interface modes and the projection: 385 elements, 1544 coordinates, took 4.8 s of CPU
+/// time), of half of them for the full shaft (only the free–free modes of one plane).
+pub const SHAFT_SECONDS_PER_UNIT: f64 = 1.3e-9;
+
+/// Pad-solid unknowns of the modal reference point and its time for three modes [s].
+const MODES_REF_UNKNOWNS: f64 = 14_820.0;
+const MODES_REF_SECONDS: f64 = 0.29;
+/// Growth of the modal solution's time with the pad solid's unknowns.
+const MODES_EXPONENT: f64 = 1.4;
 
 /// Default bound on a command's estimated work [h] (`--max-hours` raises it).
 pub const DEFAULT_MAX_HOURS: f64 = 4.0;
@@ -66,13 +110,153 @@ pub fn point_cost(case: &Case) -> PointCost {
         (ThermalModelKind::Thd, PadFilmBc::Bc2 { .. } | PadFilmBc::Bc3) => 23.0,
     };
     let cavitation = if case.physics.cavitation == Cavitation::Jfo { 3.0 } else { 1.0 };
+    let modes = case.physics.pad_modes;
+    let solids = flexible_solids(case);
+    // the film's pad solids (THD) are the flexible pads' solids: counted once
+    let solid_nodes: usize = if n.pad_solid > 0 { 0 } else { solids.iter().map(|s| s.nodes * s.pads).sum() };
     #[allow(clippy::cast_precision_loss)]
-    let bytes = n.total() as f64 * BYTES_PER_NODE;
+    let bytes = n.total().saturating_add(solid_nodes) as f64 * BYTES_PER_NODE;
+    #[allow(clippy::cast_precision_loss)]
+    let coordinates = if solids.is_empty() { 1.0 } else { 1.0 + modes as f64 };
+    let rigid = REF_SECONDS * (film / REF_NODES).powf(EXPONENT) * thermal * cavitation;
     PointCost {
         film_nodes: n.film(),
-        nodes: n.total(),
-        seconds: REF_SECONDS * (film / REF_NODES).powf(EXPONENT) * thermal * cavitation,
+        nodes: n.total().saturating_add(solid_nodes),
+        seconds: rigid * coordinates + solids.iter().map(|s| modes_seconds(s.unknowns(), modes)).sum::<f64>(),
         bytes,
+    }
+}
+
+/// One distinct flexible pad solid of a case: its nodes and how many pads share it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PadSolid {
+    /// Nodes of the solid (film grid × (layers + 1)).
+    pub nodes: usize,
+    /// Pads with this solid (they share one modal solution).
+    pub pads: usize,
+    /// What makes two pads' solids the same (film grid, arc, thickness, bore, pivot, material).
+    key: [u64; 9],
+}
+
+impl PadSolid {
+    /// Displacement unknowns (three per node).
+    #[must_use]
+    pub fn unknowns(&self) -> usize {
+        3 * self.nodes
+    }
+}
+
+/// The distinct flexible pad solids of `case` (empty for rigid pads: `physics.pad_modes = 0`, pivoted pads
+/// other than tilting ones, pads without thickness).
+#[must_use]
+pub fn flexible_solids(case: &Case) -> Vec<PadSolid> {
+    if case.physics.pad_modes == 0 {
+        return Vec::new();
+    }
+    let layers = case.mesh.pad_radial_elements.max(1);
+    let mut out: Vec<PadSolid> = Vec::new();
+    for (k, pad) in case.bearing.pads.iter().enumerate() {
+        if pad.kind != PadKind::Tilting || pad.thickness_m <= 0.0 {
+            continue;
+        }
+        let (cols, rows) = budget::film_grid_size(case, k);
+        let nodes = cols.saturating_mul(rows).saturating_mul(layers + 1);
+        let pivot = (pad.pivot_rad - pad.leading_edge_rad) / pad.arc_rad;
+        // compared in single precision: identical pads at other angles differ in the last bits
+        #[allow(clippy::cast_precision_loss, clippy::cast_possible_truncation)]
+        let key = [
+            nodes as f64,
+            pad.arc_rad,
+            pad.thickness_m,
+            pad.clearance_m,
+            pad.preload,
+            pivot,
+            pad.youngs_modulus_pa,
+            pad.poisson_ratio,
+            pad.density_kg_per_m3,
+        ]
+        .map(|v| (v as f32).to_bits().into());
+        match out.iter_mut().find(|s| s.key == key) {
+            Some(s) => s.pads += 1,
+            None => out.push(PadSolid { nodes, pads: 1, key }),
+        }
+    }
+    out
+}
+
+/// Time of one pad solid's `modes` lowest modes at the reference rate [s] (see the module).
+#[must_use]
+pub fn modes_seconds(unknowns: usize, modes: usize) -> f64 {
+    #[allow(clippy::cast_precision_loss)]
+    let (u, m) = (unknowns as f64, modes as f64);
+    MODES_REF_SECONDS * (u / MODES_REF_UNKNOWNS).powf(MODES_EXPONENT) * (m + 1.5) / 4.5
+}
+
+/// The rotor's dense eigen-solutions in an estimate (see the module).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EigenWork {
+    /// Eigen-solutions (speeds and bisection probes).
+    pub solutions: usize,
+    /// States of each (twice the system's coordinates).
+    pub states: usize,
+    /// Time of one at the reference rate [s].
+    pub seconds_each: f64,
+    /// Time of the shaft model built once [s].
+    pub shaft_seconds: f64,
+}
+
+impl EigenWork {
+    /// Time of all of them and of the shaft [s].
+    #[must_use]
+    pub fn seconds(&self) -> f64 {
+        #[allow(clippy::cast_precision_loss)]
+        let n = self.solutions as f64;
+        n * self.seconds_each + self.shaft_seconds
+    }
+}
+
+/// The working coordinates of a rotor's system at one speed: the shaft's (full or reduced, as
+/// [`crate::rotor::analysis::shaft_model`] builds it) and the pad coordinates the full bearing coefficients
+/// append (every coordinate of every tilting pad; decoupled ones are left out by the analysis, so this is an
+/// upper bound).
+#[must_use]
+pub fn rotor_coordinates(rotor: &Rotor) -> usize {
+    let full = 4 * (rotor.elements.len() + 1);
+    let mut attached: Vec<usize> = rotor
+        .bearings
+        .iter()
+        .map(|b| b.node)
+        .chain(rotor.supports.iter().map(|s| s.node))
+        .chain(rotor.unbalances.iter().map(|u| u.node))
+        .collect();
+    attached.sort_unstable();
+    attached.dedup();
+    // the reduction holds the shaft with two attached nodes or a support; otherwise the full shaft is kept
+    let holds = attached.len() >= 2 || !rotor.supports.is_empty();
+    let shaft = if rotor.shaft_modes == 0 || !holds {
+        full
+    } else {
+        let boundary = 2 * attached.len();
+        boundary + (2 * rotor.shaft_modes).min(full.saturating_sub(boundary))
+    };
+    shaft + appended_coordinates(rotor)
+}
+
+/// The pad coordinates the full bearing coefficients append to the shaft's (see [`rotor_coordinates`]).
+fn appended_coordinates(rotor: &Rotor) -> usize {
+    match rotor.coefficients {
+        CoefficientModel::Reduced => 0,
+        CoefficientModel::Full => rotor
+            .bearings
+            .iter()
+            .filter_map(|b| match &b.support {
+                BearingSupport::Case { case, .. } => Some(
+                    case.bearing.pads.iter().filter(|p| p.kind == PadKind::Tilting).count()
+                        * (1 + case.physics.pad_modes),
+                ),
+                BearingSupport::Numbers(_) => None,
+            })
+            .sum(),
     }
 }
 
@@ -83,10 +267,12 @@ pub struct Estimate {
     pub what: &'static str,
     /// Bearing solves it will make.
     pub solves: usize,
-    /// Time at the reference rate [s].
+    /// Time at the reference rate [s] (bearing solves and, for a rotor, its eigen-solutions).
     pub seconds: f64,
     /// Peak memory [bytes].
     pub bytes: f64,
+    /// A rotor's eigen-solutions (`None` for a bearing command).
+    pub eigen: Option<EigenWork>,
 }
 
 impl Estimate {
@@ -95,12 +281,29 @@ impl Estimate {
     pub fn points(what: &'static str, solves: usize, cost: PointCost) -> Self {
         #[allow(clippy::cast_precision_loss)]
         let seconds = solves as f64 * cost.seconds;
-        Self { what, solves, seconds, bytes: cost.bytes }
+        Self { what, solves, seconds, bytes: cost.bytes, eigen: None }
     }
 
-    /// The rotor analysis of `rotor` over `speeds` speeds: each speed solves every bearing given by a case;
-    /// the onset bisection adds up to `extra_speeds` more; memory is the shaft's and the eigen-solution's
-    /// dense matrices plus the bearings' meshes (all held at once).
+    /// `tiltpad modes`: `count` modes of each distinct flexible pad solid of `case`, and of the extra solids
+    /// of `extra_unknowns` (the convergence table's meshes); no bearing solve.
+    #[must_use]
+    pub fn pad_modes(case: &Case, count: usize, extra_unknowns: &[usize]) -> Self {
+        let mut flexible = case.clone();
+        flexible.physics.pad_modes = count.max(1);
+        let solids = flexible_solids(&flexible);
+        let seconds = solids.iter().map(|s| modes_seconds(s.unknowns(), count)).sum::<f64>()
+            + extra_unknowns.iter().map(|&u| modes_seconds(u, count)).sum::<f64>();
+        #[allow(clippy::cast_precision_loss)]
+        let bytes = solids.iter().map(|s| s.nodes).chain(extra_unknowns.iter().map(|u| u / 3)).max().unwrap_or(0)
+            as f64
+            * BYTES_PER_NODE;
+        Self { what: "modes", solves: 0, seconds, bytes, eigen: None }
+    }
+
+    /// The rotor analysis of `rotor` over `speeds` speeds: each speed solves every bearing given by a case
+    /// and the system's damped eigen-problem; the onset bisection adds up to `extra_speeds` more of both;
+    /// memory is the shaft's and the eigen-solution's dense matrices plus the bearings' meshes (all held at
+    /// once).
     #[must_use]
     pub fn rotor(what: &'static str, rotor: &Rotor, speeds: usize, extra_speeds: usize) -> Self {
         let costs: Vec<PointCost> = rotor
@@ -112,12 +315,37 @@ impl Estimate {
             })
             .collect();
         let per_speed: f64 = costs.iter().map(|c| c.seconds).sum();
+        #[allow(clippy::cast_precision_loss)]
         let n = 4.0 * (rotor.elements.len() as f64 + 1.0);
         let bytes = 224.0 * n * n + costs.iter().map(|c| c.bytes).sum::<f64>();
         let all = speeds.saturating_add(extra_speeds);
+        let states = 2 * rotor_coordinates(rotor);
+        let reduced = 4 * (rotor.elements.len() + 1) > rotor_coordinates(rotor) - appended_coordinates(rotor);
+        let shaft_unit = if reduced { n } else { 0.5 * n };
         #[allow(clippy::cast_precision_loss)]
-        let seconds = all as f64 * per_speed;
-        Self { what, solves: all.saturating_mul(costs.len()), seconds, bytes }
+        let eigen = EigenWork {
+            solutions: all,
+            states,
+            seconds_each: EIGEN_SECONDS_PER_UNIT * (states as f64).powi(3),
+            shaft_seconds: SHAFT_SECONDS_PER_UNIT * shaft_unit.powi(3),
+        };
+        #[allow(clippy::cast_precision_loss)]
+        let seconds = all as f64 * per_speed + eigen.seconds();
+        Self { what, solves: all.saturating_mul(costs.len()), seconds, bytes, eigen: Some(eigen) }
+    }
+
+    /// What raises or lowers this estimate's work, for the refusal: the rotor's eigen-solutions when they are
+    /// most of it, the bearing solves otherwise.
+    #[must_use]
+    pub fn settings(&self) -> &'static str {
+        match self.eigen {
+            Some(e) if e.seconds() >= 0.5 * self.seconds => {
+                "fewer speeds (--speeds FROM:TO:N), a reduced shaft (--shaft-modes M or rotor.shaft_modes; 0 is \
+                 the full shaft, the default 8 keeps a few dozen coordinates) or fewer elements per section \
+                 (rotor.section[].elements)"
+            }
+            _ => "narrow the range or lower the fidelity (mesh.fidelity)",
+        }
     }
 
     /// Refuses an estimate over `max_hours` of work or over [`MAX_BYTES`] of memory.
@@ -138,7 +366,9 @@ impl Estimate {
 /// A duration for people: seconds, minutes or hours.
 #[must_use]
 pub fn duration_text(seconds: f64) -> String {
-    if seconds < 60.0 {
+    if seconds < 1.0 {
+        format!("{:.0} ms", (seconds * 1000.0).max(1.0))
+    } else if seconds < 60.0 {
         format!("{seconds:.1} s")
     } else if seconds < 3600.0 {
         format!("{:.1} min", seconds / 60.0)
@@ -159,11 +389,19 @@ pub fn bytes_text(bytes: f64) -> String {
 
 impl fmt::Display for Estimate {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {} bearing solves", self.what, self.solves)?;
+        if let Some(e) = &self.eigen {
+            write!(
+                f,
+                " and {} eigen-solutions of {} states ({} each)",
+                e.solutions,
+                e.states,
+                duration_text(e.seconds_each)
+            )?;
+        }
         write!(
             f,
-            "{}: {} bearing solves, about {} at the reference rate (docs/PERFORMANCE.md), peak memory about {}",
-            self.what,
-            self.solves,
+            ", about {} at the reference rate (docs/PERFORMANCE.md), peak memory about {}",
             duration_text(self.seconds),
             bytes_text(self.bytes)
         )
@@ -174,8 +412,8 @@ impl fmt::Display for Estimate {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum TooMuchWork {
     #[error(
-        "{estimate}: more than the bound of {max_hours} h; narrow the range or lower the fidelity \
-         (mesh.fidelity), or raise the bound with --max-hours {}",
+        "{estimate}: more than the bound of {max_hours} h; {}, or raise the bound with --max-hours {}",
+        estimate.settings(),
         (estimate.seconds / 3600.0).ceil()
     )]
     Time { estimate: Estimate, max_hours: f64 },
@@ -228,6 +466,96 @@ mod tests {
         assert!(e.check(6.0).is_ok());
         // A preview sweep of the same length is well inside the bound.
         assert!(Estimate::points("sweep", 10_000, point_cost(&case(&[]))).check(DEFAULT_MAX_HOURS).is_ok());
+    }
+
+    fn rotor(name: &str, set: impl Fn(&mut crate::model::rotor::RotorFile)) -> Rotor {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/cases/rotors/");
+        let text = std::fs::read_to_string(format!("{dir}{name}")).unwrap();
+        let mut file = crate::model::rotor::parse_rotor_file(&text).unwrap();
+        set(&mut file);
+        file.resolve(&|n: &str| std::fs::read_to_string(format!("{dir}{n}")).map_err(|e| e.to_string())).unwrap()
+    }
+
+    #[test]
+    fn the_rotor_counts_the_coordinates_its_eigen_problem_will_have() {
+        // The compressor rotor's system sizes as the analysis reports them (docs/PERFORMANCE.md, rotor table):
+        // 224 shaft coordinates + 10 pad tilts in full; 8 boundary coordinates + 2 modes per plane each kept.
+        for (modes, dofs) in [(0, 234), (2, 22), (4, 26), (8, 34), (16, 50), (32, 82)] {
+            let r = rotor("compressor-rotor.toml", |f| f.rotor.shaft_modes = modes);
+            assert_eq!(rotor_coordinates(&r), dofs, "shaft_modes = {modes}");
+        }
+        // reduced bearing coefficients append nothing
+        let r = rotor("compressor-rotor.toml", |f| f.rotor.coefficients = CoefficientModel::Reduced);
+        assert_eq!(rotor_coordinates(&r), 24);
+    }
+
+    #[test]
+    fn a_full_shaft_s_eigen_solutions_are_counted_and_refused_naming_the_shaft_settings() {
+        // The compressor rotor with its sections' elements ×4 (220 elements, the full shaft: 884 + 10
+        // coordinates, 1788 states), 4 speeds: measured 15.2 s of CPU time (release, 2026-11-26), nearly all of
+        // it the four eigen-solutions (each bearing solve takes ~0.05 s); 2 speeds: 7.5 s. The model:
+        // 7e-10 · 1788³ = 4.0 s per speed. (Its sections ×7 with the impeller section split, 385 elements,
+        // 3108 states: 42.6 s for 2 speeds measured, 42.0 s by the model.)
+        let r = rotor("compressor-rotor.toml", |f| {
+            f.rotor.shaft_modes = 0;
+            for s in &mut f.rotor.section {
+                s.elements *= 4;
+            }
+        });
+        for (speeds, measured) in [(2, 7.46), (4, 15.19)] {
+            let e = Estimate::rotor("rotor", &r, speeds, 0);
+            let eigen = e.eigen.unwrap();
+            assert_eq!((eigen.solutions, eigen.states), (speeds, 1788));
+            // the constant is fitted over both sizes (6.8e-10 here, 7.1e-10 at 3108 states): 15 %
+            assert!((e.seconds / measured - 1.0).abs() < 0.15, "{} s against {measured} s measured", e.seconds);
+        }
+        // The same shaft reduced (8 modes per plane, 68 states): the reduction is most of the work, measured
+        // 1.25 s of CPU time for 2 speeds; the model gives 1.3e-9 · 884³ = 0.90 s for it and 0.17 s for the
+        // bearings.
+        let mut reduced = r.clone();
+        reduced.shaft_modes = 8;
+        let e = Estimate::rotor("rotor", &reduced, 2, 0);
+        assert_eq!(e.eigen.unwrap().states, 68);
+        assert!((e.seconds / 1.25 - 1.0).abs() < 0.2, "{} s against 1.25 s measured", e.seconds);
+        // 5000 speeds (and the bisection's probes) of it: about 5.6 h, refused, naming the settings that
+        // shrink it.
+        let err = Estimate::rotor("rotor", &r, 5000, 12).check(DEFAULT_MAX_HOURS).unwrap_err().to_string();
+        assert!(err.contains("eigen-solutions of 1788 states") && err.contains("--shaft-modes"), "{err}");
+        assert!(err.contains("rotor.section[].elements") && err.contains("--speeds"), "{err}");
+        // The reduced shaft (8 modes per plane): 34 coordinates, the eigen-solutions negligible, the bearings
+        // named instead.
+        let reduced = rotor("compressor-rotor.toml", |_| ());
+        let e = Estimate::rotor("rotor", &reduced, 1000, 12);
+        assert!(e.eigen.unwrap().seconds() < 0.01 * e.seconds, "{e}");
+        assert!(e.settings().contains("mesh.fidelity"), "{e}");
+    }
+
+    #[test]
+    fn flexible_pads_add_their_modal_solution_and_coordinates() {
+        // Measured CPU times (release, 2026-11-26): the rigid compressor bearing 0.05 s, its flexible variant
+        // (one bending mode per pad; five identical pads share one modal solution of 14 337 unknowns) 0.27 s;
+        // `tiltpad modes` on it: 0.17 s for one mode, 0.29 s for three, 4.5 s with the convergence table.
+        let text =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/cases/compressor-bearing-flexible.toml"))
+                .unwrap();
+        let flexible = crate::model::load_case(&text, &[]).unwrap().1;
+        let solids = flexible_solids(&flexible);
+        assert_eq!((solids.len(), solids[0].pads, solids[0].unknowns()), (1, 5, 14_820));
+        let within = |estimate: f64, measured: f64| (estimate / measured - 1.0).abs() < 0.2;
+        let cost = point_cost(&flexible);
+        assert!(within(cost.seconds, 0.27), "{} s against 0.27 s", cost.seconds);
+        for (count, measured) in [(1, 0.17), (3, 0.29)] {
+            let e = Estimate::pad_modes(&flexible, count, &[]);
+            assert!(within(e.seconds, measured), "{count} modes: {} s against {measured} s", e.seconds);
+        }
+        // A pad with another thickness has a solid of its own.
+        let mut two = flexible.clone();
+        two.bearing.pads[0].thickness_m *= 1.5;
+        assert_eq!(flexible_solids(&two).len(), 2);
+        // Rigid pads: no modal term.
+        let rigid = crate::model::load_case(&text, &["physics.pad_modes=0".to_string()]).unwrap().1;
+        assert!(flexible_solids(&rigid).is_empty());
+        assert!((point_cost(&rigid).seconds - 0.0432).abs() < 1e-12);
     }
 
     #[test]

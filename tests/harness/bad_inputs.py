@@ -619,6 +619,54 @@ class Harness:
         self.run("new rotor bearing case with nan load", ["rotor", "{C}/rotors/nan-case.toml", "--speeds",
                                                           "7000:8000:2"], expect="error")
 
+    def round4_inputs(self):
+        """Inputs added in the fourth round: large full shafts (the eigen-solutions in the estimate), the mesh
+        just under the node cap that plans more than 8 GB, the modes command's estimate, the map's row update."""
+        c = "{C}/compressor-bearing.toml"
+        base = (self.cases / "rotors/compressor-rotor.toml").read_text()
+        head = re.sub(r"shaft_modes = \d+", "shaft_modes = 0", base.split("[[rotor.section]]")[0])
+        for elements in [300, 400]:
+            sections = "[[rotor.section]]\nlength_mm = 300.0\nouter_diameter_mm = 101.6\nelements = %d\n\n" % (
+                elements // 4)
+            tail = "[[rotor.bearing]]\nnode = %d\ncase = \"../compressor-bearing.toml\"\n\n" \
+                   "[[rotor.bearing]]\nnode = %d\ncase = \"../compressor-bearing.toml\"\n" % (
+                       elements // 20, elements - elements // 20)
+            (self.cases / f"rotors/full-{elements}.toml").write_text(head + sections * 4 + tail)
+        full = "{C}/rotors/full-400.toml"
+        for name, a, expect in [
+            ("1000 speeds", ["--speeds", "1000:13000:1000"], "error"),
+            ("10000 speeds", ["--speeds", "1000:13000:10000", "--max-points", "10000"], "error"),
+            ("3 speeds", ["--speeds", "3000:4000:3"], "ok"),
+            ("reduced 1000 speeds", ["--speeds", "1000:13000:1000", "--shaft-modes", "8", "--max-hours", "0.001"],
+             "error"),
+            ("critical map", ["--speeds", "1000:13000:20", "--critical-map"], "any"),
+        ]:
+            self.run(f"round4 rotor full 400 {name}", ["rotor", full] + a, expect=expect)
+        self.run("round4 rotor full 300 onto itself", ["rotor", "{C}/rotors/full-300.toml", "--speeds", "3000:4000:2",
+                                                     "--json", "{C}/rotors/full-300.toml"], expect="error",
+                 inputs=[str(self.cases / "rotors/full-300.toml")])
+        self.run("round4 control full shaft", ["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                                "1000:13000:2000", "--max-points", "2000"], expect="any")
+        for name, a, expect in [
+            ("mesh 3.98M nodes", ["--set", "mesh.half_model=false", "--set", "mesh.circumferential_elements=1260",
+                                  "--set", "mesh.axial_elements=630", "--set", "mesh.max_nodes=4000000"], "error"),
+            ("mesh 50M cap", ["--set", "mesh.circumferential_elements=2000", "--set", "mesh.axial_elements=1000",
+                              "--set", "mesh.max_nodes=50000000"], "error"),
+        ]:
+            self.run(f"round4 solve {name}", ["solve", c] + a + ["--json", "r.json"], expect=expect)
+        flex = "{C}/compressor-bearing-flexible.toml"
+        self.run("round4 modes table", ["modes", flex, "--table", "--csv", "t.csv"], expect="ok")
+        self.run("round4 modes 6 on a fine mesh", ["modes", flex, "--count", "6", "--set",
+                                                     'mesh.fidelity="reference"'], expect="ok")
+        self.run("round4 flexible 3 modes thd", ["solve", flex, "--set", "physics.pad_modes=3", "--set",
+                                                  'thermal.model="thd"', "--json", "r.json"], expect="any")
+        for name, a in {
+            "update-doc family": ["--only", "3 pads,", "--update-doc"],
+            "update-doc points": ["--only", "someya", "--only-points", "90@1", "--update-doc"],
+            "update-doc quick": ["--only", "someya", "--quick", "--update-doc"],
+        }.items():
+            self.run(f"round4 convergence-map {name}", ["convergence-map", "--root", str(ROOT)] + a, expect="error")
+
     def misc(self):
         self.run("schema", ["schema"], expect="ok")
         self.run("unknown command", ["frobnicate"], expect="error")
@@ -672,6 +720,7 @@ def main():
         h.ross_runs()
         h.physics_options()
         h.new_inputs()
+        h.round4_inputs()
         h.misc()
         h.solve_extremes()
         if not a.skip_keys:

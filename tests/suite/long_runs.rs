@@ -251,7 +251,12 @@ fn every_long_command_is_refused_up_front_with_its_estimate_and_the_flag_that_ra
         let o = tiltpad().args(&args).output().unwrap();
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
-        assert!(err.contains("bearing solves, about") && err.contains("more than the bound of"), "{args:?}: {err}");
+        assert!(err.contains("bearing solves") && err.contains(", about "), "{args:?}: {err}");
+        assert!(err.contains("more than the bound of"), "{args:?}: {err}");
+        if args[0] == "rotor" {
+            // the rotor's eigen-solutions are in the estimate (the compressor rotor: 34 coordinates)
+            assert!(err.contains("eigen-solutions of 68 states"), "{args:?}: {err}");
+        }
         assert!(err.contains("--max-hours"), "{args:?}: {err}");
         assert!(!err.contains("progress:"), "{args:?}: refused before the first solve: {err}");
         assert!(start.elapsed() < Duration::from_secs(60), "{args:?}: the refusal took {:?}", start.elapsed());
@@ -280,4 +285,55 @@ fn control_never_writes_over_its_rotor_file() {
         assert!(err.contains("never overwrites an input"), "{err}");
         assert_eq!(std::fs::read(&rotor).unwrap(), before, "{flag}: the rotor file changed");
     }
+}
+
+/// A generated rotor of `elements` elements on the full shaft (`tiltpad::cli::rotor::uniform_rotor`) in `dir`.
+fn uniform_rotor(dir: &Path, elements: usize) -> PathBuf {
+    let path = dir.join(format!("uniform-{elements}.toml"));
+    let bearing = common::case_path("compressor-bearing.toml");
+    std::fs::write(&path, tiltpad::cli::rotor::uniform_rotor(elements, &bearing)).unwrap();
+    path
+}
+
+/// The rotor estimate counted the bearing solves only, so a 400-element full shaft (about 23 s of
+/// eigen-solution per speed at the reference rate) was accepted for thousands of speeds: now its
+/// eigen-solutions are counted, and the refusal names the settings that shrink them.
+#[test]
+fn a_large_full_shaft_is_refused_for_its_eigen_solutions_naming_the_shaft_settings() {
+    let dir = temp_dir("large-shaft");
+    let rotor = uniform_rotor(&dir, 400);
+    let o = tiltpad().args(["rotor", rotor.to_str().unwrap(), "--speeds", "1000:13000:1000"]).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    // 2 × (1604 shaft + 10 pad coordinates) states; 1012 eigen-solutions of ~23 s each: ~6.6 h
+    assert!(err.contains("1012 eigen-solutions of 3228 states"), "{err}");
+    assert!(err.contains("more than the bound of 4 h"), "{err}");
+    assert!(err.contains("--shaft-modes") && err.contains("rotor.section[].elements"), "{err}");
+    // The same speeds on the reduced shaft: the eigen-solutions shrink to milliseconds and the bearings
+    // decide (accepted at this bound; checked with a bound too small for it, so nothing runs).
+    let o = tiltpad()
+        .args(["rotor", rotor.to_str().unwrap(), "--speeds", "1000:13000:1000", "--shaft-modes", "8"])
+        .args(["--max-hours", "0.00001"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("eigen-solutions of 64 states") && err.contains("mesh.fidelity"), "{err}");
+}
+
+/// A speed of a large full shaft takes seconds to minutes in its eigen-solution: the heartbeat names the
+/// speed and the eigen-solution being computed, and Ctrl-C stops after it with the speed kept.
+#[test]
+fn a_long_rotor_speed_says_which_speed_and_eigen_solution_it_is_working_on() {
+    let dir = temp_dir("long-speed");
+    // 300 elements: 2 × (1204 + 10) = 2428 states, about 10 s per speed at the reference rate
+    let rotor = uniform_rotor(&dir, 300);
+    let out = dir.join("r.csv");
+    let (code, err) = interrupted_when(
+        &["rotor", rotor.to_str().unwrap(), "--speeds", "3000:4000:3", "--csv", out.to_str().unwrap()],
+        |line| line.starts_with("working: speed 1 of 3 (3000 rpm)"),
+    );
+    assert!(err.contains("an eigen-solution of 2428 states (about"), "{err}");
+    assert_eq!(code, Some(130), "{err}");
+    assert_eq!(done_of(&err, "speeds"), (1, 3), "{err}");
+    assert_eq!(csv_rows(&out), 1, "{err}");
 }
