@@ -91,9 +91,9 @@ pub fn log_spacer(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
         return Vec::new();
     }
     let mut marks = Vec::new();
-    for n in (lo.floor() as i64)..=(hi.ceil() as i64) {
-        #[allow(clippy::cast_precision_loss)] // decades of a plotted range: small integers
-        let decade = n as f64;
+    // Decades of a plotted range (checked finite and under 60 wide above): small integers.
+    #[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss)]
+    for decade in ((lo.floor() as i64)..=(hi.ceil() as i64)).map(|n| n as f64) {
         for m in 1..=9_u32 {
             let value = decade + f64::from(m).log10();
             if value < lo || value > hi {
