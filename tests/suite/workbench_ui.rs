@@ -128,6 +128,16 @@ fn snapshot(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
     h.snapshot_options(name, &snapshot_options());
 }
 
+/// Switches to the light theme as a user does: Edit → Theme → Light, then Escape closes the menu.
+fn choose_light_theme(h: &mut Harness<'_, WorkbenchApp>) {
+    h.get_by_label("Edit").click();
+    h.run_steps(2);
+    h.get_by_label("Light").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(4);
+}
+
 /// Every view of the list ([`tiltpad::app::views::all`]) at 1280×720, as it opens on the case it asks for
 /// ([`tiltpad::app::views::View::snapshot_setup`]), its result and its own work finished, in the dark theme
 /// (`tests/snapshots/view_<id>.png`) and in the light one (`view_<id>_light.png`). A view added to the list is snapshotted here with no change to this file.
@@ -146,12 +156,7 @@ fn every_view_in_the_list_at_1280x720() {
         assert_eq!(h.ctx.theme(), egui::Theme::Dark, "{id}: the snapshots start in the dark theme");
         results.add(h.try_snapshot_options(format!("view_{id}"), &snapshot_options()));
         // The same view in the light theme, chosen as a user does (Edit → Theme → Light).
-        h.get_by_label("Edit").click();
-        h.run_steps(2);
-        h.get_by_label("Light").click();
-        h.run_steps(2);
-        h.key_press(egui::Key::Escape);
-        h.run_steps(4);
+        choose_light_theme(&mut h);
         assert_eq!(h.ctx.theme(), egui::Theme::Light, "{id}");
         results.add(h.try_snapshot_options(format!("view_{id}_light"), &snapshot_options()));
     }
@@ -1623,12 +1628,7 @@ fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080_in_both_themes()
             h.run_steps(4);
             for theme in [egui::Theme::Dark, egui::Theme::Light] {
                 if theme == egui::Theme::Light {
-                    h.get_by_label("Edit").click();
-                    h.run_steps(2);
-                    h.get_by_label("Light").click();
-                    h.run_steps(2);
-                    h.key_press(egui::Key::Escape);
-                    h.run_steps(4);
+                    choose_light_theme(&mut h);
                 }
                 assert_eq!(h.ctx.theme(), theme, "{id}");
                 for o in overlapping_texts(&h) {
