@@ -23,6 +23,7 @@ pub mod frame_probe;
 pub mod ink;
 pub mod job_runner;
 pub mod open_dialog;
+pub mod path_fields;
 pub mod pinned;
 pub mod presets;
 pub mod rotor_worker;

@@ -10,6 +10,7 @@ use std::path::{Path, PathBuf};
 use egui::RichText;
 
 use super::files::{display_name, FileEvent};
+use super::path_fields::PathFields;
 use crate::app::ink;
 
 /// What the dialog opens.
@@ -45,45 +46,38 @@ const MAX_LISTED: usize = 200;
 #[derive(Debug)]
 pub struct OpenDialog {
     pub kind: OpenKind,
-    directory: String,
-    name: String,
+    fields: PathFields,
     error: Option<String>,
     /// The `.toml` files of `listed_for`, sorted.
     listing: Vec<String>,
     /// The folders of `listed_for`, sorted (clicking one goes into it).
     folders: Vec<String>,
     listed_for: Option<String>,
-    /// The name field got the keyboard focus when the dialog opened.
-    focused: bool,
 }
 
 impl OpenDialog {
     /// A dialog on the working directory with an empty name.
     #[must_use]
     pub fn new(kind: OpenKind) -> Self {
-        let directory = std::env::current_dir().map(|d| d.display().to_string()).unwrap_or_default();
         Self {
             kind,
-            directory,
-            name: String::new(),
+            fields: PathFields::new(),
             error: None,
             listing: Vec::new(),
             folders: Vec::new(),
             listed_for: None,
-            focused: false,
         }
     }
 
     /// The file the typed name reads: `None` until a name is typed. An absolute name is taken as it is.
     #[must_use]
     pub fn target(&self) -> Option<PathBuf> {
-        let name = self.name.trim();
-        (!name.is_empty()).then(|| Path::new(self.directory.trim()).join(name))
+        self.fields.joined()
     }
 
     /// The `.toml` files of the directory (read again when the directory changes).
     fn refresh_listing(&mut self) {
-        let dir = self.directory.trim().to_string();
+        let dir = self.fields.directory.trim().to_string();
         if self.listed_for.as_deref() == Some(dir.as_str()) {
             return;
         }
@@ -99,32 +93,14 @@ impl OpenDialog {
         let modal = egui::Modal::new(egui::Id::unique(("open-dialog", self.kind.title()))).show(ctx, |ui| {
             ui.heading(self.kind.title());
             ui.label("No system file dialog here: type the file's path or pick a file below.");
-            let mut edited = false;
-            egui::Grid::new("open-grid").num_columns(2).show(ui, |ui| {
-                let label = ui.label("Directory");
-                edited |= ui
-                    .add(egui::TextEdit::singleline(&mut self.directory).desired_width(360.0))
-                    .labelled_by(label.id)
-                    .changed();
-                ui.end_row();
-                let label = ui.label("File name");
-                let field = ui
-                    .add(egui::TextEdit::singleline(&mut self.name).hint_text("case.toml").desired_width(360.0))
-                    .labelled_by(label.id);
-                edited |= field.changed();
-                if !self.focused {
-                    field.request_focus();
-                    self.focused = true;
-                }
-                ui.end_row();
-            });
+            let edited = self.fields.ui(ui, "open-grid", "case.toml");
             if edited {
                 self.error = None;
             }
             ui.label(RichText::new(format!("TOML files in this directory ({}):", self.listing.len())).weak());
             let mut into = None;
             egui::ScrollArea::vertical().max_height(180.0).auto_shrink([false, true]).show(ui, |ui| {
-                if Path::new(self.directory.trim()).parent().is_some() && ui.selectable_label(false, "../").clicked() {
+                if self.fields.directory().parent().is_some() && ui.selectable_label(false, "../").clicked() {
                     into = Some("..".to_string());
                 }
                 for folder in &self.folders {
@@ -133,8 +109,8 @@ impl OpenDialog {
                     }
                 }
                 for file in self.listing.iter().take(MAX_LISTED) {
-                    if ui.selectable_label(self.name == *file, file).clicked() {
-                        self.name.clone_from(file);
+                    if ui.selectable_label(self.fields.name == *file, file).clicked() {
+                        self.fields.name.clone_from(file);
                         self.error = None;
                     }
                 }
@@ -172,10 +148,10 @@ impl OpenDialog {
 
     /// Goes into the folder `name` of the directory (`..`: up one level).
     fn enter(&mut self, name: &str) {
-        let dir = Path::new(self.directory.trim());
+        let dir = self.fields.directory();
         let next = if name == ".." { dir.parent().map(Path::to_path_buf) } else { Some(dir.join(name)) };
         if let Some(next) = next {
-            self.directory = next.display().to_string();
+            self.fields.directory = next.display().to_string();
             self.error = None;
         }
     }
@@ -244,10 +220,10 @@ mod tests {
     fn a_typed_name_is_joined_to_the_directory_and_an_absolute_one_kept() {
         let mut d = OpenDialog::new(OpenKind::Case);
         assert_eq!(d.target(), None);
-        d.directory = "/some/dir".into();
-        d.name = " case.toml ".into();
+        d.fields.directory = "/some/dir".into();
+        d.fields.name = " case.toml ".into();
         assert_eq!(d.target(), Some(PathBuf::from("/some/dir/case.toml")));
-        d.name = "/elsewhere/rotor.toml".into();
+        d.fields.name = "/elsewhere/rotor.toml".into();
         assert_eq!(d.target(), Some(PathBuf::from("/elsewhere/rotor.toml")));
     }
 
@@ -262,11 +238,11 @@ mod tests {
         std::fs::create_dir_all(dir.join(".hidden")).unwrap();
         assert_eq!(folders(&dir), ["sub.toml"]);
         let mut d = OpenDialog::new(OpenKind::Case);
-        d.directory = dir.display().to_string();
+        d.fields.directory = dir.display().to_string();
         d.enter("sub.toml");
-        assert_eq!(Path::new(&d.directory), dir.join("sub.toml"));
+        assert_eq!(Path::new(&d.fields.directory), dir.join("sub.toml"));
         d.enter("..");
-        assert_eq!(Path::new(&d.directory), dir);
+        assert_eq!(Path::new(&d.fields.directory), dir);
         assert!(toml_files(&dir.join("missing")).is_empty());
         std::fs::remove_dir_all(&dir).ok();
     }

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use egui::RichText;
 
 use super::files::{display_name, FileEvent};
+use super::path_fields::PathFields;
 
 /// What to report once a save was written: display name and path → event.
 pub type SaveDone = Box<dyn FnOnce(String, Option<PathBuf>) -> FileEvent + Send>;
@@ -43,32 +44,24 @@ pub enum SaveOutcome {
 #[derive(Debug)]
 pub struct SaveDialog {
     pending: PendingSave,
-    directory: String,
-    name: String,
+    fields: PathFields,
     /// The typed target exists: the user is asked whether to replace it.
     confirm: Option<PathBuf>,
     error: Option<String>,
-    /// The name field got the keyboard focus when the dialog opened.
-    focused: bool,
 }
 
 impl SaveDialog {
     /// A dialog in the working directory with an empty name.
     #[must_use]
     pub fn new(pending: PendingSave) -> Self {
-        let directory = std::env::current_dir().map(|d| d.display().to_string()).unwrap_or_default();
-        Self { pending, directory, name: String::new(), confirm: None, error: None, focused: false }
+        Self { pending, fields: PathFields::new(), confirm: None, error: None }
     }
 
     /// Where the typed name writes: `None` until a name is typed. A name without an extension gets the
     /// export's one.
     #[must_use]
     pub fn target(&self) -> Option<PathBuf> {
-        let name = self.name.trim();
-        if name.is_empty() {
-            return None;
-        }
-        let mut path = Path::new(self.directory.trim()).join(name);
+        let mut path = self.fields.joined()?;
         if path.extension().is_none() {
             path.set_extension(&self.pending.extension);
         }
@@ -81,29 +74,7 @@ impl SaveDialog {
         let modal = egui::Modal::new(egui::Id::unique("save-as")).show(ctx, |ui| {
             ui.heading("Save as");
             ui.label("No system file dialog here: type a file name. Nothing is written until you do.");
-            let mut edited = false;
-            egui::Grid::new("save-as-grid").num_columns(2).show(ui, |ui| {
-                let label = ui.label("Directory");
-                edited |= ui
-                    .add(egui::TextEdit::singleline(&mut self.directory).desired_width(360.0))
-                    .labelled_by(label.id)
-                    .changed();
-                ui.end_row();
-                let label = ui.label("File name");
-                let field = ui
-                    .add(
-                        egui::TextEdit::singleline(&mut self.name)
-                            .hint_text(self.pending.suggested.as_str())
-                            .desired_width(360.0),
-                    )
-                    .labelled_by(label.id);
-                edited |= field.changed();
-                if !self.focused {
-                    field.request_focus();
-                    self.focused = true;
-                }
-                ui.end_row();
-            });
+            let edited = self.fields.ui(ui, "save-as-grid", &self.pending.suggested);
             if edited {
                 self.confirm = None;
                 self.error = None;

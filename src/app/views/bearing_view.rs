@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{View, ViewContext};
 use crate::app::ink;
+use crate::number::{eng, sig};
 use crate::bearing::solution::limits::{Check, LimitKind};
 use crate::bearing::stages::StageId;
 use crate::scene::outline::{self, BearingOutline, OutlineScales, Point};
@@ -141,7 +142,7 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, stroke: Stroke) {
 pub fn lock_ui(ui: &mut Ui, lock: &mut Option<OutlineScales>, current: OutlineScales) -> bool {
     let mut locked = lock.is_some();
     let text = match lock {
-        Some(l) => format!("Lock scales (film × {}, pressure {:.2} MPa)", l.exaggeration, MPA.from_si(l.pressure_scale_pa)),
+        Some(l) => format!("Lock scales (film × {}, pressure {})", l.exaggeration, eng(l.pressure_scale_pa, "Pa")),
         None => "Lock scales".to_string(),
     };
     if ui
@@ -165,9 +166,9 @@ fn scale_note_ui(ui: &mut Ui, lock: Option<OutlineScales>, free: OutlineScales, 
             ui.colored_label(
                 warn,
                 format!(
-                    "Peak pressure {:.2} MPa is above the locked scale ({:.2} MPa at R/3): its band reaches further.",
-                    MPA.from_si(p),
-                    MPA.from_si(l.pressure_scale_pa)
+                    "Peak pressure {} is above the locked scale ({} at R/3): its band reaches further.",
+                    eng(p, "Pa"),
+                    eng(l.pressure_scale_pa, "Pa")
                 ),
             );
         }
@@ -181,9 +182,9 @@ fn scale_note_ui(ui: &mut Ui, lock: Option<OutlineScales>, free: OutlineScales, 
                 ui.colored_label(
                     warn,
                     format!(
-                        "Scales changed with this result: pressure {:.2} to {:.2} MPa at R/3, film × {} to × {}.",
-                        MPA.from_si(b.pressure_scale_pa),
-                        MPA.from_si(free.pressure_scale_pa),
+                        "Scales changed with this result: pressure {} to {} at R/3, film × {} to × {}.",
+                        eng(b.pressure_scale_pa, "Pa"),
+                        eng(free.pressure_scale_pa, "Pa"),
                         b.exaggeration,
                         free.exaggeration
                     ),
@@ -213,8 +214,8 @@ pub fn bearing_view_ui(
             ui.colored_label(
                 ink::PRESSURE.of(ui),
                 format!(
-                    "Mid-plane pressure inside the journal ({:.2} MPa drawn at R/3)",
-                    MPA.from_si(outline.pressure_scale_pa)
+                    "Mid-plane pressure inside the journal ({} drawn at R/3)",
+                    eng(outline.pressure_scale_pa, "Pa")
                 ),
             );
         }
@@ -312,7 +313,7 @@ pub fn bearing_view_ui(
             painter.text(
                 b + away * 30.0,
                 Align2::CENTER_CENTER,
-                format!("{:.1} µm{below}", UM.from_si(h)),
+                format!("{}{below}", eng(h, "m")),
                 FontId::proportional(11.0),
                 h_min_ink,
             );
@@ -330,14 +331,14 @@ pub fn bearing_view_ui(
             .min_by(|a, b| a.1.total_cmp(&b.1));
         if let Some((k, _)) = near.filter(|n| n.1 < 40.0) {
             if let Some(row) = pads.iter().find(|r| r.index == k) {
-                let tilt = row.tilt_mrad.map_or("fixed sector".into(), |t| format!("tilt {t:.4} mrad"));
+                let tilt = row.tilt_mrad.map_or("fixed sector".into(), |t| format!("tilt {}", eng(t * 1e-3, "rad")));
                 let text = format!(
-                    "Pad {k}{}\n{tilt}\nh_min {:.2} µm, p_max {:.3} MPa\nfilm force {:.0} N, cavitated {:.0} %",
+                    "Pad {k}{}\n{tilt}\nh_min {}, p_max {}\nfilm force {}, cavitated {} %",
                     if row.unloaded { " (unloaded)" } else { "" },
-                    row.h_min_um,
-                    row.p_max_mpa,
-                    row.load_n,
-                    row.cavitated_percent
+                    eng(UM.to_si(row.h_min_um), "m"),
+                    eng(MPA.to_si(row.p_max_mpa), "Pa"),
+                    eng(row.load_n, "N"),
+                    sig(row.cavitated_percent, 3)
                 );
                 response.clone().on_hover_text_at_pointer(text);
             }
@@ -346,7 +347,7 @@ pub fn bearing_view_ui(
     if let Some((from, to, w)) = outline.load {
         let (a, b) = (to_screen.map(from), to_screen.map(to));
         arrow(&painter, a, b, Stroke::new(3.0, LOAD));
-        load_label(&painter, (a, b), &format!("W = {w:.0} N"), font.clone());
+        load_label(&painter, (a, b), &format!("W = {}", eng(w, "N")), font.clone());
     }
 }
 

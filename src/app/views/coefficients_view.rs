@@ -153,8 +153,8 @@ fn plot_ui(
         .x_axis_label(x_label)
         .y_axis_label(unit)
         .allow_scroll(false)
-        .x_grid_spacer(round_grid)
-        .y_grid_spacer(round_grid)
+        .x_grid_spacer(round_grid(70.0))
+        .y_grid_spacer(round_grid(24.0))
         .x_axis_formatter(|mark, _| tick(mark.value, mark.step_size))
         .y_axis_formatter(|mark, _| tick(mark.value, mark.step_size))
         .show(ui, |p| {
@@ -191,12 +191,21 @@ fn plot_ui(
         });
 }
 
-/// Grid lines at round values (1, 2 or 5 × 10ⁿ apart, about five labelled), with fainter lines at a
-/// fifth of that step: the default decade grid leaves a 0–90 MN/m axis with a single label.
-#[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss, clippy::needless_pass_by_value)]
-fn round_grid(input: GridInput) -> Vec<GridMark> {
+/// Grid lines at round values (1, 2 or 5 × 10ⁿ apart, up to five labelled and at least `label_px` points
+/// apart, so egui_plot labels them: it hides labels closer than about 60 points on x), with fainter lines
+/// at a fifth of that step: the default decade grid leaves a 0–90 MN/m axis with a single label, and five
+/// ticks on a 190-point x axis were all left unlabelled.
+fn round_grid(label_px: f64) -> impl Fn(GridInput) -> Vec<GridMark> {
+    move |input| round_marks(input, label_px)
+}
+
+#[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss, clippy::cast_sign_loss, clippy::needless_pass_by_value)]
+fn round_marks(input: GridInput, label_px: f64) -> Vec<GridMark> {
     let (lo, hi) = input.bounds;
-    let ticks = nice_ticks(lo, hi, 5);
+    // `base_step_size` is the value spanned by the plot's minimum grid spacing (8 points).
+    let points = (hi - lo).abs() / (input.base_step_size / 8.0).max(f64::MIN_POSITIVE);
+    let count = ((points / label_px).floor() as usize).clamp(2, 5);
+    let ticks = nice_ticks(lo, hi, count);
     let step = match ticks.as_slice() {
         [a, b, ..] => b - a,
         _ => return ticks.into_iter().map(|value| GridMark { value, step_size: (hi - lo).abs().max(1e-12) }).collect(),

@@ -43,8 +43,8 @@ fn value(v: Option<f64>, scale: f64) -> String {
 const NUMBER_WIDTH: f32 = 58.0;
 /// Width of the Δ % column [points].
 const PERCENT_WIDTH: f32 = 48.0;
-/// Quantity column [points] below which Δ gives way; names longer than their column are cut with "…"
-/// and read in full on hover.
+/// Quantity column [points] below which Δ gives way; names longer than their column wrap onto a second
+/// line (never cut: "eccentricity ratio" must read whole).
 const QUANTITY_MIN: f32 = 120.0;
 /// Narrowest quantity column [points], in a panel too narrow for the numbers and a full name.
 const QUANTITY_LEAST: f32 = 80.0;
@@ -66,7 +66,8 @@ pub fn column_widths(room: f32, gap: f32) -> Vec<f32> {
     widths
 }
 
-/// One cell of `width` points: `text` aligned by `align`, cut with "…" (full text on hover) when longer.
+/// One cell of `width` points: `text` aligned by `align`; a left-aligned (name) cell wraps when longer, a
+/// number cell is cut with "…" (full text on hover; four digits and a prefix fit its width).
 fn cell(ui: &mut Ui, width: f32, text: RichText, align: egui::Align) -> egui::Response {
     let layout = match align {
         egui::Align::Max => egui::Layout::right_to_left(egui::Align::Center),
@@ -76,7 +77,8 @@ fn cell(ui: &mut Ui, width: f32, text: RichText, align: egui::Align) -> egui::Re
     ui.allocate_ui_with_layout(egui::vec2(width, height), layout, |ui| {
         ui.set_min_width(width);
         ui.set_max_width(width);
-        ui.add(egui::Label::new(text).truncate())
+        let label = egui::Label::new(text);
+        ui.add(if align == egui::Align::Min { label.wrap() } else { label.truncate() })
     })
     .inner
 }

@@ -10,6 +10,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use egui::{
+    TextStyle,
     Align2, Color32, ColorImage, FontId, Pos2, Rect, RichText, Sense, Shape, Stroke, TextureHandle, TextureOptions, Ui,
     Vec2,
 };
@@ -21,10 +22,11 @@ use crate::scene::colormap::ColorMap;
 use crate::scene::deformation::{deforms, Displacement, PadDeformation, Section};
 use crate::scene::field::PadMap;
 use crate::scene::summary::sig4;
+use crate::number;
 use crate::units::{MM, UM};
 
-use super::field_view::colour_bar;
-use super::plot_kit::text_within;
+use super::field_paint::colour_bar;
+use super::plot_kit::{footer_height, text_within};
 
 /// Texture size of a rasterised map.
 const RASTER: (usize, usize) = (200, 140);
@@ -154,7 +156,26 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     };
     ui.label(format!("Pad {pad}: mid-plane section drawn ×{}; {retained}", sig4(scene.exaggeration)));
     let full = ui.available_rect_before_wrap();
-    let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, 44.0));
+    let u = &scene.displacement;
+    let range = symmetric(u.min, u.max);
+    let kind = scene.shown.label().to_lowercase();
+    // In µm, the unit of the colour bars beside the drawings.
+    let scale_line =
+        format!("Colour scale: {kind} u from {} to {} µm", sig4(UM.from_si(range.0)), sig4(UM.from_si(range.1)));
+    let explanation = format!(
+        "Radial displacement of the pad, positive away from the journal: mechanical (the solved bending-mode amplitudes), \
+         thermal (the pad's growth from its temperature, TEHD; the journal's uniform growth is not the pad's) or their \
+         total. Pad thickness {}. Film h − u: the film at the same pad positions without the shown displacement.",
+        number::eng(scene.thickness_m, "m")
+    );
+    // The footer (scale, hover readout, explanation) is measured before the drawing takes the rest, so at
+    // 1280×720 its last line stays inside the view.
+    let footer = footer_height(
+        ui,
+        full.width(),
+        &[(&scale_line, TextStyle::Body), ("Hover", TextStyle::Body), (&explanation, TextStyle::Small)],
+    );
+    let avail = Rect::from_min_max(full.min, full.max - Vec2::new(0.0, footer));
     let response = ui.allocate_rect(avail, Sense::hover());
     let painter = ui.painter_at(avail);
     let hover_pos = response.hover_pos();
@@ -166,9 +187,6 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     );
     let gallery_rect = Rect::from_min_max(Pos2::new(avail.left(), avail.top() + top_h + 8.0), avail.max);
 
-    let u = &scene.displacement;
-    let range = symmetric(u.min, u.max);
-    let kind = scene.shown.label().to_lowercase();
     // The line above names the pad and the exaggeration: the drawing's title says only what it shows.
     let title = format!("{} deformation", scene.shown.label());
     let mut hover =
@@ -176,23 +194,12 @@ pub fn deformation_view_ui(ui: &mut Ui, view: &mut DeformationView, solution: &A
     hover = hover.or(maps_ui(ui, view, &painter, maps_rect, &scene, range, hover_pos));
     hover = hover.or(gallery_ui(ui, view, &painter, gallery_rect, &scene, hover_pos));
     let line = match hover {
-        Some(h) => format!("{}: {:.3} µm", h.what, UM.from_si(h.value_m)),
+        Some(h) => format!("{}: {} µm", h.what, sig4(UM.from_si(h.value_m))),
         None => "Hover over the section, a map or a mode to read the value in µm.".into(),
     };
-    ui.horizontal(|ui| {
-        ui.label(format!("Colour scale: {kind} u from {} to {} µm", sig4(UM.from_si(range.0)), sig4(UM.from_si(range.1))));
-        ui.separator();
-        ui.label(line);
-    });
-    ui.label(
-        RichText::new(format!(
-            "Radial displacement of the pad, positive away from the journal: mechanical (the solved bending-mode amplitudes), \
-             thermal (the pad's growth from its temperature, TEHD; the journal's uniform growth is not the pad's) or their \
-             total. Pad thickness {:.2} mm. Film h − u: the film at the same pad positions without the shown displacement.",
-            MM.from_si(scene.thickness_m)
-        ))
-        .small(),
-    );
+    ui.add(egui::Label::new(scale_line).wrap());
+    ui.add(egui::Label::new(line).truncate());
+    ui.add(egui::Label::new(RichText::new(explanation).small()).wrap());
 }
 
 fn controls_ui(ui: &mut Ui, view: &mut DeformationView, pads: &[usize], pad: usize, thermal: bool) {
@@ -374,7 +381,7 @@ fn map_ui(
     let s = f64::from((pos.x - r.left()) / r.width()) * arc;
     let z = map.z_m[0] + f64::from((r.bottom() - pos.y) / r.height()) * len;
     map.sample(s, z).map(|v| Hover {
-        what: format!("{title} at θ = {:.1}°, z = {:+.1} mm", map.theta_deg(s).rem_euclid(360.0), MM.from_si(z)),
+        what: format!("{title} at θ = {:.1}°, z = {} mm", map.theta_deg(s).rem_euclid(360.0), sig4(MM.from_si(z))),
         value_m: v,
     })
 }

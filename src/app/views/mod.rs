@@ -9,17 +9,20 @@
 //! list below. The workbench then shows its tab, solves what it needs while it is open, saves its settings,
 //! and `tests/suite/workbench_ui.rs` snapshots it (`tests/snapshots/view_<id>.png`).
 //!
-//! Parts of views and panels that are not tabs: [`compare_panel`], [`control_jobs`], [`control_rig`], [`limits_view`], [`results_panel`],
-//! [`rotor_edit`]; [`plot_kit`]: what the plots share (the legend above the plot, decade and phase ticks,
+//! Parts of views and panels that are not tabs: [`compare_panel`], [`control_jobs`], [`control_rig`], [`field_paint`], [`limits_view`], [`results_panel`],
+//! [`rotor_edit`], [`rotor_plots`], [`rotor_sketch`]; [`plot_kit`]: what the plots share (the legend above the plot, decade and phase ticks,
 //! the palette).
 
 pub mod compare_panel;
 pub mod control_jobs;
 pub mod control_rig;
+pub mod field_paint;
 pub mod limits_view;
 pub mod plot_kit;
 pub mod results_panel;
 pub mod rotor_edit;
+pub mod rotor_plots;
+pub mod rotor_sketch;
 pub mod view;
 
 pub use view::{View, ViewContext};

@@ -95,8 +95,8 @@ impl View for PivotLoadView {
         let s = &shown.solution;
         let loads = pad_loads(s);
         ui.label(format!(
-            "Static load W = {} N at {}°, carried by {} pads (Σ share = {} %)",
-            sig4(s.load_magnitude_n),
+            "Static load W = {} at {}°, carried by {} pads (Σ share = {} %)",
+            crate::number::eng(s.load_magnitude_n, "N"),
             sig4(DEG.from_si(s.load_angle_rad()).rem_euclid(360.0)),
             loads.len(),
             sig4(100.0 * loads.iter().map(|l| l.share).sum::<f64>())
@@ -210,7 +210,7 @@ fn sketch_ui(ui: &mut Ui, s: &Solution, loads: &[PadLoad]) {
         let anchor = to_screen.map(to);
         let outwards = (anchor - to_screen.map([0.0, 0.0])).normalized();
         let align = if outwards.x >= 0.0 { Align2::LEFT_CENTER } else { Align2::RIGHT_CENTER };
-        painter.text(anchor + outwards * 6.0, align, format!("{} N", sig4(l.magnitude_n)), font.clone(), pivot_ink);
+        painter.text(anchor + outwards * 6.0, align, crate::number::eng(l.magnitude_n, "N"), font.clone(), pivot_ink);
     }
     let k = reach / largest;
     let tip = [k * s.load_n[0], k * s.load_n[1]];
@@ -218,7 +218,7 @@ fn sketch_ui(ui: &mut Ui, s: &Solution, loads: &[PadLoad]) {
     painter.text(
         to_screen.map([0.0, 0.0]) + Vec2::new(6.0, -6.0),
         Align2::LEFT_BOTTOM,
-        format!("W = {} N", sig4(s.load_magnitude_n)),
+        format!("W = {}", crate::number::eng(s.load_magnitude_n, "N")),
         font,
         load_ink,
     );

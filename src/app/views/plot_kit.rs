@@ -2,9 +2,12 @@
 //!
 //! - [`legend_ui`]: the legend as a row of coloured names above the plot, never over the curves or the
 //!   controls (egui_plot's legend is drawn inside the plot frame);
-//! - [`decade_label`]: tick labels of a log10 axis as the numbers they stand for (`0.01`, `1`, `1k`);
+//! - [`decade_label`]: tick labels of a log10 axis as the numbers they stand for (`0.01`, `1`, `1k`), on
+//!   the grid of [`log_spacer`] (decades, and 2 and 5 within a decade when there is room);
+//! - [`labelled_spacer`]: a linear grid whose labelled step is at least a given number of points apart;
 //! - [`wrapped_phase`]: a phase curve folded into (−180°, 180°], cut where it wraps, with [`PHASE_TICKS`]
 //!   (labelled every 90°) as the axis' grid;
+//! - [`footer_height`]: the room the lines below a drawing take, measured before the drawing is laid out;
 //! - [`text_within`]: a title painted into a drawing, cut with "…" at the width it has rather than over
 //!   its neighbours.
 
@@ -77,6 +80,36 @@ pub fn labelled_spacer(label_px: f64) -> impl Fn(egui_plot::GridInput) -> Vec<eg
     })
 }
 
+/// The grid of a log10 axis (plotted values are log10 of the numbers): lines at 1 … 9 × 10ⁿ, labels at
+/// the decades and, where a decade spans enough points (less than about two decades shown), at 2 and 5 ×
+/// 10ⁿ too, so a chart over one decade of S reads "0.5, 1, 2" rather than a lone "1". egui_plot labels a
+/// mark by its `step_size` against the room it needs; 2 and 5 are given the step log10(5/2) (they stand
+/// that far from each other), the other lines 0.1.
+pub fn log_spacer(input: egui_plot::GridInput) -> Vec<egui_plot::GridMark> {
+    let (lo, hi) = input.bounds;
+    if !(lo.is_finite() && hi.is_finite()) || hi - lo > 60.0 {
+        return Vec::new();
+    }
+    let mut marks = Vec::new();
+    // Decades of a plotted range (checked finite and under 60 wide above): small integers.
+    #[allow(clippy::cast_possible_truncation, clippy::cast_precision_loss)]
+    for decade in ((lo.floor() as i64)..=(hi.ceil() as i64)).map(|n| n as f64) {
+        for m in 1..=9_u32 {
+            let value = decade + f64::from(m).log10();
+            if value < lo || value > hi {
+                continue;
+            }
+            let step_size = match m {
+                1 => 1.0,
+                2 | 5 => 2.5_f64.log10(),
+                _ => 0.1,
+            };
+            marks.push(egui_plot::GridMark { value, step_size });
+        }
+    }
+    marks
+}
+
 /// Grid steps of a phase axis in degrees: lines every 30°, labels every 90° and 180°.
 pub const PHASE_TICKS: [f64; 3] = [30.0, 90.0, 180.0];
 
@@ -112,6 +145,23 @@ pub fn wrapped_phase(x: &[f64], phase_deg: &[f64]) -> Vec<Vec<[f64; 2]>> {
 #[must_use]
 pub fn phase_label(value: f64) -> String {
     format!("{value:.0}°")
+}
+
+/// Height [points] of the lines a view writes below its drawing: each `(text, style)` wrapped at `width`,
+/// with the item spacing between them (and a little slack), so the drawing can leave exactly that room and
+/// the last line stays inside the view at 1280×720.
+#[must_use]
+pub fn footer_height(ui: &Ui, width: f32, lines: &[(&str, egui::TextStyle)]) -> f32 {
+    let color = ui.visuals().text_color();
+    let gap = ui.spacing().item_spacing.y;
+    lines
+        .iter()
+        .map(|(text, style)| {
+            let font = style.resolve(ui.style());
+            ui.painter().layout((*text).to_string(), font, color, width).size().y + gap
+        })
+        .sum::<f32>()
+        + 2.0 * gap
 }
 
 /// Paints `text` at `pos` (anchored by `align`) on one line of at most `width` points, cut with "…" when

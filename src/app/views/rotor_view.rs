@@ -6,31 +6,29 @@
 //! speed on it, crossings marked; computed once per result from the analysis' bearing stiffnesses). Full or
 //! synchronously reduced bearing coefficients are selectable.
 //!
-//! Drawables come from [`crate::scene::rotor`]; nothing here computes physics. A click on the sketch
+//! This file holds the view's state, its background analysis and its layout; the plots are in
+//! [`super::rotor_plots`], the sketch in [`super::rotor_sketch`]. Drawables come from
+//! [`crate::scene::rotor`]; nothing here computes physics. A click on the sketch
 //! selects a section, disk, bearing or unbalance to edit ([`super::rotor_edit`]); each rotor keeps its edits
 //! while another is shown. A rotor file opened from the File menu (native) joins the shipped ones.
 
 use std::sync::Arc;
 
-use egui::{Color32, RichText, Stroke, Ui};
-use egui_plot::{HLine, Line, LineStyle, Plot, Points, VLine};
+use egui::{RichText, Ui};
 
-use super::plot_kit::{decade_label, labelled_spacer, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
+use super::rotor_plots::{critical_map_ui, curves_ui, mode_shape_ui, unbalance_ui, LIMIT};
+use super::rotor_sketch::sketch_ui;
 use super::{View, ViewContext};
-use crate::app::ink::{self, Ink};
 use crate::app::frame_probe::Job;
 use crate::app::rotor_worker::{RotorEvent, RotorRunner};
 use crate::bearing::stages::StageId;
 use crate::model::rotor::{CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
 use crate::rotor::critical_map::map_over_curves;
-use crate::rotor::eigen::Whirl;
-use crate::scene::rotor::{
-    map_drawing, mode_curves, mode_shape, sketch, unbalance_bode, MapDrawing, RotorSketch, SketchItem,
-};
-use crate::units::{MM, RPM};
+use crate::scene::rotor::{map_drawing, sketch, MapDrawing};
+use crate::units::RPM;
 
-use super::rotor_edit::{edit_ui, RotorEdit, SaveRequest, Selected};
+use super::rotor_edit::{edit_ui, RotorEdit, SaveRequest};
 
 /// Shipped rotors: file name and text (bearing cases are the shipped presets named by file name).
 pub const ROTOR_PRESETS: [(&str, &str); 1] =
@@ -40,15 +38,10 @@ pub const ROTOR_PRESETS: [(&str, &str); 1] =
 const FIRST_RPM: f64 = 1000.0;
 const MAX_FACTOR: f64 = 1.3;
 const SPEEDS: usize = 41;
-/// Modes per whirl direction on the Campbell diagram and the stability map.
-const RANKS: usize = 4;
 /// Stiffnesses and modes of the critical-speed map.
 const MAP_POINTS: usize = 61;
 const MAP_MODES: usize = 4;
 
-const FORWARD: Color32 = Color32::from_rgb(0, 114, 178);
-const BACKWARD: Ink = Ink { dark: Color32::from_rgb(230, 159, 0), light: Color32::from_rgb(165, 110, 0) };
-const LIMIT: Ink = ink::EXCEEDED;
 
 /// The plot shown under the sketch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -325,8 +318,10 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
     });
     summary_ui(ui, &result, &rotor);
     match view.tab {
-        RotorTab::Campbell | RotorTab::Stability => curves_ui(ui, &result, &rotor, view.tab),
-        RotorTab::ModeShape => mode_shape_ui(ui, view, &result, &rotor),
+        RotorTab::Campbell | RotorTab::Stability => {
+            curves_ui(ui, &result, &rotor, view.tab == RotorTab::Campbell);
+        }
+        RotorTab::ModeShape => mode_shape_ui(ui, (&mut view.speed_index, &mut view.mode_index), &result, &rotor),
         RotorTab::Unbalance => unbalance_ui(ui, &result, &rotor),
         RotorTab::CriticalMap => {
             let map = view.map.get_or_insert_with(|| {
@@ -379,409 +374,4 @@ fn summary_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
     for w in &r.report.warnings {
         ui.label(RichText::new(w.to_string()).color(LIMIT.of(ui)));
     }
-}
-
-fn whirl_color(w: Whirl, backward: Color32) -> Color32 {
-    match w {
-        Whirl::Forward => FORWARD,
-        Whirl::Backward => backward,
-    }
-}
-
-fn plot_without_legend(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
-    let width = ui.available_width().min(ui.clip_rect().width());
-    Plot::new(id.to_string()).height(height).width(width).allow_scroll(false)
-}
-
-/// How a legend entry's sample is drawn.
-#[derive(Clone, Copy)]
-enum Sample {
-    Solid,
-    Dashed,
-    Dotted,
-    Dot,
-}
-
-/// The legend of the Campbell diagram and the stability map, as a row above the plot: inside it, the
-/// entries (eight modes, the 1× line, the critical speeds, the operating range) covered much of the curves
-/// at 1280×720. Short labels keep it to one row there; each curve keeps its name (F1, B2, …: whirl and rank)
-/// for the plot's hover label.
-fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<f64>) {
-    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
-    let grey = Color32::from_gray(150);
-    let mut entries =
-        vec![("forward".to_string(), FORWARD, Sample::Solid), ("backward".to_string(), backward, Sample::Dashed)];
-    if campbell {
-        entries.push(("1×".into(), grey, Sample::Dashed));
-        entries.push(("1× critical".into(), limit, Sample::Dot));
-    } else {
-        entries.push(("δ = 0".into(), grey, Sample::Solid));
-        if let Some(x) = onset {
-            entries.push((format!("onset {x:.0} rpm"), limit, Sample::Solid));
-        }
-    }
-    if operating {
-        entries.push(("operating range".into(), grey, Sample::Dotted));
-    }
-    ui.horizontal_wrapped(|ui| {
-        for (label, color, sample) in entries {
-            let (rect, sample_response) = ui.allocate_exact_size(egui::vec2(18.0, 12.0), egui::Sense::hover());
-            sample_response
-                .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend sample: {label}")));
-            let (a, b) = (rect.left_center(), rect.right_center());
-            let stroke = Stroke::new(1.6, color);
-            let painter = ui.painter();
-            match sample {
-                Sample::Solid => {
-                    painter.line_segment([a, b], stroke);
-                }
-                Sample::Dashed => {
-                    painter.extend(egui::Shape::dashed_line(&[a, b], stroke, 5.0, 3.0));
-                }
-                Sample::Dotted => {
-                    painter.extend(egui::Shape::dotted_line(&[a, b], color, 4.0, 1.0));
-                }
-                Sample::Dot => {
-                    painter.circle_filled(rect.center(), 4.0, color);
-                }
-            }
-            ui.label(RichText::new(label).small());
-        }
-    });
-}
-
-fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, tab: RotorTab) {
-    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
-    let c = mode_curves(r, rotor, RANKS);
-    let height = (ui.available_height() - 10.0).max(160.0);
-    let campbell = tab == RotorTab::Campbell;
-    let (id, y_label, curves) = if campbell {
-        ("rotor_campbell", "damped frequency [Hz]", &c.frequency_hz)
-    } else {
-        ("rotor_stability", "log decrement [–]", &c.log_dec)
-    };
-    curves_legend_ui(ui, campbell, c.operating_rpm.is_some(), c.onset_rpm);
-    let height = (height - ui.spacing().interact_size.y - ui.spacing().item_spacing.y).max(160.0);
-    plot_without_legend(id, ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label(y_label)
-        .x_grid_spacer(labelled_spacer(70.0))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .show(ui, |p| {
-        for curve in curves {
-            let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
-            p.line(
-                Line::new(curve.name.clone(), curve.points.clone())
-                    .color(whirl_color(curve.whirl, backward))
-                    .style(style)
-                    .width(1.6),
-            );
-        }
-        if let Some([a, b]) = c.operating_rpm {
-            for x in [a, b] {
-                p.vline(
-                    VLine::new("operating range", x).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()),
-                );
-            }
-        }
-        if campbell {
-            p.line(Line::new("1×", c.one_x.to_vec()).color(Color32::from_gray(120)).style(LineStyle::dashed_dense()));
-            p.points(Points::new("1× critical speeds", c.critical.clone()).radius(5.0).color(limit));
-        } else {
-            p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
-            if let Some(x) = c.onset_rpm {
-                p.vline(VLine::new(format!("onset {x:.0} rpm"), x).color(limit).width(2.0));
-            }
-        }
-    });
-}
-
-fn mode_shape_ui(ui: &mut Ui, view: &mut RotorView, r: &AnalysisResult, rotor: &Rotor) {
-    let last = r.speeds.len().saturating_sub(1);
-    view.speed_index = view.speed_index.min(last);
-    let index_rpm: Vec<f64> =
-        (0..r.speeds.len()).map(|i| RPM.from_si(r.speeds[i].point.speed_rad_s)).collect();
-    ui.horizontal(|ui| {
-        ui.add(
-            egui::Slider::new(&mut view.speed_index, 0..=last)
-                .custom_formatter(|v, _| format!("{:.0} rpm", index_rpm.get(nearest_index(v)).copied().unwrap_or(0.0)))
-                .text("speed"),
-        );
-        let modes = &r.speeds[view.speed_index].point.modes.modes;
-        view.mode_index = view.mode_index.min(modes.len().saturating_sub(1));
-        let describe = |i: usize| {
-            modes.get(i).map_or_else(String::new, |m| {
-                format!(
-                    "{} {:.1} Hz, δ {:.3}",
-                    if m.whirl == Whirl::Forward { "forward" } else { "backward" },
-                    m.frequency_hz(),
-                    m.log_dec
-                )
-            })
-        };
-        let label = ui.label("Mode");
-        egui::ComboBox::from_id_salt("rotor-mode")
-            .selected_text(describe(view.mode_index))
-            .show_ui(ui, |ui| {
-                for i in 0..modes.len().min(2 * RANKS) {
-                    ui.selectable_value(&mut view.mode_index, i, describe(i));
-                }
-            })
-            .response
-            .labelled_by(label.id);
-    });
-    let Some(s) = mode_shape(r, rotor, view.speed_index, view.mode_index) else {
-        ui.label("No mode at this speed.");
-        return;
-    };
-    let z_mm: Vec<f64> = s.z_m.iter().map(|z| MM.from_si(*z)).collect();
-    let color = whirl_color(s.whirl, BACKWARD.of(ui));
-    let bearings: Vec<f64> = rotor.bearings.iter().map(|b| z_mm[b.node]).collect();
-    let whirl = if s.whirl == Whirl::Forward { "forward" } else { "backward" };
-    legend_ui(
-        ui,
-        &[
-            (format!("x ({whirl} whirl)"), color),
-            ("y (dashed)".into(), color),
-            ("bearings (dotted)".into(), Color32::from_gray(150)),
-        ],
-    );
-    plot_without_legend("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
-        .x_axis_label("axial position [mm]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .y_axis_label("deflection (largest = 1)")
-        .show(ui, |p| {
-            p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
-            p.line(
-                Line::new("x", z_mm.iter().zip(&s.x).map(|(z, v)| [*z, *v]).collect::<Vec<_>>())
-                    .color(color)
-                    .width(2.5),
-            );
-            p.line(
-                Line::new("y", z_mm.iter().zip(&s.y).map(|(z, v)| [*z, *v]).collect::<Vec<_>>())
-                    .color(color)
-                    .style(LineStyle::dashed_loose())
-                    .width(1.5),
-            );
-            for z in &bearings {
-                p.vline(VLine::new("bearings", *z).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
-            }
-        });
-}
-
-fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
-    let limit = LIMIT.of(ui);
-    let b = unbalance_bode(r, rotor);
-    let over = !b.exceedances().is_empty();
-    let sentence = b.api617_sentence();
-    ui.label(if over { RichText::new(sentence).color(limit).strong() } else { RichText::new(sentence) });
-    let colors: Vec<Color32> = PALETTE.iter().copied().cycle().take(b.nodes.len()).collect();
-    let mut legend: Vec<(String, Color32)> = b.nodes.iter().zip(&colors).map(|(n, c)| (n.name.clone(), *c)).collect();
-    legend.push(("API 617 limit 25.4 sqrt(12000/N) µm (dashed)".into(), limit));
-    legend_ui(ui, &legend);
-    let height = ((ui.available_height() - 20.0) / 2.0).max(120.0);
-    let link = ui.scope_id().with("rotor_bode");
-    plot_without_legend("rotor_unbalance_amplitude", ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label("orbit p-p [µm]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .include_y(0.0)
-        .link_axis(link, [true, false])
-        .show(ui, |p| {
-            for (n, color) in b.nodes.iter().zip(&colors) {
-                p.line(Line::new(n.name.clone(), n.amplitude_um.clone()).color(*color).width(1.6));
-            }
-            p.line(
-                Line::new("API 617 limit", b.api617_um.clone()).color(limit).style(LineStyle::dashed_dense()).width(2.0),
-            );
-        });
-    plot_without_legend("rotor_unbalance_phase", ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label("phase of x [°]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
-        .y_axis_formatter(|m, _| phase_label(m.value))
-        .include_y(-180.0)
-        .include_y(180.0)
-        .link_axis(link, [true, false])
-        .show(ui, |p| {
-            for (n, color) in b.nodes.iter().zip(&colors) {
-                let x: Vec<f64> = n.phase_deg.iter().map(|q| q[0]).collect();
-                let y: Vec<f64> = n.phase_deg.iter().map(|q| q[1]).collect();
-                for piece in wrapped_phase(&x, &y) {
-                    p.line(Line::new(n.name.clone(), piece).color(*color).width(1.6));
-                }
-            }
-        });
-}
-
-fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
-    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
-    let colors = PALETTE;
-    let mut legend: Vec<(String, Color32)> =
-        (0..m.modes.len()).map(|i| (format!("mode {}", i + 1), colors[i % colors.len()])).collect();
-    legend.push(("bearings k_xx (dashed), k_yy (dotted)".into(), backward));
-    legend.push(("dots: crossings, critical speeds on the bearings".into(), limit));
-    legend_ui(ui, &legend);
-    plot_without_legend("rotor_critical_map", ui, (ui.available_height() - 10.0).max(160.0))
-        .x_axis_label("support stiffness at the bearings [N/m]")
-        .y_axis_label("undamped critical speed [rpm]")
-        .x_grid_spacer(egui_plot::log_grid_spacer(10))
-        .x_axis_formatter(|mark, _| decade_label(mark.value))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .show(ui, |p| {
-            for (i, (line, color)) in m.modes.iter().zip(colors.iter().cycle()).enumerate() {
-                p.line(Line::new(format!("mode {}", i + 1), line.clone()).color(*color).width(1.8));
-            }
-            for (name, points) in &m.bearings {
-                let style = if name.ends_with("k_xx") { LineStyle::dashed_dense() } else { LineStyle::dotted_dense() };
-                p.line(Line::new(name.clone(), points.clone()).color(backward).style(style).width(1.6));
-            }
-            p.points(
-                Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(limit),
-            );
-        });
-}
-
-/// A slider value (an index held as `f64`) as an index.
-#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)] // rounded and clamped at 0
-fn nearest_index(v: f64) -> usize {
-    v.round().max(0.0) as usize
-}
-
-/// Where the sketch draws an item of `kind` at axial screen position `px`, about the shaft axis `mid`.
-fn item_rect(kind: SketchItem, px: f32, mid: f32) -> egui::Rect {
-    match kind {
-        SketchItem::Disk => egui::Rect::from_center_size(egui::pos2(px, mid), egui::vec2(6.0, 60.0)),
-        SketchItem::Bearing => {
-            egui::Rect::from_min_max(egui::pos2(px - 7.0, mid + 17.0), egui::pos2(px + 7.0, mid + 29.0))
-        }
-        SketchItem::Numbers | SketchItem::Support => {
-            egui::Rect::from_center_size(egui::pos2(px, mid + 24.0), egui::vec2(10.0, 10.0))
-        }
-        SketchItem::Unbalance => egui::Rect::from_center_size(egui::pos2(px, mid - 38.0), egui::vec2(8.0, 8.0)),
-    }
-}
-
-/// The selection an item of the sketch stands for: its `rank`-th entry among the items of its table.
-fn item_selection(kind: SketchItem, rank: usize) -> Option<Selected> {
-    match kind {
-        SketchItem::Disk => Some(Selected::Disk(rank)),
-        SketchItem::Bearing | SketchItem::Numbers => Some(Selected::Bearing(rank)),
-        SketchItem::Unbalance => Some(Selected::Unbalance(rank)),
-        SketchItem::Support => None,
-    }
-}
-
-/// The rotor to scale along its axis, diameters exaggerated to fit the strip; the `selected` item framed.
-/// A click selects the item under the pointer (within a few points), else the shaft section there
-/// (`section_of_element`: the section of each element).
-#[allow(clippy::cast_possible_truncation)] // millimetres to screen points
-fn sketch_ui(
-    ui: &mut Ui,
-    s: &RotorSketch,
-    section_of_element: &[usize],
-    selected: Option<Selected>,
-) -> Option<Selected> {
-    let width = ui.available_width().min(ui.clip_rect().width());
-    let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 124.0), egui::Sense::click());
-    response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, "rotor sketch"));
-    let painter = ui.painter_at(rect);
-    let (limit, backward) = (LIMIT.of(ui), BACKWARD.of(ui));
-    let margin = 12.0;
-    let sx = (rect.width() - 2.0 * margin) / s.length_mm.max(1e-9) as f32;
-    let sy = 30.0 / s.max_diameter_mm.max(1e-9) as f32;
-    let x = |z: f64| rect.left() + margin + z as f32 * sx;
-    let mid = rect.top() + 50.0;
-    let fill = Color32::from_gray(170);
-    let mark = Stroke::new(2.0, ui.visuals().strong_text_color());
-    // Items with their rank in their rotor table (disks; bearings and numbers; supports; unbalances).
-    let mut counts = [0_usize; 4];
-    let items: Vec<(f64, SketchItem, usize)> = s
-        .items
-        .iter()
-        .map(|&(z, kind, _)| {
-            let table = match kind {
-                SketchItem::Disk => 0,
-                SketchItem::Bearing | SketchItem::Numbers => 1,
-                SketchItem::Support => 2,
-                SketchItem::Unbalance => 3,
-            };
-            counts[table] += 1;
-            (z, kind, counts[table] - 1)
-        })
-        .collect();
-    for (e, [z0, z1, d, di]) in s.sections.iter().enumerate() {
-        let (h, hi) = (*d as f32 * sy / 2.0, *di as f32 * sy / 2.0);
-        let r = egui::Rect::from_min_max(egui::pos2(x(*z0), mid - h), egui::pos2(x(*z1), mid + h));
-        painter.rect_filled(r, 0.0, fill);
-        if hi > 0.0 {
-            painter.rect_filled(
-                egui::Rect::from_min_max(egui::pos2(x(*z0), mid - hi), egui::pos2(x(*z1), mid + hi)),
-                0.0,
-                ui.visuals().extreme_bg_color,
-            );
-        }
-        if let (Some(Selected::Section(i)), Some(&sec)) = (selected, section_of_element.get(e)) {
-            if i == sec {
-                painter.rect_stroke(r, 0.0, mark, egui::StrokeKind::Outside);
-            }
-        }
-    }
-    for &(z, kind, rank) in &items {
-        let r = item_rect(kind, x(z), mid);
-        match kind {
-            SketchItem::Disk => {
-                painter.rect_filled(r, 1.0, FORWARD);
-            }
-            SketchItem::Bearing => {
-                painter.add(egui::Shape::convex_polygon(
-                    vec![r.center_top(), r.left_bottom(), r.right_bottom()],
-                    backward,
-                    Stroke::NONE,
-                ));
-            }
-            SketchItem::Numbers | SketchItem::Support => {
-                painter.line_segment([r.left_top(), r.right_bottom()], Stroke::new(2.0, limit));
-                painter.line_segment([r.left_bottom(), r.right_top()], Stroke::new(2.0, limit));
-            }
-            SketchItem::Unbalance => {
-                painter.circle_filled(r.center(), 4.0, limit);
-                painter
-                    .line_segment([r.center_bottom(), egui::pos2(r.center().x, mid - 30.0)], Stroke::new(1.0, limit));
-            }
-        }
-        if selected.is_some() && item_selection(kind, rank) == selected {
-            painter.rect_stroke(r.expand(3.0), 2.0, mark, egui::StrokeKind::Outside);
-        }
-    }
-    let text = ui.visuals().weak_text_color();
-    // Two lines under the shaft: the scale, then the legend (side by side they overlap in a narrow panel).
-    painter.text(
-        egui::pos2(rect.left() + margin, rect.bottom() - 16.0),
-        egui::Align2::LEFT_BOTTOM,
-        format!("0 — {:.0} mm (diameters ×{:.0})", s.length_mm, sy / sx),
-        egui::FontId::proportional(11.0),
-        text,
-    );
-    painter.text(
-        egui::pos2(rect.left() + margin, rect.bottom() - 2.0),
-        egui::Align2::LEFT_BOTTOM,
-        "blue: disks, orange: bearings, red ×: coefficients by numbers, red dots: unbalances",
-        egui::FontId::proportional(11.0),
-        text,
-    );
-    let click = response.interact_pointer_pos().filter(|_| response.clicked())?;
-    // The nearest item whose drawing (grown by a few points) holds the click, else the section at its z.
-    let hit = items
-        .iter()
-        .filter(|&&(z, kind, _)| item_rect(kind, x(z), mid).expand(4.0).contains(click))
-        .min_by(|a, b| (x(a.0) - click.x).abs().total_cmp(&(x(b.0) - click.x).abs()))
-        .and_then(|&(_, kind, rank)| item_selection(kind, rank));
-    hit.or_else(|| {
-        let z = f64::from((click.x - rect.left() - margin) / sx);
-        let e = s.sections.iter().position(|sec| z >= sec[0] && z <= sec[1])?;
-        section_of_element.get(e).map(|&i| Selected::Section(i))
-    })
 }

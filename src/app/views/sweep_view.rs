@@ -20,7 +20,7 @@ use crate::number::sig;
 use crate::scene::sommerfeld::{chart, ChartGeometry, ChartPlot};
 use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
 
-use super::plot_kit::{decade_label, legend_ui, PALETTE};
+use super::plot_kit::{decade_label, labelled_spacer, legend_ui, log_spacer, PALETTE};
 use crate::study::COLUMNS;
 
 /// The swept curve and the current case's point (sky blue and amber on the dark theme; darker on the light).
@@ -114,6 +114,11 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec, case: Option<&crate::model::Ca
         if spec.key != before {
             if let Some((lo, hi)) = crate::model::schema::spec(&spec.key).and_then(|s| s.typical) {
                 (spec.from, spec.to) = (lo, hi);
+            }
+            // The chart is a load sweep: another input is drawn against itself, not against an S that
+            // hardly moves (a preload sweep's points piled on one S).
+            if spec.chart {
+                (spec.chart, spec.against_sommerfeld) = (false, false);
             }
         }
         let unit = spec.unit();
@@ -248,8 +253,10 @@ fn chart_ui(ui: &mut Ui, table: &crate::scene::sweep::SweepTable, g: &ChartGeome
             .height(height)
             .width(ui.available_width())
             .x_axis_label("Sommerfeld number S [–]")
-            .x_grid_spacer(egui_plot::log_grid_spacer(10))
+            .x_grid_spacer(log_spacer)
             .x_axis_formatter(|m, _| decade_label(m.value))
+            // Labelled steps 24 points apart: two or three numbers even on a 70-point plot.
+            .y_grid_spacer(labelled_spacer(24.0))
             .allow_scroll(false)
             .show(ui, |plot| {
                 let log = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> { pts.iter().map(|q| [q[0].log10(), q[1]]).collect() };
