@@ -6,7 +6,9 @@
 //! - the frame's work (time spent inside the app's `ui`, the solver's per-frame budget included),
 //!
 //! with the job (idle, isothermal or THD solve and its stage, sweep, pin re-solve). Percentiles are by
-//! nearest rank. Frame times are measured here, never asserted in tests (docs/PERFORMANCE.md has them).
+//! nearest rank. It also logs two start-up milestones, in milliseconds since the page began loading (the
+//! browser's clock, which includes downloading and compiling the program): the first frame drawn and the
+//! first frame that shows a solution of the edited case. Frame times are measured here, never asserted in tests (docs/PERFORMANCE.md has them).
 
 use std::fmt;
 
@@ -88,6 +90,9 @@ pub struct FrameProbe {
     job: Option<Job>,
     /// (interval, work) of the frames of the current job since the last summary [s].
     frames: Vec<(f64, f64)>,
+    /// The start-up milestones already logged: the first frame, the first solution shown.
+    first_frame_seen: bool,
+    first_solution_seen: bool,
 }
 
 impl FrameProbe {
@@ -110,6 +115,24 @@ impl FrameProbe {
             self.frames.push((dt, work_s));
         }
         summary.or_else(|| (self.frames.len() >= FRAMES_PER_REPORT).then(|| self.summarise()).flatten())
+    }
+
+    /// The start-up milestones this frame reaches, as console lines: the first frame (at `page_ms` since the
+    /// page began loading, its own work `work_s`) and the first frame with a solution shown.
+    pub fn milestones(&mut self, page_ms: f64, work_s: f64, solution_shown: bool) -> Vec<String> {
+        let mut lines = Vec::new();
+        if !self.first_frame_seen {
+            self.first_frame_seen = true;
+            lines.push(format!(
+                "start-up: first frame at {page_ms:.0} ms after the page began loading (the frame's work {:.0} ms)",
+                MS.from_si(work_s)
+            ));
+        }
+        if solution_shown && !self.first_solution_seen {
+            self.first_solution_seen = true;
+            lines.push(format!("start-up: first solution shown at {page_ms:.0} ms after the page began loading"));
+        }
+        lines
     }
 
     /// The summary of the frames collected for the current job (emptied), if any.
@@ -163,6 +186,20 @@ mod tests {
         assert_eq!(percentile(&v, 0.95), 19.0);
         assert_eq!(percentile(&v, 1.0), 20.0);
         assert_eq!(percentile(&[3.0], 0.5), 3.0);
+    }
+
+    /// Each milestone is logged once: the first frame at once, the first solution when one is shown.
+    #[test]
+    fn start_up_milestones_are_logged_once() {
+        let mut probe = FrameProbe::default();
+        let first = probe.milestones(812.4, 0.2504, false);
+        assert_eq!(first, ["start-up: first frame at 812 ms after the page began loading (the frame's work 250 ms)"]);
+        assert!(probe.milestones(900.0, 0.01, false).is_empty());
+        assert_eq!(
+            probe.milestones(1500.6, 0.01, true),
+            ["start-up: first solution shown at 1501 ms after the page began loading"]
+        );
+        assert!(probe.milestones(1600.0, 0.01, true).is_empty());
     }
 
     /// Frames 1..=n ms apart: a summary per job change and per FRAMES_PER_REPORT frames.

@@ -376,6 +376,12 @@ impl eframe::App for WorkbenchApp {
             if let Some(summary) = probe.frame(start, dt, job) {
                 log::info!("{summary}");
             }
+            #[cfg(target_arch = "wasm32")]
+            if let Some(page_ms) = web_sys::window().and_then(|w| w.performance()).map(|p| p.now()) {
+                for line in probe.milestones(page_ms, dt, self.shown.is_some()) {
+                    log::info!("{line}");
+                }
+            }
             ui.ctx().request_repaint();
         }
     }
