@@ -183,7 +183,9 @@ pub fn rig_ui(ui: &mut Ui, page: &mut RigPage) {
         .x_axis_label("frequency [Hz]")
         .y_axis_label("X/F [µm/kN]")
         .x_grid_spacer(labelled_spacer(60.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(labelled_spacer(80.0))
+        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .include_y(0.0)
         .show(ui, |p| {
             p.line(
@@ -201,6 +203,7 @@ pub fn rig_ui(ui: &mut Ui, page: &mut RigPage) {
         .x_axis_label("frequency [Hz]")
         .y_axis_label("phase [deg]")
         .x_grid_spacer(labelled_spacer(60.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
         .y_axis_formatter(|m, _| phase_label(m.value))
         .include_y(-180.0)

@@ -520,7 +520,9 @@ fn locus_ui(ui: &mut Ui, tuned: &Tuned, height: f32) {
         .x_axis_label("real part [1/s]")
         .y_axis_label("damped frequency [Hz]")
         .x_grid_spacer(labelled_spacer(60.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(labelled_spacer(32.0))
+        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .include_x(x_min * 1.05)
         .include_x(x_max * 1.05)
         .include_y(0.0)
@@ -543,7 +545,9 @@ fn speed_plot(id: &str, y_label: &str, ui: &Ui, height: f32) -> Plot<'static> {
         .x_axis_label("speed [rpm]")
         .y_axis_label(y_label.to_string())
         .x_grid_spacer(labelled_spacer(70.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(labelled_spacer(28.0))
+        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .include_y(0.0)
 }
 

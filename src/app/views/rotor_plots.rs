@@ -115,7 +115,9 @@ pub(super) fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, campbell
         .x_axis_label("speed [rpm]")
         .y_axis_label(y_label)
         .x_grid_spacer(labelled_spacer(70.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(labelled_spacer(32.0))
+        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .show(ui, |p| {
             for curve in curves {
                 let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
@@ -207,6 +209,7 @@ pub(super) fn mode_shape_ui(
     plot_without_legend("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
         .x_axis_label("axial position [mm]")
         .x_grid_spacer(labelled_spacer(70.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_axis_label("deflection (largest = 1)")
         .show(ui, |p| {
             p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
@@ -244,7 +247,9 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
         .x_axis_label("speed [rpm]")
         .y_axis_label("orbit p-p [µm]")
         .x_grid_spacer(labelled_spacer(70.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(labelled_spacer(32.0))
+        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .include_y(0.0)
         .link_axis(link, [true, false])
         .show(ui, |p| {
@@ -262,6 +267,7 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
         .x_axis_label("speed [rpm]")
         .y_axis_label("phase of x [°]")
         .x_grid_spacer(labelled_spacer(70.0))
+        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
         .y_axis_formatter(|m, _| phase_label(m.value))
         .include_y(-180.0)
@@ -293,6 +299,7 @@ pub(super) fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
         .x_grid_spacer(egui_plot::log_grid_spacer(10))
         .x_axis_formatter(|mark, _| decade_label(mark.value))
         .y_grid_spacer(labelled_spacer(32.0))
+        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
         .show(ui, |p| {
             for (i, (line, color)) in m.modes.iter().zip(colors.iter().cycle()).enumerate() {
                 p.line(Line::new(format!("mode {}", i + 1), line.clone()).color(*color).width(1.8));

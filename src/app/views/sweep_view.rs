@@ -8,7 +8,7 @@
 //! only reads its table.
 
 use egui::{Color32, ComboBox, DragValue, RichText, Ui};
-use egui_plot::{Legend, Line, MarkerShape, Plot, Points, VLine};
+use egui_plot::{Line, MarkerShape, Plot, Points, VLine};
 
 use super::{View, ViewContext};
 use crate::app::ink::{self, Ink};
@@ -16,7 +16,7 @@ use crate::app::frame_probe::Job;
 use crate::app::sweep_job::SweepJob;
 use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
-use crate::number::sig;
+use crate::number::{sig, tick};
 use crate::scene::sommerfeld::{chart, ChartGeometry, ChartPlot};
 use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
 
@@ -257,6 +257,7 @@ fn chart_ui(ui: &mut Ui, table: &crate::scene::sweep::SweepTable, g: &ChartGeome
             .x_axis_formatter(|m, _| decade_label(m.value))
             // Labelled steps 24 points apart: two or three numbers even on a 70-point plot.
             .y_grid_spacer(labelled_spacer(24.0))
+            .y_axis_formatter(|m, _| tick(m.value, m.step_size))
             .allow_scroll(false)
             .show(ui, |plot| {
                 let log = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> { pts.iter().map(|q| [q[0].log10(), q[1]]).collect() };
@@ -309,16 +310,30 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
             let largest = table.series(name, against_s).iter().fold(0.0_f64, |m, p| m.max(p[1].abs()));
             let (scale, unit) = super::compare_panel::row_unit(unit, Some(largest), None);
             let scaled = |pts: Vec<[f64; 2]>| -> Vec<[f64; 2]> { pts.into_iter().map(|p| [p[0], p[1] / scale]).collect() };
-            ui.label(RichText::new(format!("{label} [{unit}]")).strong());
             let series = scaled(table.series(name, against_s));
             let flagged = scaled(table.series_over_limits(name, against_s));
             let (line, current, over, reference) =
                 (LINE.of(ui), CURRENT.of(ui), ink::EXCEEDED.of(ui), ink::REFERENCE.of(ui));
+            // The title and the legend in one row above the plot, never over the points.
+            let mut legend = vec![(label.clone(), line), ("this case".to_string(), current)];
+            if !flagged.is_empty() {
+                legend.push(("beyond a design limit".to_string(), over));
+            }
+            ui.horizontal(|ui| {
+                ui.label(RichText::new(format!("{label} [{unit}]")).strong());
+                ui.add_space(12.0);
+                legend_ui(ui, &legend);
+            });
+            // Labelled grids on both axes, so a short plot (a small window, many outputs) keeps its numbers.
             Plot::new(("sweep-plot", name.as_str()))
                 .height(height)
-                .legend(Legend::default())
                 .x_axis_label(x_label.clone())
                 .y_axis_label(unit.clone())
+                .x_grid_spacer(labelled_spacer(60.0))
+                .y_grid_spacer(labelled_spacer(24.0))
+                // Labels with the digits their step needs (0.05 steps read 0.45, not 0.5 twice).
+                .x_axis_formatter(|m, _| tick(m.value, m.step_size))
+                .y_axis_formatter(|m, _| tick(m.value, m.step_size))
                 .allow_scroll(false)
                 .show(ui, |p| {
                     p.line(Line::new(label.clone(), series.clone()).color(line).width(1.8));
