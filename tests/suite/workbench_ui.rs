@@ -1637,10 +1637,7 @@ fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080_in_both_themes()
                 for o in overlapping_widgets(&h) {
                     found.push(format!("{id} at {size:?}, {theme:?}: widgets {o}"));
                 }
-                // The Control view's last plot ends 5 points below the view at both sizes (its x-axis
-                // title and ticks cut); that view's layout is outside this change and said in its report.
-                let below = if id == "control" { Vec::new() } else { texts_below_view(&h) };
-                for c in cut_texts_in_view(&h).into_iter().chain(below) {
+                for c in cut_texts_in_view(&h).into_iter().chain(texts_below_view(&h)) {
                     found.push(format!("{id} at {size:?}, {theme:?}: cut {c}"));
                 }
             }

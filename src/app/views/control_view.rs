@@ -390,7 +390,9 @@ pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
     let height = (ui.available_height() - 8.0).max(240.0);
     ui.columns(2, |cols| {
         locus_ui(&mut cols[0], tuned, height);
-        let half = (height - 2.0 * cols[1].spacing().interact_size.y - 16.0) / 2.0;
+        // Above the two plots: the stability legend, the node selector and the unbalance legend (which wraps
+        // to two lines in a narrow column): four rows of widgets and their spacing.
+        let half = (height - 4.0 * cols[1].spacing().interact_size.y - 24.0) / 2.0;
         stability_ui(&mut cols[1], &built, tuned, onset_open, half.max(100.0));
         unbalance_ui(&mut cols[1], &built, tuned, &nodes, &mut node, half.max(100.0));
     });
@@ -515,7 +517,8 @@ fn locus_ui(ui: &mut Ui, tuned: &Tuned, height: f32) {
         let _ = write!(margins, "\nvalve {a}: GM {gm}, PM {pm}, P = {p}");
     }
     margins.push_str("\n(P: unstable poles of the broken loop)");
-    let height = (height - ui.spacing().interact_size.y - 8.0).max(200.0);
+    // Above the plot: its legend, two rows when it wraps in a narrow column.
+    let height = (height - 2.0 * ui.spacing().interact_size.y - 12.0).max(200.0);
     plot("control_root_locus", ui, height)
         .x_axis_label("real part [1/s]")
         .y_axis_label("damped frequency [Hz]")
