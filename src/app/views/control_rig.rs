@@ -10,7 +10,7 @@
 use egui::{Color32, RichText, Ui};
 use egui_plot::{Line, LineStyle, Plot};
 
-use super::plot_kit::{labelled_spacer, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
+use super::plot_kit::{legend_ui, phase_label, wrapped_phase, LabelledAxes, PALETTE, PHASE_TICKS};
 use crate::app::job_runner::{Event, Runner, Work};
 use crate::bearing::frf::model::{band, FrfModel};
 use crate::bearing::{NoCancel, Stages};
@@ -182,10 +182,8 @@ pub fn rig_ui(ui: &mut Ui, page: &mut RigPage) {
         .allow_scroll(false)
         .x_axis_label("frequency [Hz]")
         .y_axis_label("X/F [µm/kN]")
-        .x_grid_spacer(labelled_spacer(60.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
-        .y_grid_spacer(labelled_spacer(80.0))
-        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(60.0)
+        .labelled_y(80.0)
         .include_y(0.0)
         .show(ui, |p| {
             p.line(
@@ -202,8 +200,7 @@ pub fn rig_ui(ui: &mut Ui, page: &mut RigPage) {
         .allow_scroll(false)
         .x_axis_label("frequency [Hz]")
         .y_axis_label("phase [deg]")
-        .x_grid_spacer(labelled_spacer(60.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(60.0)
         .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
         .y_axis_formatter(|m, _| phase_label(m.value))
         .include_y(-180.0)

@@ -32,7 +32,7 @@ use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, Points, Text, VLine};
 
 use super::control_jobs::{Build, Built, Tune, Tuned, Tuning, GAIN_RANGE, SPEEDS};
 use super::control_rig::{rig_ui, RigPage};
-use super::plot_kit::{labelled_spacer, legend_ui, PALETTE};
+use super::plot_kit::{legend_ui, LabelledAxes, PALETTE};
 use super::{View, ViewContext};
 use crate::app::job_runner::{Event, Runner};
 use crate::app::frame_probe::Job;
@@ -522,10 +522,8 @@ fn locus_ui(ui: &mut Ui, tuned: &Tuned, height: f32) {
     plot("control_root_locus", ui, height)
         .x_axis_label("real part [1/s]")
         .y_axis_label("damped frequency [Hz]")
-        .x_grid_spacer(labelled_spacer(60.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(60.0)
+        .labelled_y(32.0)
         .include_x(x_min * 1.05)
         .include_x(x_max * 1.05)
         .include_y(0.0)
@@ -547,10 +545,8 @@ fn speed_plot(id: &str, y_label: &str, ui: &Ui, height: f32) -> Plot<'static> {
     plot(id, ui, height)
         .x_axis_label("speed [rpm]")
         .y_axis_label(y_label.to_string())
-        .x_grid_spacer(labelled_spacer(70.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
-        .y_grid_spacer(labelled_spacer(28.0))
-        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(70.0)
+        .labelled_y(28.0)
         .include_y(0.0)
 }
 

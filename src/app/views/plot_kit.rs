@@ -4,7 +4,8 @@
 //!   controls (egui_plot's legend is drawn inside the plot frame);
 //! - [`decade_label`]: tick labels of a log10 axis as the numbers they stand for (`0.01`, `1`, `1k`), on
 //!   the grid of [`log_spacer`] (decades, and 2 and 5 within a decade when there is room);
-//! - [`labelled_spacer`]: a linear grid whose labelled step is at least a given number of points apart;
+//! - [`labelled_spacer`]: a linear grid whose labelled step is at least a given number of points apart, and
+//!   [`LabelledAxes`]: plot axes on that grid, labelled with the digits their step needs;
 //! - [`wrapped_phase`]: a phase curve folded into (−180°, 180°], cut where it wraps, with [`PHASE_TICKS`]
 //!   (labelled every 90°) as the axis' grid;
 //! - [`footer_height`]: the room the lines below a drawing take, measured before the drawing is laid out;
@@ -78,6 +79,27 @@ pub fn labelled_spacer(label_px: f64) -> impl Fn(egui_plot::GridInput) -> Vec<eg
         let label = nice_up(per_px * label_px);
         [nice_up(per_px * 8.0).min(label), nice_up(0.25 * label).min(label), label]
     })
+}
+
+/// Linear axes labelled on [`labelled_spacer`]'s grid with the digits their step needs
+/// ([`crate::number::tick`]: steps of 0.05 read 0.45, not 0.5 twice), as plot builder methods.
+pub trait LabelledAxes: Sized {
+    /// The x axis: labelled steps at least `label_px` points apart.
+    #[must_use]
+    fn labelled_x(self, label_px: f64) -> Self;
+    /// The y axis: labelled steps at least `label_px` points apart.
+    #[must_use]
+    fn labelled_y(self, label_px: f64) -> Self;
+}
+
+impl LabelledAxes for egui_plot::Plot<'_> {
+    fn labelled_x(self, label_px: f64) -> Self {
+        self.x_grid_spacer(labelled_spacer(label_px)).x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+    }
+
+    fn labelled_y(self, label_px: f64) -> Self {
+        self.y_grid_spacer(labelled_spacer(label_px)).y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+    }
 }
 
 /// The grid of a log10 axis (plotted values are log10 of the numbers): lines at 1 … 9 × 10ⁿ, labels at

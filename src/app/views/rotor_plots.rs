@@ -11,7 +11,7 @@
 use egui::{Color32, RichText, Stroke, Ui};
 use egui_plot::{HLine, Line, LineStyle, Plot, Points, VLine};
 
-use super::plot_kit::{decade_label, labelled_spacer, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
+use super::plot_kit::{decade_label, legend_ui, phase_label, wrapped_phase, LabelledAxes, PALETTE, PHASE_TICKS};
 use crate::app::ink::{self, Ink};
 use crate::model::rotor::Rotor;
 use crate::rotor::analysis::AnalysisResult;
@@ -114,10 +114,8 @@ pub(super) fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, campbell
     plot_without_legend(id, ui, height)
         .x_axis_label("speed [rpm]")
         .y_axis_label(y_label)
-        .x_grid_spacer(labelled_spacer(70.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(70.0)
+        .labelled_y(32.0)
         .show(ui, |p| {
             for curve in curves {
                 let style = if curve.whirl == Whirl::Forward { LineStyle::Solid } else { LineStyle::dashed_loose() };
@@ -208,8 +206,7 @@ pub(super) fn mode_shape_ui(
     );
     plot_without_legend("rotor_mode_shape", ui, (ui.available_height() - 10.0).max(160.0))
         .x_axis_label("axial position [mm]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(70.0)
         .y_axis_label("deflection (largest = 1)")
         .show(ui, |p| {
             p.hline(HLine::new("undeflected axis", 0.0).color(Color32::from_gray(120)));
@@ -246,10 +243,8 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
     plot_without_legend("rotor_unbalance_amplitude", ui, height)
         .x_axis_label("speed [rpm]")
         .y_axis_label("orbit p-p [µm]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(70.0)
+        .labelled_y(32.0)
         .include_y(0.0)
         .link_axis(link, [true, false])
         .show(ui, |p| {
@@ -266,8 +261,7 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
     plot_without_legend("rotor_unbalance_phase", ui, height)
         .x_axis_label("speed [rpm]")
         .y_axis_label("phase of x [°]")
-        .x_grid_spacer(labelled_spacer(70.0))
-        .x_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_x(70.0)
         .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
         .y_axis_formatter(|m, _| phase_label(m.value))
         .include_y(-180.0)
@@ -298,8 +292,7 @@ pub(super) fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
         .y_axis_label("undamped critical speed [rpm]")
         .x_grid_spacer(egui_plot::log_grid_spacer(10))
         .x_axis_formatter(|mark, _| decade_label(mark.value))
-        .y_grid_spacer(labelled_spacer(32.0))
-        .y_axis_formatter(|m, _| crate::number::tick(m.value, m.step_size))
+        .labelled_y(32.0)
         .show(ui, |p| {
             for (i, (line, color)) in m.modes.iter().zip(colors.iter().cycle()).enumerate() {
                 p.line(Line::new(format!("mode {}", i + 1), line.clone()).color(*color).width(1.8));

@@ -16,11 +16,11 @@ use crate::app::frame_probe::Job;
 use crate::app::sweep_job::SweepJob;
 use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
-use crate::number::{sig, tick};
+use crate::number::sig;
 use crate::scene::sommerfeld::{chart, ChartGeometry, ChartPlot};
 use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
 
-use super::plot_kit::{decade_label, labelled_spacer, legend_ui, log_spacer, PALETTE};
+use super::plot_kit::{decade_label, legend_ui, log_spacer, LabelledAxes, PALETTE};
 use crate::study::COLUMNS;
 
 /// The swept curve and the current case's point (sky blue and amber on the dark theme; darker on the light).
@@ -256,8 +256,7 @@ fn chart_ui(ui: &mut Ui, table: &crate::scene::sweep::SweepTable, g: &ChartGeome
             .x_grid_spacer(log_spacer)
             .x_axis_formatter(|m, _| decade_label(m.value))
             // Labelled steps 24 points apart: two or three numbers even on a 70-point plot.
-            .y_grid_spacer(labelled_spacer(24.0))
-            .y_axis_formatter(|m, _| tick(m.value, m.step_size))
+            .labelled_y(24.0)
             .allow_scroll(false)
             .show(ui, |plot| {
                 let log = |pts: &[[f64; 2]]| -> Vec<[f64; 2]> { pts.iter().map(|q| [q[0].log10(), q[1]]).collect() };
@@ -329,11 +328,8 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
                 .height(height)
                 .x_axis_label(x_label.clone())
                 .y_axis_label(unit.clone())
-                .x_grid_spacer(labelled_spacer(60.0))
-                .y_grid_spacer(labelled_spacer(24.0))
-                // Labels with the digits their step needs (0.05 steps read 0.45, not 0.5 twice).
-                .x_axis_formatter(|m, _| tick(m.value, m.step_size))
-                .y_axis_formatter(|m, _| tick(m.value, m.step_size))
+                .labelled_x(60.0)
+                .labelled_y(24.0)
                 .allow_scroll(false)
                 .show(ui, |p| {
                     p.line(Line::new(label.clone(), series.clone()).color(line).width(1.8));
