@@ -22,15 +22,11 @@ use crate::units::RPM;
 const TARGET_S: f64 = 2.0;
 const SPEEDS: &str = "2000:12000:50";
 
-/// CPU time of this process so far [s] (user + system, from `/proc/self/stat` at 100 ticks per second;
-/// `None` where there is no such file): on the shared machine the wall time is mostly waiting for a core.
+/// CPU time of this process so far [s] (user + system, from the `cpu-time` crate as the cavitation section
+/// reads it; `None` where the system cannot say): on the shared machine the wall time is mostly waiting for
+/// a core.
 fn cpu_seconds() -> Option<f64> {
-    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
-    // fields after the command name's closing parenthesis: state is field 3, utime 14, stime 15
-    let rest = stat.rsplit_once(')')?.1;
-    let fields: Vec<&str> = rest.split_whitespace().collect();
-    let ticks: f64 = fields.get(11)?.parse::<f64>().ok()? + fields.get(12)?.parse::<f64>().ok()?;
-    Some(ticks / 100.0)
+    cpu_time::ProcessTime::try_now().ok().map(|t| t.as_duration().as_secs_f64())
 }
 
 /// One whole analysis, and the time to close the loop again at another gain on its plants (what a slider of
