@@ -1,8 +1,8 @@
 //! Web entry: starts the workbench on the page's `<canvas id="tiltpad">` (see `web/index.html`).
 //!
-//! The workbench draws through wgpu, on WebGPU or WebGL2. Before starting, a scratch canvas (not the page's,
-//! whose context type a probe would fix) is asked for either; a browser that offers neither gets a plain
-//! message saying what the page needs and what to try, instead of wgpu's error text.
+//! On the web the workbench draws through eframe's glow renderer, on WebGL2 or else WebGL1. Before starting, a
+//! scratch canvas (not the page's, whose context type a probe would fix) is asked for either; a browser that
+//! offers neither gets a plain message saying what the page needs and what to try, instead of an error text.
 
 use wasm_bindgen::JsCast as _;
 
@@ -78,24 +78,22 @@ pub fn start() {
 }
 
 /// What the page needs, said wherever the workbench cannot start.
-const NEEDS: &str = "The workbench draws with WebGPU or WebGL2: use a current Chrome, Edge, Firefox or Safari with \
-    hardware acceleration on (Chrome and Edge: Settings → System → Use graphics acceleration; Firefox: \
-    about:support shows WebGL 2). Without them, the native app and the command line (tiltpad solve, sweep) \
+const NEEDS: &str = "The workbench draws with WebGL (2, or else 1): use a current Chrome, Edge, Firefox or Safari \
+    with hardware acceleration on (Chrome and Edge: Settings → System → Use graphics acceleration; Firefox: \
+    about:support shows WebGL). Without it, the native app and the command line (tiltpad solve, sweep) \
     compute the same results.";
 
-/// `None` when the browser offers WebGPU or WebGL2; else the message to show.
+/// `None` when the browser offers WebGL2 or WebGL1; else the message to show.
 fn missing_graphics(document: &web_sys::Document) -> Option<String> {
-    let webgpu = web_sys::window()
-        .and_then(|w| js_sys::Reflect::get(&w, &"navigator".into()).ok())
-        .and_then(|n| js_sys::Reflect::get(&n, &"gpu".into()).ok())
-        .is_some_and(|gpu| !gpu.is_undefined() && !gpu.is_null());
-    let webgl2 = document
-        .create_element("canvas")
-        .ok()
-        .and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
-        .and_then(|c| c.get_context("webgl2").ok().flatten())
-        .is_some();
-    (!webgpu && !webgl2).then(|| format!("This browser offers neither WebGPU nor WebGL2. {NEEDS}"))
+    let offers = |context: &str| {
+        document
+            .create_element("canvas")
+            .ok()
+            .and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
+            .and_then(|c| c.get_context(context).ok().flatten())
+            .is_some()
+    };
+    (!offers("webgl2") && !offers("webgl")).then(|| format!("This browser offers no WebGL. {NEEDS}"))
 }
 
 /// Replaces the page's loading line with `text` (the canvas stays empty).

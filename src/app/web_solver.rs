@@ -149,6 +149,9 @@ pub(super) struct Link {
     current: Option<Running>,
 }
 
+/// Reports at least this large have their decoding time logged under `?probe` (a solution with its fields).
+const PROBED_REPORT_BYTES: usize = 64 * 1024;
+
 /// A started web worker and what its handlers collect.
 struct Remote {
     worker: web_sys::Worker,
@@ -165,11 +168,21 @@ impl Remote {
         let worker = web_sys::Worker::new_with_options(WORKER_SCRIPT, &options).map_err(|e| format!("{e:?}"))?;
         let inbox = Rc::new(RefCell::new(Vec::new()));
         let failed = Rc::new(RefCell::new(None));
+        // `?probe`: the decoding time of each large report is logged (what the wire format costs the page).
+        let probing = web_sys::window()
+            .and_then(|w| w.location().search().ok())
+            .is_some_and(|q| super::frame_probe::FrameProbe::from_query(&q).is_some());
         let on_message = {
             let (inbox, failed, repaint) = (inbox.clone(), failed.clone(), repaint.clone());
             Closure::<dyn FnMut(web_sys::MessageEvent)>::new(move |e: web_sys::MessageEvent| {
                 let bytes = js_sys::Uint8Array::new(&e.data()).to_vec();
-                match from_bytes::<Report>(&bytes) {
+                let decoding = Instant::now();
+                let decoded = from_bytes::<Report>(&bytes);
+                if probing && bytes.len() >= PROBED_REPORT_BYTES {
+                    let ms = decoding.elapsed().as_secs_f64() * 1e3;
+                    log::info!("probe: a report of {:.0} kB decoded in {ms:.1} ms", bytes.len() as f64 / 1e3);
+                }
+                match decoded {
                     Ok(report) => inbox.borrow_mut().push(report),
                     Err(err) => {
                         *failed.borrow_mut() = Some(format!("a report from the solver worker does not decode: {err}"))

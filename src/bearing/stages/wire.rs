@@ -6,8 +6,13 @@
 //! cannot name ([`UnnamedOutput`]) — a stage that starts publishing a new type adds a variant to
 //! [`OutputData`]; the round-trip test wants every publishing stage. [`Outcome::from_data`] rebuilds an
 //! outcome that answers [`Outcome::get`] exactly as the original did. `Outcome` is serde through that form;
-//! [`to_bytes`]/[`from_bytes`] are the wire format (MessagePack with field names: self-describing, so the
-//! case's tagged enums and skipped optional fields round-trip, and non-finite numbers survive).
+//! [`to_bytes`]/[`from_bytes`] are the wire format: CBOR (RFC 8949) with field names — self-describing, so
+//! the case's tagged enums and skipped optional fields round-trip, and non-finite numbers survive.
+//!
+//! Why CBOR (through `ciborium`) rather than MessagePack (`rmp_serde`, used before): a serde decoder is
+//! compiled once per type it reads, and `rmp_serde` routes every read through its whole "any value" decoder
+//! (about 8 kB of WebAssembly per type, 2.6 MB in the web build), where `ciborium` reads each header once
+//! and hands the visitor only the kind of value it asked for (docs/PERFORMANCE.md, "Web build").
 
 use std::sync::Arc;
 
@@ -147,9 +152,9 @@ impl<'de> Deserialize<'de> for Outcome {
 #[derive(Debug, thiserror::Error)]
 pub enum WireError {
     #[error("cannot encode: {0}")]
-    Encode(#[from] rmp_serde::encode::Error),
+    Encode(#[from] ciborium::ser::Error<std::io::Error>),
     #[error("cannot decode: {0}")]
-    Decode(#[from] rmp_serde::decode::Error),
+    Decode(#[from] ciborium::de::Error<std::io::Error>),
 }
 
 /// A value in the wire format.
@@ -157,7 +162,9 @@ pub enum WireError {
 /// # Errors
 /// A value serde cannot write (an outcome with an output [`OutputData`] cannot name).
 pub fn to_bytes<T: Serialize>(value: &T) -> Result<Vec<u8>, WireError> {
-    Ok(rmp_serde::to_vec_named(value)?)
+    let mut bytes = Vec::new();
+    ciborium::into_writer(value, &mut bytes)?;
+    Ok(bytes)
 }
 
 /// A value from the wire format.
@@ -165,7 +172,7 @@ pub fn to_bytes<T: Serialize>(value: &T) -> Result<Vec<u8>, WireError> {
 /// # Errors
 /// Bytes that are not a `T` in the wire format.
 pub fn from_bytes<T: DeserializeOwned>(bytes: &[u8]) -> Result<T, WireError> {
-    Ok(rmp_serde::from_slice(bytes)?)
+    Ok(ciborium::from_reader(bytes)?)
 }
 
 #[cfg(test)]
@@ -221,6 +228,29 @@ mod tests {
         assert!(pad.thermal_growth.as_ref().is_some_and(|g| !g.nodal_polar_m.is_empty() && !g.radii_m.is_empty()));
         assert_eq!(back.frequency_sweep().unwrap().len(), 2);
         assert_eq!(back.speed_sweep().unwrap().len(), 1);
+    }
+
+    /// The bytes are CBOR maps keyed by field name (a decoder of the standard reads them without our types),
+    /// non-finite numbers come back as they went, a text longer than the decoder's scratch buffer (a case's
+    /// TOML) comes back whole, and truncated bytes are an error, not a value.
+    #[test]
+    fn the_wire_is_named_cbor_and_keeps_non_finite_numbers_and_long_texts() {
+        #[derive(Debug, PartialEq, Serialize, Deserialize)]
+        struct Probe {
+            name: String,
+            values: Vec<f64>,
+            absent: Option<f64>,
+        }
+        let long = "x = 1.0\n".repeat(2000);
+        let probe = Probe { name: long, values: vec![1.5, f64::INFINITY, f64::NEG_INFINITY], absent: None };
+        let bytes = to_bytes(&probe).unwrap();
+        let plain: ciborium::Value = ciborium::from_reader(bytes.as_slice()).unwrap();
+        let keys: Vec<_> = plain.as_map().unwrap().iter().filter_map(|(k, _)| k.as_text()).collect();
+        assert_eq!(keys, ["name", "values", "absent"]);
+        assert_eq!(from_bytes::<Probe>(&bytes).unwrap(), probe);
+        let nan: Vec<f64> = from_bytes(&to_bytes(&vec![f64::NAN]).unwrap()).unwrap();
+        assert!(nan[0].is_nan());
+        assert!(from_bytes::<Probe>(&bytes[..bytes.len() - 3]).is_err_and(|e| matches!(e, WireError::Decode(_))));
     }
 
     /// The FRF stage's linearised model (matrices) round-trips.
