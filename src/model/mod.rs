@@ -23,6 +23,7 @@ pub mod limits;
 pub mod load;
 pub mod resolve;
 pub mod rotor;
+mod rotor_resolve;
 pub mod rotor_schema;
 pub mod rotor_sections;
 pub mod schema;
