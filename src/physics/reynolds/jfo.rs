@@ -113,6 +113,9 @@ pub(super) struct JfoState {
     pub(super) capacity12: f64,
     /// Supply flow of the last solve (whole pad) [m³/s], if starved.
     pub(super) supply: Option<f64>,
+    /// Stop after the first linear solve, keeping the given sets whatever the signs (the transport of an
+    /// all-cavitated film for the onset search, `jfo_onset.rs`).
+    pub(super) transport_only: bool,
 }
 
 impl JfoState {
@@ -164,6 +167,7 @@ impl JfoState {
             theta_in: 1.0,
             capacity12: 0.0,
             supply: None,
+            transport_only: false,
             pattern,
         })
     }
@@ -274,7 +278,7 @@ impl JfoState {
                     changed += 1;
                 }
             }
-            if changed == 0 {
+            if changed == 0 || self.transport_only {
                 break;
             }
             if info.active_set_iterations >= MAX_JFO_ITERATIONS {
