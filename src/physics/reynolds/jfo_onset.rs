@@ -75,11 +75,13 @@ impl PadFilm {
         for _ in 0..MAX_ONSET_STEPS {
             qn[slot] = x;
             let (filled, step) = match self.transport(&qn, slot, inp, factorizations) {
-                Ok(t) => t,
+                Ok(t) => {
+                    tol = tol.min(ONSET_TOL * self.h_min().0 / phi_max);
+                    t
+                }
                 // The film closes there: past the onset.
                 Err(_) => (true, None),
             };
-            tol = tol.min(ONSET_TOL * self.h_min().0 / phi_max);
             if filled {
                 loaded = Some(loaded.map_or(x, |l: f64| l.min(x)));
             } else {
@@ -95,12 +97,13 @@ impl PadFilm {
                     if l - f <= tol {
                         break;
                     }
-                    if !(next > f && next < l) {
+                    // Outside the bracket, or not a number (no step from a point with pressure).
+                    if next.is_nan() || next <= f || next >= l {
                         next = 0.5 * (f + l);
                     }
                 }
-                (Some(f), None) if !(next > f) || next - f <= tol => break,
-                (None, Some(l)) if !(next < l) => return None,
+                (Some(f), None) if next.is_nan() || next - f <= tol => break,
+                (None, Some(l)) if next.is_nan() || next >= l => return None,
                 _ => {}
             }
             x = next;
