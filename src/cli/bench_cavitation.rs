@@ -75,8 +75,7 @@ fn where_the_time_goes(reynolds: &[CpuCost], jfo: &[CpuCost]) -> String {
          sparse LU of the non-symmetric mixed pressure/film-fraction matrix (faer's supernodal LU, whose symbolic \
          structure bounds the fill of any row pivoting), against a Cholesky factorisation of the symmetric Reynolds \
          matrix; the counts include the Reynolds active-set solve that starts each pad's first mass-conserving \
-         solve. A floating pad is placed at its onset of pressure, found by transport solves from a pressure-free \
-         film (docs/MODEL.md §6.2), not by bracketing it with film solves.",
+         solve.",
         cells.join("; ")
     )
 }

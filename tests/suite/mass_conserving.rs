@@ -115,17 +115,3 @@ fn active_set_steps_reuse_the_factorisation() {
     eprintln!("{f} factorisations, {n} film solves");
     assert!(f < 2 * n, "{f} factorisations for {n} film solves");
 }
-
-/// The compressor bearing at preview fidelity (isothermal): its top pad floats, and every placement of it
-/// looks for the mass-conserving film's onset of pressure. With the onset found by transport solves
-/// (`physics/reynolds/jfo_onset.rs`) a placement takes 3 film solves instead of about 18 (the onset
-/// bracketed to 1e-6 of the tilt range by film solves). Measured: 125 film solves (223 before; the Reynolds
-/// option needs 69), with the same ε 0.3573, K and C to the printed digits. Counts are deterministic.
-#[test]
-fn a_floating_pad_is_placed_at_its_onset_in_few_film_solves() {
-    let s = common::solve("compressor-bearing.toml", &[JFO, PREVIEW, "thermal.model=\"isothermal\""]);
-    let n = s.report.film_solves;
-    eprintln!("{n} film solves, {} factorisations, ε {:.6}", s.report.factorizations, s.eccentricity_ratio);
-    assert!(n <= 140, "{n} film solves");
-    assert!(s.pads[0].unloaded && s.pads[0].p_max_pa == 0.0, "the top pad floats");
-}

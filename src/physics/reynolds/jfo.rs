@@ -113,9 +113,6 @@ pub(super) struct JfoState {
     pub(super) capacity12: f64,
     /// Supply flow of the last solve (whole pad) [m³/s], if starved.
     pub(super) supply: Option<f64>,
-    /// Stop after the first linear solve, keeping the given sets whatever the signs (the transport of an
-    /// all-cavitated film for the onset search, `jfo_onset.rs`).
-    pub(super) transport_only: bool,
 }
 
 impl JfoState {
@@ -167,7 +164,6 @@ impl JfoState {
             theta_in: 1.0,
             capacity12: 0.0,
             supply: None,
-            transport_only: false,
             pattern,
         })
     }
@@ -278,7 +274,7 @@ impl JfoState {
                     changed += 1;
                 }
             }
-            if changed == 0 || self.transport_only {
+            if changed == 0 {
                 break;
             }
             if info.active_set_iterations >= MAX_JFO_ITERATIONS {

@@ -39,30 +39,6 @@ impl JfoState {
         Ok(())
     }
 
-    /// `∂θ/∂x` at the cavitated free nodes (0 elsewhere) for a coordinate with shape `phi`, about a solve
-    /// without pressure (`p ≡ 0`, so the Poiseuille part of `∂r/∂q` vanishes): `M⁻¹ (−(∂T̃/∂q) θ − T̃ ∂θ_in/∂q)`
-    /// with the last factorisation (the onset search, `jfo_onset.rs`).
-    pub(super) fn theta_response(
-        &mut self,
-        geom: &FilmGeometry,
-        u: f64,
-        phi: QpField<'_>,
-        theta: &[f64],
-        cav: &[bool],
-    ) -> Result<Vec<f64>, FilmError> {
-        let mut rhs = self.couette_derivative(geom, u, phi, theta);
-        for (i, v) in rhs.iter_mut().enumerate() {
-            if self.rule[i] != ThetaRule::Free {
-                *v = 0.0;
-            }
-        }
-        self.solve_mixed(&mut rhs)?;
-        for (i, v) in rhs.iter_mut().enumerate() {
-            *v = if self.rule[i] == ThetaRule::Free && cav[i] { *v / self.scale } else { 0.0 };
-        }
-        Ok(rhs)
-    }
-
     /// `−∂r/∂q` for a thickness shape `phi` (sampled at the quadrature points) about the state `(p, θ)`,
     /// without the Poiseuille part (the caller adds `−(∂A/∂q) p`): `−(∂T̃/∂q) θ − T̃ ∂θ_in/∂q`.
     pub(super) fn couette_derivative(

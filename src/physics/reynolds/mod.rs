@@ -50,8 +50,7 @@
 //! cavitation solves; `linearize.rs` forces and their perturbations; `outputs.rs` flows, friction and
 //! extrema; `injection.rs` the response to the injection pressure; `jfo.rs`, `jfo_operators.rs` and
 //! `jfo_linearize.rs` the mass-conserving (JFO) solve, its operators and its linearisation, and
-//! `jfo_update.rs` the low-rank updates of its factorisation between active-set steps, `jfo_onset.rs` the
-//! onset of pressure of a pressure-free mass-conserving film along one coordinate.
+//! `jfo_update.rs` the low-rank updates of its factorisation between active-set steps.
 
 use crate::fem::{SolverError, SpdSolver};
 use crate::mesh::grid::NodeSite;
@@ -65,7 +64,6 @@ mod geometry;
 mod injection;
 mod jfo;
 mod jfo_linearize;
-mod jfo_onset;
 mod jfo_operators;
 #[cfg(test)]
 mod jfo_tests;
@@ -252,8 +250,6 @@ pub struct PadFilm {
     squeeze: Option<SampledField>,
     /// Coordinates of the current thickness.
     q: Vec<f64>,
-    /// Factorisations of onset searches not yet reported (`jfo_onset.rs`; the next solve reports them).
-    onset_factorizations: usize,
 }
 
 impl PadFilm {
@@ -294,7 +290,6 @@ impl PadFilm {
             extra_h: None,
             squeeze: None,
             q: Vec::new(),
-            onset_factorizations: 0,
             geom,
         })
     }
@@ -383,18 +378,11 @@ impl PadFilm {
     /// all under the Reynolds condition: `p ≡ 0` solves the complementarity problem exactly when the
     /// right-hand side `b` is non-positive at every free node, and `b` is affine in the coordinate
     /// (`b = c + q_slot d`, only the Couette term depends on the thickness). `None` for Gümbel cavitation
-    /// (whose pressure-free set needs a solve), for a pressurised leading edge (never pressure-free) or when no
+    /// (whose pressure-free set needs a solve), for mass-conserving cavitation (whose film fraction carries oil
+    /// into the pad even without pressure), for a pressurised leading edge (never pressure-free) or when no
     /// such coordinate value exists.
-    ///
-    /// Under mass-conserving cavitation the film fraction carries oil into the pad even without pressure, and
-    /// the end of the interval is the onset of pressure found by a few transport solves from the last solve,
-    /// which must be a pressure-free one at `q` (`jfo_onset.rs`; `None` otherwise); the lower end is not
-    /// searched (−∞).
-    /// The factorisations of that search are reported by the next solve.
-    pub fn pressure_free_interval(&mut self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
-        if inp.cavitation == Cavitation::Jfo && inp.leading_edge_pressure == 0.0 {
-            return self.jfo_onset(q, slot, inp).map(|end| (f64::NEG_INFINITY, end));
-        }
+    #[must_use]
+    pub fn pressure_free_interval(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
         if inp.cavitation != Cavitation::Reynolds || inp.leading_edge_pressure != 0.0 {
             return None;
         }

@@ -85,7 +85,7 @@ impl PadFilm {
         self.set_viscosity(inp.viscosity)?;
         self.set_turbulence(inp)?;
         self.assemble(inp);
-        let mut info = match inp.cavitation {
+        let info = match inp.cavitation {
             Cavitation::Gumbel => self.solve_gumbel()?,
             Cavitation::Reynolds => self.solve_reynolds(warm && self.solved_with == Some(Cavitation::Reynolds))?,
             Cavitation::Jfo => self.solve_jfo(inp, warm && self.solved_with == Some(Cavitation::Jfo))?,
@@ -93,8 +93,6 @@ impl PadFilm {
         if inp.cavitation != Cavitation::Jfo {
             self.theta.fill(1.0);
         }
-        // The factorisations of an onset search since the last solve (`jfo_onset.rs`) count with this one.
-        info.factorizations += std::mem::take(&mut self.onset_factorizations);
         self.solved_with = Some(inp.cavitation);
         if self.p.iter().any(|v| !v.is_finite()) {
             return Err(FilmError::Input("pressure is not finite (ill-conditioned film)".into()));
