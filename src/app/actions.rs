@@ -118,21 +118,20 @@ impl WorkbenchApp {
                     rotor.open_file(&name, Some(&path), &text);
                 }
                 self.open::<RotorView>();
-                self.notice = Some(format!("Opened rotor {}", path.display()));
+                self.say(format!("Opened rotor {}", path.display()));
             }
             FileEvent::SavedCase { name, path, saved, text } => {
-                self.notice =
-                    Some(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
+                self.say(format!("Saved {}", path.as_ref().map_or(name.clone(), |p| p.display().to_string())));
                 if *saved == *self.doc.file() {
                     self.doc.mark_saved(name, path, text);
                 }
             }
             FileEvent::Exported { name, path } => {
-                self.notice = Some(format!("Exported {}", path.map_or(name, |p| p.display().to_string())));
+                self.say(format!("Exported {}", path.map_or(name, |p| p.display().to_string())));
             }
             FileEvent::NameNeeded(pending) => self.save_dialog = Some(SaveDialog::new(*pending)),
             FileEvent::PathNeeded(kind) => self.open_dialog = Some(OpenDialog::new(kind)),
-            FileEvent::Error(e) => self.notice = Some(e),
+            FileEvent::Error(e) => self.say(e),
         }
     }
 
@@ -143,7 +142,7 @@ impl WorkbenchApp {
             SaveOutcome::Open => {}
             SaveOutcome::Cancelled => {
                 self.save_dialog = None;
-                self.notice = Some("Not saved".into());
+                self.say("Not saved".into());
             }
             SaveOutcome::Done(event) => {
                 self.save_dialog = None;
@@ -197,7 +196,7 @@ impl WorkbenchApp {
                 let name = self.export_name(&self.open_view().label().to_lowercase().replace(' ', "-"), "png");
                 self.files.export(&name, "PNG image", "png", bytes);
             }
-            Err(e) => self.notice = Some(format!("PNG export failed: {e}")),
+            Err(e) => self.say(format!("PNG export failed: {e}")),
         }
     }
 }

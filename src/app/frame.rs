@@ -32,35 +32,24 @@ fn tab_width(ui: &Ui, label: &str) -> f32 {
     text + 2.0 * ui.spacing().button_padding.x + ui.spacing().item_spacing.x
 }
 
+/// The text of the "More" menu's button: its name, or the open view's label when that view is in the menu
+/// (the button then reads as that view's tab, highlighted, and still opens the menu).
+fn more_text(open_label: Option<&str>) -> String {
+    open_label.map_or_else(|| MORE_TABS.to_string(), str::to_string)
+}
+
 /// The tabs shown in a row of `room` points, in list order: all when they fit; else as many from the first
-/// as fit beside the "More" menu (`more` points wide), the open view's tab (`open`) taking the place of the
-/// last of them when it would not be shown.
+/// as fit beside the "More" menu, whose button takes `more(hidden)` points for the tabs it then holds (at
+/// its widest: it names the open view when that view is one of them). The row does not depend on which
+/// view is open, so opening a view from the menu moves no tab.
 #[must_use]
-pub fn tabs_that_fit(widths: &[f32], open: usize, room: f32, more: f32) -> Vec<usize> {
+pub fn tabs_that_fit(widths: &[f32], room: f32, more: impl Fn(std::ops::Range<usize>) -> f32) -> Vec<usize> {
     if widths.iter().sum::<f32>() <= room {
         return (0..widths.len()).collect();
     }
-    let room = room - more;
-    let mut used = 0.0;
-    let mut shown: Vec<usize> = Vec::new();
-    for (i, w) in widths.iter().enumerate() {
-        if used + w > room {
-            break;
-        }
-        used += w;
-        shown.push(i);
-    }
-    if !shown.contains(&open) && open < widths.len() {
-        while let Some(&last) = shown.last() {
-            if used + widths[open] <= room {
-                break;
-            }
-            used -= widths[last];
-            shown.pop();
-        }
-        shown.push(open);
-    }
-    shown
+    let n =
+        (0..widths.len()).rev().find(|&n| widths[..n].iter().sum::<f32>() + more(n..widths.len()) <= room).unwrap_or(0);
+    (0..n).collect()
 }
 
 impl WorkbenchApp {
@@ -74,6 +63,7 @@ impl WorkbenchApp {
 
         let t0 = web_time::Instant::now();
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        self.forget_stale_notice();
         egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
         // On windows narrower than ~1330 points the side panels start narrower, so the view keeps about half
         // the width; each can also be collapsed (menu bar) or dragged closed, and neither can be dragged (or
@@ -303,7 +293,10 @@ impl WorkbenchApp {
         // always among them, and the others under "More" at the row's end.
         let labels: Vec<&'static str> = self.views.iter().map(|v| v.label()).collect();
         let widths: Vec<f32> = labels.iter().map(|l| tab_width(ui, l)).collect();
-        let shown = tabs_that_fit(&widths, open, ui.available_width(), tab_width(ui, MORE_TABS));
+        let more = |hidden: std::ops::Range<usize>| {
+            hidden.map(|i| tab_width(ui, &more_text(Some(labels[i])))).fold(tab_width(ui, MORE_TABS), f32::max)
+        };
+        let shown = tabs_that_fit(&widths, ui.available_width(), more);
         ui.horizontal(|ui| {
             for &i in &shown {
                 if ui.selectable_label(i == open, labels[i]).clicked() {
@@ -311,14 +304,18 @@ impl WorkbenchApp {
                 }
             }
             if shown.len() < labels.len() {
-                ui.menu_button(MORE_TABS, |ui| {
+                // The open view in the menu: its button names it, highlighted like an open tab.
+                let in_menu = !shown.contains(&open);
+                let button = egui::Button::selectable(in_menu, more_text(in_menu.then(|| labels[open])));
+                let (response, _) = egui::containers::menu::MenuButton::from_button(button).ui(ui, |ui| {
                     for (i, label) in labels.iter().enumerate().filter(|(i, _)| !shown.contains(i)) {
-                        if ui.button(*label).clicked() {
+                        if ui.selectable_label(i == open, *label).clicked() {
                             self.persisted.view = self.views[i].id().to_string();
                             ui.close();
                         }
                     }
                 });
+                response.on_hover_text("The views whose tabs do not fit");
             }
         });
         ui.separator();
@@ -374,19 +371,16 @@ mod tests {
     use super::tabs_that_fit;
 
     #[test]
-    fn the_tab_row_keeps_to_one_row_with_the_open_tab_in_it() {
+    fn the_tab_row_keeps_to_one_row_whichever_view_is_open() {
         let w = [60.0, 80.0, 90.0, 100.0, 40.0, 50.0];
         // All fit: 420 points.
-        assert_eq!(tabs_that_fit(&w, 5, 420.0, 50.0), [0, 1, 2, 3, 4, 5]);
-        // 300 points: 250 beside the menu hold the first three (230).
-        assert_eq!(tabs_that_fit(&w, 0, 300.0, 50.0), [0, 1, 2]);
-        // The open fifth tab replaces the third.
-        assert_eq!(tabs_that_fit(&w, 4, 300.0, 50.0), [0, 1, 4]);
-        // The open fourth (100) takes the third's place: 60 + 80 + 100 fit in 250.
-        assert_eq!(tabs_that_fit(&w, 3, 300.0, 50.0), [0, 1, 3]);
-        // In 200 points (150 beside the menu) 60 + 100 does not fit: the open tab alone.
-        assert_eq!(tabs_that_fit(&w, 3, 200.0, 50.0), [3]);
-        // No room at all: the open tab alone.
-        assert_eq!(tabs_that_fit(&w, 2, 10.0, 50.0), [2]);
+        assert_eq!(tabs_that_fit(&w, 420.0, |_| 50.0), [0, 1, 2, 3, 4, 5]);
+        // 300 points: 250 beside a 50-point menu hold the first three (230).
+        assert_eq!(tabs_that_fit(&w, 300.0, |_| 50.0), [0, 1, 2]);
+        // The menu's button as wide as the widest label it holds (+10): with the fourth (100) in it,
+        // 300 − 110 = 190 holds the first two.
+        assert_eq!(tabs_that_fit(&w, 300.0, |h| h.map(|i| w[i] + 10.0).fold(50.0, f32::max)), [0, 1]);
+        // No room at all: every tab in the menu.
+        assert_eq!(tabs_that_fit(&w, 10.0, |_| 50.0), Vec::<usize>::new());
     }
 }

@@ -102,8 +102,11 @@ pub struct WorkbenchApp {
     save_dialog: Option<save_dialog::SaveDialog>,
     open_dialog: Option<open_dialog::OpenDialog>,
     allow_close: bool,
-    /// Messages for the status bar (file saved, errors of dialogs).
+    /// Messages for the status bar (file saved, errors of dialogs), set by [`Self::say`].
     pub notice: Option<String>,
+    /// The case as it was when the notice was given: an edit since makes the notice history, and the
+    /// status bar drops it ("Opened <file>" no longer describes an edited case).
+    notice_for: Option<crate::model::CaseFile>,
     /// Smoothed duration of building a frame [s].
     pub frame_time_s: f64,
     /// Where the last frame's time went [ms]: menu, status and editor; results panel; view; solver events.
@@ -169,6 +172,7 @@ impl WorkbenchApp {
             open_dialog: None,
             allow_close: false,
             notice: None,
+            notice_for: None,
             frame_time_s: 0.0,
             frame_parts_ms: [0.0; 4],
             recent_frames_s: std::collections::VecDeque::with_capacity(120),
@@ -184,9 +188,23 @@ impl WorkbenchApp {
         match parse_case_file(text, &[]) {
             Ok(file) => {
                 self.doc.replace(file, name, path, text);
-                self.notice = Some(format!("Opened {name}"));
+                self.say(format!("Opened {name}"));
             }
-            Err(e) => self.notice = Some(format!("Cannot open {name}: {e}")),
+            Err(e) => self.say(format!("Cannot open {name}: {e}")),
+        }
+    }
+
+    /// Shows `text` in the status bar until the case is edited.
+    fn say(&mut self, text: String) {
+        self.notice = Some(text);
+        self.notice_for = Some(self.doc.file().clone());
+    }
+
+    /// Drops the notice once the case differs from the one it was given for.
+    fn forget_stale_notice(&mut self) {
+        if self.notice.is_some() && self.notice_for.as_ref() != Some(self.doc.file()) {
+            self.notice = None;
+            self.notice_for = None;
         }
     }
 

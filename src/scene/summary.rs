@@ -112,7 +112,9 @@ pub fn summary(s: &Solution) -> Summary {
                     "Largest film or pad temperature. The isothermal model uses one film temperature; switch the physics to THD to compute temperatures.",
                 ),
             },
-            eng_row("Power loss", &[s.friction_power_w], "W", "Viscous shear power dissipated in the films (friction loss)."),
+            eng_row("Film friction", &[s.friction_power_w], "W", "Viscous shear power dissipated in the films (friction loss)."),
+            eng_row("Churning", &[s.churning_power_w()], "W", "Power the journal loses stirring the oil of a flooded housing in the gaps between the pads (feeding.churning_factor; 0 with directed feeding)."),
+            eng_row("Total power loss", &[s.total_power_loss_w()], "W", "Film friction and churning: the power the bearing takes from the shaft."),
             eng_row("Friction torque", &[s.friction_torque_nm], "N·m", "Drag torque of the films on the journal."),
             row(
                 "Sommerfeld S",

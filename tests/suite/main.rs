@@ -38,4 +38,5 @@ mod thermal_convergence;
 mod thermal_slider;
 mod turbulence;
 mod work_budgets;
+mod workbench_defects;
 mod workbench_ui;

@@ -36,7 +36,7 @@ const SIZE: [f32; 2] = [1400.0, 860.0];
 
 /// The app on a shipped case (the compressor bearing unless `preset_toml` is given), set up by `setup`
 /// (before its first frame: the view to open, its settings), solved.
-fn solved_app(
+pub(crate) fn solved_app(
     preset_toml: Option<&'static str>,
     setup: impl FnOnce(&mut WorkbenchApp) + 'static,
 ) -> Harness<'static, WorkbenchApp> {
@@ -44,7 +44,7 @@ fn solved_app(
 }
 
 /// [`solved_app`] in a window of `size` points.
-fn solved_app_at(
+pub(crate) fn solved_app_at(
     size: [f32; 2],
     preset_toml: Option<&'static str>,
     setup: impl FnOnce(&mut WorkbenchApp) + 'static,
@@ -79,7 +79,7 @@ fn open_fields(app: &mut WorkbenchApp, set: impl FnOnce(&mut FieldSettings)) {
     set(&mut app.view_mut::<FieldView>().unwrap().settings);
 }
 
-fn rotor<'a>(h: &'a Harness<'_, WorkbenchApp>) -> &'a RotorView {
+pub(crate) fn rotor<'a>(h: &'a Harness<'_, WorkbenchApp>) -> &'a RotorView {
     h.state().view::<RotorView>().unwrap()
 }
 
@@ -88,7 +88,7 @@ fn rotor_mut<'a>(h: &'a mut Harness<'_, WorkbenchApp>) -> &'a mut RotorView {
 }
 
 /// Opens the rotor view on the rotor file `text` (before the first frame: the shipped rotor is not analysed).
-fn open_rotor(app: &mut WorkbenchApp, text: &str) {
+pub(crate) fn open_rotor(app: &mut WorkbenchApp, text: &str) {
     app.open::<RotorView>();
     app.view_mut::<RotorView>().unwrap().open_file("shaft.toml", None, text);
 }
@@ -98,7 +98,7 @@ fn sweep_view<'a>(h: &'a Harness<'_, WorkbenchApp>) -> &'a SweepView {
 }
 
 /// Steps frames until the worker is idle with a result on screen, then lets the UI settle.
-fn wait_for_solve(h: &mut Harness<'_, WorkbenchApp>) {
+pub(crate) fn wait_for_solve(h: &mut Harness<'_, WorkbenchApp>) {
     let start = Instant::now();
     // The first frames submit the job; then wait for the worker.
     h.step();
@@ -116,20 +116,20 @@ fn wait_for_solve(h: &mut Harness<'_, WorkbenchApp>) {
 }
 
 /// The text of a label (AccessKit keeps a label's text in its value).
-fn text_of(n: &egui_kittest::Node<'_>) -> String {
+pub(crate) fn text_of(n: &egui_kittest::Node<'_>) -> String {
     n.value().or_else(|| n.accesskit_node().label()).unwrap_or_default()
 }
 
-fn snapshot_options() -> SnapshotOptions {
+pub(crate) fn snapshot_options() -> SnapshotOptions {
     SnapshotOptions::new().threshold(1.0).max_failed_pixels(40)
 }
 
-fn snapshot(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
+pub(crate) fn snapshot(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
     h.snapshot_options(name, &snapshot_options());
 }
 
 /// Switches to the light theme as a user does: Edit → Theme → Light, then Escape closes the menu.
-fn choose_light_theme(h: &mut Harness<'_, WorkbenchApp>) {
+pub(crate) fn choose_light_theme(h: &mut Harness<'_, WorkbenchApp>) {
     h.get_by_label("Edit").click();
     h.run_steps(2);
     h.get_by_label("Light").click();
@@ -462,7 +462,7 @@ fn deformation_view_switches_to_the_thermal_growth_of_a_tehd_solve_at_1280x720()
     assert_eq!(deformation_scale(&h), expect("total", total_um));
 }
 
-fn spin_button<'a>(h: &'a Harness<'_, WorkbenchApp>, label: &'a str) -> egui_kittest::Node<'a> {
+pub(crate) fn spin_button<'a>(h: &'a Harness<'_, WorkbenchApp>, label: &'a str) -> egui_kittest::Node<'a> {
     h.get_by_role_and_label(Role::SpinButton, label)
 }
 
@@ -623,7 +623,7 @@ fn the_edited_case_and_the_view_survive_a_restart() {
 }
 
 /// Steps frames until the rotor view's analysis has finished.
-fn wait_for_rotor(h: &mut Harness<'_, WorkbenchApp>) {
+pub(crate) fn wait_for_rotor(h: &mut Harness<'_, WorkbenchApp>) {
     let start = Instant::now();
     h.run_steps(2);
     while !(rotor(h).is_idle() && rotor(h).result().is_some()) {
@@ -679,7 +679,7 @@ fn rotor_view_analyses_the_compressor_rotor_and_shows_every_tab() {
 
 /// A rotor file: a shaft 1000 mm long, Ø 50 mm, in 10 elements; a 20 kg disk at mid-span (node 5); bearings
 /// given by numbers (constant K 1e7 N/m, C 1e3 N·s/m) at both ends.
-fn two_bearing_shaft(title: &str) -> String {
+pub(crate) fn two_bearing_shaft(title: &str) -> String {
     let bearing = "k_n_per_m = [[1e7, 0.0, 0.0, 1e7]]\nc_ns_per_m = [[1e3, 0.0, 0.0, 1e3]]\n";
     format!(
         "title = \"{title}\"\n[rotor]\n[[rotor.section]]\nlength_mm = 1000.0\nouter_diameter_mm = 50.0\nelements = 10\n\
@@ -702,7 +702,11 @@ fn a_rotor_file_opens_in_the_rotor_view_and_a_bad_one_names_key_value_and_range(
 }
 
 /// Edits the case as the editor would, then waits for the result.
-fn edit_and_solve(h: &mut Harness<'_, WorkbenchApp>, key: &str, f: impl FnOnce(&mut tiltpad::model::CaseFile)) {
+pub(crate) fn edit_and_solve(
+    h: &mut Harness<'_, WorkbenchApp>,
+    key: &str,
+    f: impl FnOnce(&mut tiltpad::model::CaseFile),
+) {
     h.state_mut().doc.edit(key, false, f);
     h.run_steps(2);
     wait_for_solve(h);
@@ -833,6 +837,10 @@ fn the_sommerfeld_chart_runs_its_load_sweep() {
         assert!(x.len() >= 3 && y.len() >= 2, "x {x:?}, y {y:?}");
     }
     snapshot(&mut h, "sweep_sommerfeld_chart");
+    // The same chart in the light theme.
+    choose_light_theme(&mut h);
+    assert_eq!(tick_labels(&h, "Sommerfeld number S [–]", top).len(), 5);
+    snapshot(&mut h, "sweep_sommerfeld_chart_light");
 }
 
 /// After the Sommerfeld chart, choosing another input (preload, as a class does next) leaves the chart and
@@ -1550,7 +1558,7 @@ fn control_view_gain_slider_moves_the_onset() {
 }
 
 /// Strings that cover one another in the last frame, anywhere in the window, as "a" / "b" at their rects.
-fn overlapping_texts(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+pub(crate) fn overlapping_texts(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
     let texts = painted_text::painted_texts(&h.output().shapes);
     let screen = h.ctx.content_rect();
     painted_text::overlapping(&texts, screen, 2.0)
@@ -1593,18 +1601,21 @@ fn overlapping_widgets(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
     found
 }
 
-/// Strings inside the open view cut by their clip rectangle (drawn past the edge of what holds them).
-fn cut_texts_in_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+/// Strings of the open view cut by their clip rectangle (drawn past the edge of what holds them): those
+/// shown inside the view, and those that begin in it and run past its edge (a slider's name past the
+/// results panel's edge shows partly outside the view).
+pub(crate) fn cut_texts_in_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
     let Some(view) = h.state().view_rect() else { return Vec::new() };
     painted_text::painted_texts(&h.output().shapes)
         .into_iter()
-        .filter(|t| view.contains_rect(t.shown) && t.shown.width() + 1.0 < t.full.width())
+        .filter(|t| view.contains_rect(t.shown) || view.contains(t.full.left_top()))
+        .filter(|t| t.shown.width() + 1.0 < t.full.width())
         .map(|t| format!("{:?} shown {:?} of {:?}", t.text, t.shown, t.full))
         .collect()
 }
 
 /// Strings inside the open view laid out past its bottom edge (a footer line pushed out of the window).
-fn texts_below_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
+pub(crate) fn texts_below_view(h: &Harness<'_, WorkbenchApp>) -> Vec<String> {
     let Some(view) = h.state().view_rect() else { return Vec::new() };
     painted_text::painted_texts(&h.output().shapes)
         .into_iter()
@@ -1773,16 +1784,18 @@ fn control_view_shows_the_lqr_design_and_the_onset_the_cli_gives() {
     assert!((closed / cli_onset("onset_closed") - 1.0).abs() < 1e-3, "{closed} {}", cli_onset("onset_closed"));
     assert!((open / cli_onset("onset_open") - 1.0).abs() < 1.5e-2, "{open} {}", cli_onset("onset_open"));
     assert!(closed > 2.0 * open);
-    // the weights and the gains' table with units
-    h.get_by_label_contains("LQR at 9000 rpm on 20 of the plant's 108 states");
+    h.get_by_label_contains("Onset of instability: loop open");
+    snapshot(&mut h, "control_lqr");
+    // the weights and the gains' table with units, one click away
+    h.get_by_label_contains("LQR design at 9000 rpm").click();
+    h.run_steps(3);
+    h.get_by_label_contains("On 20 of the plant's 108 states");
     h.get_by_label("valve 1 at 150 Hz");
     h.get_by_label("node 26 y");
     assert_eq!(h.query_all_by_label_contains(" V/µm, ").count(), 12);
     assert_eq!(h.query_all_by_label("1 1/V²").count(), 2);
     // the journal-0 vertical probe to valve 0 at 150 Hz, in V/µm (the design's compensator)
     h.get_by_label("0.1175 V/µm, +40°");
-    h.get_by_label_contains("Onset of instability: loop open");
-    snapshot(&mut h, "control_lqr");
 }
 
 /// The per-pad supply flow row (`operating.pad_supply_flow_l_per_min`) on the starved compressor bearing

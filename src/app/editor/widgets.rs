@@ -331,6 +331,9 @@ pub fn choice_ui<T: PartialEq + Copy>(
     out
 }
 
+/// Width of a free-text field [points]: the editor's value column at its narrowest.
+const TEXT_WIDTH: f32 = 200.0;
+
 /// A free-text row (names and titles); an empty text removes the key.
 pub fn text_ui(
     ui: &mut Ui,
@@ -342,12 +345,23 @@ pub fn text_ui(
     let tip = key_tooltip(key);
     let label = ui.label(label).on_hover_text(&tip);
     let mut text = current.to_string();
+    // One line of text that wraps onto as many rows as it needs, so a long title reads whole; Enter
+    // ends the edit rather than breaking the line (a key's text is one line).
     let changed = ui
-        .add_sized([200.0, 20.0], egui::TextEdit::singleline(&mut text))
+        .add(
+            egui::TextEdit::multiline(&mut text)
+                .desired_rows(1)
+                .desired_width(TEXT_WIDTH)
+                // In a grid the first frame offers the cell no width: without a floor the field would
+                // wrap the text a few letters a row and keep that width.
+                .min_size(egui::vec2(TEXT_WIDTH, 0.0))
+                .return_key(None),
+        )
         .labelled_by(label.id)
         .on_hover_text(&tip)
         .changed();
     if changed {
+        text.retain(|c| c != '\n' && c != '\r');
         doc.edit(key, true, |f| set(f, (!text.is_empty()).then(|| text.clone())));
     }
     ui.label("");

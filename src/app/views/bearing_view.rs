@@ -271,6 +271,23 @@ pub fn bearing_view_ui(
     }
     painter.text(jc + Vec2::new(0.0, -r_rot - 4.0), Align2::CENTER_BOTTOM, "Ω", font.clone(), Color32::from_gray(230));
 
+    // Every pad's outline and pivot, which the h_min labels keep clear of.
+    let mut obstacles: Vec<Vec<Pos2>> = Vec::new();
+    for pad in &outline.pads {
+        let mut edge = map(&pad.film_surface);
+        edge.extend(map(&pad.back).into_iter().rev());
+        if let Some(&first) = edge.first() {
+            edge.push(first);
+        }
+        obstacles.push(edge);
+        if !pad.fixed {
+            let mut tri = map(&pad.pivot);
+            if let Some(&first) = tri.first() {
+                tri.push(first);
+            }
+            obstacles.push(tri);
+        }
+    }
     for pad in &outline.pads {
         // Pressure inside the journal, from its surface inwards.
         if !pad.pressure.is_empty() {
@@ -308,15 +325,11 @@ pub fn bearing_view_ui(
             let h_min_ink = ink::H_MIN.on(&ui.style().visuals);
             painter.line_segment([a, b], Stroke::new(2.5, h_min_ink));
             painter.circle_filled(a, 2.5, h_min_ink);
-            let away = (b - jc).normalized();
             let below = if h < film_limit { " < limit" } else { "" };
-            painter.text(
-                b + away * 30.0,
-                Align2::CENTER_CENTER,
-                format!("{}{below}", eng(h, "m")),
-                FontId::proportional(11.0),
-                h_min_ink,
-            );
+            let galley = painter.layout_no_wrap(format!("{}{below}", eng(h, "m")), FontId::proportional(11.0), h_min_ink);
+            let at = clear_label_rect(jc, b, galley.size(), &obstacles);
+            obstacles.push(vec![at.left_top(), at.right_top(), at.right_bottom(), at.left_bottom(), at.left_top()]);
+            painter.galley(at.min, galley, h_min_ink);
         }
     }
     if let Some((_, p)) = pinned {
@@ -349,6 +362,58 @@ pub fn bearing_view_ui(
         arrow(&painter, a, b, Stroke::new(3.0, LOAD));
         load_label(&painter, (a, b), &format!("W = {}", eng(w, "N")), font.clone());
     }
+}
+
+/// Where a label of `size` goes on the ray from the journal centre `jc` through `b` (a pad's film surface at
+/// its minimum film thickness): the first place outwards from `b` where it keeps [`LABEL_GAP`] points from
+/// every polyline of `obstacles` (pad outlines, pivots, labels placed before), at most 200 points out.
+fn clear_label_rect(jc: Pos2, b: Pos2, size: Vec2, obstacles: &[Vec<Pos2>]) -> Rect {
+    let away = (b - jc).normalized();
+    // From the centre to the rectangle's edge along `away`.
+    let half = 0.5 * (size.x * away.x.abs() + size.y * away.y.abs());
+    let at = |d: f32| Rect::from_center_size(b + away * (half + d), size);
+    (0..100_u8)
+        .map(|k| at(LABEL_GAP + 2.0 * f32::from(k)))
+        .find(|r| !obstacles.iter().any(|line| touches(r.expand(LABEL_GAP), line)))
+        .unwrap_or_else(|| at(LABEL_GAP))
+}
+
+/// The clear space between an h_min label and the outlines [points].
+const LABEL_GAP: f32 = 3.0;
+
+/// Some segment of the polyline `line` crosses or lies in `rect`.
+#[must_use]
+pub fn touches(rect: Rect, line: &[Pos2]) -> bool {
+    line.windows(2).any(|s| segment_meets_rect(s[0], s[1], rect))
+}
+
+/// The segment `a`–`b` meets `rect` (Liang–Barsky clipping: the part of the segment inside is not empty).
+fn segment_meets_rect(a: Pos2, b: Pos2, rect: Rect) -> bool {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0_f32, 1.0_f32);
+    for (p, q) in [
+        (-d.x, a.x - rect.left()),
+        (d.x, rect.right() - a.x),
+        (-d.y, a.y - rect.top()),
+        (d.y, rect.bottom() - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else {
+            let t = q / p;
+            if p < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+            if t0 > t1 {
+                return false;
+            }
+        }
+    }
+    true
 }
 
 /// The load's label beside the middle of its arrow `a → b` (at the tip it lay on the pressure fill), on a

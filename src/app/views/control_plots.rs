@@ -23,8 +23,11 @@ pub const LIMIT: Color32 = Color32::from_rgb(213, 94, 0);
 /// The API 617 line (dotted grey: the closed loop's colour is the warning's).
 pub const API: Color32 = Color32::from_gray(150);
 
+/// Room right of a plot's frame [points]: half the last x tick's label ("20000") is written past the frame.
+const RIGHT_ROOM: f32 = 20.0;
+
 pub fn plot(id: &str, ui: &Ui, height: f32) -> Plot<'static> {
-    let width = ui.available_width().min(ui.clip_rect().width());
+    let width = (ui.available_width().min(ui.clip_rect().width()) - RIGHT_ROOM).max(100.0);
     Plot::new(id.to_string()).height(height).width(width).allow_scroll(false)
 }
 

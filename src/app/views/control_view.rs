@@ -56,6 +56,8 @@ const BEARING_TEXT: &str = include_str!("../../../cases/compressor-bearing-activ
 const FIRST_RPM: f64 = 2000.0;
 const MAX_FACTOR: f64 = 1.3;
 const LQR_MAX_FACTOR: f64 = 2.0;
+/// Width of a slider's track [points]: two sliders with their values and names fit a row of 450 points.
+const SLIDER_WIDTH: f32 = 80.0;
 /// Ranges of the PD sliders (every PD loop): kp [V/µm], kd [V per mm/s].
 const KP_RANGE: [f64; 2] = [-0.2, 0.2];
 const KD_RANGE: [f64; 2] = [-0.5, 0.5];
@@ -394,10 +396,11 @@ fn sliders_ui(ui: &mut Ui, view: &mut ControlView, built: &Built) {
     let t = &mut view.tuning;
     let rpm: Vec<f64> = built.sweep.speeds_rad_s.iter().map(|w| RPM.from_si(*w)).collect();
     let last = rpm.len().saturating_sub(1);
-    // Two sliders a row: the central panel between the editor and the results is about 500 points wide at
-    // 1280×720, and a row wider than it would widen the whole view under the side panels.
-    ui.spacing_mut().slider_width = 110.0;
-    ui.horizontal(|ui| {
+    // Two sliders a row: the central panel between the editor and the results is about 490 points wide at
+    // 1280×720, and a row wider than it would widen the whole view under the side panels (cutting the
+    // second slider's text); the row wraps rather than widen a narrower view.
+    ui.spacing_mut().slider_width = SLIDER_WIDTH;
+    ui.horizontal_wrapped(|ui| {
         ui.add(egui::Slider::new(&mut t.gain, GAIN_RANGE[0]..=GAIN_RANGE[1]).step_by(0.05).text("loop gain"))
             .on_hover_text("Multiplies the whole controller: 0 opens the loop, −1 flips its sign.");
         ui.add(
@@ -411,7 +414,7 @@ fn sliders_ui(ui: &mut Ui, view: &mut ControlView, built: &Built) {
         );
     });
     if t.kp_v_per_um.is_some() || t.kd_v_per_mm_s.is_some() {
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             if let Some(kp) = t.kp_v_per_um.as_mut() {
                 ui.add(egui::Slider::new(kp, KP_RANGE[0]..=KP_RANGE[1]).step_by(0.005).text("kp [V/µm]"))
                     .on_hover_text("Displacement gain of every loop.");
@@ -485,10 +488,28 @@ fn lqr_ui(
     control: &Control,
 ) {
     let hz = design.design_speed_rad_s / std::f64::consts::TAU;
+    // Closed at first: open, the table leaves the plots below it too short at 1280×720.
+    let title = format!(
+        "LQR design at {:.0} rpm: weights and the compensator's gains",
+        RPM.from_si(design.design_speed_rad_s)
+    );
+    egui::CollapsingHeader::new(title).id_salt("control-lqr-design").default_open(false).show(ui, |ui| {
+        lqr_table_ui(ui, spec, design, controller, control, hz);
+    });
+}
+
+/// The LQR design's table (in [`lqr_ui`]'s collapsing section).
+fn lqr_table_ui(
+    ui: &mut Ui,
+    spec: &LqrSpec,
+    design: &crate::control::lqr::LqrDesign,
+    controller: &crate::control::state_space::StateSpace,
+    control: &Control,
+    hz: f64,
+) {
     ui.label(format!(
-        "LQR at {:.0} rpm on {} of the plant's {} states (modes below {:.0} Hz), observer noise {}; the \
-         compensator's gains at the running frequency:",
-        RPM.from_si(design.design_speed_rad_s),
+        "On {} of the plant's {} states (modes below {:.0} Hz), observer noise {}; the compensator's gains at \
+         the running frequency:",
         design.reduced_states,
         design.full_states,
         spec.max_frequency_rad_s / std::f64::consts::TAU,

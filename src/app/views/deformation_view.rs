@@ -284,6 +284,9 @@ impl ScreenFromSection {
     }
 }
 
+/// Height of the pivot's wedge on a section [points].
+const WEDGE: f32 = 12.0;
+
 /// Paints a section (grey undeformed outline, deformed outline coloured by u_r); the hover under `hover_pos`.
 fn section_ui(
     painter: &egui::Painter,
@@ -295,7 +298,9 @@ fn section_ui(
     text: Color32,
 ) -> Option<Hover> {
     text_within(painter, rect.center_top(), Align2::CENTER_TOP, title, FontId::proportional(12.0), text, rect.width());
-    let inner = rect.shrink2(Vec2::new(10.0, 22.0));
+    // Below the title (14 points) the pivot's wedge stands 12 points above the pad's back: the drawing
+    // starts under both. Below it, the LE and TE labels.
+    let inner = Rect::from_min_max(rect.min + Vec2::new(10.0, 14.0 + WEDGE + 6.0), rect.max - Vec2::new(10.0, 22.0));
     let all: Vec<[f64; 2]> = section.rigid.iter().chain(&section.deformed).copied().collect();
     let frame = ScreenFromSection::fit(inner, &all);
     let rigid: Vec<Pos2> = section.rigid.iter().map(|&p| frame.map(p)).collect();
@@ -310,7 +315,7 @@ fn section_ui(
     // The pivot: a wedge on the back of the pad.
     let pivot = frame.map(section.pivot);
     painter.add(Shape::convex_polygon(
-        vec![pivot, pivot + Vec2::new(7.0, -12.0), pivot + Vec2::new(-7.0, -12.0)],
+        vec![pivot, pivot + Vec2::new(7.0, -WEDGE), pivot + Vec2::new(-7.0, -WEDGE)],
         Color32::from_gray(120),
         Stroke::NONE,
     ));

@@ -38,7 +38,8 @@ pub fn legend_ui(ui: &mut Ui, entries: &[LegendEntry]) {
             let (rect, sample) = ui.allocate_exact_size(egui::vec2(16.0, 12.0), egui::Sense::hover());
             sample.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend: {name}")));
             ui.painter().line_segment([rect.left_center(), rect.right_center()], egui::Stroke::new(2.5, *color));
-            ui.label(RichText::new(name).color(*color));
+            // Whole: an entry that does not fit the row moves to the next one rather than breaking its name.
+            ui.add(egui::Label::new(RichText::new(name).color(*color)).wrap_mode(egui::TextWrapMode::Extend));
             ui.add_space(6.0);
         }
     });

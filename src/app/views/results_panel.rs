@@ -34,7 +34,7 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
     egui::CollapsingHeader::new(RichText::new("Pads").strong()).default_open(true).show(ui, |ui| {
         // The loads share the engineering prefix of the largest (kN for the compressor).
         let loads: Vec<f64> = summary.pads.iter().map(|p| p.load_n).collect();
-        let (loads, load_unit) = crate::number::eng_values(&loads, "N");
+        let (loads, load_unit) = shared_decimals(&loads, "N");
         // Names above their units: seven columns fit the panel at 1280 points.
         let load_header = format!("load\n[{load_unit}]");
         Grid::new("pads").striped(true).spacing([6.0, 4.0]).min_col_width(0.0).show(ui, |ui| {
@@ -79,5 +79,43 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
         for w in &summary.warnings {
             ui.label(RichText::new(format!("Warning: {w}")).color(ink::WARNING.of(ui)));
         }
+    }
+}
+
+/// Values of one SI unit in one column: the engineering prefix of the largest and the decimals that give it
+/// four significant digits, the same for every value, so a column reads aligned and an unloaded pad's
+/// round-off force (7.5e-8 N beside 2.5 kN) reads 0.000 kN rather than "7.485e-11".
+#[must_use]
+pub fn shared_decimals(values_si: &[f64], unit_si: &str) -> (Vec<String>, String) {
+    let largest = values_si.iter().filter(|v| v.is_finite()).fold(0.0_f64, |m, v| m.max(v.abs()));
+    let (scale, prefix) = crate::number::eng_prefix(largest);
+    // The prefix brings the largest into [1, 1000): 1 to 3 digits before the point.
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let decimals = (3.0 - (largest / scale).max(1.0).log10().floor()).clamp(0.0, 3.0) as usize;
+    let text = |v: f64| {
+        let t = format!("{:.decimals$}", v / scale);
+        // "-0.000" is a zero.
+        if t.trim_start_matches('-').chars().all(|c| c == '0' || c == '.') {
+            t.trim_start_matches('-').to_string()
+        } else {
+            t
+        }
+    };
+    (values_si.iter().map(|&v| text(v)).collect(), format!("{prefix}{unit_si}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::shared_decimals;
+
+    #[test]
+    fn a_column_shares_its_prefix_and_decimals() {
+        let (v, unit) = shared_decimals(&[7.485e-8, 189.0, 1005.0, 2499.0, -2.0e-9], "N");
+        assert_eq!(
+            (v, unit.as_str()),
+            (vec!["0.000".into(), "0.189".into(), "1.005".into(), "2.499".into(), "0.000".into()], "kN")
+        );
+        let (v, unit) = shared_decimals(&[25_400.0, 312_000.0], "N");
+        assert_eq!((v, unit.as_str()), (vec!["25.4".into(), "312.0".into()], "kN"));
     }
 }

@@ -287,7 +287,9 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
             } else {
                 shown.title.clone()
             };
-            ui.label(RichText::new(format!("{title} — {:.0} kg", shown.mass())).strong());
+            // In grams with the engineering prefix: 412.3 kg, 1.25 Mg (the prefixes do not apply to kg).
+            let mass = crate::number::eng(crate::units::G.from_si(shown.mass()), "g");
+            ui.label(RichText::new(format!("{title} — {mass}")).strong());
             if let Some(picked) = sketch_ui(ui, &sketch(shown), &edit.section_of_elements(), edit.selected) {
                 edit.selected = Some(picked);
             }
