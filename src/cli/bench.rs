@@ -301,13 +301,13 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     ];
     for (label, file, extra) in &runs {
         let text = std::fs::read_to_string(root.join("cases").join(format!("{file}.toml")))?;
-        eprintln!("bench: {label}");
+        super::interrupt::say(format!("bench: {label}"));
         rows.extend(levels(label, &text, extra, repeats)?);
         texts.push((*file, text));
     }
-    eprintln!("bench: cost growth");
+    super::interrupt::say("bench: cost growth");
     let (pts, exponent) = growth(&texts[0].1, repeats.min(3))?;
-    eprintln!("bench: thermal loop cost");
+    super::interrupt::say("bench: thermal loop cost");
     let thermal = thermal_cost(&texts, repeats)?;
     let (cavitation, flow_note) = super::bench_cavitation::measured(root, repeats.min(3))?;
     let machine = machine();

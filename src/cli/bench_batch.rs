@@ -44,7 +44,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         std::fs::read_to_string(&designs_path).with_context(|| format!("cannot read {}", designs_path.display()))?;
     let designs = Designs::parse(&table)?;
     let text = std::fs::read_to_string(root.join("cases").join("compressor-bearing.toml"))?;
-    eprintln!("bench: batch cost per design");
+    super::interrupt::say("bench: batch cost per design");
     let (_, truth) = run_level(&text, &designs, "reference");
     let mut md = String::new();
     let _ = writeln!(

@@ -116,16 +116,16 @@ pub fn measured(root: &Path, repeats: usize) -> Result<(String, String)> {
     let compressor = read("compressor-bearing.toml")?;
     let starved = read("compressor-bearing-starved.toml")?;
     let iso = "thermal.model=\"isothermal\"".to_string();
-    eprintln!("bench: cavitation (Reynolds)");
+    super::interrupt::say("bench: cavitation (Reynolds)");
     let reynolds = levels("compressor-bearing, reynolds", &compressor, std::slice::from_ref(&iso), repeats)?;
-    eprintln!("bench: cavitation (JFO)");
+    super::interrupt::say("bench: cavitation (JFO)");
     let jfo_set = [iso.clone(), "physics.cavitation=\"jfo\"".to_string()];
     let jfo = levels("compressor-bearing, jfo", &compressor, &jfo_set, repeats)?;
-    eprintln!("bench: cavitation (CPU time and work per option)");
+    super::interrupt::say("bench: cavitation (CPU time and work per option)");
     let cpu_repeats = repeats.max(3);
     let reynolds_cpu = cpu_levels(&compressor, std::slice::from_ref(&iso), cpu_repeats)?;
     let jfo_cpu = cpu_levels(&compressor, &jfo_set, cpu_repeats)?;
-    eprintln!("bench: cavitation (starved)");
+    super::interrupt::say("bench: cavitation (starved)");
     // The starved case's equilibrium can fail at a level (a touchdown on the way); the section says so.
     let (starved_rows, starved_failure) = match levels("compressor-bearing-starved", &starved, &[iso], repeats) {
         Ok(rows) => (rows, None),

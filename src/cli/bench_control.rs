@@ -59,7 +59,7 @@ fn onset(r: &ControlResult, closed: bool) -> Option<f64> {
 /// # Errors
 /// Missing files, an invalid rotor or case, a failed analysis.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
-    eprintln!("bench: control");
+    super::interrupt::say("bench: control");
     let (base, control) = read_controlled(&root.join("cases").join("rotors").join("compressor-rotor-active.toml"))?;
     let bearing_text = std::fs::read_to_string(root.join("cases").join("compressor-bearing-active.toml"))?;
     let speeds = parse_speeds(SPEEDS, usize::MAX)?;

@@ -21,7 +21,7 @@ pub const HEADING: &str = "## Oil feeding";
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let read = |name: &str| std::fs::read_to_string(root.join("cases").join(format!("{name}.toml")));
     let compressor = read("compressor-bearing")?;
-    eprintln!("bench: feeding");
+    super::interrupt::say("bench: feeding");
     let thd = ["thermal.model=\"thd\"".to_string(), "thermal.pad_film_bc=\"bc1\"".to_string()];
     let groove = [
         "feeding.kind=\"leading_edge_groove\"".to_string(),

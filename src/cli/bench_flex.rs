@@ -65,7 +65,7 @@ fn errors(s: &Solution, truth: &Solution) -> [f64; 4] {
 /// A missing case file or a failed solve.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let text = std::fs::read_to_string(root.join("cases").join("compressor-bearing-flexible.toml"))?;
-    eprintln!("bench: flexible pads");
+    super::interrupt::say("bench: flexible pads");
     let (_, truth) = solve_level(&text, 3, 8, 1)?;
     let mut md = String::from(
         "\n## Flexible pads (`physics.pad_modes`)\n\n`cases/compressor-bearing-flexible.toml` at standard fidelity (isothermal); each solve builds \
@@ -90,7 +90,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
 
 /// The TEHD rows: each fidelity level (1 mode) against the reference mesh with 3 modes.
 fn tehd_table(text: &str, repeats: usize) -> Result<String> {
-    eprintln!("bench: flexible pads, TEHD");
+    super::interrupt::say("bench: flexible pads, TEHD");
     let with = |extra: &[&str]| -> Vec<String> { TEHD.iter().chain(extra).map(|s| (*s).to_string()).collect() };
     // The reference film mesh with 4 pad layers: 8 layers (the reference default) with 3 modes spent the thermal
     // loop's 120 s budget in its first outer iteration on this machine.

@@ -28,7 +28,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 /// Missing case file, an invalid case or a failed solve.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let text = std::fs::read_to_string(root.join("cases").join("test-rig-pub5.toml"))?;
-    eprintln!("bench: FRFs");
+    super::interrupt::say("bench: FRFs");
     let freqs = band(1.0, 1000.0, 400);
     let probe = [20.0, 200.0];
     let mut rows = Vec::new();

@@ -105,7 +105,7 @@ fn rpm(r: &AnalysisResult) -> String {
 /// # Errors
 /// Missing files, an invalid rotor or case, a failed analysis.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
-    eprintln!("bench: rotor");
+    super::interrupt::say("bench: rotor");
     let base = read_rotor(&root.join("cases").join("rotors").join("compressor-rotor.toml"))?;
     let bearing_text = std::fs::read_to_string(root.join("cases").join("compressor-bearing.toml"))?;
     let speeds = parse_speeds(SPEEDS, usize::MAX)?;

@@ -20,7 +20,7 @@ pub const HEADING: &str = "## Sommerfeld chart";
 /// # Errors
 /// A missing case file or a sweep whose every point failed.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
-    eprintln!("bench: sommerfeld");
+    super::interrupt::say("bench: sommerfeld");
     let mut md = format!(
         "\n{HEADING} (`tiltpad sommerfeld`)\n\nThe chart's sweep: 12 loads from 0.2 to 3 times the case's, each point \
          warm-started from the one before (median of {repeats} runs). S deviation: the largest relative difference \

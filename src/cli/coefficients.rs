@@ -187,6 +187,9 @@ pub fn run(args: &CoefficientArgs) -> Result<()> {
             if analysis.is_some() {
                 bail!("--analysis-rpm checks a speed band: give it with --speed-rpm");
             }
+            // one bearing solve at the case's speed (the frequencies reuse its coefficients)
+            let cost = point_cost(&runner.case(&[])?);
+            super::inputs::check_work(&Estimate::points("coefficients", 1, cost), args.max_hours)?;
             (
                 excitation_table(
                     &mut runner,
@@ -198,7 +201,9 @@ pub fn run(args: &CoefficientArgs) -> Result<()> {
         }
         (Some(_), Some(_)) => bail!("give --speed-rpm (a speed sweep) or --excitation-ratio (one speed), not both"),
         (None, None) => {
-            let rpm = crate::units::RPM.from_si(runner.case(&[])?.operating.speed_rad_s);
+            let case = runner.case(&[])?;
+            super::inputs::check_work(&Estimate::points("coefficients", 1, point_cost(&case)), args.max_hours)?;
+            let rpm = crate::units::RPM.from_si(case.operating.speed_rad_s);
             speed_table(&mut runner, &[rpm], false, analysis)?
         }
     };

@@ -61,6 +61,24 @@ pub fn read_controlled(path: &Path) -> Result<(Rotor, Control)> {
     Ok((rotor, control))
 }
 
+/// The work of a control run before it starts: at each speed one bearing solve per bearing and the damped
+/// eigen-solutions open and closed loop, one per actuator for the Nyquist test and one per swept gain (other
+/// than 0 and the controller's); the onsets open, closed and at each swept gain bisect with up to
+/// [`super::rotor::ONSET_PROBES`] probes each (bearing solves and an eigen-solution); the root locus adds one
+/// per gain.
+#[must_use]
+pub fn estimate(rotor: &Rotor, control: &Control, params: &ControlParams) -> Estimate {
+    let probes = (2 + params.gains.len()).saturating_mul(super::rotor::ONSET_PROBES);
+    let swept = params.gains.iter().filter(|&&g| g != 0.0 && g != control.gain).count();
+    let nyquist = if params.nyquist { control.actuators.len() } else { 0 };
+    let locus = match params.root_locus_rad_s {
+        Some(_) if params.gains.is_empty() => 21,
+        Some(_) => params.gains.len(),
+        None => 0,
+    };
+    Estimate::control(rotor, params.speeds_rad_s.len(), probes, 2 + nyquist + swept, probes + locus)
+}
+
 /// Parses `G1,G2,…` or `FROM:TO:N` into gains.
 ///
 /// # Errors
@@ -112,9 +130,7 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     if args.locus_csv.is_some() && params.root_locus_rad_s.is_none() {
         bail!("--locus-csv needs --root-locus RPM (the speed of the locus)");
     }
-    // The onsets open, closed and at each gain of the sweep bisect with bearing solves of their own.
-    let probes = (2 + params.gains.len()).saturating_mul(super::rotor::ONSET_PROBES);
-    let estimate = Estimate::rotor("control", &rotor, params.speeds_rad_s.len(), probes);
+    let estimate = estimate(&rotor, &control, &params);
     super::inputs::check_work(&estimate, args.max_hours)?;
     let context = || format!("analysing {}", args.rotor.display());
     // One bearing solve per bearing and speed: a bar on standard error shows them go by; Ctrl-C stops after

@@ -78,6 +78,8 @@ fn run_all(bearings: &[MapBearing], spec: &MapSpec, points: &[Point], threads: u
                 };
                 let Some(b) = bearings.get(i) else { return };
                 pb.set_message(b.name.clone());
+                // without a terminal there is no bar: the heartbeat names the bearing being mapped
+                super::interrupt::doing(format!("convergence map: bearing {} ({per} points)", b.name));
                 let r = map_bearing_points(b, spec, &keep).with_context(|| format!("bearing {}", b.name));
                 pb.inc(per as u64);
                 if let Ok(mut o) = out.lock() {

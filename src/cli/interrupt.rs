@@ -14,10 +14,17 @@ static REQUESTED: AtomicBool = AtomicBool::new(false);
 /// Exit status of an interrupted command (128 + SIGINT, what shells report for Ctrl-C).
 pub const EXIT_STATUS: i32 = 130;
 
-/// Installs the handler (once per process; a second call does nothing).
-pub fn install() {
+/// Installs the handler (once per process; a second call does nothing). `command`: what the heartbeat names
+/// while the command has said nothing more precise ([`doing`], [`say`]).
+pub fn install(command: &str) {
     static INSTALLED: std::sync::Once = std::sync::Once::new();
     INSTALLED.call_once(|| {
+        if let Ok(mut c) = COMMAND.lock() {
+            *c = format!("tiltpad {command}");
+        }
+        if let Ok(mut t) = STARTED.lock() {
+            *t = Some(web_time::Instant::now());
+        }
         start_heartbeat();
         let installed = ctrlc::set_handler(|| {
             if REQUESTED.swap(true, Ordering::SeqCst) {
@@ -75,6 +82,35 @@ pub fn doing(what: impl Into<String>) {
 /// When [`doing`] was last called.
 static DOING_SINCE: std::sync::Mutex<Option<web_time::Instant>> = std::sync::Mutex::new(None);
 
+/// The command running and when it started ([`install`]).
+static COMMAND: std::sync::Mutex<String> = std::sync::Mutex::new(String::new());
+static STARTED: std::sync::Mutex<Option<web_time::Instant>> = std::sync::Mutex::new(None);
+
+/// A progress line of the command's own (e.g. `bench: rotor`): printed on standard error, and named by the
+/// heartbeat's `working:` lines until the next one.
+pub fn say(line: impl Into<String>) {
+    let line = line.into();
+    eprintln!("{line}");
+    doing(line);
+    line_printed();
+}
+
+/// The heartbeat's line: what the command said it is doing ([`doing`], [`say`]) and for how long; else the
+/// solver's safe points when a solve asks for them ([`Interrupt`]); else the command and its time so far
+/// (never a count of safe points that nothing passes).
+#[must_use]
+pub fn heartbeat_line(command: &str, what: &str, since_s: f64, safe_points: u64) -> String {
+    if !what.is_empty() {
+        format!("working: {what}; {since_s:.0} s on it so far (Ctrl-C stops after it)")
+    } else if safe_points > 0 {
+        format!(
+            "working: {command}, safe point {safe_points} of the solver (Ctrl-C stops after the point being solved)"
+        )
+    } else {
+        format!("working: {command}; {since_s:.0} s so far (Ctrl-C stops after the point being solved)")
+    }
+}
+
 /// A progress bar is drawn on the terminal (the heartbeat keeps quiet under it).
 static BAR_SHOWN: AtomicBool = AtomicBool::new(false);
 
@@ -95,10 +131,9 @@ pub fn bar_shown(shown: bool) {
 }
 
 /// The heartbeat: a command that has printed nothing for [`HEARTBEAT_SECONDS`] (building a large mesh, a
-/// long single solve, a first point that takes minutes) prints `working: safe point N` and again every
-/// [`HEARTBEAT_SECONDS`], so a run watched through a pipe or a log never looks hung. N counts the solver's
-/// safe points so far (each equilibrium and thermal iteration); the line is information only, no outcome
-/// depends on it. A thread of its own, which sleeps between checks and ends with the process.
+/// long single solve, a first point that takes minutes) prints a `working:` line ([`heartbeat_line`]) and
+/// again every [`HEARTBEAT_SECONDS`], so a run watched through a pipe or a log never looks hung; the line is
+/// information only, no outcome depends on it. A thread of its own, which sleeps between checks and ends with the process.
 fn start_heartbeat() {
     line_printed();
     let spawned = std::thread::Builder::new().name("heartbeat".into()).spawn(|| loop {
@@ -110,13 +145,10 @@ fn start_heartbeat() {
             LAST_LINE.lock().ok().and_then(|l| *l).is_some_and(|t| t.elapsed().as_secs_f64() >= HEARTBEAT_SECONDS);
         if due {
             let what = DOING.lock().map(|d| d.clone()).unwrap_or_default();
-            if what.is_empty() {
-                let n = SAFE_POINTS.load(Ordering::Relaxed);
-                eprintln!("working: safe point {n} of the solver (Ctrl-C stops after the point being solved)");
-            } else {
-                let since = DOING_SINCE.lock().ok().and_then(|t| *t).map_or(0.0, |t| t.elapsed().as_secs_f64());
-                eprintln!("working: {what}; {since:.0} s on it so far (Ctrl-C stops after it)");
-            }
+            let since = if what.is_empty() { &STARTED } else { &DOING_SINCE };
+            let since = since.lock().ok().and_then(|t| *t).map_or(0.0, |t| t.elapsed().as_secs_f64());
+            let command = COMMAND.lock().map(|c| c.clone()).unwrap_or_default();
+            eprintln!("{}", heartbeat_line(&command, &what, since, SAFE_POINTS.load(Ordering::Relaxed)));
             line_printed();
         }
     });
@@ -153,5 +185,28 @@ impl Interrupted {
             format!("their results are in {}", names.join(" and "))
         };
         Self { done, of, what, kept }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::heartbeat_line;
+
+    #[test]
+    fn the_heartbeat_names_what_runs_and_never_counts_safe_points_that_nothing_passes() {
+        // A command that said what it does (a critical-speed map's eigen-solutions, a bench section).
+        let line = heartbeat_line("tiltpad rotor", "critical-speed map: 81 undamped eigen-solutions", 12.4, 0);
+        assert_eq!(
+            line,
+            "working: critical-speed map: 81 undamped eigen-solutions; 12 s on it so far (Ctrl-C stops after it)"
+        );
+        // A long single solve: its safe points.
+        let line = heartbeat_line("tiltpad solve", "", 7.0, 42);
+        assert!(line.contains("tiltpad solve, safe point 42 of the solver"), "{line}");
+        // Work that passes no safe point of the solver (a map's cold solves, a bench section): the command and
+        // its time, not "safe point 0".
+        let line = heartbeat_line("tiltpad bench", "", 31.0, 0);
+        assert_eq!(line, "working: tiltpad bench; 31 s so far (Ctrl-C stops after the point being solved)");
+        assert!(!line.contains("safe point"), "{line}");
     }
 }

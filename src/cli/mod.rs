@@ -75,7 +75,7 @@ fn is_stdout(p: Option<&PathBuf>) -> bool {
 /// # Errors
 /// Case, solve and I/O errors (printed by `main` on standard error).
 pub fn run(command: Command) -> Result<()> {
-    interrupt::install();
+    interrupt::install(&std::env::args().nth(1).unwrap_or_default());
     match command {
         Command::Solve { case, set, json, vtu } => solve::solve(&case, &set, json.as_ref(), vtu.as_ref()),
         Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu, max_points, max_hours } => {

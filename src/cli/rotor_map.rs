@@ -14,7 +14,7 @@ use crate::rotor::critical_map::{critical_speed_map, CriticalSpeedMap};
 use super::rotor::{emit, parse_speeds, read_rotor, RotorArgs};
 
 /// Stiffnesses of the map (logarithmic) and modes drawn.
-const POINTS: usize = 81;
+pub(super) const POINTS: usize = 81;
 const MODES: usize = 4;
 
 /// Runs the map and writes the outputs.
@@ -24,10 +24,22 @@ const MODES: usize = 4;
 pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let rotor = read_rotor(args.rotor)?;
     let speeds = parse_speeds(args.speeds, args.max_points)?;
-    let estimate = crate::study::estimate::Estimate::rotor("rotor --critical-map", &rotor, speeds.len(), 0);
+    let estimate = crate::study::estimate::Estimate::critical_map(&rotor, speeds.len(), POINTS);
     super::inputs::check_work(&estimate, args.max_hours)?;
+    // no bar: the heartbeat names the work under way when it takes long (a large shaft's eigen-solutions)
+    let each = estimate
+        .eigen
+        .map_or(String::new(), |e| format!(", {} each", crate::study::estimate::duration_text(e.seconds_each)));
+    super::interrupt::doing(format!(
+        "critical-speed map: bearing stiffness at {} speeds, then {POINTS} undamped eigen-solutions of the shaft{each} \
+         (about {} in all by the estimate)",
+        speeds.len(),
+        crate::study::estimate::duration_text(estimate.seconds)
+    ));
     let map = critical_speed_map(&rotor, &speeds, POINTS, MODES)
-        .with_context(|| format!("critical-speed map of {}", args.rotor.display()))?;
+        .with_context(|| format!("critical-speed map of {}", args.rotor.display()));
+    super::interrupt::doing("");
+    let map = map?;
     emit(args, &summary(&map), &map, || csv_text(&map))
 }
 

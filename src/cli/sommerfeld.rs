@@ -35,6 +35,10 @@ pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTa
     let mut spec = SweepSpec::sommerfeld_chart(&case);
     spec.count = points;
     let values = spec.values().with_context(|| format!("--points {points}: allowed 2 to {MAX_POINTS}"))?;
+    // at most 101 points: the memory of one point's meshes is what can be too much
+    let cost = crate::study::estimate::point_cost(&case);
+    let estimate = crate::study::estimate::Estimate::points("sommerfeld", values.len(), cost);
+    super::inputs::check_work(&estimate, f64::INFINITY)?;
     let mut runner = Runner::new(text, set.to_vec(), true);
     let mut table = SweepTable::new(&spec.key);
     let mut pb = super::sweep::progress(values.len());

@@ -74,6 +74,11 @@ pub const EIGEN_SECONDS_PER_UNIT: f64 = 7.0e-10;
 /// time), of half of them for the full shaft (only the free–free modes of one plane).
 pub const SHAFT_SECONDS_PER_UNIT: f64 = 1.3e-9;
 
+/// Time of one work unit (the cube of the coordinates) of an undamped eigen-solution of one plane of the
+/// shaft (`rotor --critical-map`: Cholesky of the mass, the symmetric eigen-problem with its vectors) at the
+/// reference rate [s] (see the module: 8.6e-10 measured at 402 coordinates, 8.5e-10 at 802).
+pub const UNDAMPED_SECONDS_PER_UNIT: f64 = 8.5e-10;
+
 /// Pad-solid unknowns of the modal reference point and its time for three modes [s].
 const MODES_REF_UNKNOWNS: f64 = 14_820.0;
 const MODES_REF_SECONDS: f64 = 0.29;
@@ -197,8 +202,11 @@ pub fn modes_seconds(unknowns: usize, modes: usize) -> f64 {
 pub struct EigenWork {
     /// Eigen-solutions (speeds and bisection probes).
     pub solutions: usize,
-    /// States of each (twice the system's coordinates).
+    /// States of each (twice the system's coordinates); for the undamped map, the coordinates of one
+    /// plane of the shaft.
     pub states: usize,
+    /// Undamped, symmetric eigen-problems (`rotor --critical-map`) rather than damped ones.
+    pub undamped: bool,
     /// Time of one at the reference rate [s].
     pub seconds_each: f64,
     /// Time of the shaft model built once [s].
@@ -328,10 +336,46 @@ impl Estimate {
             states,
             seconds_each: EIGEN_SECONDS_PER_UNIT * (states as f64).powi(3),
             shaft_seconds: SHAFT_SECONDS_PER_UNIT * shaft_unit.powi(3),
+            undamped: false,
         };
         #[allow(clippy::cast_precision_loss)]
         let seconds = all as f64 * per_speed + eigen.seconds();
         Self { what, solves: all.saturating_mul(costs.len()), seconds, bytes, eigen: Some(eigen) }
+    }
+
+    /// `rotor --critical-map` over `speeds` speeds: every bearing given by a case solved once per speed (its
+    /// stiffness curve), the shaft model built once, then `points` undamped eigen-solutions of one plane of
+    /// the shaft (see the module).
+    #[must_use]
+    pub fn critical_map(rotor: &Rotor, speeds: usize, points: usize) -> Self {
+        let bearings = Self::rotor("rotor --critical-map", rotor, speeds, 0);
+        let Some(damped) = bearings.eigen else { return bearings };
+        let coordinates = 2 * (rotor.elements.len() + 1);
+        #[allow(clippy::cast_precision_loss)]
+        let eigen = EigenWork {
+            solutions: points,
+            states: coordinates,
+            seconds_each: UNDAMPED_SECONDS_PER_UNIT * (coordinates as f64).powi(3),
+            shaft_seconds: damped.shaft_seconds,
+            undamped: true,
+        };
+        let seconds = bearings.seconds - damped.seconds() + eigen.seconds();
+        Self { seconds, eigen: Some(eigen), ..bearings }
+    }
+
+    /// `control` over `speeds` speeds: the rotor's bearing solves at every speed and at `probes` bisection
+    /// probes, and `per_speed` damped eigen-solutions at each speed (open and closed loop, the Nyquist tests,
+    /// the swept gains) plus `extra` more (one per probe, the root locus's gains) — the rotor's estimate with
+    /// the eigen-solutions the analysis makes.
+    #[must_use]
+    pub fn control(rotor: &Rotor, speeds: usize, probes: usize, per_speed: usize, extra: usize) -> Self {
+        let mut e = Self::rotor("control", rotor, speeds, probes);
+        if let Some(eigen) = e.eigen.as_mut() {
+            let before = eigen.seconds();
+            eigen.solutions = speeds.saturating_mul(per_speed).saturating_add(extra);
+            e.seconds += eigen.seconds() - before;
+        }
+        e
     }
 
     /// What raises or lowers this estimate's work, for the refusal: the rotor's eigen-solutions when they are
@@ -339,6 +383,10 @@ impl Estimate {
     #[must_use]
     pub fn settings(&self) -> &'static str {
         match self.eigen {
+            Some(e) if e.undamped && e.seconds() >= 0.5 * self.seconds => {
+                "fewer elements per section (rotor.section[].elements): the map solves one plane of the whole \
+                 shaft whatever rotor.shaft_modes"
+            }
             Some(e) if e.seconds() >= 0.5 * self.seconds => {
                 "fewer speeds (--speeds FROM:TO:N), a reduced shaft (--shaft-modes M or rotor.shaft_modes; 0 is \
                  the full shaft, the default 8 keeps a few dozen coordinates) or fewer elements per section \
@@ -391,9 +439,10 @@ impl fmt::Display for Estimate {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}: {} bearing solves", self.what, self.solves)?;
         if let Some(e) = &self.eigen {
+            let (kind, size) = if e.undamped { ("undamped ", "shaft coordinates") } else { ("", "states") };
             write!(
                 f,
-                " and {} eigen-solutions of {} states ({} each)",
+                " and {} {kind}eigen-solutions of {} {size} ({} each)",
                 e.solutions,
                 e.states,
                 duration_text(e.seconds_each)

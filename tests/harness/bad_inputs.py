@@ -667,6 +667,23 @@ class Harness:
         }.items():
             self.run(f"round4 convergence-map {name}", ["convergence-map", "--root", str(ROOT)] + a, expect="error")
 
+    def round5_inputs(self):
+        """Inputs added in the fifth round: the mesh that plans more than 8 GB on every bearing command (only
+        `solve` refused it up front; `coefficients` without `--speed-rpm` built it towards 8 GB)."""
+        c = "{C}/compressor-bearing.toml"
+        mesh = ["--set", "mesh.half_model=false", "--set", "mesh.circumferential_elements=1260", "--set",
+                "mesh.axial_elements=630", "--set", "mesh.max_nodes=4000000"]
+        for name, a in [
+            ("coefficients", ["coefficients", c]),
+            ("coefficients excitation", ["coefficients", c, "--excitation-ratio", "0.5,1,2"]),
+            ("coefficients speeds", ["coefficients", c, "--speed-rpm", "6000:7000:2"]),
+            ("sommerfeld", ["sommerfeld", c, "--points", "2"]),
+            ("sweep", ["sweep", c, "--vary", "operating.speed_rpm=6000:7000:2"]),
+            ("frf", ["frf", c]),
+            ("modes", ["modes", c, "--set", "physics.pad_modes=1"]),
+        ]:
+            self.run(f"round5 mesh 3.98M {name}", a + mesh, expect="error")
+
     def misc(self):
         self.run("schema", ["schema"], expect="ok")
         self.run("unknown command", ["frobnicate"], expect="error")
@@ -721,6 +738,7 @@ def main():
         h.physics_options()
         h.new_inputs()
         h.round4_inputs()
+        h.round5_inputs()
         h.misc()
         h.solve_extremes()
         if not a.skip_keys:

@@ -255,3 +255,53 @@ fn case_load(case: &tiltpad::model::Case) -> f64 {
         tiltpad::model::LoadSpec::Position { .. } => 0.0,
     }
 }
+
+/// The full compressor model on a 1260 × 630 grid (3.98 M film nodes, under its raised node cap) plans about
+/// 8.7 GB: `solve` refused it up front, but `coefficients` without `--speed-rpm` (and with
+/// `--excitation-ratio`) and `sommerfeld` built its meshes and ran towards 8 GB. Every bearing command now
+/// refuses it before building anything, naming the keys that shrink it. (A child still running after 60 s
+/// is stopped and the test fails: the refusal takes milliseconds.)
+#[test]
+fn a_mesh_over_the_memory_plan_is_refused_by_every_bearing_command_before_it_is_built() {
+    let d = scratch("mesh-memory");
+    let mesh = [
+        "--set",
+        "mesh.half_model=false",
+        "--set",
+        "mesh.circumferential_elements=1260",
+        "--set",
+        "mesh.axial_elements=630",
+        "--set",
+        "mesh.max_nodes=4000000",
+    ];
+    let c = "compressor-bearing.toml";
+    for head in [
+        vec!["solve", c],
+        vec!["coefficients", c],
+        vec!["coefficients", c, "--excitation-ratio", "0.5,1,2"],
+        vec!["coefficients", c, "--speed-rpm", "6000:7000:2"],
+        vec!["sommerfeld", c, "--points", "2"],
+        vec!["sweep", c, "--vary", "operating.speed_rpm=6000:7000:2"],
+        vec!["frf", c],
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_tiltpad"))
+            .args(&head)
+            .args(mesh)
+            .current_dir(&d)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let start = std::time::Instant::now();
+        while child.try_wait().unwrap().is_none() {
+            if start.elapsed() > std::time::Duration::from_secs(60) {
+                child.kill().ok();
+                panic!("{head:?}: still running after 60 s: the mesh was not refused up front");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+        let o = child.wait_with_output().unwrap();
+        refused(&o, &["peak memory about 8.7 GB", "mesh.max_nodes"]);
+    }
+    std::fs::remove_dir_all(&d).ok();
+}

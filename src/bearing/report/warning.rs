@@ -98,7 +98,8 @@ pub enum Warning {
     TemperatureUpdateStalled { best_change: f64, best_iteration: usize, from_iteration: usize },
     /// An equilibrium failed with a proposed viscosity field: the step was halved.
     StepHalved { error: Box<SolveError> },
-    /// The loop walked into a touchdown and restarted with safeguarded steps.
+    /// The loop walked into a touchdown (or an equilibrium that spent its work budget) at a proposed field and
+    /// restarted with safeguarded steps.
     ThermalRestart { outer_iteration: usize, error: Box<SolveError> },
     /// No oil flows in through a pad's leading edge.
     NoLeadingEdgeInflow { pad: usize },
@@ -213,7 +214,7 @@ impl std::fmt::Display for Warning {
             }
             Self::ThermalRestart { outer_iteration, error } => write!(
                 f,
-                "the thermal loop reached touchdown at outer iteration {outer_iteration} ({error}): restarted from \
+                "the thermal loop's equilibrium failed at outer iteration {outer_iteration} ({error}): restarted from \
                  the isothermal field with safeguarded steps"
             ),
             Self::NoLeadingEdgeInflow { pad } => write!(

@@ -44,12 +44,12 @@ mod update;
 /// [`MIN_RELAXATION`]), so the loop falls back to damped fixed-point steps where the extrapolation does not
 /// contract (near touchdown, where the film's heating is steep in the viscosity); if the
 /// equilibrium cannot be found with a proposed viscosity field (e.g. a lightly loaded pad whose moment
-/// curve loses its root), the proposal is halved back towards the last field that worked, up to
-/// [`MAX_BACKTRACKS`] times, and the history is restarted. Every proposal is clamped to the range of the
+/// curve loses its root), the proposal — its temperatures and, with thermal growth, its growth — is halved
+/// back towards the last field that worked, up to [`MAX_BACKTRACKS`] times, and the history is restarted. Every proposal is clamped to the range of the
 /// image it was made from; ω is doubled again after falls of the change ([`crate::bearing::thermal::anderson::RECOVER_AFTER`]);
 /// a safeguarded loop whose change has not halved in [`STALL_WINDOW`] outer iterations drops the
-/// extrapolation for plain damped steps; and a touchdown the loop walked into restarts it once, safeguarded
-/// from the start (`update.rs`).
+/// extrapolation for plain damped steps; and a touchdown the loop walked into (or an equilibrium that spent
+/// its work budget at a proposed field) restarts it once, safeguarded from the start (`update.rs`).
 pub struct ThdRun {
     t0: Instant,
     params: ThermalParams,
@@ -92,6 +92,9 @@ pub struct ThdRun {
     /// ([`ThdRun::restart_cautiously`]; `None`: not restarted), and what it restarts from.
     restarted_from: Option<SolveError>,
     growth_at_start: Option<GrowthField>,
+    /// TEHD: the growth in the films of the last equilibrium that was found (a backtracked step halves the
+    /// growth towards it, as it halves the temperatures towards theirs).
+    growth_ok: Option<GrowthField>,
     u_start: Option<Vec<f64>>,
 }
 
@@ -131,6 +134,7 @@ impl ThdRun {
             // The housing's growth is given: in the films from the first equilibrium, which decides the
             // lightly loaded pads.
             growth_next: housing.clone(),
+            growth_ok: housing.clone(),
             growth_at_start: housing,
             u_start: start.map(<[f64]>::to_vec),
             pending: None,
@@ -233,6 +237,7 @@ impl ThdRun {
             Err(e) => return self.failed_equilibrium(thermal, e),
         };
         self.backtracks = 0;
+        self.growth_ok.clone_from(&self.growth);
         self.shares = load_shares(&eq);
         // An unloaded pad's tilt is not determined by its film: from the first equilibrium in which it is
         // unloaded it is held for the rest of the loop, so that it cannot flip between equivalent states (each
