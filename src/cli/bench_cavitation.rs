@@ -179,9 +179,9 @@ pub fn measured(root: &Path, repeats: usize) -> Result<(String, String)> {
     let _ = writeln!(
         md,
         "\nStarvation sweep (compressor bearing, JFO, standard fidelity): the supply shared equally by the five pads.\n\n\
-         | supply | friction power | ε | h_min | leading-edge inflow | pads with p_max above 1 % of the bearing's |\n|---|---|---|---|---|---|"
+         | supply | friction power | ε | h_min | leading-edge inflow | pads with p_max above 1 % of the bearing's | film solves |\n|---|---|---|---|---|---|---|"
     );
-    for supply in [None, Some(35.0), Some(30.0), Some(25.0), Some(20.0), Some(15.0)] {
+    for supply in [None, Some(35.0), Some(30.0), Some(25.0), Some(20.0), Some(15.0), Some(12.0), Some(10.0)] {
         let mut set = vec!["physics.cavitation=\"jfo\"".to_string()];
         if let Some(q) = supply {
             set.push(format!("operating.supply_flow_l_per_min={q}"));
@@ -193,16 +193,17 @@ pub fn measured(root: &Path, repeats: usize) -> Result<(String, String)> {
                 let loaded = s.pads.iter().filter(|p| p.p_max_pa > 0.01 * s.p_max_pa).count();
                 let _ = writeln!(
                     md,
-                    "| {label} | {:.0} W | {:.4} | {:.2} µm | {:.2} l/min | {loaded} of {} |",
+                    "| {label} | {:.0} W | {:.4} | {:.2} µm | {:.2} l/min | {loaded} of {} | {} |",
                     s.friction_power_w,
                     s.eccentricity_ratio,
                     crate::units::UM.from_si(s.h_min_m),
                     L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in),
-                    s.pads.len()
+                    s.pads.len(),
+                    s.report.film_solves
                 );
             }
             Err(e) => {
-                let _ = writeln!(md, "| {label} | no equilibrium: {e} | | | | |");
+                let _ = writeln!(md, "| {label} | no equilibrium: {e} | | | | | |");
             }
         }
     }

@@ -239,6 +239,10 @@ fn tilt_search(
             // share linear in the tilt), never closer to the pressure-free end than half the final width.
             let est = match onset_pts {
                 [Some((d1, s1)), Some((d2, s2))] if s1 != s2 => d1 - s1 * (d1 - d2) / (s1 - s2),
+                // One onset point: the moment's own Newton step (the moment grows with the load from zero at
+                // the onset, in proportion to it, so Newton points at the onset), just past it on the
+                // pressure-free side.
+                _ if inside(newton - 0.5 * width) => newton - 0.5 * width,
                 _ => 0.5 * (blo + bhi),
             };
             let x = est.max(blo + 0.5 * width);
@@ -253,6 +257,10 @@ fn tilt_search(
             // Pressure-free with nothing loaded found to the right yet: step out towards the onset.
             reach *= 8.0;
             d + reach / 8.0
+        } else if onset && free.is_none() && inside(newton - 0.5 * width) {
+            // At the onset side with no pressure-free point found yet: the moment's Newton step points at the
+            // onset (see above); just past it.
+            newton - 0.5 * width
         } else if onset && free.is_none() && inside(d - reach) {
             // At the onset side with no pressure-free point found to the left yet: step back.
             reach *= 8.0;

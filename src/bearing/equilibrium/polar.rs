@@ -80,6 +80,17 @@ fn illinois(a: f64, fa: f64, b: f64, fb: f64) -> f64 {
     0.5 * (a + b)
 }
 
+/// The Illinois weights after an update of one end of the bracket (`side`: true for the positive end): the
+/// updated end's weight `1`, and the retained end's weight `other` halved only when the same end was
+/// updated the time before too (regula falsi stalling on one side). Successive updates alternating between
+/// the ends are plain secant steps, superlinear on a smooth function; halving the retained end on every
+/// update would bias every step and make the convergence linear.
+fn illinois_scales(last_side: &mut Option<bool>, side: bool, other: f64) -> (f64, f64) {
+    let other = if *last_side == Some(side) { 0.5 * other } else { 1.0 };
+    *last_side = Some(side);
+    (1.0, other)
+}
+
 struct Search<'m, 'c, 'o> {
     model: &'m mut BearingModel,
     ctx: &'c mut Ctx<'o>,
@@ -180,6 +191,7 @@ impl Search<'_, '_, '_> {
         }
         let (Some((mut a, mut pa)), Some((mut b, mut pb))) = (lo, hi) else { return Ok(None) };
         let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
+        let mut last_side = None;
         for _ in 0..MAX_BRACKET_ITERATIONS {
             let gb = pb.as_ref().map_or(f64::NEG_INFINITY, |p| p.g);
             let converged_b = gb.abs() <= self.ray_tol;
@@ -223,14 +235,12 @@ impl Search<'_, '_, '_> {
                 Some(p) if p.g > 0.0 => {
                     a = x;
                     pa = p;
-                    fa_scale = 1.0;
-                    fb_scale *= 0.5;
+                    (fa_scale, fb_scale) = illinois_scales(&mut last_side, true, fb_scale);
                 }
                 p => {
                     b = x;
                     pb = p;
-                    fb_scale = 1.0;
-                    fa_scale *= 0.5;
+                    (fb_scale, fa_scale) = illinois_scales(&mut last_side, false, fa_scale);
                 }
             }
         }
@@ -328,6 +338,7 @@ fn search(
         step *= 2.0;
     }
     let (mut fa_scale, mut fb_scale) = (1.0, 1.0);
+    let mut last_side = None;
     for _ in 0..MAX_BRACKET_ITERATIONS {
         for r in [ra.as_ref(), rb.as_ref()].into_iter().flatten() {
             if r.g.hypot(r.h) <= tol {
@@ -357,12 +368,10 @@ fn search(
         guess = r.s;
         if r.h > 0.0 {
             (a, ra) = (psi, Some(r));
-            fa_scale = 1.0;
-            fb_scale *= 0.5;
+            (fa_scale, fb_scale) = illinois_scales(&mut last_side, true, fb_scale);
         } else {
             (b, rb) = (psi, Some(r));
-            fb_scale = 1.0;
-            fa_scale *= 0.5;
+            (fb_scale, fa_scale) = illinois_scales(&mut last_side, false, fa_scale);
         }
     }
     let best = [ra, rb].into_iter().flatten().fold(None, |m: Option<RayRoot>, r| match m {
@@ -375,4 +384,42 @@ fn search(
     }
     let best = best.map_or(f64::INFINITY, |r| r.g.hypot(r.h));
     Ok(Err(Stall { journal: [0.0; 2], residual: best / search.ctx.force_scale, reason: StallReason::BracketExhausted }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{illinois, illinois_scales};
+
+    /// Iterations of the weighted regula falsi on `f` inside `[a, b]` (f(a) > 0 > f(b)) to |f| ≤ 1e-12.
+    fn iterations(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> usize {
+        let (mut fa, mut fb) = (f(a), f(b));
+        let (mut wa, mut wb) = (1.0, 1.0);
+        let mut last_side = None;
+        for it in 1..=200 {
+            let x = illinois(a, wa * fa, b, wb * fb);
+            let fx = f(x);
+            if fx.abs() <= 1e-12 {
+                return it;
+            }
+            if fx > 0.0 {
+                (a, fa) = (x, fx);
+                (wa, wb) = illinois_scales(&mut last_side, true, wb);
+            } else {
+                (b, fb) = (x, fx);
+                (wb, wa) = illinois_scales(&mut last_side, false, wa);
+            }
+        }
+        usize::MAX
+    }
+
+    /// On smooth functions the Illinois method converges superlinearly (order ≈ 1.44): measured 12 and 7
+    /// iterations to |f| ≤ 1e-12 from these brackets. Halving the retained end after every update, also when
+    /// the updates alternate, makes the convergence linear (43 and 39 iterations) — the polar search's
+    /// transverse force on the bearing starved to 12 l/min fell by only about 2 per ray that way.
+    #[test]
+    fn illinois_converges_superlinearly_on_smooth_functions() {
+        let cubic = iterations(|x| 2.0 - x * x * x, 0.0, 3.0);
+        let cosine = iterations(|x: f64| x.cos() - x, 0.0, 1.5);
+        assert!(cubic <= 15 && cosine <= 15, "cubic {cubic}, cosine {cosine} iterations");
+    }
 }
