@@ -50,8 +50,13 @@
 
 use std::fmt;
 
+pub use super::rotor_cost::{
+    rotor_coordinates, EigenWork, EIGEN_SECONDS_PER_UNIT, SHAFT_SECONDS_PER_UNIT, UNDAMPED_SECONDS_PER_UNIT,
+};
+
+use super::rotor_cost::appended_coordinates;
 use crate::model::budget;
-use crate::model::rotor::{BearingSupport, CoefficientModel, Rotor};
+use crate::model::rotor::{BearingSupport, Rotor};
 use crate::model::{Case, Cavitation, PadFilmBc, PadKind, ThermalModelKind};
 
 /// Film nodes of the reference point.
@@ -66,19 +71,6 @@ const EXPONENT: f64 = 1.19;
 /// faster than the nodes), whose peak, by the smaller mesh's rise from that point to its peak (×1.10), is
 /// about 8.5 GB, over the 8 GB bound. With 2.3 kB planned the 3.98 M-node mesh is refused up front.
 const BYTES_PER_NODE: f64 = 2355.0;
-/// Time of one work unit (the cube of the state size) of a rotor's damped eigen-solution at the reference
-/// rate [s]: measured with the full 400-element shaft, release build (docs/PERFORMANCE.md, work estimates).
-pub const EIGEN_SECONDS_PER_UNIT: f64 = 7.0e-10;
-/// Time of one work unit of the shaft built once [s]: the cube of the nodal shaft coordinates when it is
-/// reduced (the fixed-interface modes and the projection: 385 elements, 1544 coordinates, took 4.8 s of CPU
-/// time), of half of them for the full shaft (only the free–free modes of one plane).
-pub const SHAFT_SECONDS_PER_UNIT: f64 = 1.3e-9;
-
-/// Time of one work unit (the cube of the coordinates) of an undamped eigen-solution of one plane of the
-/// shaft (`rotor --critical-map`: Cholesky of the mass, the symmetric eigen-problem with its vectors) at the
-/// reference rate [s] (see the module: 8.6e-10 measured at 402 coordinates, 8.5e-10 at 802).
-pub const UNDAMPED_SECONDS_PER_UNIT: f64 = 8.5e-10;
-
 /// Pad-solid unknowns of the modal reference point and its time for three modes [s].
 const MODES_REF_UNKNOWNS: f64 = 14_820.0;
 const MODES_REF_SECONDS: f64 = 0.29;
@@ -195,77 +187,6 @@ pub fn modes_seconds(unknowns: usize, modes: usize) -> f64 {
     #[allow(clippy::cast_precision_loss)]
     let (u, m) = (unknowns as f64, modes as f64);
     MODES_REF_SECONDS * (u / MODES_REF_UNKNOWNS).powf(MODES_EXPONENT) * (m + 1.5) / 4.5
-}
-
-/// The rotor's dense eigen-solutions in an estimate (see the module).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct EigenWork {
-    /// Eigen-solutions (speeds and bisection probes).
-    pub solutions: usize,
-    /// States of each (twice the system's coordinates); for the undamped map, the coordinates of one
-    /// plane of the shaft.
-    pub states: usize,
-    /// Undamped, symmetric eigen-problems (`rotor --critical-map`) rather than damped ones.
-    pub undamped: bool,
-    /// Time of one at the reference rate [s].
-    pub seconds_each: f64,
-    /// Time of the shaft model built once [s].
-    pub shaft_seconds: f64,
-}
-
-impl EigenWork {
-    /// Time of all of them and of the shaft [s].
-    #[must_use]
-    pub fn seconds(&self) -> f64 {
-        #[allow(clippy::cast_precision_loss)]
-        let n = self.solutions as f64;
-        n * self.seconds_each + self.shaft_seconds
-    }
-}
-
-/// The working coordinates of a rotor's system at one speed: the shaft's (full or reduced, as
-/// [`crate::rotor::analysis::shaft_model`] builds it) and the pad coordinates the full bearing coefficients
-/// append (every coordinate of every tilting pad; decoupled ones are left out by the analysis, so this is an
-/// upper bound).
-#[must_use]
-pub fn rotor_coordinates(rotor: &Rotor) -> usize {
-    let full = 4 * (rotor.elements.len() + 1);
-    let mut attached: Vec<usize> = rotor
-        .bearings
-        .iter()
-        .map(|b| b.node)
-        .chain(rotor.supports.iter().map(|s| s.node))
-        .chain(rotor.unbalances.iter().map(|u| u.node))
-        .collect();
-    attached.sort_unstable();
-    attached.dedup();
-    // the reduction holds the shaft with two attached nodes or a support; otherwise the full shaft is kept
-    let holds = attached.len() >= 2 || !rotor.supports.is_empty();
-    let shaft = if rotor.shaft_modes == 0 || !holds {
-        full
-    } else {
-        let boundary = 2 * attached.len();
-        boundary + (2 * rotor.shaft_modes).min(full.saturating_sub(boundary))
-    };
-    shaft + appended_coordinates(rotor)
-}
-
-/// The pad coordinates the full bearing coefficients append to the shaft's (see [`rotor_coordinates`]).
-fn appended_coordinates(rotor: &Rotor) -> usize {
-    match rotor.coefficients {
-        CoefficientModel::Reduced => 0,
-        CoefficientModel::Full => rotor
-            .bearings
-            .iter()
-            .filter_map(|b| match &b.support {
-                BearingSupport::Case { case, .. } => Some(
-                    case.bearing.pads.iter().filter(|p| p.kind == PadKind::Tilting).count()
-                        * (1 + case.physics.pad_modes),
-                ),
-                BearingSupport::Numbers(_) => None,
-            })
-            .sum(),
-    }
 }
 
 /// The estimate of a whole command.
@@ -477,6 +398,7 @@ pub enum TooMuchWork {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::rotor::CoefficientModel;
 
     fn case(set: &[&str]) -> Case {
         let text =

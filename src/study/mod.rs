@@ -21,6 +21,7 @@ pub mod convergence;
 pub mod designs;
 pub mod estimate;
 pub mod grid;
+pub mod rotor_cost;
 pub mod run;
 
 pub use columns::{Column, COLUMNS};
