@@ -120,7 +120,7 @@ fn a_restart_that_spends_the_budget_answers_with_the_budget() {
 /// proposed field restarting the loop as a touchdown does, the cautious loop ends in touchdown on pad 0 with
 /// a positive film (1.02 µm at ε = 0.81; without growth the THD state has 1.21 µm).
 #[test]
-#[ignore = "minutes of CPU time even in release (two loops of failed equilibria, each spending up to 15 000 film \
+#[ignore = "25 s in release on a quiet machine, minutes in a debug build (two loops of failed equilibria, each spending up to 15 000 film \
             solves); run with `cargo test --release --test suite convergence_thd:: -- --ignored`"]
 fn the_compressor_with_growth_at_s_0_1_ends_in_touchdown_not_a_spent_budget() {
     let mut case = common::case("compressor-bearing-tehd.toml", &["mesh.fidelity=\"preview\""]);
