@@ -115,7 +115,7 @@ pub struct TehdModel {
 
 /// One evaluation of the growth: each pad's film-face growth at its film nodes [m] (zeros without a pad
 /// solid), each pad solid's nodal displacement (empty without one), and the journal growth [m].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct GrowthField {
     pub pad_film_m: Vec<Vec<f64>>,
     /// (u_r, u_θ, u_z) at every node of pad k's solid [m] ([`PadGrowth::nodal_polar_m`]).

@@ -103,8 +103,7 @@ impl ThdRun {
         }
         self.backtracks += 1;
         let base = self.t_ok.as_ref().unwrap_or(&self.t_iso);
-        self.t_try =
-            Some(tt.iter().zip(base).map(|(a, b)| a.iter().zip(b).map(|(x, y)| y + 0.5 * (x - y)).collect()).collect());
+        self.t_try = Some(midway(base, tt));
         // TEHD: the growth the failed step installed goes halfway back too (else a step whose growth moved
         // the films into touchdown is retried with the same growth six times: the compressor bearing with
         // growth at S = 0.1, 65°, whose first growth alone is 56 µm of its 102 µm clearance).
@@ -146,28 +145,24 @@ impl ThdRun {
     }
 }
 
+/// The field halfway from `from` to `to`, node by node (a backtracked step's temperatures and growth).
+fn midway(from: &[Vec<f64>], to: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    from.iter().zip(to).map(|(a, b)| a.iter().zip(b).map(|(x, y)| x + 0.5 * (y - x)).collect()).collect()
+}
+
 /// The growth halfway from `ok` (the last field with an equilibrium; `None`: no growth yet) to `next` (the
 /// one that had none); the housing's growth is given and the same in both.
 fn halfway(ok: Option<&GrowthField>, next: &GrowthField) -> GrowthField {
-    let none = GrowthField {
-        pad_film_m: Vec::new(),
-        pad_nodal_m: Vec::new(),
-        journal_m: 0.0,
-        housing_m: Vec::new(),
-        housing_film_m: Vec::new(),
-    };
+    let none = GrowthField::default();
     let ok = ok.unwrap_or(&none);
-    let mid = |a: &[Vec<f64>], b: &[Vec<f64>]| -> Vec<Vec<f64>> {
-        a.iter().zip(b).map(|(a, b)| a.iter().zip(b).map(|(x, y)| x + 0.5 * (y - x)).collect()).collect()
-    };
     let same_shape =
         |a: &[Vec<f64>], b: &[Vec<f64>]| a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.len() == y.len());
     // the housing-only start has no pad growth yet: halfway from zero
     let zero = |b: &[Vec<f64>]| -> Vec<Vec<f64>> { b.iter().map(|v| vec![0.0; v.len()]).collect() };
     let from = |a: &[Vec<f64>], b: &[Vec<f64>]| if same_shape(a, b) { a.to_vec() } else { zero(b) };
     GrowthField {
-        pad_film_m: mid(&from(&ok.pad_film_m, &next.pad_film_m), &next.pad_film_m),
-        pad_nodal_m: mid(&from(&ok.pad_nodal_m, &next.pad_nodal_m), &next.pad_nodal_m),
+        pad_film_m: midway(&from(&ok.pad_film_m, &next.pad_film_m), &next.pad_film_m),
+        pad_nodal_m: midway(&from(&ok.pad_nodal_m, &next.pad_nodal_m), &next.pad_nodal_m),
         journal_m: ok.journal_m + 0.5 * (next.journal_m - ok.journal_m),
         housing_m: next.housing_m.clone(),
         housing_film_m: next.housing_film_m.clone(),
