@@ -15,6 +15,9 @@ use crate::units::L_PER_MIN;
 
 pub const HEADING: &str = "## Oil feeding";
 
+/// Rows of the feedings table that share a base case: its label, its case text and each row's feeding and overrides.
+type Group<'a> = (&'a str, &'a String, Vec<(&'a str, Vec<String>)>);
+
 /// The markdown section.
 ///
 /// # Errors
@@ -57,7 +60,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
     md.push_str(
         "\nThe feedings at the standard level (median time; ratio to the flooded housing; the films' friction power, the \
          flooded housing's churning between the pads (docs/MODEL.md §3.8; none with directed feeding) and their sum, film peak \
-         temperature, hottest pad temperature (BC3 cases, whose pads are solved in 3-D), mean inlet temperature, film \
+         temperature, hottest pad temperature, mean inlet temperature, film \
          inflow at the leading edges, energy-balance closure). The starved rows use `cases/compressor-bearing-starved.toml` \
          (25 l/min, mass-conserving cavitation). Then the large bearing, `cases/large-5pad-leg.toml` (400 mm, 75 m/s), \
          against a flooded housing, and starved by its grooves (`cases/large-5pad-leg-starved.toml`), each group's \
@@ -73,7 +76,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         ["feeding.kind=\"flooded\"", "feeding.groove_carry_over=", "thermal.carry_over=0.5"].map(String::from).to_vec();
     let supply = |q: &str| vec![format!("operating.supply_flow_l_per_min={q}")];
     // Each group's ratio is to its first row (its flooded housing, or its fully fed films).
-    let groups: [(&str, &String, Vec<(&str, Vec<String>)>); 4] = [
+    let groups: [Group; 4] = [
         (
             "compressor-bearing THD",
             &compressor,
