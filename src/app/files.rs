@@ -96,6 +96,9 @@ impl Files {
     pub fn open_case(&self) {
         if !self.native_dialogs {
             let _ = self.tx.send(FileEvent::PathNeeded(super::open_dialog::OpenKind::Case));
+            // The event is taken at the start of a frame: ask for one, or the dialog waits for the next
+            // input (it did after "Discard changes", whose frame asks for no other).
+            self.repaint.request_repaint();
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
@@ -123,6 +126,9 @@ impl Files {
     pub fn open_rotor(&self) {
         if !self.native_dialogs {
             let _ = self.tx.send(FileEvent::PathNeeded(super::open_dialog::OpenKind::Rotor));
+            // The event is taken at the start of a frame: ask for one, or the dialog waits for the next
+            // input (it did after "Discard changes", whose frame asks for no other).
+            self.repaint.request_repaint();
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());
@@ -206,6 +212,9 @@ impl Files {
                 done: Box::new(done),
             };
             let _ = self.tx.send(FileEvent::NameNeeded(Box::new(pending)));
+            // The event is taken at the start of a frame: ask for one, or the dialog waits for the next
+            // input (it did after "Discard changes", whose frame asks for no other).
+            self.repaint.request_repaint();
             return;
         }
         let (tx, repaint) = (self.tx.clone(), self.repaint.clone());

@@ -197,6 +197,32 @@ impl WorkbenchApp {
     }
 
     fn status_ui(&mut self, ui: &mut Ui) {
+        let timing = (!self.hide_timings).then(|| {
+            let peak = self.recent_frames_s.iter().copied().fold(0.0, f64::max);
+            RichText::new(format!(
+                "UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)",
+                MS.from_si(self.frame_time_s),
+                MS.from_si(peak)
+            ))
+            .weak()
+        });
+        // The frame time keeps its room at the right: a long message (a failed solve names its cause) is
+        // cut with "…" (whole on hover) rather than written under it.
+        let timing_width = timing.as_ref().map_or(0.0, |t| {
+            egui::WidgetText::from(t.clone())
+                .into_galley(ui, Some(egui::TextWrapMode::Extend), f32::INFINITY, egui::TextStyle::Body)
+                .size()
+                .x
+                + 2.0 * ui.spacing().item_spacing.x
+        });
+        let cut = |ui: &mut Ui, text: RichText| {
+            let full = text.text().to_string();
+            let room = (ui.max_rect().right() - timing_width - ui.cursor().min.x).max(40.0);
+            ui.scope(|ui| {
+                ui.set_max_width(room);
+                ui.add(egui::Label::new(text).truncate()).on_hover_text(full);
+            });
+        };
         ui.horizontal(|ui| {
             // One state at a time: an invalid case is not solved, whatever result is still on screen.
             let invalid = self.doc.validation().is_err();
@@ -218,30 +244,19 @@ impl WorkbenchApp {
                     };
                     ui.label(format!("Solving: {now}…"));
                 }
-                Status::Failed(e) => {
-                    ui.label(RichText::new(format!("Solve failed: {e}")).color(ink::ERROR.of(ui)));
-                }
+                Status::Failed(e) => cut(ui, RichText::new(format!("Solve failed: {e}")).color(ink::ERROR.of(ui))),
             }
             if let Err(e) = self.doc.validation() {
                 ui.separator();
-                ui.label(RichText::new(format!("Invalid case: {e}")).color(ink::ERROR.of(ui)));
+                cut(ui, RichText::new(format!("Invalid case: {e}")).color(ink::ERROR.of(ui)));
             }
             if let Some(n) = &self.notice {
                 ui.separator();
-                ui.label(n);
+                cut(ui, RichText::new(n));
             }
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                if !self.hide_timings {
-                    let peak = self.recent_frames_s.iter().copied().fold(0.0, f64::max);
-                    ui.label(
-                        RichText::new(format!(
-                            "UI {:.1} ms/frame (slowest of the last 120: {:.1} ms)",
-                            MS.from_si(self.frame_time_s),
-                            MS.from_si(peak)
-                        ))
-                        .weak(),
-                    )
-                    .on_hover_text(FRAME_TIME_MEANING);
+                if let Some(t) = timing {
+                    ui.label(t).on_hover_text(FRAME_TIME_MEANING);
                 }
             });
         });

@@ -326,6 +326,7 @@ impl WorkbenchApp {
         // A pin's re-solve runs when the edited case is solved (on the web: in the frames it leaves free).
         if !self.worker.busy() {
             self.pinned.poll(WEB_SOLVE_BUDGET_S);
+            self.pinned.complete(&mut self.persisted.pins);
         }
         self.pinned.retain(&self.persisted.pins);
     }

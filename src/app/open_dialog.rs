@@ -1,9 +1,9 @@
 //! "Open case…" and "Open rotor…" inside the workbench, for machines without a native file dialog (no
 //! desktop portal on the session bus): the user types a path, or picks one of the TOML files listed in the
-//! directory (its folders are listed too, to go into; `../` goes up). Contract: nothing is read before the user asked for a file; a file that cannot be read (or is
-//! not UTF-8 text) keeps the dialog open with the message naming it, and the case on screen is untouched
-//! until the read file goes through the unsaved-changes guard like any other opened case. The twin of
-//! [`super::save_dialog`].
+//! directory (listed first; its folders below them, to go into; `../` goes up). Contract: nothing is read
+//! before the user asked for a file; a file that cannot be read (or is not UTF-8 text) keeps the dialog open
+//! with the message naming it, and the case on screen is untouched until the read file goes through the
+//! unsaved-changes guard like any other opened case. The twin of [`super::save_dialog`].
 
 use std::path::{Path, PathBuf};
 
@@ -99,15 +99,9 @@ impl OpenDialog {
             }
             ui.label(RichText::new(format!("TOML files in this directory ({}):", self.listing.len())).weak());
             let mut into = None;
+            // The files first (what the dialog is for: a case folder's files show without scrolling), then
+            // the folders to go into.
             egui::ScrollArea::vertical().max_height(180.0).auto_shrink([false, true]).show(ui, |ui| {
-                if self.fields.directory().parent().is_some() && ui.selectable_label(false, "../").clicked() {
-                    into = Some("..".to_string());
-                }
-                for folder in &self.folders {
-                    if ui.selectable_label(false, format!("{folder}/")).clicked() {
-                        into = Some(folder.clone());
-                    }
-                }
                 for file in self.listing.iter().take(MAX_LISTED) {
                     if ui.selectable_label(self.fields.name == *file, file).clicked() {
                         self.fields.name.clone_from(file);
@@ -118,6 +112,17 @@ impl OpenDialog {
                     ui.label(
                         RichText::new(format!("… and {} more: type the name", self.listing.len() - MAX_LISTED)).weak(),
                     );
+                }
+                if self.fields.directory().parent().is_some() || !self.folders.is_empty() {
+                    ui.label(RichText::new("Folders:").weak());
+                }
+                if self.fields.directory().parent().is_some() && ui.selectable_label(false, "../").clicked() {
+                    into = Some("..".to_string());
+                }
+                for folder in &self.folders {
+                    if ui.selectable_label(false, format!("{folder}/")).clicked() {
+                        into = Some(folder.clone());
+                    }
                 }
             });
             if let Some(folder) = into {

@@ -114,6 +114,10 @@ impl PinnedResults {
                         self.cache.push((k, shown));
                     }
                     if complete {
+                        // Never asked again in a loop: a finished solve with no solution counts as failed.
+                        if !self.cache.iter().any(|(c, _)| c == k) {
+                            self.failed.push((k.clone(), "the solve gave no solution".into()));
+                        }
                         self.solving = None;
                     }
                 }
@@ -122,6 +126,23 @@ impl PinnedResults {
                     self.solving = None;
                 }
             }
+        }
+    }
+
+    /// Completes one pin made before some output columns existed ([`Pin::complete_from`]): from its
+    /// result when at hand, else by solving its case when this worker is free (a view's pin goes first).
+    /// A pin whose case no longer solves keeps its gaps (the results panel says "not in this pin").
+    pub fn complete(&mut self, pins: &mut [Pin]) {
+        let Some(pin) =
+            pins.iter_mut().find(|p| p.lacks_columns() && !self.failed.iter().any(|(k, _)| is_key_of(k, p)))
+        else {
+            return;
+        };
+        if let Some((_, shown)) = self.cache.iter().find(|(k, _)| is_key_of(k, pin)) {
+            pin.complete_from(&shown.solution);
+        } else if !self.worker.busy() {
+            // The results panel's columns include the reduced coefficients.
+            let _ = self.want(pin, &[StageId::Reduction]);
         }
     }
 

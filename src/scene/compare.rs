@@ -42,6 +42,30 @@ impl Pin {
     pub fn value(&self, column: &str) -> Option<f64> {
         self.columns.iter().position(|c| c == column).and_then(|k| self.cells.get(k).copied().flatten())
     }
+
+    /// The pin holds `column` (a pin made before an output column existed does not).
+    #[must_use]
+    pub fn has(&self, column: &str) -> bool {
+        self.columns.iter().any(|c| c == column)
+    }
+
+    /// Some output column is not in the pin: it was made by a workbench that did not have it yet.
+    #[must_use]
+    pub fn lacks_columns(&self) -> bool {
+        COLUMNS.iter().any(|c| !self.has(c.name))
+    }
+
+    /// Adds the columns the pin lacks, taken from `solution` (its case solved again); the columns it holds
+    /// keep their pinned values.
+    pub fn complete_from(&mut self, solution: &Solution) {
+        let cells = crate::study::columns::outputs(solution);
+        for (c, v) in COLUMNS.iter().zip(cells) {
+            if !self.has(c.name) {
+                self.columns.push(c.name.to_string());
+                self.cells.push(v);
+            }
+        }
+    }
 }
 
 /// One line of a comparison.
@@ -52,6 +76,8 @@ pub struct CompareRow {
     pub unit: &'static str,
     pub live: Option<f64>,
     pub pinned: Option<f64>,
+    /// The pin does not hold this column (made before it existed; see [`Pin::complete_from`]).
+    pub not_in_pin: bool,
     /// live − pinned.
     pub difference: Option<f64>,
     /// (live − pinned) / |pinned|, when the pinned value is not zero.
@@ -74,7 +100,7 @@ pub fn compare(live: &Solution, pin: &Pin) -> Vec<CompareRow> {
             let pinned = pin.value(c.name);
             let difference = live.zip(pinned).map(|(a, b)| a - b);
             let relative = difference.zip(pinned).and_then(|(d, b)| (b != 0.0).then(|| d / b.abs()));
-            CompareRow { column: c.name, label, unit, live, pinned, difference, relative }
+            CompareRow { column: c.name, label, unit, live, pinned, not_in_pin: !pin.has(c.name), difference, relative }
         })
         .collect()
 }
@@ -174,6 +200,30 @@ mod tests {
         assert!(
             csv.lines().nth(1).unwrap().starts_with("9000 rpm,") && csv.lines().nth(2).unwrap().starts_with("live,")
         );
+    }
+
+    /// A pin written before the power-loss columns existed lacks them: the comparison says so, and
+    /// completing it from its case's solution adds them and leaves the pinned columns as they were.
+    #[test]
+    fn a_pin_made_before_a_column_existed_is_completed_from_its_solution() {
+        let fast = crate::bearing::stages::registry::compressor_preview(&[]);
+        let mut pin = Pin::new("old", "title = \"x\"", &fast);
+        for gone in ["churning_power_w", "total_power_loss_w"] {
+            let k = pin.columns.iter().position(|c| c == gone).unwrap();
+            pin.columns.remove(k);
+            pin.cells.remove(k);
+        }
+        pin.cells[0] = Some(0.5);
+        assert!(pin.lacks_columns());
+        let rows = compare(&fast, &pin);
+        let total = rows.iter().find(|r| r.column == "total_power_loss_w").unwrap();
+        assert!(total.not_in_pin && total.pinned.is_none() && total.live.is_some());
+        assert!(!rows.iter().find(|r| r.column == "friction_power_w").unwrap().not_in_pin);
+        pin.complete_from(&fast);
+        assert!(!pin.lacks_columns());
+        assert_eq!(pin.value("total_power_loss_w"), Some(fast.total_power_loss_w()));
+        assert_eq!(pin.value("churning_power_w"), Some(fast.churning_power_w()));
+        assert_eq!(pin.value("eccentricity_ratio"), Some(0.5), "a pinned column keeps its value");
     }
 
     /// "live" names the live row of the export: refused, as is a second pin of one name; nothing typed

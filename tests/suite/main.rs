@@ -39,4 +39,5 @@ mod thermal_slider;
 mod turbulence;
 mod work_budgets;
 mod workbench_defects;
+mod workbench_trial;
 mod workbench_ui;

@@ -58,7 +58,7 @@ pub(crate) fn solved_app_at(
 }
 
 /// The app restored from `persisted` in a window of `size` points, set up by `setup`, solved.
-fn solved_app_from(
+pub(crate) fn solved_app_from(
     size: [f32; 2],
     persisted: Persisted,
     setup: impl FnOnce(&mut WorkbenchApp) + 'static,
@@ -753,6 +753,7 @@ fn a_load_sweep_plots_three_outputs_with_their_units() {
         h.get_by_label(label);
     }
     assert!(table.csv().lines().next().unwrap().contains("flow_sides_out_l_per_min"));
+    assert_eq!(h.query_all_by_label("this case").count(), 3, "the case's load is marked on each plot");
     snapshot(&mut h, "sweep_load_three_outputs");
 }
 
@@ -804,6 +805,8 @@ fn a_preload_sweep_fills_every_point_of_the_compressor_and_fillon_cases() {
         h.get_by_label(&format!(
             "Each point: bearing.pads.preload replaces {replaced} (alternative pad-geometry keys)."
         ));
+        // The case gives no preload of its own: no "this case" mark, and no legend entry promising one.
+        assert!(h.query_by_label("this case").is_none(), "{replaced}: a legend entry for a point not drawn");
     }
 }
 

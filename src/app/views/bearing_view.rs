@@ -372,10 +372,24 @@ fn clear_label_rect(jc: Pos2, b: Pos2, size: Vec2, obstacles: &[Vec<Pos2>]) -> R
     // From the centre to the rectangle's edge along `away`.
     let half = 0.5 * (size.x * away.x.abs() + size.y * away.y.abs());
     let at = |d: f32| Rect::from_center_size(b + away * (half + d), size);
+    // Neither crossing an outline nor inside one (a thick pad holds a whole label between its outlines).
     (0..100_u8)
         .map(|k| at(LABEL_GAP + 2.0 * f32::from(k)))
-        .find(|r| !obstacles.iter().any(|line| touches(r.expand(LABEL_GAP), line)))
+        .find(|r| !obstacles.iter().any(|line| touches(r.expand(LABEL_GAP), line) || encloses(line, r.center())))
         .unwrap_or_else(|| at(LABEL_GAP))
+}
+
+/// The closed polyline `ring` (first point repeated last) encloses `p` (even-odd rule).
+#[must_use]
+pub fn encloses(ring: &[Pos2], p: Pos2) -> bool {
+    let mut inside = false;
+    for s in ring.windows(2) {
+        let (a, b) = (s[0], s[1]);
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            inside = !inside;
+        }
+    }
+    inside
 }
 
 /// The clear space between an h_min label and the outlines [points].

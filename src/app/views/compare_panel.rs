@@ -38,6 +38,12 @@ fn value(v: Option<f64>, scale: f64) -> String {
     v.map_or_else(|| "—".into(), |x| sig4(x / scale))
 }
 
+/// The pinned cell of a column the pin does not hold.
+const NOT_IN_PIN: &str = "n/a";
+/// What [`NOT_IN_PIN`] means.
+const NOT_IN_PIN_MEANING: &str = "Not in this pin: it was made before this output existed. The workbench adds it by \
+     solving the pin's case again (its other values stay as pinned); this one stays empty if that case no longer solves.";
+
 /// Width of the number columns [points]: four significant digits, a sign and a decimal point fit
 /// (values of SI units carry a prefix, so they stay below 1000).
 const NUMBER_WIDTH: f32 = 58.0;
@@ -154,7 +160,12 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
                     let name = if unit.is_empty() { r.label.clone() } else { format!("{} [{unit}]", r.label) };
                     cell(ui, widths[0], RichText::new(name), left);
                     cell(ui, NUMBER_WIDTH, RichText::new(value(r.live, scale)).monospace(), right);
-                    cell(ui, NUMBER_WIDTH, RichText::new(value(r.pinned, scale)).monospace(), right);
+                    if r.not_in_pin {
+                        cell(ui, NUMBER_WIDTH, RichText::new(NOT_IN_PIN).monospace().weak(), right)
+                            .on_hover_text(NOT_IN_PIN_MEANING);
+                    } else {
+                        cell(ui, NUMBER_WIDTH, RichText::new(value(r.pinned, scale)).monospace(), right);
+                    }
                     // Round-off (the same value given twice) is no difference.
                     let size = r.live.unwrap_or(0.0).abs().max(r.pinned.unwrap_or(0.0).abs());
                     let difference = r.difference.map(|d| if d.abs() <= 1e-9 * size { 0.0 } else { d });

@@ -314,7 +314,12 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
             let (line, current, over, reference) =
                 (LINE.of(ui), CURRENT.of(ui), ink::EXCEEDED.of(ui), ink::REFERENCE.of(ui));
             // The title and the legend in one row above the plot, never over the points.
-            let mut legend = vec![(label.clone(), line), ("this case".to_string(), current)];
+            // "this case" only where it is marked: a key the case does not give (a preload sweep of a case
+            // that gives the bore radius) has no point of its own on the axis.
+            let mut legend = vec![(label.clone(), line)];
+            if current_x.is_some() {
+                legend.push(("this case".to_string(), current));
+            }
             if !flagged.is_empty() {
                 legend.push(("beyond a design limit".to_string(), over));
             }
