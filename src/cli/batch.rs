@@ -60,7 +60,7 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
     for note in runner.replaced(&designs.rows[range.clone()]) {
         eprintln!("note: {note}");
     }
-    let mut pb = progress(range.len());
+    let mut pb = progress(range.len(), "designs");
     let mut failed = 0;
     let mut done = 0;
     for i in range.clone() {

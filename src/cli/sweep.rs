@@ -25,10 +25,10 @@ pub struct SweepArgs<'a> {
     pub max_hours: f64,
 }
 
-/// The progress display of a command over `len` points.
+/// The progress display of a command over `len` points, each one `unit` (`points`, `speeds`, …).
 #[must_use]
-pub fn progress(len: usize) -> super::progress::Progress {
-    super::progress::Progress::new(len)
+pub fn progress(len: usize, unit: &'static str) -> super::progress::Progress {
+    super::progress::Progress::new(len, unit)
 }
 
 /// Two spellings of one case key (`bearing.pad.2.offset`, `bearing.pad[2].offset`).
@@ -79,7 +79,7 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     for note in runner.replaced(&points) {
         eprintln!("note: {note}");
     }
-    let mut pb = progress(points.len());
+    let mut pb = progress(points.len(), "points");
     let mut failed = 0;
     let mut done = 0;
     for (i, point) in points.iter().enumerate() {
