@@ -63,6 +63,15 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     let mut runner = Runner::new(text, args.set.to_vec(), true);
     let firsts: Vec<(String, String)> = args.axes.iter().map(|a| (a.key.clone(), a.values[0].clone())).collect();
     runner.check_keys(&firsts).context("a swept key (--vary or --param)")?;
+    if let Some(r) = runner.shadowed(&points) {
+        bail!(
+            "--vary {} replaces --vary {} at a point that sets both ({r}): its rows would show values of {} that \
+             were not solved; vary one of them",
+            r.set,
+            r.removed,
+            r.removed
+        );
+    }
     let ends: Vec<&[(String, String)]> =
         [Some(&[][..]), points.first().map(Vec::as_slice), points.last().map(Vec::as_slice)]
             .into_iter()
