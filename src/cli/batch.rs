@@ -45,6 +45,16 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
     let firsts: Vec<(String, String)> =
         designs.keys.iter().filter_map(|k| designs.rows.iter().flatten().find(|(g, _)| g == k).cloned()).collect();
     runner.check_keys(&firsts).with_context(|| format!("in the header of {}", args.designs.display()))?;
+    if let Some(r) = runner.shadowed(&designs.rows[range.clone()]) {
+        bail!(
+            "in the header of {}: column {} replaces column {} in a design that sets both ({r}): its values of {} \
+             would not be solved; give one of them",
+            args.designs.display(),
+            r.set,
+            r.removed,
+            r.removed
+        );
+    }
     let mine = &designs.rows[range.clone()];
     let ends: Vec<&[(String, String)]> =
         [Some(&[][..]), mine.first().map(Vec::as_slice), mine.last().map(Vec::as_slice)]
@@ -60,7 +70,7 @@ pub fn run(args: &BatchArgs<'_>) -> Result<()> {
     for note in runner.replaced(&designs.rows[range.clone()]) {
         eprintln!("note: {note}");
     }
-    let mut pb = progress(range.len());
+    let mut pb = progress(range.len(), "designs");
     let mut failed = 0;
     let mut done = 0;
     for i in range.clone() {

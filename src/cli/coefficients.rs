@@ -123,7 +123,7 @@ fn speed_table(
 ) -> Result<(CoefficientTable, Vec<BandWarning>, Option<Interrupted>)> {
     let ratio = runner.case(&[])?.operating.excitation_ratio;
     let params = BandParams { refine, analysis_rpm, ..BandParams::default() };
-    let mut pb = progress(speeds.len());
+    let mut pb = progress(speeds.len(), "speeds");
     let mut solves = 0;
     let mut solved: Vec<Sample> = Vec::new();
     let result = band::sample(speeds, &params, &mut |rpm| {

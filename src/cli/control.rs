@@ -136,7 +136,7 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     // One bearing solve per bearing and speed: a bar on standard error shows them go by; Ctrl-C stops after
     // the speed being solved and writes the speeds done.
     let of = params.speeds_rad_s.len();
-    let mut pb = super::sweep::progress(of);
+    let mut pb = super::sweep::progress(of, "speeds");
     let step = super::rotor::StepText::new(&estimate, &params.speeds_rad_s);
     pb.set_message("shaft and controller");
     super::interrupt::doing(step.shaft());

@@ -4,11 +4,11 @@
 //! point as CSV when asked.
 
 use std::fmt::Write as _;
+use std::ops::ControlFlow;
 use std::path::Path;
 use std::sync::Mutex;
 
 use anyhow::{bail, Context, Result};
-use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::study::convergence::{
     failures_beside_converged, generated_family, map_bearing_points, Class, Counts, MapBearing, MapPoint, MapSpec,
@@ -50,21 +50,35 @@ fn shipped(root: &Path) -> Result<Vec<MapBearing>> {
         .collect()
 }
 
-/// Solves the map of every bearing on `threads` threads.
+/// Whether the point (`direction_deg`, `sommerfeld`) is one of `points` (empty: every point of the grid).
+fn kept(points: &[Point], direction_deg: f64, sommerfeld: f64) -> bool {
+    points.is_empty() || points.iter().any(|p| p.direction_deg == direction_deg && p.sommerfeld == sommerfeld)
+}
+
+/// The points of one bearing's map: the grid's, or those of `points` on it.
+fn map_size(spec: &MapSpec, points: &[Point]) -> usize {
+    let directions = spec.directions_deg();
+    directions.iter().map(|&d| spec.sommerfeld.iter().filter(|&&s| kept(points, d, s)).count()).sum()
+}
+
+/// Solves the map of every bearing on `threads` threads; on Ctrl-C each thread stops after the point it is
+/// solving, and the points solved are returned (fewer than the map's: the caller says so).
 fn run_all(bearings: &[MapBearing], spec: &MapSpec, points: &[Point], threads: usize) -> Result<Vec<MapPoint>> {
-    let keep = |d: f64, s: f64| points.is_empty() || points.iter().any(|p| p.direction_deg == d && p.sommerfeld == s);
-    let per = spec
-        .directions_deg()
-        .iter()
-        .flat_map(|&d| spec.sommerfeld.iter().map(move |&s| (d, s)))
-        .filter(|&(d, s)| keep(d, s))
-        .count();
-    let pb = ProgressBar::new((bearings.len() * per) as u64);
-    super::interrupt::bar_shown(std::io::IsTerminal::is_terminal(&std::io::stderr()));
-    pb.set_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}")
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-    );
+    let keep = |d: f64, s: f64| kept(points, d, s);
+    let per = map_size(spec, points);
+    // the bar (or, without a terminal, a line a second) counts points; so does the heartbeat
+    let pb = Mutex::new(super::sweep::progress(bearings.len() * per, "points"));
+    let each = |p: &MapPoint| {
+        if let Ok(mut pb) = pb.lock() {
+            pb.set_message(p.bearing.clone());
+            pb.inc(1);
+        }
+        if super::interrupt::requested() {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    };
     let next = Mutex::new(0_usize);
     let out: Mutex<Vec<Result<Vec<MapPoint>>>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
@@ -77,19 +91,22 @@ fn run_all(bearings: &[MapBearing], spec: &MapSpec, points: &[Point], threads: u
                     i
                 };
                 let Some(b) = bearings.get(i) else { return };
-                pb.set_message(b.name.clone());
-                // without a terminal there is no bar: the heartbeat names the bearing being mapped
+                if super::interrupt::requested() {
+                    return;
+                }
+                // the heartbeat names the bearing being mapped (and the points done of the whole map)
                 super::interrupt::doing(format!("convergence map: bearing {} ({per} points)", b.name));
-                let r = map_bearing_points(b, spec, &keep).with_context(|| format!("bearing {}", b.name));
-                pb.inc(per as u64);
+                let r = map_bearing_points(b, spec, &keep, &each).with_context(|| format!("bearing {}", b.name));
                 if let Ok(mut o) = out.lock() {
                     o.push(r);
                 }
             });
         }
     });
-    pb.finish_and_clear();
-    super::interrupt::bar_shown(false);
+    super::interrupt::doing("");
+    if let Ok(pb) = pb.lock() {
+        pb.finish_and_clear();
+    }
     let mut all = Vec::new();
     for r in out.into_inner().map_err(|_| anyhow::anyhow!("a worker thread panicked"))? {
         all.extend(r?);
@@ -328,6 +345,15 @@ pub fn run(root: &Path, sel: &Selection, csv_out: Option<&Path>, update_doc: boo
     let all: Vec<MapBearing> = shipped.iter().chain(&family).cloned().collect();
     let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(2);
     let points = run_all(&all, &spec, &sel.points, threads)?;
+    if super::interrupt::requested() {
+        // Ctrl-C: the points solved go to the CSV; the table and the doc wait for a whole run
+        let outputs: Vec<&Path> = csv_out.into_iter().collect();
+        if let (Some(p), false) = (csv_out, points.is_empty()) {
+            write_atomic(p, csv(&points).as_bytes())?;
+        }
+        let of = all.len() * map_size(&spec, &sel.points);
+        return Err(super::interrupt::Interrupted::new(points.len(), of, "points", &outputs).into());
+    }
     let text = table(&shipped, &family, &points, &spec);
     eprint!("{text}");
     if let Some(p) = csv_out {

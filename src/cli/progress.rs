@@ -1,6 +1,7 @@
 //! The progress of a long command on standard error: indicatif's bar on a terminal; elsewhere (a pipe, a
 //! log file, a batch job) a plain line per finished point, at most one a second, so that a run watched
-//! through a pipe shows it is working.
+//! through a pipe shows it is working. Either way the heartbeat's `working:` lines during a long point say
+//! how many points are done of how many ([`super::interrupt::count`]).
 
 use std::io::IsTerminal as _;
 
@@ -12,14 +13,17 @@ pub struct Progress {
     bar: Option<ProgressBar>,
     pos: u64,
     len: u64,
+    /// What a point is (`points`, `speeds`, …), for the heartbeat.
+    unit: &'static str,
     message: String,
     last_line: Option<Instant>,
 }
 
 impl Progress {
-    /// A display over `len` points: a bar on a terminal, lines otherwise.
+    /// A display over `len` points (each one `unit`: `points`, `speeds`, …): a bar on a terminal, lines
+    /// otherwise.
     #[must_use]
-    pub fn new(len: usize) -> Self {
+    pub fn new(len: usize, unit: &'static str) -> Self {
         let bar = std::io::stderr().is_terminal().then(|| {
             let pb = ProgressBar::new(len as u64);
             pb.set_style(
@@ -31,7 +35,16 @@ impl Progress {
             pb
         });
         super::interrupt::bar_shown(bar.is_some());
-        Self { bar, pos: 0, len: len as u64, message: String::new(), last_line: None }
+        let p = Self { bar, pos: 0, len: len as u64, unit, message: String::new(), last_line: None };
+        p.count();
+        p
+    }
+
+    /// Tells the heartbeat how far the points are.
+    fn count(&self) {
+        #[allow(clippy::cast_possible_truncation)]
+        let (done, total) = (self.pos as usize, self.len as usize);
+        super::interrupt::count(Some(super::interrupt::Count { done, total, unit: self.unit }));
     }
 
     fn line(&mut self) {
@@ -65,6 +78,7 @@ impl Progress {
         if let Some(b) = &self.bar {
             b.set_position(pos);
         }
+        self.count();
         self.line();
     }
 
@@ -74,6 +88,7 @@ impl Progress {
         if let Some(b) = &self.bar {
             b.inc_length(n);
         }
+        self.count();
     }
 
     /// A line above the bar.
@@ -84,11 +99,12 @@ impl Progress {
         }
     }
 
-    /// Removes the bar.
+    /// Removes the bar (and the count from the heartbeat).
     pub fn finish_and_clear(&self) {
         if let Some(b) = &self.bar {
             b.finish_and_clear();
         }
+        super::interrupt::count(None);
         super::interrupt::bar_shown(false);
     }
 }

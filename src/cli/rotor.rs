@@ -124,7 +124,7 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let context = || format!("analysing {}", args.rotor.display());
     // One bearing solve and one eigen-solution per speed: a bar on standard error shows them go by, and the
     // heartbeat names the speed being solved when one takes long (a large full shaft).
-    let mut pb = super::sweep::progress(speeds.len());
+    let mut pb = super::sweep::progress(speeds.len(), "speeds");
     let step = StepText::new(&estimate, &speeds);
     pb.set_message("shaft model");
     super::interrupt::doing(step.shaft());

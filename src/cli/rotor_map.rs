@@ -6,10 +6,11 @@
 
 use crate::units::RPM;
 use std::fmt::Write as _;
+use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use crate::rotor::critical_map::{critical_speed_map, CriticalSpeedMap};
+use crate::rotor::critical_map::{CriticalMapRun, CriticalSpeedMap, MapStep};
 
 use super::rotor::{emit, parse_speeds, read_rotor, RotorArgs};
 
@@ -17,30 +18,64 @@ use super::rotor::{emit, parse_speeds, read_rotor, RotorArgs};
 pub(super) const POINTS: usize = 81;
 const MODES: usize = 4;
 
-/// Runs the map and writes the outputs.
+/// Runs the map and writes the outputs. The bearings' speeds, then the map's eigen-solutions, go by on the
+/// progress display (and the heartbeat, with how many are done); Ctrl-C stops at the next step, and what is
+/// done is written (the curves of the speeds solved, the map up to the stiffness reached) before the
+/// command says where and exits with status 130.
 ///
 /// # Errors
-/// Input, solve and I/O errors.
+/// Input, solve and I/O errors; [`super::interrupt::Interrupted`] after Ctrl-C.
 pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let rotor = read_rotor(args.rotor)?;
     let speeds = parse_speeds(args.speeds, args.max_points)?;
     let estimate = crate::study::estimate::Estimate::critical_map(&rotor, speeds.len(), POINTS);
     super::inputs::check_work(&estimate, args.max_hours)?;
-    // no bar: the heartbeat names the work under way when it takes long (a large shaft's eigen-solutions)
     let each = estimate
         .eigen
         .map_or(String::new(), |e| format!(", {} each", crate::study::estimate::duration_text(e.seconds_each)));
+    let of_speeds = speeds.len();
+    let context = || format!("critical-speed map of {}", args.rotor.display());
+    let mut run = CriticalMapRun::new(&rotor, speeds, POINTS, MODES);
+    let mut pb = super::sweep::progress(of_speeds, "speeds");
     super::interrupt::doing(format!(
-        "critical-speed map: bearing stiffness at {} speeds, then {POINTS} undamped eigen-solutions of the shaft{each} \
-         (about {} in all by the estimate)",
-        speeds.len(),
+        "critical-speed map: bearing stiffness at {of_speeds} speeds, then {POINTS} undamped eigen-solutions of the \
+         shaft{each} (about {} in all by the estimate)",
         crate::study::estimate::duration_text(estimate.seconds)
     ));
-    let map = critical_speed_map(&rotor, &speeds, POINTS, MODES)
-        .with_context(|| format!("critical-speed map of {}", args.rotor.display()));
+    while !super::interrupt::requested() {
+        match run.step().with_context(context)? {
+            MapStep::Speed { done, .. } => pb.set_position(done as u64),
+            MapStep::Stiffness { done: 0, of } => {
+                pb.finish_and_clear();
+                pb = super::sweep::progress(of, "eigen-solutions");
+                pb.set_message("undamped eigen-solutions");
+                super::interrupt::doing(format!(
+                    "critical-speed map: {of} undamped eigen-solutions of the shaft{each}"
+                ));
+            }
+            MapStep::Stiffness { done, .. } => pb.set_position(done as u64),
+            MapStep::Done => break,
+        }
+    }
+    pb.finish_and_clear();
     super::interrupt::doing("");
-    let map = map?;
-    emit(args, &summary(&map), &map, || csv_text(&map))
+    let (speeds_done, stiffnesses) = (run.speeds_done(), run.stiffnesses_done());
+    let map = run.finish();
+    if speeds_done == 0 {
+        return Err(super::interrupt::Interrupted::new(0, of_speeds, "speeds", &[]).into());
+    }
+    emit(args, &summary(&map), &map, || csv_text(&map))?;
+    if super::interrupt::requested() && stiffnesses < POINTS {
+        let outputs: Vec<&Path> = [args.json.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
+        let outputs = if outputs.is_empty() { vec![Path::new("-")] } else { outputs };
+        let stop = if speeds_done < of_speeds {
+            super::interrupt::Interrupted::new(speeds_done, of_speeds, "speeds", &outputs)
+        } else {
+            super::interrupt::Interrupted::new(stiffnesses, POINTS, "eigen-solutions", &outputs)
+        };
+        return Err(stop.into());
+    }
+    Ok(())
 }
 
 fn direction(d: usize) -> &'static str {
@@ -56,14 +91,21 @@ fn direction(d: usize) -> &'static str {
 pub fn summary(m: &CriticalSpeedMap) -> String {
     let mut s = String::new();
     let ks = &m.map.stiffness_n_per_m;
-    let _ = writeln!(
-        s,
-        "undamped critical-speed map: {} stiffnesses {:.2e}–{:.2e} N/m at the bearings, {} modes",
-        ks.len(),
-        ks[0],
-        ks[ks.len() - 1],
-        MODES
-    );
+    match (ks.first(), ks.last()) {
+        (Some(lo), Some(hi)) if ks.len() >= 2 => {
+            let _ = writeln!(
+                s,
+                "undamped critical-speed map: {} stiffnesses {lo:.2e}–{hi:.2e} N/m at the bearings, {MODES} modes",
+                ks.len(),
+            );
+        }
+        // stopped (Ctrl-C) before the map had a line to draw: the bearings' curves only
+        _ => {
+            let speeds = m.bearing_curves.iter().map(Vec::len).max().unwrap_or(0);
+            let _ =
+                writeln!(s, "undamped critical-speed map: not computed; the bearings' stiffness at {speeds} speeds");
+        }
+    }
     if m.crossings.is_empty() {
         let _ = writeln!(s, "no bearing curve crosses a mode line over the speeds");
     }

@@ -41,7 +41,7 @@ pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTa
     super::inputs::check_work(&estimate, f64::INFINITY)?;
     let mut runner = Runner::new(text, set.to_vec(), true);
     let mut table = SweepTable::new(&spec.key);
-    let mut pb = super::sweep::progress(values.len());
+    let mut pb = super::sweep::progress(values.len(), "points");
     for (i, x) in values.into_iter().enumerate() {
         pb.set_message(format!("{} = {x:.4}", spec.key));
         let (row, _) = runner.row(i, &point_override(&spec.key, x));

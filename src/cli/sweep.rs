@@ -25,10 +25,10 @@ pub struct SweepArgs<'a> {
     pub max_hours: f64,
 }
 
-/// The progress display of a command over `len` points.
+/// The progress display of a command over `len` points, each one `unit` (`points`, `speeds`, …).
 #[must_use]
-pub fn progress(len: usize) -> super::progress::Progress {
-    super::progress::Progress::new(len)
+pub fn progress(len: usize, unit: &'static str) -> super::progress::Progress {
+    super::progress::Progress::new(len, unit)
 }
 
 /// Two spellings of one case key (`bearing.pad.2.offset`, `bearing.pad[2].offset`).
@@ -63,6 +63,15 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     let mut runner = Runner::new(text, args.set.to_vec(), true);
     let firsts: Vec<(String, String)> = args.axes.iter().map(|a| (a.key.clone(), a.values[0].clone())).collect();
     runner.check_keys(&firsts).context("a swept key (--vary or --param)")?;
+    if let Some(r) = runner.shadowed(&points) {
+        bail!(
+            "--vary {} replaces --vary {} at a point that sets both ({r}): its rows would show values of {} that \
+             were not solved; vary one of them",
+            r.set,
+            r.removed,
+            r.removed
+        );
+    }
     let ends: Vec<&[(String, String)]> =
         [Some(&[][..]), points.first().map(Vec::as_slice), points.last().map(Vec::as_slice)]
             .into_iter()
@@ -79,7 +88,7 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     for note in runner.replaced(&points) {
         eprintln!("note: {note}");
     }
-    let mut pb = progress(points.len());
+    let mut pb = progress(points.len(), "points");
     let mut failed = 0;
     let mut done = 0;
     for (i, point) in points.iter().enumerate() {

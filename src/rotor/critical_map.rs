@@ -39,29 +39,99 @@ pub fn critical_map(
     n: usize,
     modes: usize,
 ) -> Result<CriticalMap, RotorError> {
-    if !(k_min > 0.0 && k_max > k_min && k_max.is_finite() && n >= 2) {
-        return Err(RotorError::StiffnessRange { k_min, k_max, n });
+    let mut sweep = StiffnessSweep::new(shaft, bearing_nodes, [k_min, k_max], n, modes)?;
+    while sweep.step()? {}
+    Ok(sweep.map)
+}
+
+/// [`critical_map`] one eigen-solution at a time: the caller may show progress or stop between them and
+/// keep the stiffnesses done (the map then ends below `k_max`).
+pub struct StiffnessSweep {
+    /// One bending plane's stiffness and mass (x–a coordinates of every node).
+    k0: DMatrix<f64>,
+    m: DMatrix<f64>,
+    /// Where the swept support adds its stiffness (the bearing nodes' x).
+    slots: Vec<usize>,
+    range: [f64; 2],
+    n: usize,
+    modes: usize,
+    /// The stiffnesses done so far.
+    map: CriticalMap,
+}
+
+impl StiffnessSweep {
+    /// The sweep of `n` stiffnesses over `range` = `[k_min, k_max]` (see [`critical_map`]).
+    ///
+    /// # Errors
+    /// [`RotorError::StiffnessRange`] for a bad range.
+    pub fn new(
+        shaft: &ShaftModel,
+        bearing_nodes: &[usize],
+        range: [f64; 2],
+        n: usize,
+        modes: usize,
+    ) -> Result<Self, RotorError> {
+        let [k_min, k_max] = range;
+        if !(k_min > 0.0 && k_max > k_min && k_max.is_finite() && n >= 2) {
+            return Err(RotorError::StiffnessRange { k_min, k_max, n });
+        }
+        let idx: Vec<usize> = (0..shaft.n_nodes)
+            .flat_map(|node| [shaft_index(node, NodeDof::X), shaft_index(node, NodeDof::A)])
+            .collect();
+        let sub = |a: &DMatrix<f64>| DMatrix::from_fn(idx.len(), idx.len(), |i, j| a[(idx[i], idx[j])]);
+        let (k0, m) = (sub(&shaft.stiffness), sub(&shaft.mass));
+        let slots: Vec<usize> =
+            bearing_nodes.iter().filter_map(|&b| idx.iter().position(|&i| i == shaft_index(b, NodeDof::X))).collect();
+        let map = CriticalMap { stiffness_n_per_m: Vec::with_capacity(n), frequencies_rad_s: Vec::with_capacity(n) };
+        Ok(Self { k0, m, slots, range, n, modes, map })
     }
-    let idx: Vec<usize> =
-        (0..shaft.n_nodes).flat_map(|node| [shaft_index(node, NodeDof::X), shaft_index(node, NodeDof::A)]).collect();
-    let sub = |a: &DMatrix<f64>| DMatrix::from_fn(idx.len(), idx.len(), |i, j| a[(idx[i], idx[j])]);
-    let (k0, m) = (sub(&shaft.stiffness), sub(&shaft.mass));
-    let slots: Vec<usize> =
-        bearing_nodes.iter().filter_map(|&b| idx.iter().position(|&i| i == shaft_index(b, NodeDof::X))).collect();
-    let mut out = CriticalMap { stiffness_n_per_m: Vec::with_capacity(n), frequencies_rad_s: Vec::with_capacity(n) };
-    for i in 0..n {
+
+    /// Stiffnesses done.
+    #[must_use]
+    pub fn done(&self) -> usize {
+        self.map.stiffness_n_per_m.len()
+    }
+
+    /// Stiffnesses of the whole sweep.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// Whether the sweep has no stiffness (never: it has at least two).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// The next stiffness's eigen-solution; `false` once every stiffness is done.
+    ///
+    /// # Errors
+    /// [`RotorError::SingularMass`].
+    pub fn step(&mut self) -> Result<bool, RotorError> {
+        let i = self.done();
+        if i >= self.n {
+            return Ok(false);
+        }
+        let [k_min, k_max] = self.range;
         #[allow(clippy::cast_precision_loss)]
-        let k = k_min * (k_max / k_min).powf(i as f64 / (n - 1) as f64);
-        let mut kk = k0.clone();
-        for &s in &slots {
+        let k = k_min * (k_max / k_min).powf(i as f64 / (self.n - 1) as f64);
+        let mut kk = self.k0.clone();
+        for &s in &self.slots {
             kk[(s, s)] += k;
         }
-        let mut w = undamped_frequencies(&kk, &m)?;
-        w.truncate(modes);
-        out.stiffness_n_per_m.push(k);
-        out.frequencies_rad_s.push(w);
+        let mut w = undamped_frequencies(&kk, &self.m)?;
+        w.truncate(self.modes);
+        self.map.stiffness_n_per_m.push(k);
+        self.map.frequencies_rad_s.push(w);
+        Ok(i + 1 < self.n)
     }
-    Ok(out)
+
+    /// The map of the stiffnesses done.
+    #[must_use]
+    pub fn finish(self) -> CriticalMap {
+        self.map
+    }
 }
 
 /// Where a bearing's direct stiffness curve crosses a mode's line of the map: an undamped critical speed on
@@ -82,7 +152,8 @@ pub struct Crossing {
 #[must_use]
 pub fn frequency_at(map: &CriticalMap, mode: usize, k: f64) -> Option<f64> {
     let ks = &map.stiffness_n_per_m;
-    if !(k >= ks[0] && k <= ks[ks.len() - 1]) {
+    // a map stopped before its second stiffness has no line to read
+    if ks.len() < 2 || !(k >= ks[0] && k <= ks[ks.len() - 1]) {
         return None;
     }
     let i = ks.partition_point(|&x| x <= k).clamp(1, ks.len() - 1);
@@ -136,13 +207,19 @@ pub type StiffnessCurve = Vec<(f64, f64, f64)>;
 pub fn bearing_stiffness_curves(bearings: &mut BearingSet, speeds: &[f64]) -> Result<Vec<StiffnessCurve>, RotorError> {
     let mut curves: Vec<StiffnessCurve> = vec![Vec::new(); bearings.nodes.len()];
     for &w in speeds {
-        for (curve, c) in curves.iter_mut().zip(bearings.at(w)?) {
-            if let BearingCoefficients::Reduced { k, .. } = c.reduced(w) {
-                curve.push((w, k[0][0], k[1][1]));
-            }
-        }
+        add_speed(&mut curves, bearings, w)?;
     }
     Ok(curves)
+}
+
+/// Every bearing's direct stiffnesses at `w` [rad/s], added to its curve.
+fn add_speed(curves: &mut [StiffnessCurve], bearings: &mut BearingSet, w: f64) -> Result<(), RotorError> {
+    for (curve, c) in curves.iter_mut().zip(bearings.at(w)?) {
+        if let BearingCoefficients::Reduced { k, .. } = c.reduced(w) {
+            curve.push((w, k[0][0], k[1][1]));
+        }
+    }
+    Ok(())
 }
 
 /// The map with the bearings' curves over it and their crossings: what `tiltpad rotor --critical-map` writes
@@ -179,9 +256,9 @@ pub fn critical_speed_map(
     points: usize,
     modes: usize,
 ) -> Result<CriticalSpeedMap, RotorError> {
-    let mut bearings = BearingSet::new(rotor);
-    let bearing_curves = bearing_stiffness_curves(&mut bearings, speeds)?;
-    map_over_curves(rotor, bearing_curves, points, modes)
+    let mut run = CriticalMapRun::new(rotor, speeds.to_vec(), points, modes);
+    while run.step()? != MapStep::Done {}
+    Ok(run.finish())
 }
 
 /// The map for bearing curves already known (one per bearing position of `rotor`, e.g. an analysis'
@@ -195,20 +272,117 @@ pub fn map_over_curves(
     points: usize,
     modes: usize,
 ) -> Result<CriticalSpeedMap, RotorError> {
+    let mut sweep = sweep_over(rotor, &bearing_curves, points, modes)?;
+    while sweep.step()? {}
+    let map = sweep.finish();
+    let crossings = crossings(&map, &bearing_curves);
+    Ok(CriticalSpeedMap { map, bearing_curves, crossings })
+}
+
+/// The stiffness sweep over the bearings' curves: the range two decades either side of them, the swept
+/// support where a bearing carries direct stiffness (not at pure cross-coupling, e.g. seals or aerodynamic
+/// excitation given by numbers with zero direct terms).
+fn sweep_over(
+    rotor: &Rotor,
+    bearing_curves: &[StiffnessCurve],
+    points: usize,
+    modes: usize,
+) -> Result<StiffnessSweep, RotorError> {
     let shaft = ShaftModel::new(rotor)?;
-    let (k_min, k_max) = map_range(&bearing_curves);
-    // the swept support sits where a bearing carries direct stiffness (not at pure cross-coupling, e.g. seals
-    // or aerodynamic excitation given by numbers with zero direct terms)
+    let (k_min, k_max) = map_range(bearing_curves);
     let nodes: Vec<usize> = rotor
         .bearings
         .iter()
-        .zip(&bearing_curves)
+        .zip(bearing_curves)
         .filter(|(_, c)| c.iter().any(|p| p.1 > 0.0 || p.2 > 0.0))
         .map(|(b, _)| b.node)
         .collect();
-    let map = critical_map(&shaft, &nodes, k_min, k_max, points, modes)?;
-    let crossings = crossings(&map, &bearing_curves);
-    Ok(CriticalSpeedMap { map, bearing_curves, crossings })
+    StiffnessSweep::new(&shaft, &nodes, [k_min, k_max], points, modes)
+}
+
+/// What a step of a [`CriticalMapRun`] did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MapStep {
+    /// The bearings at one more speed: `done` of `of`.
+    Speed { done: usize, of: usize },
+    /// The shaft model built (`done` = 0) or one more stiffness's eigen-solution: `done` of `of`.
+    Stiffness { done: usize, of: usize },
+    /// Nothing left.
+    Done,
+}
+
+/// [`critical_speed_map`] one step at a time (a speed's bearing solves, the shaft model, one eigen-solution
+/// of the map), so that a caller can show progress and stop between steps, keeping what is done: the curves
+/// of the speeds solved and the map's stiffnesses so far ([`Self::finish`]).
+pub struct CriticalMapRun<'r> {
+    rotor: &'r Rotor,
+    bearings: BearingSet,
+    speeds: Vec<f64>,
+    curves: Vec<StiffnessCurve>,
+    speeds_done: usize,
+    points: usize,
+    modes: usize,
+    sweep: Option<StiffnessSweep>,
+}
+
+impl<'r> CriticalMapRun<'r> {
+    /// The run over `speeds` [rad/s], `points` stiffnesses and the first `modes` modes.
+    #[must_use]
+    pub fn new(rotor: &'r Rotor, speeds: Vec<f64>, points: usize, modes: usize) -> Self {
+        let bearings = BearingSet::new(rotor);
+        let curves = vec![Vec::new(); bearings.nodes.len()];
+        Self { rotor, bearings, speeds, curves, speeds_done: 0, points, modes, sweep: None }
+    }
+
+    /// The next step (see [`MapStep`]).
+    ///
+    /// # Errors
+    /// A bearing solve, the shaft's assembly, an eigen-solution.
+    pub fn step(&mut self) -> Result<MapStep, RotorError> {
+        if let Some(&w) = self.speeds.get(self.speeds_done) {
+            add_speed(&mut self.curves, &mut self.bearings, w)?;
+            self.speeds_done += 1;
+            return Ok(MapStep::Speed { done: self.speeds_done, of: self.speeds.len() });
+        }
+        match &mut self.sweep {
+            None => {
+                let sweep = sweep_over(self.rotor, &self.curves, self.points, self.modes)?;
+                self.sweep = Some(sweep);
+                Ok(MapStep::Stiffness { done: 0, of: self.points })
+            }
+            Some(sweep) => {
+                if sweep.done() == sweep.len() {
+                    return Ok(MapStep::Done);
+                }
+                sweep.step()?;
+                Ok(MapStep::Stiffness { done: sweep.done(), of: sweep.len() })
+            }
+        }
+    }
+
+    /// Speeds whose bearings are solved.
+    #[must_use]
+    pub fn speeds_done(&self) -> usize {
+        self.speeds_done
+    }
+
+    /// The map's stiffnesses done.
+    #[must_use]
+    pub fn stiffnesses_done(&self) -> usize {
+        self.sweep.as_ref().map_or(0, StiffnessSweep::done)
+    }
+
+    /// What is done: the curves of the speeds solved, the map's stiffnesses so far (none when stopped before
+    /// the map) and the crossings within them.
+    #[must_use]
+    pub fn finish(self) -> CriticalSpeedMap {
+        let map = self.sweep.map_or(
+            CriticalMap { stiffness_n_per_m: Vec::new(), frequencies_rad_s: Vec::new() },
+            StiffnessSweep::finish,
+        );
+        let crossings = crossings(&map, &self.curves);
+        CriticalSpeedMap { map, bearing_curves: self.curves, crossings }
+    }
 }
 
 #[cfg(test)]
@@ -268,6 +442,31 @@ mod tests {
         }
         let below: usize = exact.iter().map(|w| w.iter().filter(|&&w| w < 3990.0).count()).sum();
         assert_eq!(found.len(), below);
+    }
+
+    #[test]
+    fn a_sweep_stopped_early_keeps_the_stiffnesses_done_and_reads_no_line_before_two() {
+        let rotor = beam(10);
+        let shaft = ShaftModel::new(&rotor).unwrap();
+        let whole = critical_map(&shaft, &[0, 10], 1e5, 1e10, 21, 3).unwrap();
+        let mut sweep = StiffnessSweep::new(&shaft, &[0, 10], [1e5, 1e10], 21, 3).unwrap();
+        assert!(sweep.step().unwrap());
+        // one stiffness: no line to interpolate on, and no crossing
+        let one = CriticalMap {
+            stiffness_n_per_m: whole.stiffness_n_per_m[..1].to_vec(),
+            frequencies_rad_s: whole.frequencies_rad_s[..1].to_vec(),
+        };
+        assert_eq!(frequency_at(&one, 0, 1e5), None);
+        let flat: StiffnessCurve = vec![(0.0, 1e5, 1e5), (1e4, 1e5, 1e5)];
+        assert!(crossings(&one, &[flat]).is_empty());
+        for _ in 0..6 {
+            assert!(sweep.step().unwrap());
+        }
+        assert_eq!((sweep.done(), sweep.len()), (7, 21));
+        let part = sweep.finish();
+        // the same stiffnesses and frequencies as the whole map's first seven
+        assert_eq!(part.stiffness_n_per_m, whole.stiffness_n_per_m[..7]);
+        assert_eq!(part.frequencies_rad_s, whole.frequencies_rad_s[..7]);
     }
 
     #[test]

@@ -15,6 +15,8 @@
 //! −0.3 … 0.8, pivot offset 0.5 … 0.7, pivots on and between the 5° grid of load directions. No I/O here:
 //! the caller passes case texts (`tiltpad convergence-map` reads `cases/`, a test runs a subset).
 
+use std::ops::ControlFlow;
+
 use serde::Serialize;
 use web_time::Instant;
 
@@ -133,11 +135,12 @@ pub fn load_for_sommerfeld(case: &Case, s: f64) -> f64 {
 /// # Errors
 /// The bearing's case is invalid.
 pub fn map_bearing(bearing: &MapBearing, spec: &MapSpec) -> Result<Vec<MapPoint>, CaseError> {
-    map_bearing_points(bearing, spec, &|_, _| true)
+    map_bearing_points(bearing, spec, &|_, _| true, &|_| ControlFlow::Continue(()))
 }
 
 /// [`map_bearing`] at the points `keep(direction_deg, sommerfeld)` accepts only (each solved cold, so a
-/// subset gives the same answer at each point as the whole map).
+/// subset gives the same answer at each point as the whole map); `each` sees every point as it is solved
+/// (a progress display) and may stop the map after it (`Break`: the points so far are returned).
 ///
 /// # Errors
 /// The case text does not load.
@@ -145,6 +148,7 @@ pub fn map_bearing_points(
     bearing: &MapBearing,
     spec: &MapSpec,
     keep: &(dyn Fn(f64, f64) -> bool + Sync),
+    each: &(dyn Fn(&MapPoint) -> ControlFlow<()> + Sync),
 ) -> Result<Vec<MapPoint>, CaseError> {
     let (_, base) = load_case(&bearing.text, &bearing.set)?;
     let mut stages = Stages::new();
@@ -163,7 +167,7 @@ pub fn map_bearing_points(
             let film_solves = result
                 .as_ref()
                 .map_or(0, |s| s.thermal.as_ref().map_or(s.report.film_solves, |t| t.report.film_solves));
-            points.push(MapPoint {
+            let point = MapPoint {
                 bearing: bearing.name.clone(),
                 direction_deg,
                 sommerfeld: s,
@@ -172,7 +176,12 @@ pub fn map_bearing_points(
                 detail,
                 film_solves,
                 seconds,
-            });
+            };
+            let next = each(&point);
+            points.push(point);
+            if next.is_break() {
+                return Ok(points);
+            }
         }
     }
     Ok(points)

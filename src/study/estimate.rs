@@ -4,13 +4,16 @@
 //! ## The work model
 //! One bearing point (mesh, equilibrium, full and reduced coefficients) costs, at the reference rate,
 //! ```text
-//! t = t_ref · (N_film / N_ref)^a · f_thermal · f_cavitation
+//! t = t_ref · (N_film / N_ref)^a · f_cavitation · (f_thermal · coordinates + floating)
 //! ```
 //! with `N_film` the film nodes the case's meshes will have ([`crate::model::budget::count`], counted from
 //! the case without building a mesh), `N_ref = 4940`, `t_ref = 43.2 ms` (the isothermal compressor bearing at
 //! standard fidelity) and `a = 1.19` (the fitted growth of the time with the node count), the thermal factor
 //! 7.4 for THD with an adiabatic film (BC1) and 23 with a film–pad exchange (BC2, BC3), and 3 for the
-//! mass-conserving cavitation model — all measured on the reference machine of docs/PERFORMANCE.md. The
+//! mass-conserving cavitation model — all measured on the reference machine of docs/PERFORMANCE.md.
+//! `coordinates` and `floating` count what the equilibrium has to find ([`super::equilibrium_work`]: the
+//! mean coordinates per pad, and the share of pads that float at the cold start); both are 1 and 0 at the
+//! reference point. The
 //! estimate is a property of the input, not of the machine or its load: the same command gets the same
 //! estimate and the same verdict everywhere (a machine twice as slow takes twice as long). Against the
 //! measured table it is exact at the reference point and at THD standard fidelity, 6 % high for the isothermal
@@ -24,7 +27,7 @@
 //! ## Flexible pads
 //! With `physics.pad_modes = m > 0` a solve first builds each distinct pad solid (identical pads share one;
 //! `u = 3 n_film (layers + 1)` unknowns) and its lowest modes by subspace iteration, then carries `m` more
-//! coordinates per pad through the equilibrium:
+//! coordinates per pad through the equilibrium (in `coordinates` above: `1 + m` for a pad on a rigid pivot):
 //! ```text
 //! t = t_rigid · (1 + m) + Σ_distinct pads  t_modes,   t_modes = 0.29 s · (u / 14 820)^1.4 · (m + 1.5) / 4.5
 //! ```
@@ -53,6 +56,8 @@ use std::fmt;
 pub use super::rotor_cost::{
     rotor_coordinates, EigenWork, EIGEN_SECONDS_PER_UNIT, SHAFT_SECONDS_PER_UNIT, UNDAMPED_SECONDS_PER_UNIT,
 };
+
+pub use super::equilibrium_work::{equilibrium_work, EquilibriumWork};
 
 use super::rotor_cost::appended_coordinates;
 use crate::model::budget;
@@ -113,13 +118,13 @@ pub fn point_cost(case: &Case) -> PointCost {
     let solid_nodes: usize = if n.pad_solid > 0 { 0 } else { solids.iter().map(|s| s.nodes * s.pads).sum() };
     #[allow(clippy::cast_precision_loss)]
     let bytes = n.total().saturating_add(solid_nodes) as f64 * BYTES_PER_NODE;
-    #[allow(clippy::cast_precision_loss)]
-    let coordinates = if solids.is_empty() { 1.0 } else { 1.0 + modes as f64 };
-    let rigid = REF_SECONDS * (film / REF_NODES).powf(EXPONENT) * thermal * cavitation;
+    let work = equilibrium_work(case, !solids.is_empty());
+    let film_solve = REF_SECONDS * (film / REF_NODES).powf(EXPONENT) * cavitation;
     PointCost {
         film_nodes: n.film(),
         nodes: n.total().saturating_add(solid_nodes),
-        seconds: rigid * coordinates + solids.iter().map(|s| modes_seconds(s.unknowns(), modes)).sum::<f64>(),
+        seconds: film_solve * (thermal * work.coordinates + work.floating)
+            + solids.iter().map(|s| modes_seconds(s.unknowns(), modes)).sum::<f64>(),
         bytes,
     }
 }

@@ -19,6 +19,7 @@ pub mod band;
 pub mod columns;
 pub mod convergence;
 pub mod designs;
+pub mod equilibrium_work;
 pub mod estimate;
 pub mod grid;
 pub mod rotor_cost;

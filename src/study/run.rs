@@ -171,6 +171,22 @@ impl Runner {
         notes
     }
 
+    /// The first key a point sets that another key of the same point replaces (an alternative pad-geometry
+    /// key, a key the point's feeding kind does not use): that key's values would never be solved, so its
+    /// column would show values that were not. `None` when every key a point sets is used.
+    #[must_use]
+    pub fn shadowed(&self, points: &[Vec<(String, String)>]) -> Option<Replaced> {
+        let normal = |k: &str| k.replace('[', ".").replace([']', ' '], "");
+        points.iter().find_map(|point| {
+            let mut set = self.base.clone();
+            set.extend(point.iter().map(|(k, v)| format!("{k}={v}")));
+            replaced_keys(&self.text, &set)
+                .unwrap_or_default()
+                .into_iter()
+                .find(|r| point.iter().any(|(k, _)| normal(k) == normal(&r.removed)))
+        })
+    }
+
     /// Checks, before anything is solved, that every key a study varies is a key of the case (with the base
     /// overrides): a misspelt key in a `--vary` or a batch header would otherwise fail every point, after
     /// solving none. `keys` are `(key, one of its values)`; a value that is only wrong for some points is

@@ -684,6 +684,104 @@ class Harness:
         ]:
             self.run(f"round5 mesh 3.98M {name}", a + mesh, expect="error")
 
+    def round6_inputs(self):
+        """Inputs added in the sixth round, for what the last two sessions added or changed: the starved supply
+        flow, the feeding keys, the turbulence band, the Sommerfeld chart, `control`'s flags, batch headers,
+        `--vary` over the alternative geometry keys (preload, pad clearance, bore radius) and the JSON the Python
+        package reads (solutions and error rows)."""
+        c = "{C}/compressor-bearing.toml"
+        starved = "{C}/compressor-bearing-starved.toml"
+        case_path = str(self.cases / "compressor-bearing.toml")
+        pv = ["--set", 'mesh.fidelity="preview"']
+        thd = ["--set", 'thermal.model="thd"']
+        groove = thd + ["--set", 'feeding.kind="leading_edge_groove"']
+        runs = {
+            # starvation: the supply flow at and beyond its ends, swept, and on the chart
+            "starved supply 1e-12": (["solve", starved, "--set", "operating.supply_flow_l_per_min=1e-12", "--json",
+                                      "r.json"], "any"),
+            "starved supply nan": (["solve", starved, "--set", "operating.supply_flow_l_per_min=nan"], "error"),
+            "starved supply -5": (["solve", starved, "--set", "operating.supply_flow_l_per_min=-5"], "error"),
+            "starved sweep through zero": (["sweep", starved, "--vary", "operating.supply_flow_l_per_min=0,5,1e6",
+                                            "--jsonl", "r.jsonl"], "any"),
+            "starved thd groove": (["solve", starved, "--json", "r.json"] + groove, "any"),
+            "starved pad list over supply": (["solve", starved, "--set",
+                                              "operating.pad_supply_flow_l_per_min=[1,1,1,1,1]"], "any"),
+            # feeding keys
+            "groove wider than the gap": (["solve", c, "--set", "feeding.groove_width_deg=80"] + groove, "error"),
+            "groove width 0": (["solve", c, "--set", "feeding.groove_width_deg=0"] + groove, "error"),
+            "churning with a groove": (["solve", c, "--set", "feeding.churning_factor=5"] + groove, "error"),
+            "churning nan": (["solve", c, "--set", "feeding.churning_factor=nan"], "error"),
+            "ram coefficient 2": (["solve", c, "--set", "feeding.ram_pressure_coefficient=2"], "error"),
+            "vary feeding kinds": (["sweep", c, "--vary", "feeding.kind=flooded,leading_edge_groove,spray_bar,bath"]
+                                   + thd + ["--jsonl", "r.jsonl"], "any"),
+            "vary groove carry over out of range": (["sweep", c, "--vary", "feeding.groove_carry_over=-1:2:4"] + groove,
+                                                    "any"),
+            # the turbulence band
+            "transition start 0": (["solve", c, "--set", 'physics.turbulence="auto"', "--set",
+                                    "physics.transition_reynolds_start=0"], "error"),
+            "transition end below start": (["sweep", c, "--set", 'physics.turbulence="auto"', "--vary",
+                                            "physics.transition_reynolds_end=10,100000"], "any"),
+            "vary turbulence words": (["sweep", c, "--vary", "physics.turbulence=off,auto,on,sometimes"], "any"),
+            # the Sommerfeld chart
+            "sommerfeld starved": (["sommerfeld", starved, "--points", "3", "--json", "s.json"], "any"),
+            "sommerfeld position load": (["sommerfeld", c, "--points", "3", "--set",
+                                          "operating.eccentricity_ratio=0.5"], "any"),
+            "sommerfeld zero speed": (["sommerfeld", c, "--points", "3", "--set", "operating.speed_rpm=0"], "error"),
+            "sommerfeld json to /dev/full": (["sommerfeld", c, "--points", "3", "--json", "/dev/full"], "error"),
+            "sommerfeld json onto case": (["sommerfeld", c, "--points", "3", "--json", c], "error"),
+            "sommerfeld thd two points": (["sommerfeld", c, "--points", "2", "--csv", "s.csv"] + thd, "any"),
+            # control's flags
+            "control root locus nan": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                        "7000:8000:2", "--root-locus", "nan"], "error"),
+            "control root locus negative": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                             "7000:8000:2", "--root-locus=-100"], "error"),
+            "control root locus 1e12": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                         "7000:8000:2", "--root-locus", "1e12"], "any"),
+            "control gain csv without sweep": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                                "7000:8000:2", "--gain-csv", "g.csv"], "error"),
+            "control locus csv without locus": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                                 "7000:8000:2", "--locus-csv", "l.csv"], "error"),
+            "control gain 1e300": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds", "7000:8000:2",
+                                    "--gain", "1e300", "--json", "c.json"], "any"),
+            "control gain csv onto rotor": (["control", "{C}/rotors/compressor-rotor-active.toml", "--speeds",
+                                             "7000:8000:2", "--gain-sweep", "0:1:2", "--gain-csv",
+                                             "{C}/rotors/compressor-rotor-active.toml"], "error"),
+            # --vary over the alternative geometry keys
+            "vary clearance for bore": (["sweep", c, "--vary", "bearing.pads.clearance_um=100:150:3"], "ok"),
+            "vary preload out of range": (["sweep", c, "--vary", "bearing.pads.preload=1.5,-3"], "error"),
+            "vary clearance non-positive": (["sweep", c, "--vary", "bearing.pads.clearance_um=0,-1"], "error"),
+            "vary bore below journal": (["sweep", c, "--vary", "bearing.pads.bore_radius_mm=1,50"], "any"),
+            "vary preload and clearance": (["sweep", c, "--vary", "bearing.pads.preload=0.2,0.3", "--vary",
+                                            "bearing.pads.clearance_um=120"], "error"),
+            "vary one pad's preload": (["sweep", c, "--vary", "bearing.pad[2].preload=0,0.5"], "any"),
+            "vary pad 9's preload": (["sweep", c, "--vary", "bearing.pad[9].preload=0,0.5"], "error"),
+            # the JSON the Python package reads: solutions at the edges and error rows
+            "json of a zero load": (["solve", c, "--set", "operating.load_n=0", "--json", "r.json"], "any"),
+            "json of a position": (["solve", c, "--set", "operating.eccentricity_ratio=0.9", "--json", "r.json"],
+                                   "any"),
+            "jsonl of failing points": (["sweep", c, "--vary", "operating.load_n=1e9,1e12", "--jsonl", "r.jsonl"],
+                                        "error"),
+        }
+        for name, (a, expect) in runs.items():
+            self.run(f"round6 {name}", a + pv, expect=expect, inputs=[case_path, str(self.cases /
+                                                                                   "rotors/compressor-rotor-active.toml")])
+        # batch headers
+        w = self.work
+        for name, text, expect in [
+            ("header with spaces", " operating.speed_rpm , operating.load_n \n7000,1000\n", "any"),
+            ("header with a BOM", "\ufeffoperating.speed_rpm\n7000\n", "any"),
+            ("header empty column", "operating.speed_rpm,\n7000,1\n", "error"),
+            ("header text key", "title\nabc\n", "any"),
+            ("header pad 9", "bearing.pad[9].offset\n0.5\n", "error"),
+            ("header preload and clearance", "bearing.pads.preload,bearing.pads.clearance_um\n0.3,120\n", "error"),
+            ("header fidelity word", "mesh.fidelity\nultra\n", "error"),
+            ("header quoted key", '"operating.speed_rpm"\n7000\n', "any"),
+        ]:
+            path = w / f"designs-r6-{name.replace(' ', '-')}.csv"
+            path.write_text(text, encoding="utf-8")
+            self.run(f"round6 batch {name}", ["batch", str(path), "--case", c, "--jsonl", "b.jsonl"] + pv,
+                     expect=expect)
+
     def misc(self):
         self.run("schema", ["schema"], expect="ok")
         self.run("unknown command", ["frobnicate"], expect="error")
@@ -739,6 +837,7 @@ def main():
         h.new_inputs()
         h.round4_inputs()
         h.round5_inputs()
+        h.round6_inputs()
         h.misc()
         h.solve_extremes()
         if not a.skip_keys:

@@ -305,3 +305,40 @@ fn a_mesh_over_the_memory_plan_is_refused_by_every_bearing_command_before_it_is_
     }
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `--vary bearing.pads.preload=… --vary bearing.pads.clearance_um=…` solved every point at the clearance
+/// (the later alternative pad-geometry key replaces the earlier) and labelled the rows with preloads that
+/// were not solved, exit 0 (found by the bad-input harness, round 6); a batch table with both columns did
+/// the same. Both are refused before the first solve, naming the two keys.
+#[test]
+fn alternative_geometry_keys_varied_together_are_refused_before_the_first_solve() {
+    let d = scratch("alternatives");
+    let o = tiltpad(
+        &[
+            "sweep",
+            "compressor-bearing.toml",
+            "--vary",
+            "bearing.pads.preload=0.2,0.3",
+            "--vary",
+            "bearing.pads.clearance_um=120",
+            "--set",
+            PREVIEW,
+        ],
+        &d,
+    );
+    let err = refused(&o, &["--vary bearing.pads.clearance_um replaces --vary bearing.pads.preload", "vary one"]);
+    assert!(!err.contains("progress:") && o.stdout.is_empty(), "a point was solved: {err}");
+    std::fs::write(d.join("both.csv"), "bearing.pads.preload,bearing.pads.clearance_um\n0.3,120\n").unwrap();
+    let o = tiltpad(&["batch", "both.csv", "--case", "compressor-bearing.toml", "--set", PREVIEW], &d);
+    let err =
+        refused(&o, &["header of both.csv", "column bearing.pads.clearance_um replaces column bearing.pads.preload"]);
+    assert!(!err.contains("progress:") && o.stdout.is_empty(), "a design was solved: {err}");
+    // one alternative alone still replaces the case's own (with its note) and solves
+    let o = tiltpad(
+        &["sweep", "compressor-bearing.toml", "--vary", "bearing.pads.clearance_um=120,130", "--set", PREVIEW],
+        &d,
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success() && err.contains("replaces bearing.pads.bore_radius_mm"), "{err}");
+    std::fs::remove_dir_all(&d).ok();
+}

@@ -389,3 +389,65 @@ fn the_control_estimate_counts_the_eigen_solutions_the_analysis_makes() {
     // the bound is the bisections' most probes (2 onsets × 12) beyond the speeds' own
     assert_eq!(estimated, 13 * per_speed + 2 * 12, "{e}");
 }
+
+/// The convergence map counted nothing through a pipe (its bar draws only on a terminal, and the heartbeat
+/// said "288 points; N s on it so far" with no count done): it now prints `progress: K/N` lines over all its
+/// points, and Ctrl-C stops it after the points being solved, writes them to the CSV and says how many.
+#[test]
+fn the_convergence_map_counts_its_points_and_stops_on_ctrl_c_keeping_them() {
+    let dir = temp_dir("convergence-map");
+    let root = env!("CARGO_MANIFEST_DIR");
+    // three points: every one counted, the last line 3/3
+    let out = dir.join("three.csv");
+    let o = tiltpad()
+        .args(["convergence-map", "--root", root, "--only", "someya", "--only-points", "0@10,90@10,180@10"])
+        .args(["--csv", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    assert!(err.lines().any(|l| l.starts_with("progress: 3/3")), "{err}");
+    assert_eq!(csv_rows(&out), 3);
+    // the whole map of one bearing (72 directions × 4 loads), stopped once two or more points are counted
+    let out = dir.join("map.csv");
+    let (code, err) =
+        interrupted(&["convergence-map", "--root", root, "--only", "someya", "--csv", out.to_str().unwrap()], 2);
+    assert_eq!(code, Some(130), "{err}");
+    let (done, of) = done_of(&err, "points");
+    assert_eq!(of, 288, "{err}");
+    assert!((2..288).contains(&done), "{err}");
+    assert!(err.contains(&format!("their results are in {}", out.display())), "{err}");
+    assert_eq!(csv_rows(&out), done, "one row per point solved");
+}
+
+/// `rotor --critical-map` did not look at Ctrl-C between its 81 eigen-solutions (nor count them): it now
+/// counts the bearings' speeds and then the eigen-solutions, and Ctrl-C stops it at the next one, writing
+/// the map up to the stiffness reached (exit status 130, how many said).
+#[test]
+fn ctrl_c_on_the_critical_speed_map_stops_at_the_next_eigen_solution_and_keeps_the_map_so_far() {
+    let dir = temp_dir("critical-map-stop");
+    // 200 elements: 81 undamped eigen-solutions of 402 coordinates, about 4.6 s in all in release
+    let rotor = uniform_rotor(&dir, 200);
+    let out = dir.join("map.csv");
+    let (code, err) = interrupted_when(
+        &[
+            "rotor",
+            rotor.to_str().unwrap(),
+            "--speeds",
+            "3000:4000:2",
+            "--critical-map",
+            "--csv",
+            out.to_str().unwrap(),
+        ],
+        |line| line.starts_with("progress: ") && line.contains("/81"),
+    );
+    assert!(err.contains("progress: 2/2"), "the speeds are counted: {err}");
+    assert_eq!(code, Some(130), "{err}");
+    let (done, of) = done_of(&err, "eigen-solutions");
+    assert_eq!(of, 81, "{err}");
+    assert!((1..81).contains(&done), "{err}");
+    // the CSV: each mode line has one row per stiffness done; both bearings' curves at both speeds are kept
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert_eq!(text.lines().filter(|l| l.starts_with("mode1,")).count(), done, "{text}");
+    assert_eq!(text.lines().filter(|l| l.starts_with("bearing0_kxx,")).count(), 2, "{text}");
+}
