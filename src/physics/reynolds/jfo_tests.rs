@@ -371,3 +371,29 @@ fn direct_perturbation_rhs_is_the_assembled_one() {
         }
     }
 }
+
+/// Diverging, then converging less than it diverged: the oil spread out by the first half does not fill the
+/// second, so the mass-conserving film carries no pressure where the Reynolds condition's already does.
+const SPREADS: &[(f64, f64)] = &[(0.0, 1.0), (0.5, 1.6), (1.0, 1.2)];
+
+/// The mass-conserving film's pressure-free range along the tilt-like coordinate (`jfo_onset.rs`) ends
+/// beyond the Reynolds condition's, where the film first carries pressure: a solve at the end gives `p ≡ 0`
+/// and one a millionth of the extension further on gives pressure.
+#[test]
+fn the_pressure_free_range_ends_where_the_oil_fills_the_gap() {
+    for inlet in [Inlet::Flooded, Inlet::Supply { flow_m3_s: 0.8 * U * H0 * R / 2.0 }] {
+        let mut f = pad(SPREADS, 40, 16, &[]);
+        let inp = inputs(Cavitation::Jfo, inlet, 0.0);
+        let reynolds = inputs(Cavitation::Reynolds, inlet, 0.0);
+        solve(&mut f, &[0.0, 0.0], &inp);
+        let (_, end_r) = f.pressure_free_interval(&[0.0, 0.0], 0, &reynolds).unwrap();
+        let (_, end) = f.pressure_free_interval(&[0.0, 0.0], 0, &inp).unwrap();
+        eprintln!("{inlet:?}: Reynolds end {end_r:.4e}, mass-conserving end {end:.4e}");
+        assert!(end > end_r, "{end} ≤ {end_r}");
+        let peak = |f: &PadFilm| f.p.iter().fold(0.0_f64, |m, &v| m.max(v));
+        solve(&mut f, &[end, 0.0], &inp);
+        assert!(peak(&f) == 0.0, "pressure {} at the end", peak(&f));
+        solve(&mut f, &[end + 1e-6 * (end - end_r), 0.0], &inp);
+        assert!(peak(&f) > 0.0, "no pressure past the end");
+    }
+}
