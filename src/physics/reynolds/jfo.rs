@@ -113,6 +113,8 @@ pub(super) struct JfoState {
     pub(super) capacity12: f64,
     /// Supply flow of the last solve (whole pad) [m³/s], if starved.
     pub(super) supply: Option<f64>,
+    /// Work storage of the perturbations' operators (`jfo_linearize.rs`), zero between uses.
+    pub(super) scratch: Vec<f64>,
 }
 
 impl JfoState {
@@ -164,6 +166,7 @@ impl JfoState {
             theta_in: 1.0,
             capacity12: 0.0,
             supply: None,
+            scratch: Vec::new(),
             pattern,
         })
     }

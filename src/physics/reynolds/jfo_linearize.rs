@@ -89,3 +89,112 @@ impl JfoState {
         out
     }
 }
+
+impl JfoState {
+    /// The Couette and squeeze right-hand sides of every shape at once, without assembling a matrix per
+    /// shape: `rhs` holds `n` values per column, `−(∂T̃/∂q_k) θ` in column `k` and, with `with_damping`,
+    /// `−S[φ_k] θ` in column `m + k` (added to what is there). The same values as [`Self::couette_derivative`]
+    /// and [`Self::squeeze_rhs`] to round-off:
+    ///
+    /// ```text
+    /// (T[φ] θ)_a = −Σ_qp w 6 U φ θ_qp ∂N_a/∂s,   (S[φ] θ)_a = Σ_qp w 12 φ θ_qp N_a,   θ_qp = Σ_b N_b θ_b
+    /// (D[φ] θ)_r = Σ_c d_rc (θ_r − θ_c)   over the upwinded pairs, d_rc the limited entry of T[φ]
+    /// ```
+    ///
+    /// The upwinding term vanishes where `θ_r = θ_c`, so its entries are assembled only on the elements whose
+    /// film fraction is not uniform (the ruptured zone and its edge). A starved inlet, whose film fraction
+    /// moves with the thickness, takes the assembled path.
+    pub(super) fn perturbation_rhs(
+        &mut self,
+        geom: &FilmGeometry,
+        u: f64,
+        theta: &[f64],
+        with_damping: bool,
+        rhs: &mut [f64],
+    ) {
+        let n = self.pattern.n;
+        let m = geom.shapes.len();
+        if self.supply.is_some() && self.theta_in < 1.0 {
+            for (s, shape) in geom.shapes.iter().enumerate() {
+                let dc = self.couette_derivative(geom, u, &shape.qp, theta);
+                rhs[s * n..(s + 1) * n].copy_from_slice(&dc);
+                if with_damping {
+                    let ds = self.squeeze_rhs(geom, &shape.qp, theta);
+                    rhs[(m + s) * n..(m + s + 1) * n].copy_from_slice(&ds);
+                }
+            }
+            return;
+        }
+        // The unlimited Couette and the squeeze terms, element by element.
+        let mut mixed = Vec::new();
+        for (e, nodes) in geom.elements.iter().enumerate() {
+            let th = nodes.map(|i| theta[i]);
+            if th.iter().any(|&t| t != th[0]) {
+                mixed.push(e);
+            }
+            for (k, q) in geom.qp[e].iter().enumerate() {
+                let tq: f64 = (0..4).map(|b| q.n[b] * th[b]).sum();
+                let c = q.w * 6.0 * u * tq;
+                let d = -12.0 * q.w * tq;
+                for (s, shape) in geom.shapes.iter().enumerate() {
+                    let phi = shape.qp[e][k];
+                    for a in 0..4 {
+                        rhs[s * n + nodes[a]] += c * phi * q.dn_ds[a];
+                        if with_damping {
+                            rhs[(m + s) * n + nodes[a]] += d * phi * q.n[a];
+                        }
+                    }
+                }
+            }
+        }
+        if mixed.is_empty() {
+            return;
+        }
+        // The upwinding of the Couette derivative on the elements with a non-uniform film fraction.
+        let mut dt = std::mem::take(&mut self.scratch);
+        dt.resize(self.pattern.nnz(), 0.0);
+        for (s, shape) in geom.shapes.iter().enumerate() {
+            for &e in &mixed {
+                let pos = self.pattern.group_positions(e);
+                for (k, q) in geom.qp[e].iter().enumerate() {
+                    let c = q.w * 6.0 * u * shape.qp[e][k];
+                    for a in 0..4 {
+                        for b in 0..4 {
+                            dt[pos[4 * a + b]] -= c * q.n[b] * q.dn_ds[a];
+                        }
+                    }
+                }
+            }
+            let col = &mut rhs[s * n..(s + 1) * n];
+            for &e in &mixed {
+                let nodes = geom.elements[e];
+                let pos = self.pattern.group_positions(e);
+                for a in 0..4 {
+                    for b in 0..4 {
+                        let (r, c, k) = (nodes[a], nodes[b], pos[4 * a + b]);
+                        if r <= c || dt[k].is_nan() {
+                            continue;
+                        }
+                        let kt = self.transpose[k];
+                        let d = match self.branch[k] {
+                            1 => dt[k],
+                            2 => dt[kt],
+                            _ => 0.0,
+                        };
+                        let jump = d * (theta[r] - theta[c]);
+                        col[r] -= jump;
+                        col[c] += jump;
+                        // Done: a pair shared by two elements is counted once (cleared below).
+                        dt[k] = f64::NAN;
+                    }
+                }
+            }
+            for &e in &mixed {
+                for &k in self.pattern.group_positions(e) {
+                    dt[k] = 0.0;
+                }
+            }
+        }
+        self.scratch = dt;
+    }
+}

@@ -341,3 +341,59 @@ fn linearisation_matches_differences_of_solves() {
         }
     }
 }
+
+/// The perturbations' right-hand sides computed element by element (`JfoState::perturbation_rhs`, the
+/// upwinding only where the film fraction varies) against the operators assembled per shape
+/// (`couette_derivative`, `squeeze_rhs`), on the pad with rupture and reformation, flooded and starved:
+/// equal to round-off (1e-13 of each column's largest entry).
+#[test]
+fn direct_perturbation_rhs_is_the_assembled_one() {
+    for inlet in [Inlet::Flooded, Inlet::Supply { flow_m3_s: 0.7 * U * 2.0 * H0 * R / 2.0 }] {
+        let mut f = pad(REFORMS, 40, 16, &[]);
+        let inp = inputs(Cavitation::Jfo, inlet, 0.0);
+        solve(&mut f, &[0.0, 0.0], &inp);
+        assert!(f.cavitated.iter().any(|&c| c), "a ruptured zone");
+        let n = f.geom.n_nodes();
+        let m = f.geom.n_dofs();
+        let state = f.jfo.as_deref_mut().unwrap();
+        let mut direct = vec![0.0; 2 * m * n];
+        state.perturbation_rhs(&f.geom, U, &f.theta, true, &mut direct);
+        for (s, shape) in f.geom.shapes.iter().enumerate() {
+            let dc = state.couette_derivative(&f.geom, U, &shape.qp, &f.theta);
+            let ds = state.squeeze_rhs(&f.geom, &shape.qp, &f.theta);
+            for (col, expect) in [(s, dc), (m + s, ds)] {
+                let got = &direct[col * n..(col + 1) * n];
+                let scale = expect.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+                let diff = got.iter().zip(&expect).fold(0.0_f64, |a, (x, y)| a.max((x - y).abs()));
+                eprintln!("{inlet:?} column {col}: {:.1e}", diff / scale);
+                assert!(diff <= 1e-13 * scale, "{inlet:?} column {col}: {:.1e}", diff / scale);
+            }
+        }
+    }
+}
+
+/// Diverging, then converging less than it diverged: the oil spread out by the first half does not fill the
+/// second, so the mass-conserving film carries no pressure where the Reynolds condition's already does.
+const SPREADS: &[(f64, f64)] = &[(0.0, 1.0), (0.5, 1.6), (1.0, 1.2)];
+
+/// The mass-conserving film's pressure-free range along the tilt-like coordinate (`jfo_onset.rs`) ends
+/// beyond the Reynolds condition's, where the film first carries pressure: a solve at the end gives `p ≡ 0`
+/// and one a millionth of the extension further on gives pressure.
+#[test]
+fn the_pressure_free_range_ends_where_the_oil_fills_the_gap() {
+    for inlet in [Inlet::Flooded, Inlet::Supply { flow_m3_s: 0.8 * U * H0 * R / 2.0 }] {
+        let mut f = pad(SPREADS, 40, 16, &[]);
+        let inp = inputs(Cavitation::Jfo, inlet, 0.0);
+        let reynolds = inputs(Cavitation::Reynolds, inlet, 0.0);
+        solve(&mut f, &[0.0, 0.0], &inp);
+        let (_, end_r) = f.pressure_free_interval(&[0.0, 0.0], 0, &reynolds).unwrap();
+        let (_, end) = f.pressure_free_interval(&[0.0, 0.0], 0, &inp).unwrap();
+        eprintln!("{inlet:?}: Reynolds end {end_r:.4e}, mass-conserving end {end:.4e}");
+        assert!(end > end_r, "{end} ≤ {end_r}");
+        let peak = |f: &PadFilm| f.p.iter().fold(0.0_f64, |m, &v| m.max(v));
+        solve(&mut f, &[end, 0.0], &inp);
+        assert!(peak(&f) == 0.0, "pressure {} at the end", peak(&f));
+        solve(&mut f, &[end + 1e-6 * (end - end_r), 0.0], &inp);
+        assert!(peak(&f) > 0.0, "no pressure past the end");
+    }
+}

@@ -65,14 +65,7 @@ impl PadFilm {
         // Mass-conserving cavitation: the oil's Couette and squeeze terms carry the film fraction (jfo.rs).
         if jfo {
             if let Some(state) = self.jfo.as_deref_mut() {
-                for (s, shape) in g.shapes.iter().enumerate() {
-                    let dc = state.couette_derivative(g, u, &shape.qp, &self.theta);
-                    rhs[s * n..(s + 1) * n].copy_from_slice(&dc);
-                    if with_damping {
-                        let ds = state.squeeze_rhs(g, &shape.qp, &self.theta);
-                        rhs[(m + s) * n..(m + s + 1) * n].copy_from_slice(&ds);
-                    }
-                }
+                state.perturbation_rhs(g, u, &self.theta, with_damping, &mut rhs);
             }
         }
         for (e, nodes) in g.elements.iter().enumerate() {

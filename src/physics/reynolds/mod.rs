@@ -49,8 +49,9 @@
 //! per mesh (quadrature, pattern, sampled shapes, orifice operators); `solve.rs` assembly and both
 //! cavitation solves; `linearize.rs` forces and their perturbations; `outputs.rs` flows, friction and
 //! extrema; `injection.rs` the response to the injection pressure; `jfo.rs`, `jfo_operators.rs` and
-//! `jfo_linearize.rs` the mass-conserving (JFO) solve, its operators and its linearisation, and
-//! `jfo_update.rs` the low-rank updates of its factorisation between active-set steps.
+//! `jfo_linearize.rs` the mass-conserving (JFO) solve, its operators and its linearisation,
+//! `jfo_update.rs` the low-rank updates of its factorisation between active-set steps and `jfo_onset.rs`
+//! its pressure-free range along a coordinate (a floating pad's onset of pressure).
 
 use crate::fem::{SolverError, SpdSolver};
 use crate::mesh::grid::NodeSite;
@@ -64,6 +65,7 @@ mod geometry;
 mod injection;
 mod jfo;
 mod jfo_linearize;
+mod jfo_onset;
 mod jfo_operators;
 #[cfg(test)]
 mod jfo_tests;
@@ -378,14 +380,23 @@ impl PadFilm {
     /// all under the Reynolds condition: `p ≡ 0` solves the complementarity problem exactly when the
     /// right-hand side `b` is non-positive at every free node, and `b` is affine in the coordinate
     /// (`b = c + q_slot d`, only the Couette term depends on the thickness). `None` for Gümbel cavitation
-    /// (whose pressure-free set needs a solve), for mass-conserving cavitation (whose film fraction carries oil
-    /// into the pad even without pressure), for a pressurised leading edge (never pressure-free) or when no
-    /// such coordinate value exists.
+    /// (whose pressure-free set needs a solve), for a pressurised leading edge (never pressure-free) or when no
+    /// such coordinate value exists. Mass-conserving cavitation: the range where the all-cavitated film's
+    /// fraction nowhere exceeds one, which extends the Reynolds condition's range (`jfo_onset.rs`).
     #[must_use]
     pub fn pressure_free_interval(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
-        if inp.cavitation != Cavitation::Reynolds || inp.leading_edge_pressure != 0.0 {
+        if inp.leading_edge_pressure != 0.0 {
             return None;
         }
+        match inp.cavitation {
+            Cavitation::Reynolds => self.reynolds_pressure_free(q, slot, inp),
+            Cavitation::Jfo => self.jfo_pressure_free(q, slot, inp, self.reynolds_pressure_free(q, slot, inp)?),
+            Cavitation::Gumbel => None,
+        }
+    }
+
+    /// The Reynolds condition's pressure-free range (the right-hand side non-positive at every free node).
+    fn reynolds_pressure_free(&self, q: &[f64], slot: usize, inp: &FilmInputs<'_>) -> Option<(f64, f64)> {
         let g = &self.geom;
         let u = inp.surface_speed;
         let n = g.n_nodes();
