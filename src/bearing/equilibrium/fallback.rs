@@ -16,7 +16,7 @@ use crate::physics::reynolds::FilmError;
 
 use crate::bearing::equilibrium::eval::{external_load, load_direction, min_film, Ctx};
 use crate::bearing::equilibrium::journal::{bearing_stiffness, journal_step, pads_surround};
-use crate::bearing::equilibrium::pad::{assemble_u, solve_all_pads};
+use crate::bearing::equilibrium::pad::{assemble_u, solve_all_pads, solve_all_pads_open};
 use crate::bearing::equilibrium::polar::polar_search;
 use crate::bearing::equilibrium::state::{Found, Stall, SUFFICIENT_DECREASE, TOUCHDOWN_FRACTION};
 use crate::bearing::film::model::BearingModel;
@@ -87,7 +87,7 @@ pub(super) fn newton_journal(
     let cb = model.assembled_clearance;
     let mut journal = [u0[0], u0[1]];
     let mut u = u0.to_vec();
-    let (mut states, mut f) = match solve_all_pads(model, journal, &u, ctx) {
+    let (mut states, mut f) = match solve_all_pads_open(model, journal, &u, ctx) {
         Ok(x) => x,
         Err((_, FilmError::Contact { .. })) => {
             // Start from the centre if the guess closes a film.
@@ -131,7 +131,7 @@ pub(super) fn newton_journal(
         let mut accepted = None;
         for _ in 0..LINE_SEARCH_HALVINGS {
             let trial = [journal[0] + alpha * step[0], journal[1] + alpha * step[1]];
-            match solve_all_pads(model, trial, &u, ctx) {
+            match solve_all_pads_open(model, trial, &u, ctx) {
                 Ok((st2, f2)) => {
                     let r2 = Vector2::new(f2[0] + w[0], f2[1] + w[1]);
                     if r2.norm() < (1.0 - SUFFICIENT_DECREASE * alpha) * r.norm() || r2.norm() <= tol {
@@ -180,7 +180,7 @@ fn scan_along_load(
         #[allow(clippy::cast_precision_loss)]
         let e = SCAN_STEP * cb * i as f64;
         let journal = [e * dir[0], e * dir[1]];
-        let Ok((states, f)) = solve_all_pads(model, journal, &u, ctx) else { return Ok(None) };
+        let Ok((states, f)) = solve_all_pads_open(model, journal, &u, ctx) else { return Ok(None) };
         let g = (f[0] + w[0]) * dir[0] + (f[1] + w[1]) * dir[1];
         u = assemble_u(model, journal, &states);
         if let Some((gp, up)) = &prev {

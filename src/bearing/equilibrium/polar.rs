@@ -14,9 +14,19 @@
 //!
 //! Both roots are bracketed, so the search converges for any continuous restoring force law (intermediate
 //! value theorem), superlinearly where the law is smooth. Each evaluation is a pad assembly.
+//!
+//! ## Pads near a fold
+//! A floating pad may also have a loaded state beyond a fold of its tilt equilibrium; the search takes the
+//! loaded one, so that the force law is one function of the journal position. Looking for it costs a scan
+//! of the pad's loaded tilt range (about a dozen film solves per floating pad), which at every probe was
+//! two thirds of the search's work on a starved bearing. So the probes place floating pads at their onset
+//! of pressure only (the cheap law), and each ray's outcome is confirmed: at a ray's root every floating
+//! pad is searched for a loaded state once. Where none has one, the root is a root of the loaded-preferring
+//! law too (both laws agree there); where one has — or the ray found no root, ending the search — the ray is
+//! solved again with the search on every probe, and so is every later ray.
 
 use crate::bearing::equilibrium::eval::{external_load, min_film, Ctx};
-use crate::bearing::equilibrium::pad::{assemble_u, solve_all_pads};
+use crate::bearing::equilibrium::pad::{assemble_u, solve_all_pads_open, solve_pad};
 use crate::bearing::equilibrium::state::{Found, PadState, Stall, TOUCHDOWN_FRACTION, UNLOADED_SHARE};
 use crate::bearing::film::model::BearingModel;
 use crate::bearing::report::error::SolveError;
@@ -102,6 +112,9 @@ struct Search<'m, 'c, 'o> {
     /// The last ray ended at a jump of its force law rather than at a root: (pad that switched, g on the
     /// carrying-less side, g on the other) [N].
     jump: Option<(usize, f64, f64)>,
+    /// Every probe searches its floating pads for a loaded state beyond a fold (set once a ray's outcome
+    /// was not confirmed under the cheap law; see the module notes).
+    thorough: bool,
 }
 
 impl Search<'_, '_, '_> {
@@ -109,7 +122,10 @@ impl Search<'_, '_, '_> {
         let dir = [psi.cos(), psi.sin()];
         let journal = [s * dir[0], s * dir[1]];
         let warm = self.warm.clone();
-        match solve_all_pads(self.model, journal, &warm, self.ctx) {
+        self.ctx.thorough_onset = self.thorough;
+        let placed = solve_all_pads_open(self.model, journal, &warm, self.ctx);
+        self.ctx.thorough_onset = false;
+        match placed {
             Ok((states, force)) => {
                 let u = assemble_u(self.model, journal, &states);
                 self.warm.clone_from(&u);
@@ -131,9 +147,55 @@ impl Search<'_, '_, '_> {
         Ok(Err(Stall { journal: [0.0; 2], residual: f64::INFINITY, reason: StallReason::RayWithoutRoot }))
     }
 
+    /// The ray's root as [`Self::ray_tol_to`] finds it, confirmed under the loaded-preferring law: solved again
+    /// with the fold search on every probe (from now on) when a floating pad has a loaded state at the root,
+    /// or when the ray has no root.
+    fn ray_to(
+        &mut self,
+        psi: f64,
+        guess: f64,
+        transverse_scale: f64,
+        cancel: &dyn Cancel,
+    ) -> Result<Option<RayRoot>, SolveError> {
+        let r = self.ray_tol_to(psi, guess, transverse_scale, cancel)?;
+        if self.thorough {
+            return Ok(r);
+        }
+        if let Some(root) = r.as_ref() {
+            if !self.loaded_beyond_fold(psi, root)? {
+                return Ok(r);
+            }
+        }
+        self.thorough = true;
+        self.ray_tol_to(psi, guess, transverse_scale, cancel)
+    }
+
+    /// Whether a pad that floats at the ray's root has a loaded state there too (the fold search, once per
+    /// floating pad).
+    fn loaded_beyond_fold(&mut self, psi: f64, root: &RayRoot) -> Result<bool, SolveError> {
+        let journal = [root.s * psi.cos(), root.s * psi.sin()];
+        for (k, st) in root.states.iter().enumerate() {
+            let pm = &mut self.model.pads[k];
+            if !st.unloaded || pm.dofs().is_empty() || self.ctx.held(k) {
+                continue;
+            }
+            self.ctx.thorough_onset = true;
+            let placed = solve_pad(pm, k, journal, &st.q, self.ctx);
+            self.ctx.thorough_onset = false;
+            match placed {
+                Ok(p) if self.ctx.share(&p) >= UNLOADED_SHARE => return Ok(true),
+                Ok(_) => {}
+                // The pad's film closes in the search (it did not at the root): not a state of the cheap law.
+                Err(FilmError::Contact { .. }) => return Ok(true),
+                Err(e) => return Err(self.ctx.film_error(k, e)),
+            }
+        }
+        Ok(false)
+    }
+
     /// The ray's root to a tolerance of [`RAY_TOL_FRACTION`] of `transverse_scale` [N]; solved again to a tenth
     /// of the tolerance when its transverse residual is already within the tolerance (a candidate answer).
-    fn ray_to(
+    fn ray_tol_to(
         &mut self,
         psi: f64,
         guess: f64,
@@ -208,7 +270,15 @@ impl Search<'_, '_, '_> {
                     }
                     return Ok(None);
                 }
-                let (s, p) = if converged_b || pa.g.abs() > gb.abs() { (b, pb) } else { (a, Some(pa)) };
+                // A bracket that collapsed onto a closed film (`pb` none) with the load still not carried at its
+                // open end has no root: the film closes first.
+                let (s, p) = if converged_b || (pb.is_some() && pa.g.abs() > gb.abs()) {
+                    (b, pb)
+                } else if pb.is_some() || pa.g.abs() <= self.ray_tol {
+                    (a, Some(pa))
+                } else {
+                    (b, None)
+                };
                 let Some(p) = p else {
                     // The film closes before the force balances along this ray: remember the thinnest film
                     // seen on its carrying side (touchdown, if no other method finds an equilibrium).
@@ -274,7 +344,7 @@ pub(super) fn polar_search(
     ctx: &mut Ctx<'_>,
     cancel: &dyn Cancel,
 ) -> Result<Result<Found, Stall>, SolveError> {
-    let thorough = std::mem::replace(&mut ctx.thorough_onset, true);
+    let thorough = std::mem::replace(&mut ctx.thorough_onset, false);
     let found = search(model, centred, ctx, cancel);
     ctx.thorough_onset = thorough;
     found
@@ -296,7 +366,7 @@ fn search(
     let cb = model.assembled_clearance;
     let warm = centred.to_vec();
     let load = w[0].hypot(w[1]);
-    let mut search = Search { model, ctx, w, warm, tol, ray_tol: 0.1 * tol, jump: None };
+    let mut search = Search { model, ctx, w, warm, tol, ray_tol: 0.1 * tol, jump: None, thorough: false };
     let mut guess = 0.3 * cb;
     let Some(mid) = search.ray_to(psi_w, guess, load, cancel)? else {
         if let Some((pad, g_before, g_after)) = search.jump {
