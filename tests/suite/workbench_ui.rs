@@ -662,7 +662,15 @@ fn rotor_view_analyses_the_compressor_rotor_and_shows_every_tab() {
     h.get_by_label(&sentence);
     assert!(sentence.contains("API 617 limit"), "{sentence}");
     for name in ["bearing 1 (210 mm)", "bearing 2 (1470 mm)", "shaft end, disk (0 mm)", "mid-span, disk (780 mm)"] {
-        h.get_by_label(&format!("legend: {name}"));
+        // Each entry whole: its sample on the row of its name, just before it (at 1280×720 the legend
+        // wraps, and "bearing 2" left its sample at the end of the first row).
+        let sample = h.get_by_label(&format!("legend: {name}")).rect();
+        let label = h.get_by_label(name).rect();
+        assert!(
+            (sample.center().y - label.center().y).abs() < 4.0
+                && (0.0..20.0).contains(&(label.left() - sample.right())),
+            "{name}: sample at {sample:?}, name at {label:?}"
+        );
     }
     assert!(h.query_by_label_contains("node 7").is_none());
     snapshot(&mut h, "rotor_unbalance");

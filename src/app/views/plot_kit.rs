@@ -33,13 +33,22 @@ pub type LegendEntry = (String, Color32);
 /// The legend of a plot as a row that wraps: per entry a short line in the curve's colour (an image
 /// labelled `legend: <name>` for screen readers and tests) and the name.
 pub fn legend_ui(ui: &mut Ui, entries: &[LegendEntry]) {
+    const SAMPLE: egui::Vec2 = egui::vec2(16.0, 12.0);
     ui.horizontal_wrapped(|ui| {
         for (name, color) in entries {
-            let (rect, sample) = ui.allocate_exact_size(egui::vec2(16.0, 12.0), egui::Sense::hover());
+            // Whole: an entry (sample and name) that does not fit the row moves to the next one, rather than
+            // leaving its sample at the end of one row and its name on the next.
+            let text = egui::WidgetText::from(RichText::new(name).color(*color));
+            let galley = text.into_galley(ui, Some(egui::TextWrapMode::Extend), f32::INFINITY, egui::TextStyle::Body);
+            let width = SAMPLE.x + ui.spacing().item_spacing.x + galley.size().x;
+            let row_started = ui.cursor().min.x > ui.max_rect().min.x + 0.5;
+            if row_started && width > ui.available_size_before_wrap().x {
+                ui.end_row();
+            }
+            let (rect, sample) = ui.allocate_exact_size(SAMPLE, egui::Sense::hover());
             sample.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend: {name}")));
             ui.painter().line_segment([rect.left_center(), rect.right_center()], egui::Stroke::new(2.5, *color));
-            // Whole: an entry that does not fit the row moves to the next one rather than breaking its name.
-            ui.add(egui::Label::new(RichText::new(name).color(*color)).wrap_mode(egui::TextWrapMode::Extend));
+            ui.add(egui::Label::new(galley));
             ui.add_space(6.0);
         }
     });
@@ -77,9 +86,21 @@ pub fn labelled_spacer(label_px: f64) -> impl Fn(egui_plot::GridInput) -> Vec<eg
     egui_plot::uniform_grid_spacer(move |input| {
         // `base_step_size` is the value spanned by the plot's minimum grid spacing (8 points).
         let per_px = input.base_step_size / 8.0;
-        let label = nice_up(per_px * label_px);
-        [nice_up(per_px * 8.0).min(label), nice_up(0.25 * label).min(label), label]
+        nested_steps(per_px, label_px)
     })
+}
+
+/// The three grid steps of [`labelled_spacer`] for an axis of `per_px` value per point: the labelled step
+/// (at least `label_px` points), a middle step that divides it, and the finest (at least 8 points). egui_plot
+/// labels every step that stands far enough apart, so a middle step that did not divide the labelled one
+/// (2 beside 5) wrote its numbers between the labelled ones: "4000 5000 6000" 35 points apart on a speed
+/// axis, "0.6 0.5 0.4" on top of each other on a short plot. After 5 × 10ⁿ the middle step is 10ⁿ.
+#[must_use]
+pub fn nested_steps(per_px: f64, label_px: f64) -> [f64; 3] {
+    let label = nice_up(per_px * label_px);
+    let mantissa = label / 10f64.powf(label.log10().floor());
+    let middle = if (mantissa - 5.0).abs() < 1e-9 { label / 5.0 } else { nice_up(0.25 * label).min(label) };
+    [nice_up(per_px * 8.0).min(middle), middle, label]
 }
 
 /// Linear axes labelled on [`labelled_spacer`]'s grid with the digits their step needs
@@ -209,6 +230,29 @@ pub fn text_within(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every labelled-looking step divides the labelled one: a 0–13 000 rpm axis 450 points wide labels
+    /// 5000 and 10 000 with lines every 1000 (it labelled 2000 steps too: 4000 beside 5000); a 60-point
+    /// ε plot over 0.1–0.6 labels 0.5 steps (it wrote 0.4, 0.5 and 0.6 onto each other); 1 and 2 keep
+    /// their quarter steps.
+    #[test]
+    fn grid_steps_nest_so_no_label_falls_between_labelled_ones() {
+        let close = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 1e-12 * y);
+        let speed = nested_steps(13_000.0 / 450.0, 70.0);
+        assert!(close(speed, [500.0, 1000.0, 5000.0]), "{speed:?}");
+        let eps = nested_steps(0.52 / 60.0, 24.0);
+        assert!(close(eps, [0.1, 0.1, 0.5]), "{eps:?}");
+        let one = nested_steps(0.8 / 24.0, 24.0);
+        assert!(close(one, [0.5, 0.5, 1.0]), "{one:?}");
+        for per_px in [1e-4, 3.3e-3, 0.07, 1.9, 28.9, 640.0] {
+            for label_px in [24.0, 32.0, 60.0, 70.0, 80.0] {
+                let [fine, middle, label] = nested_steps(per_px, label_px);
+                let divides = |a: f64, b: f64| ((b / a) - (b / a).round()).abs() < 1e-9;
+                assert!(divides(middle, label) && fine <= middle, "{per_px} {label_px}: {fine} {middle} {label}");
+                assert!(label / per_px >= label_px * (1.0 - 1e-9), "{per_px} {label_px}");
+            }
+        }
+    }
 
     use crate::app::ink::contrast;
 
