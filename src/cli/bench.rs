@@ -453,52 +453,89 @@ pub fn replace_section(root: &Path, heading: &str, section: &str) -> Result<()> 
     Ok(())
 }
 
+/// The calibration solve's case: the compressor bearing, isothermal, at standard fidelity (a row of the
+/// first table).
+const CALIBRATION: [&str; 2] = ["thermal.model=\"isothermal\"", "mesh.fidelity=\"standard\""];
+
+/// Median time of the calibration solve [ms] (7 solves): how fast the machine is now.
+fn calibration_ms(root: &Path) -> Result<f64> {
+    let text = std::fs::read_to_string(root.join("cases").join("compressor-bearing.toml"))?;
+    let set: Vec<String> = CALIBRATION.iter().map(|s| (*s).to_string()).collect();
+    Ok(timed(&with_mesh(&text, &set)?, 7)?.0)
+}
+
+/// The calibration solve's time in the first table of `doc` [ms] (the compressor bearing's standard row).
+fn calibration_in_doc(doc: &str) -> Option<f64> {
+    let row = doc.lines().find(|l| l.starts_with("| compressor-bearing | standard |"))?;
+    row.split('|').nth(4)?.trim().strip_suffix(" ms")?.parse().ok()
+}
+
+/// The closing line of a section measured alone: when, and how fast the machine was then against the run
+/// that measured the rest of the file (a shared machine's speed drifts between runs; times in sections
+/// measured at different times compare through this ratio).
+fn calibration_note(only: &str, before_ms: f64, after_ms: f64, in_doc_ms: Option<f64>) -> String {
+    let against = in_doc_ms.map_or_else(String::new, |d| {
+        format!(
+            " against {d:.1} ms in the first table: times here run about {:.1}× those of the sections measured with it",
+            0.5 * (before_ms + after_ms) / d
+        )
+    });
+    format!(
+        "\n*Measured alone (`bench --only {only}`) on {}; the machine's speed then: the calibration solve (compressor \
+         bearing, isothermal, standard fidelity, median of 7) took {before_ms:.1} ms before the section and {after_ms:.1} ms \
+         after it{against}.*\n",
+        today()
+    )
+}
+
 /// `bench --only SECTION` (or every section when `only` is `None`): replaces that section of
-/// docs/PERFORMANCE.md.
+/// docs/PERFORMANCE.md, closed by a line with the machine's speed at the time ([`calibration_note`]).
 ///
 /// # Errors
 /// An unknown section, a failed measurement, I/O.
 pub fn run_only(root: &Path, only: Option<&str>, repeats: usize) -> Result<()> {
-    match only {
-        None => run(root, repeats.max(1)),
-        Some("frf") => {
-            replace_section(root, "## Controllable lubrication", &super::bench_frf::section(root, repeats.max(1))?)
-        }
-        Some("cavitation") => replace_section(
-            root,
-            super::bench_cavitation::HEADING,
-            &super::bench_cavitation::section(root, repeats.clamp(1, 3))?,
-        ),
-        Some("flex") => {
-            replace_section(root, "## Flexible pads", &super::bench_flex::section(root, repeats.clamp(1, 3))?)
-        }
-        Some("rotor") => {
-            replace_section(root, "## Rotor–bearing analysis", &super::bench_rotor::section(root, repeats.max(1))?)
-        }
-        Some("turbulence") => {
-            replace_section(root, "## Turbulence", &super::bench_turb::section(root, repeats.clamp(1, 3))?)
-        }
-        Some("control") => {
-            replace_section(root, "## Active control", &super::bench_control::section(root, repeats.clamp(1, 3))?)
-        }
-        Some("sommerfeld") => replace_section(
-            root,
-            super::bench_sommerfeld::HEADING,
-            &super::bench_sommerfeld::section(root, repeats.clamp(1, 3))?,
-        ),
-        Some("feeding") => replace_section(
-            root,
-            super::bench_feeding::HEADING,
-            &super::bench_feeding::section(root, repeats.clamp(1, 3))?,
-        ),
-        Some("estimates") => {
-            replace_section(root, super::bench_estimates::HEADING, &super::bench_estimates::section(root)?)
-        }
-        Some(other) => {
-            anyhow::bail!(
-                "--only {other}: known sections: frf, flex, rotor, turbulence, cavitation, control, sommerfeld, \
-                 feeding, estimates"
-            )
-        }
+    const SECTIONS: [&str; 9] =
+        ["frf", "flex", "rotor", "turbulence", "cavitation", "control", "sommerfeld", "feeding", "estimates"];
+    let Some(only) = only else { return run(root, repeats.max(1)) };
+    if !SECTIONS.contains(&only) {
+        anyhow::bail!("--only {only}: known sections: {}", SECTIONS.join(", "));
+    }
+    let few = repeats.clamp(1, 3);
+    let before = calibration_ms(root)?;
+    let (heading, section) = match only {
+        "frf" => ("## Controllable lubrication", super::bench_frf::section(root, repeats.max(1))?),
+        "cavitation" => (super::bench_cavitation::HEADING, super::bench_cavitation::section(root, few)?),
+        "flex" => ("## Flexible pads", super::bench_flex::section(root, few)?),
+        "rotor" => ("## Rotor–bearing analysis", super::bench_rotor::section(root, repeats.max(1))?),
+        "turbulence" => ("## Turbulence", super::bench_turb::section(root, few)?),
+        "control" => ("## Active control", super::bench_control::section(root, few)?),
+        "sommerfeld" => (super::bench_sommerfeld::HEADING, super::bench_sommerfeld::section(root, few)?),
+        "feeding" => (super::bench_feeding::HEADING, super::bench_feeding::section(root, few)?),
+        _ => (super::bench_estimates::HEADING, super::bench_estimates::section(root)?),
+    };
+    let after = calibration_ms(root)?;
+    let doc = std::fs::read_to_string(root.join("docs").join("PERFORMANCE.md")).unwrap_or_default();
+    let note = calibration_note(only, before, after, calibration_in_doc(&doc));
+    replace_section(root, heading, &format!("{}\n{note}", section.trim_end()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A section measured alone closes with the calibration solve's times, against the same solve in the
+    /// first table (45.8 ms there, 120 and 130 ms now: 2.7×); without a first table, no ratio.
+    #[test]
+    fn a_section_measured_alone_says_the_machines_speed_against_the_first_table() {
+        let doc = "| compressor-bearing | preview | 1620 | 10.5 ms | 3.23 % |\n\
+                   | compressor-bearing | standard | 4940 | 45.8 ms | 1.19 % |\n\
+                   | compressor-bearing THD BC1 | standard | 4940 | 179.8 ms | 1.59 % |\n";
+        assert_eq!(calibration_in_doc(doc), Some(45.8));
+        assert_eq!(calibration_in_doc("# Performance\n"), None);
+        let note = calibration_note("feeding", 120.0, 130.0, calibration_in_doc(doc));
+        assert!(note.contains("`bench --only feeding`"), "{note}");
+        assert!(note.contains("120.0 ms before the section and 130.0 ms after it against 45.8 ms"), "{note}");
+        assert!(note.contains("about 2.7×"), "{note}");
+        assert!(!calibration_note("feeding", 120.0, 130.0, None).contains("first table"));
     }
 }
