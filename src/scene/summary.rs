@@ -80,7 +80,7 @@ pub fn sig4(x: f64) -> String {
 pub fn summary(s: &Solution) -> Summary {
     let f = &s.flows_m3_per_s;
     let r = &s.report;
-    let operating = Group {
+    let mut operating = Group {
         title: "Operating point",
         rows: vec![
             row("Speed", sig4(s.derived.speed_rpm), "rpm", "Journal speed Ω."),
@@ -96,14 +96,12 @@ pub fn summary(s: &Solution) -> Summary {
             row("h_min", format!("{:.2}", UM.from_si(s.h_min_m)), "µm", "Smallest film thickness on any pad: the margin against metal contact."),
             row("p_max", format!("{:.3}", MPA.from_si(s.p_max_pa)), "MPa", "Largest film pressure on any pad (babbitt fatigue limit is typically a few MPa)."),
             match &s.thermal {
+                // Film and pad on rows of their own: one value per row keeps the unit column in view.
                 Some(t) => row(
-                    "T_max",
-                    match t.t_max_pad_c {
-                        Some(tp) => format!("{:.1} film, {tp:.1} pad", t.t_max_film_c),
-                        None => format!("{:.1} film", t.t_max_film_c),
-                    },
+                    "T_max film",
+                    format!("{:.1}", t.t_max_film_c),
                     "°C",
-                    "Largest film temperature and largest pad (surface or body) temperature from the thermal model.",
+                    "Largest film temperature from the thermal model.",
                 ),
                 None => row(
                     "T_max",
@@ -125,6 +123,11 @@ pub fn summary(s: &Solution) -> Summary {
             row("Film viscosity", sig4(MPA_S.from_si(s.derived.film_viscosity_pa_s)), "mPa·s", "Viscosity of the isothermal film, from the lubricant's law at the film temperature."),
         ],
     };
+    if let Some(tp) = s.thermal.as_ref().and_then(|t| t.t_max_pad_c) {
+        let at = operating.rows.iter().position(|r| r.label == "T_max film").map_or(operating.rows.len(), |i| i + 1);
+        let meaning = "Largest pad temperature (surface or body) from the thermal model.";
+        operating.rows.insert(at, row("T_max pad", format!("{tp:.1}"), "°C", meaning));
+    }
     let flows = Group {
         title: "Flows",
         rows: vec![

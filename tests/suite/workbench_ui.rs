@@ -246,7 +246,10 @@ fn film_temperature_view_of_a_thermal_solve() {
     // Hotter than the 40 °C supply, well below a babbitt limit.
     assert!(t.t_max_film_c > 55.0 && t.t_max_film_c < 100.0, "{}", t.t_max_film_c);
     h.get_by_label_contains("Colour scale: Film temperature");
-    h.get_by_label_contains(&format!("{:.1} film", t.t_max_film_c));
+    // Film and pad maxima on rows of their own, each with its unit in view.
+    h.get_by_label("T_max film");
+    h.get_by_label("T_max pad");
+    assert!(h.query_all_by_label(&format!("{:.1}", t.t_max_film_c)).count() > 0, "T_max film {}", t.t_max_film_c);
     h.get_by_label_contains("Thermal (THD)");
     snapshot(&mut h, "fields_film_temperature_fillon");
 }
