@@ -132,7 +132,17 @@ pub fn summary(s: &Solution) -> Summary {
         title: "Flows",
         rows: vec![
             row("Leading edges in", format!("{:.3}", L_PER_MIN.from_si(f.leading_edges_in)), "l/min", "Oil drawn into the films at the pads' leading edges."),
-            row("Orifices in", format!("{:.3}", L_PER_MIN.from_si(f.orifices_in)), "l/min", "Net flow injected through the orifices (negative: oil leaves through the holes)."),
+            row(
+                "Orifices in",
+                // A bearing without orifices has no orifice flow to show (not a measured 0.000).
+                if s.pads.iter().all(|p| p.orifice_flows_m3_per_s.is_empty()) {
+                    "— (no orifices)".into()
+                } else {
+                    format!("{:.3}", L_PER_MIN.from_si(f.orifices_in))
+                },
+                "l/min",
+                "Net flow injected through the orifices (negative: oil leaves through the holes).",
+            ),
             row("Trailing edges out", format!("{:.3}", L_PER_MIN.from_si(f.trailing_edges_out)), "l/min", "Oil carried out at the trailing edges (partly carried over to the next pad)."),
             row("Sides out", format!("{:.3}", L_PER_MIN.from_si(f.sides_out)), "l/min", "Side leakage at the axial ends: this is the flow the supply must replace."),
             row("Into cavitation", format!("{:.3}", L_PER_MIN.from_si(f.to_cavitation)), "l/min", "Net flow from the full film into cavitated (ruptured) regions; negative where more oil re-enters the full film at reformation than leaves it at rupture."),

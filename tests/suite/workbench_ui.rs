@@ -249,6 +249,8 @@ fn film_temperature_view_of_a_thermal_solve() {
     // Film and pad maxima on rows of their own, each with its unit in view.
     h.get_by_label("T_max film");
     h.get_by_label("T_max pad");
+    // Fillon's bearing has no orifices: no orifice flow is shown as if measured.
+    h.get_by_label("— (no orifices)");
     assert!(h.query_all_by_label(&format!("{:.1}", t.t_max_film_c)).count() > 0, "T_max film {}", t.t_max_film_c);
     h.get_by_label_contains("Thermal (THD)");
     snapshot(&mut h, "fields_film_temperature_fillon");
