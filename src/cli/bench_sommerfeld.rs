@@ -43,7 +43,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
             }
             times.sort_by(f64::total_cmp);
             let ms = 1e3 * times[times.len() / 2];
-            let Some((table, g)) = last else { continue };
+            let Some((table, g, _)) = last else { continue };
             let failed = table.failures().len();
             let deviation =
                 reference_deviation(&chart(&table, &g), &g).map_or("—".into(), |d| format!("{:.2} %", 100.0 * d));

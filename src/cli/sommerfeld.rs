@@ -25,11 +25,12 @@ pub struct SommerfeldArgs<'a> {
     pub json: Option<PathBuf>,
 }
 
-/// The chart's sweep solved: the table of rows and the geometry the chart reads.
+/// The chart's sweep solved: the table of rows and the geometry the chart reads. On Ctrl-C the table holds
+/// the points finished before it, in sweep order, and the count asked for is returned beside it.
 ///
 /// # Errors
 /// An unreadable or invalid case, a point count outside [2, [`MAX_POINTS`]].
-pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTable, ChartGeometry)> {
+pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTable, ChartGeometry, usize)> {
     let (_, case) = super::read_case(case_path, set)?;
     let text = super::inputs::read_text(case_path, "case file")?;
     let mut spec = SweepSpec::sommerfeld_chart(&case);
@@ -41,8 +42,12 @@ pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTa
     super::inputs::check_work(&estimate, f64::INFINITY)?;
     let mut runner = Runner::new(text, set.to_vec(), true);
     let mut table = SweepTable::new(&spec.key);
-    let mut pb = super::sweep::progress(values.len(), "points");
+    let asked = values.len();
+    let mut pb = super::sweep::progress(asked, "points");
     for (i, x) in values.into_iter().enumerate() {
+        if super::interrupt::requested() {
+            break;
+        }
         pb.set_message(format!("{} = {x:.4}", spec.key));
         let (row, _) = runner.row(i, &point_override(&spec.key, x));
         if row.result.is_err() {
@@ -52,15 +57,20 @@ pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTa
         pb.inc(1);
     }
     pb.finish_and_clear();
-    Ok((table, ChartGeometry::of(&case)))
+    Ok((table, ChartGeometry::of(&case), asked))
 }
 
-/// Runs the sweep and writes the chart.
+/// Runs the sweep and writes the chart (on Ctrl-C, the chart of the points finished, then
+/// [`super::interrupt::Interrupted`]).
 ///
 /// # Errors
-/// See [`sweep`]; every point failed; an output that cannot be written.
+/// See [`sweep`]; every point failed; an output that cannot be written; Ctrl-C.
 pub fn run(args: &SommerfeldArgs<'_>) -> Result<()> {
-    let (table, g) = sweep(args.case, args.set, args.points)?;
+    let (table, g, asked) = sweep(args.case, args.set, args.points)?;
+    let done = table.points.len();
+    if done < asked && table.points.iter().all(|(_, row)| row.result.is_err()) {
+        return Err(super::interrupt::Interrupted::new(done, asked, "points", &[]).into());
+    }
     let failed = table.failures();
     if failed.len() == table.points.len() {
         bail!("every point of the chart's sweep failed ({} of {}): {}", failed.len(), failed.len(), failed[0].1);
@@ -88,6 +98,14 @@ pub fn run(args: &SommerfeldArgs<'_>) -> Result<()> {
         text.push('\n');
         write_file(p, text.as_bytes())?;
         announce(p);
+    }
+    if done < asked {
+        let stdout = Path::new("-");
+        let outputs: Vec<&Path> = match (&args.csv, &args.json) {
+            (None, None) => vec![stdout],
+            (csv, json) => [csv.as_deref(), json.as_deref()].into_iter().flatten().collect(),
+        };
+        return Err(super::interrupt::Interrupted::new(done, asked, "points", &outputs).into());
     }
     Ok(())
 }

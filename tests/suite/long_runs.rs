@@ -451,3 +451,33 @@ fn ctrl_c_on_the_critical_speed_map_stops_at_the_next_eigen_solution_and_keeps_t
     assert_eq!(text.lines().filter(|l| l.starts_with("mode1,")).count(), done, "{text}");
     assert_eq!(text.lines().filter(|l| l.starts_with("bearing0_kxx,")).count(), 2, "{text}");
 }
+
+/// `sommerfeld` did not look at Ctrl-C between its points (up to 101 solves): it now stops after the point
+/// being solved, writes the chart of the points finished and says how many (exit status 130).
+#[test]
+fn ctrl_c_on_the_sommerfeld_chart_writes_the_chart_of_the_points_solved() {
+    let dir = temp_dir("sommerfeld");
+    let out = dir.join("chart.json");
+    let case = common::case_path("compressor-bearing.toml");
+    let (code, err) = interrupted(
+        &[
+            "sommerfeld",
+            case.to_str().unwrap(),
+            "--points",
+            "101",
+            "--set",
+            "mesh.fidelity=\"preview\"",
+            "--json",
+            out.to_str().unwrap(),
+        ],
+        2,
+    );
+    assert_eq!(code, Some(130), "{err}");
+    let (done, of) = done_of(&err, "points");
+    assert_eq!(of, 101, "{err}");
+    assert!((2..101).contains(&done), "{err}");
+    assert!(err.contains(&format!("their results are in {}", out.display())), "{err}");
+    let chart: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let first = &chart["plots"][0]["curves"][0]["points"];
+    assert_eq!(first.as_array().map(Vec::len), Some(done), "one chart point per point solved: {first}");
+}

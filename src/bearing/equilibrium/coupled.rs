@@ -246,9 +246,7 @@ fn recheck_unloaded(
             continue;
         }
         rechecked[k] = true;
-        ctx.thorough_onset = true;
-        let placed = replace_pad(model, k, u, ctx);
-        ctx.thorough_onset = false;
+        let placed = ctx.with_thorough_onset(true, |ctx| replace_pad(model, k, u, ctx));
         states[k] = placed?;
         if ctx.share(&states[k]) >= UNLOADED_SHARE {
             loaded_again = true;
@@ -373,9 +371,7 @@ fn advance_until_loaded(
             }
             let h = model.pads[k].film.h_min().0;
             if h < last_h_min[k] {
-                ctx.thorough_onset = true;
-                let placed = replace_pad(model, k, &mut trial, ctx);
-                ctx.thorough_onset = false;
+                let placed = ctx.with_thorough_onset(true, |ctx| replace_pad(model, k, &mut trial, ctx));
                 st2[k] = placed?;
             }
             last_h_min[k] = h;

@@ -77,6 +77,15 @@ pub(crate) struct Ctx<'a> {
 }
 
 impl<'a> Ctx<'a> {
+    /// Runs `f` with the thorough onset search (`thorough_onset`) set to `on`, and restores the setting it
+    /// found afterwards, whatever `f` returns.
+    pub fn with_thorough_onset<T>(&mut self, on: bool, f: impl FnOnce(&mut Self) -> T) -> T {
+        let before = std::mem::replace(&mut self.thorough_onset, on);
+        let out = f(self);
+        self.thorough_onset = before;
+        out
+    }
+
     pub fn new(model: &BearingModel, op: &'a OperatingPoint, params: EquilibriumParams, started: Instant) -> Self {
         let budget = Budget::FilmSolves { per_pad: params.max_film_solves_per_pad, pads: model.pads.len().max(1) };
         Self {

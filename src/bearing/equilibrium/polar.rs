@@ -122,9 +122,8 @@ impl Search<'_, '_, '_> {
         let dir = [psi.cos(), psi.sin()];
         let journal = [s * dir[0], s * dir[1]];
         let warm = self.warm.clone();
-        self.ctx.thorough_onset = self.thorough;
-        let placed = solve_all_pads_open(self.model, journal, &warm, self.ctx);
-        self.ctx.thorough_onset = false;
+        let model = &mut *self.model;
+        let placed = self.ctx.with_thorough_onset(self.thorough, |ctx| solve_all_pads_open(model, journal, &warm, ctx));
         match placed {
             Ok((states, force)) => {
                 let u = assemble_u(self.model, journal, &states);
@@ -179,9 +178,7 @@ impl Search<'_, '_, '_> {
             if !st.unloaded || pm.dofs().is_empty() || self.ctx.held(k) {
                 continue;
             }
-            self.ctx.thorough_onset = true;
-            let placed = solve_pad(pm, k, journal, &st.q, self.ctx);
-            self.ctx.thorough_onset = false;
+            let placed = self.ctx.with_thorough_onset(true, |ctx| solve_pad(pm, k, journal, &st.q, ctx));
             match placed {
                 Ok(p) if self.ctx.share(&p) >= UNLOADED_SHARE => return Ok(true),
                 Ok(_) => {}
@@ -344,10 +341,7 @@ pub(super) fn polar_search(
     ctx: &mut Ctx<'_>,
     cancel: &dyn Cancel,
 ) -> Result<Result<Found, Stall>, SolveError> {
-    let thorough = std::mem::replace(&mut ctx.thorough_onset, false);
-    let found = search(model, centred, ctx, cancel);
-    ctx.thorough_onset = thorough;
-    found
+    ctx.with_thorough_onset(false, |ctx| search(model, centred, ctx, cancel))
 }
 
 fn search(
