@@ -379,6 +379,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     md.push_str(&super::bench_control::section(root, repeats.min(3))?);
     md.push_str(&super::bench_sommerfeld::section(root, repeats.min(3))?);
     md.push_str(&super::bench_feeding::section(root, repeats.min(3))?);
+    md.push_str(&super::bench_flows::section(root)?);
     md.push_str(&super::bench_estimates::section(root)?);
     let _ = writeln!(
         md,
@@ -494,8 +495,8 @@ fn calibration_note(only: &str, before_ms: f64, after_ms: f64, in_doc_ms: Option
 /// # Errors
 /// An unknown section, a failed measurement, I/O.
 pub fn run_only(root: &Path, only: Option<&str>, repeats: usize) -> Result<()> {
-    const SECTIONS: [&str; 9] =
-        ["frf", "flex", "rotor", "turbulence", "cavitation", "control", "sommerfeld", "feeding", "estimates"];
+    const SECTIONS: [&str; 10] =
+        ["frf", "flex", "rotor", "turbulence", "cavitation", "control", "sommerfeld", "feeding", "flows", "estimates"];
     let Some(only) = only else { return run(root, repeats.max(1)) };
     if !SECTIONS.contains(&only) {
         anyhow::bail!("--only {only}: known sections: {}", SECTIONS.join(", "));
@@ -511,6 +512,7 @@ pub fn run_only(root: &Path, only: Option<&str>, repeats: usize) -> Result<()> {
         "control" => ("## Active control", super::bench_control::section(root, few)?),
         "sommerfeld" => (super::bench_sommerfeld::HEADING, super::bench_sommerfeld::section(root, few)?),
         "feeding" => (super::bench_feeding::HEADING, super::bench_feeding::section(root, few)?),
+        "flows" => (super::bench_flows::HEADING, super::bench_flows::section(root)?),
         _ => (super::bench_estimates::HEADING, super::bench_estimates::section(root)?),
     };
     let after = calibration_ms(root)?;

@@ -14,6 +14,7 @@ mod bench_control;
 mod bench_estimates;
 mod bench_feeding;
 mod bench_flex;
+mod bench_flows;
 mod bench_frf;
 mod bench_rotor;
 mod bench_sommerfeld;

@@ -76,8 +76,14 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
     if summary.warnings.is_empty() {
         ui.label(RichText::new("No solver warnings").weak());
     } else {
+        // Wrapped inside the visible panel: the scroll area's content may be wider (a pinned comparison),
+        // and a long warning must not run under the window's edge.
+        let width = (ui.clip_rect().right() - ui.cursor().left() - 8.0).max(120.0);
         for w in &summary.warnings {
-            ui.label(RichText::new(format!("Warning: {w}")).color(ink::WARNING.of(ui)));
+            ui.scope(|ui| {
+                ui.set_max_width(width);
+                ui.add(egui::Label::new(RichText::new(format!("Warning: {w}")).color(ink::WARNING.of(ui))).wrap());
+            });
         }
     }
 }

@@ -8,6 +8,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::bearing::report::error::{SolveError, StallReason};
+use crate::model::Cavitation;
 use crate::physics::reynolds::FilmWarning;
 
 /// How an equilibrium was found (in the order the solver tries them).
@@ -105,6 +106,9 @@ pub enum Warning {
     NoLeadingEdgeInflow { pad: usize },
     /// The energy balance of the converged state closes only to this fraction.
     EnergyBalance { closure: f64 },
+    /// A cavitation condition that does not conserve mass counts gas as oil in cavitated zones: the oil it
+    /// creates there [m³/s] and its share of the leading-edge inflow, with the pads where it does.
+    CavitationCreatesOil { condition: Cavitation, pads: Vec<usize>, created_m3_s: f64, share_of_inflow: f64 },
 }
 
 impl std::fmt::Display for Warning {
@@ -223,6 +227,24 @@ impl std::fmt::Display for Warning {
             ),
             Self::EnergyBalance { closure } => {
                 write!(f, "energy balance closes to {:.2} % only", 100.0 * closure)
+            }
+            Self::CavitationCreatesOil { condition, pads, created_m3_s, share_of_inflow } => {
+                let name = match condition {
+                    Cavitation::Gumbel => "Gümbel",
+                    _ => "Reynolds",
+                };
+                let list: Vec<String> = pads.iter().map(ToString::to_string).collect();
+                write!(
+                    f,
+                    "the {name} cavitation condition counts the gas in the cavitated zones of pad{} {} as oil: it \
+                     creates {:.3} L/min there ({:.1} % of the leading-edge inflow), so the flows through those zones \
+                     (edges, orifices, into cavitation) are not the oil's and do not converge with the mesh; \
+                     physics.cavitation = \"jfo\" conserves the oil",
+                    if pads.len() == 1 { "" } else { "s" },
+                    list.join(", "),
+                    crate::units::L_PER_MIN.from_si(*created_m3_s),
+                    100.0 * share_of_inflow
+                )
             }
         }
     }

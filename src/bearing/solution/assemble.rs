@@ -8,7 +8,7 @@
 
 use std::f64::consts::TAU;
 
-use crate::model::{Case, LoadSpec};
+use crate::model::{Case, Cavitation, LoadSpec};
 
 use crate::bearing::equilibrium::pivots::HertzPivots;
 use crate::bearing::equilibrium::Equilibrium;
@@ -157,6 +157,7 @@ pub fn assemble_solution(
     let mut flows = BearingFlows::default();
     let mut power = 0.0;
     let mut torque = 0.0;
+    let mut created = Vec::with_capacity(model.pads.len());
     for (k, (pm, st)) in model.pads.iter().zip(&eq.pads).enumerate() {
         let inp = op.film_inputs(k);
         let film = &pm.film;
@@ -189,6 +190,7 @@ pub fn assemble_solution(
         flows.sides_out += f.sides_out;
         flows.orifices_in += f.orifice_in;
         flows.to_cavitation += f.to_cavitation;
+        created.push(film.created_at_cavity());
         power += pw;
         torque += drag * r;
         #[allow(clippy::cast_precision_loss)]
@@ -237,6 +239,7 @@ pub fn assemble_solution(
     let mut report = eq.report.clone();
     let k_static = reduce(&full, 0.0).k_n_per_m;
     report.warnings.extend(static_stability_warning(&k_static).into_iter().chain(zero_stiffness_warning(&k_static)));
+    report.warnings.extend(created_oil_warning(case.physics.cavitation, &created, flows.leading_edges_in));
     let load_angle = match op.load {
         LoadSpec::Force { angle_rad, magnitude_n } if magnitude_n > 0.0 => angle_rad,
         _ => load[1].atan2(load[0]),
@@ -283,6 +286,24 @@ pub fn assemble_solution(
         annotate_pivots(&mut sol, p);
     }
     sol
+}
+
+/// Share of the leading-edge inflow above which the oil a non-conserving cavitation condition creates is
+/// reported ([`Warning::CavitationCreatesOil`]), and a pad's share above which the warning names it.
+const CREATED_OIL_SHARE: f64 = 0.01;
+const CREATED_OIL_PAD_SHARE: f64 = 0.001;
+
+/// [`Warning::CavitationCreatesOil`] when the pads' cavitated zones create more than
+/// [`CREATED_OIL_SHARE`] of the leading-edge inflow (never with the mass-conserving option, whose
+/// cavitated nodes balance their flows).
+fn created_oil_warning(condition: Cavitation, created: &[f64], inflow: f64) -> Option<Warning> {
+    let total: f64 = created.iter().sum();
+    if condition == Cavitation::Jfo || inflow <= 0.0 || total <= CREATED_OIL_SHARE * inflow {
+        return None;
+    }
+    let pads =
+        created.iter().enumerate().filter(|(_, c)| **c > CREATED_OIL_PAD_SHARE * inflow).map(|(k, _)| k).collect();
+    Some(Warning::CavitationCreatesOil { condition, pads, created_m3_s: total, share_of_inflow: total / inflow })
 }
 
 /// The pad's modal coordinates `PadDof::Mode(i)`, in mode order.

@@ -24,6 +24,22 @@ impl PadFilm {
         f
     }
 
+    /// Oil the cavitation condition puts into the film at its interior nodes [m³/s, whole pad]: the sum of
+    /// the nodal flows from those nodes into the film (their negative outflows). The Reynolds and Gümbel
+    /// conditions hold `p = 0` in a cavitated zone and count its gap as full of oil, so the Couette flow of a
+    /// diverging film and a reformation edge draw oil there that is gas in the bearing (and an orifice in
+    /// the zone drains it). With the mass-conserving option it is round-off.
+    #[must_use]
+    pub fn created_at_cavity(&self) -> f64 {
+        let g = &self.geom;
+        self.r
+            .iter()
+            .zip(&g.sites)
+            .filter(|(_, site)| matches!(site, NodeSite::Interior | NodeSite::Symmetry))
+            .map(|(r, _)| (g.sym * r / 12.0).max(0.0))
+            .sum()
+    }
+
     /// Flow work of the oil entering through a pressurised leading edge [W, whole pad]: `Σ p_i q_i` over the
     /// leading-edge nodes with their consistent nodal inflows, `p_le Q_in` (0 with an ambient leading edge).
     /// The film dissipates it with the journal's shear power.
