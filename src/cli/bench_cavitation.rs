@@ -71,11 +71,12 @@ fn where_the_time_goes(reynolds: &[CpuCost], jfo: &[CpuCost]) -> String {
         })
         .collect();
     format!(
-        "Where the JFO time goes (CPU, JFO against Reynolds): {}. A factorisation of the mass-conserving film is a \
-         sparse LU of the non-symmetric mixed pressure/film-fraction matrix (faer's supernodal LU, whose symbolic \
-         structure bounds the fill of any row pivoting), against a Cholesky factorisation of the symmetric Reynolds \
-         matrix; the counts include the Reynolds active-set solve that starts each pad's first mass-conserving \
-         solve.",
+        "Where the JFO time goes (CPU, JFO against Reynolds): {}. A factorisation of the mass-conserving film is an \
+         LDU factorisation of the non-symmetric mixed pressure/film-fraction matrix without row exchanges, on the \
+         fill of the Reynolds matrix's Cholesky factor (about twice a Cholesky factorisation's arithmetic, done \
+         simplicially; a pivoting sparse LU takes over a refused pivot), against a Cholesky factorisation of the \
+         symmetric Reynolds matrix (supernodal from 2500 nodes per pad); the counts include the Reynolds \
+         active-set solve that starts each pad's first mass-conserving solve.",
         cells.join("; ")
     )
 }

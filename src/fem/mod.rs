@@ -7,6 +7,7 @@
 
 pub mod eigen;
 pub mod hex8;
+pub mod ldu;
 pub mod lu;
 pub mod quad4;
 pub mod quad_iso;
@@ -14,6 +15,7 @@ pub mod solid8;
 pub mod sparse;
 pub mod supg;
 
+pub use ldu::StaticLdu;
 pub use lu::{GeneralPattern, LuSolver};
 pub use quad4::{RectElement, GAUSS_2X2};
 pub use sparse::{Pattern, SolverError, SpdSolver};

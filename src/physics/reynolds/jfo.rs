@@ -36,9 +36,24 @@
 //! ## Complementarity: a primal–dual active set
 //! Every free node is either pressurised (`P`: unknown `p`, `θ = 1`) or cavitated (`C`: `p = 0`, unknown `θ`).
 //! For given sets the residual equations `r_i = 0` at the free nodes are one linear, non-symmetric system in
-//! the mixed unknowns (`p` on `P`, `θ` on `C`), solved by sparse LU (symbolic analysis once per mesh; the
-//! θ columns scaled to the pressure columns' size; after the first step of a solve, a step that moves few
-//! nodes corrects the factorisation by a low-rank update instead, `jfo_update.rs`). Then nodes with `p < 0` move to `C` and nodes with
+//! the mixed unknowns (`p` on `P`, `θ` on `C`), with the θ columns scaled to the pressure columns' size:
+//!
+//! ```text
+//! [ A_PP   T̃_PC ] [ p_P ]   [ f_P − T̃_P· θ_known ]
+//! [ A_CP   T̃_CC ] [ θ_C ] = [ f_C − T̃_C· θ_known ]
+//! ```
+//!
+//! Whatever the sets, the matrix has the symmetric pattern of the Reynolds matrix, and its blocks need no
+//! pivoting: `A_PP` is the Reynolds option's symmetric positive definite matrix on the pressurised nodes,
+//! `T̃_CC` the upwinded transport (columns diagonally dominant), and the couplings `T̃_PC`, `A_CP` live on
+//! the nodes next to rupture and reformation. So it is factorised `P M Pᵀ = L D U` without row exchanges on
+//! the fill of the Reynolds matrix's Cholesky factor (`fem::ldu`: ordering and structure once per mesh; two
+//! triangular solves per row, about twice a Cholesky factorisation), where a general sparse LU with row
+//! pivoting bounds its fill by the structure of `MᵀM` (the compressor bearing's mass-conserving solve at the
+//! reference level, least of 15 on a loaded machine: 3.6 s with the pivoting LU, 1.5 s without). A refused pivot or an inaccurate solve
+//! falls back to the pivoting LU, counted in [`FilmSolveInfo::pivoted_factorizations`]. After the first step
+//! of a solve, a step that moves few nodes corrects the factorisation by a low-rank update instead
+//! (`jfo_update.rs`). Then nodes with `p < 0` move to `C` and nodes with
 //! `θ > 1` to `P`, until no node moves. The start is the previous solve's sets (warm) or the Reynolds
 //! (Swift–Stieber) active set, which places the ruptures nearly right; the iteration typically ends after
 //! 2–4 steps. At convergence every node satisfies the complementarity conditions and the discrete mass
@@ -56,7 +71,7 @@
 //! perturbations about a converged solve (the stiffness and damping of the film, the FRF's influence
 //! fields).
 
-use crate::fem::{GeneralPattern, LuSolver};
+use crate::fem::{GeneralPattern, LuSolver, StaticLdu};
 use crate::mesh::grid::{NodeSite, PadGrid};
 use crate::physics::reynolds::{FilmError, FilmGeometry, FilmSolveInfo, FilmWarning, Inlet, SampledField};
 
@@ -83,7 +98,16 @@ pub(super) enum ThetaRule {
 #[derive(Debug, Clone)]
 pub(super) struct JfoState {
     pub(super) pattern: GeneralPattern,
-    pub(super) lu: LuSolver,
+    /// The factorisation on the fill of the pattern's Cholesky factor (no row exchanges, `fem::ldu`).
+    pub(super) ldu: StaticLdu,
+    /// The pivoting LU, built on the first matrix the static factorisation refuses (`jfo_update.rs`).
+    pub(super) lu: Option<LuSolver>,
+    /// Whether the pivoting LU holds the current base factorisation.
+    pub(super) base_pivoted: bool,
+    /// Factorisations of the current solve that fell back to the pivoting LU.
+    pub(super) fallbacks: usize,
+    /// Always factorise with the pivoting LU (tests).
+    pub(super) pivot_always: bool,
     /// Position of the transposed entry of every entry.
     pub(super) transpose: Vec<usize>,
     /// (full position of (r, c), full position of (c, r)) of every entry of the symmetric pattern.
@@ -121,7 +145,7 @@ impl JfoState {
     pub(super) fn new(geom: &FilmGeometry) -> Result<Self, FilmError> {
         let n = geom.n_nodes();
         let pattern = GeneralPattern::from_groups(n, geom.elements.iter().map(|e| &e[..]));
-        let lu = LuSolver::new_supernodal(&pattern)?;
+        let ldu = StaticLdu::new(&pattern)?;
         let nnz = pattern.nnz();
         let mut transpose = vec![0; nnz];
         for c in 0..n {
@@ -150,7 +174,11 @@ impl JfoState {
             }
         }
         Ok(Self {
-            lu,
+            ldu,
+            lu: None,
+            base_pivoted: false,
+            fallbacks: 0,
+            pivot_always: false,
             transpose,
             sym_to_full,
             rule,
@@ -259,15 +287,14 @@ impl JfoState {
             }
         }
         let mut info = FilmSolveInfo::default();
+        self.fallbacks = 0;
         let mut rhs = vec![0.0; n];
         let mut known = vec![0.0; n];
         let mut next = out.cavitated.to_vec();
         loop {
             info.active_set_iterations += 1;
             let first = info.active_set_iterations == 1;
-            if self.solve_sets(inp, out, &mut rhs, &mut known, first)? {
-                info.factorizations += 1;
-            }
+            info.factorizations += self.solve_sets(inp, out, &mut rhs, &mut known, first)?;
             let p_scale = out.p.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
             let mut changed = 0;
             for i in (0..n).filter(|&i| self.rule[i] == ThetaRule::Free) {
@@ -297,12 +324,13 @@ impl JfoState {
             out.cavitated.copy_from_slice(&next);
         }
         info.cavitated_nodes = out.cavitated.iter().filter(|&&c| c).count();
+        info.pivoted_factorizations = self.fallbacks;
         Ok(info)
     }
 
     /// One linear solve for the current sets: fills p, θ and the residual r. The first step of a solve
     /// factorises; later steps update the factorisation when few columns changed (`jfo_update.rs`).
-    /// Returns whether it factorised.
+    /// Returns how many times it factorised (0, 1, or 2 after a refused factorisation without row exchanges).
     fn solve_sets(
         &mut self,
         inp: &JfoSolve<'_>,
@@ -310,7 +338,7 @@ impl JfoState {
         rhs: &mut [f64],
         known: &mut [f64],
         first: bool,
-    ) -> Result<bool, FilmError> {
+    ) -> Result<usize, FilmError> {
         let n = self.pattern.n;
         self.fill_matrix(out.cavitated);
         let factorised = self.update_or_factor(out.cavitated, first)?;
@@ -320,7 +348,7 @@ impl JfoState {
         for i in 0..n {
             rhs[i] = if self.rule[i] == ThetaRule::Free { inp.f[i] - rhs[i] } else { 0.0 };
         }
-        self.solve_mixed(rhs)?;
+        let refactorised = self.solve_checked(rhs, out.cavitated)?;
         for i in 0..n {
             if self.rule[i] != ThetaRule::Free {
                 out.p[i] = 0.0;
@@ -339,7 +367,7 @@ impl JfoState {
         for i in 0..n {
             out.r[i] += rhs[i] - inp.f[i];
         }
-        Ok(factorised)
+        Ok(usize::from(factorised) + usize::from(refactorised))
     }
 
     /// The mixed matrix for the cavitated set `cav`: A columns for pressurised nodes, scaled T̃ + S columns

@@ -15,7 +15,7 @@
 //! column a tridiagonal solve over its nodes (the couplings between rows of a column; an outflow node's
 //! column folded into the node it copies), solves the system; whatever the sweep lags (a squeeze, a
 //! periodic sector, a reversed sliding direction) is taken by repeated sweeps until no film fraction
-//! changes. Each evaluation of `g` costs a few passes over the
+//! changes; a sweep that used no film fraction before updating it has solved the system exactly and ends it. Each evaluation of `g` costs a few passes over the
 //! matrix entries instead of a sparse LU.
 //!
 //! A film that is pressure-free under the Reynolds condition (`pressure_free_interval`, whose right-hand side
@@ -48,8 +48,10 @@ struct Family<'a> {
     f: Vec<f64>,
     inlet: Inlet,
     sym: f64,
-    /// Grid columns from the leading edge in the sliding direction, each with its nodes by row.
+    /// Grid columns from the leading edge in the sliding direction, each with its free nodes by row.
     columns: Vec<Vec<usize>>,
+    /// Position in `columns` of every node's grid column.
+    column_at: Vec<usize>,
     /// Column node of every entry.
     col_of: Vec<usize>,
 }
@@ -101,8 +103,9 @@ impl Family<'_> {
         for _ in 0..MAX_SWEEPS {
             let mut change = 0.0_f64;
             let mut size = 0.0_f64;
-            for column in &self.columns {
-                let free: Vec<usize> = column.iter().copied().filter(|&r| s.rule[r] == ThetaRule::Free).collect();
+            // Whether the sweep used a film fraction it had not updated yet (then it is repeated).
+            let mut lagged = false;
+            for (at, free) in self.columns.iter().enumerate() {
                 lower.clear();
                 diag.clear();
                 upper.clear();
@@ -125,6 +128,7 @@ impl Family<'_> {
                             u += t[k];
                         } else {
                             b -= t[k] * theta[c];
+                            lagged |= t[k] != 0.0 && s.rule[c] == ThetaRule::Free && self.column_at[c] >= at;
                         }
                     }
                     lower.push(l);
@@ -150,7 +154,8 @@ impl Family<'_> {
             if !(change.is_finite() && size.is_finite()) {
                 return None;
             }
-            if change <= 1e-14 * size.max(1.0) {
+            // A sweep that lagged nothing solved the system exactly (the usual upwinded film without squeeze).
+            if !lagged || change <= 1e-14 * size.max(1.0) {
                 return Some(());
             }
         }
@@ -244,17 +249,28 @@ impl PadFilm {
             }
         }
         let grid = &g.grid;
-        let mut columns: Vec<Vec<usize>> =
-            (0..grid.n_cols()).map(|i| (0..grid.n_rows()).map(|j| grid.node(i, j)).collect()).collect();
+        let mut columns: Vec<Vec<usize>> = (0..grid.n_cols())
+            .map(|i| {
+                (0..grid.n_rows()).map(|j| grid.node(i, j)).filter(|&r| state.rule[r] == ThetaRule::Free).collect()
+            })
+            .collect();
+        let mut order: Vec<usize> = (0..grid.n_cols()).collect();
         if inp.surface_speed < 0.0 {
             columns.reverse();
+            order.reverse();
+        }
+        let mut column_at = vec![0; g.n_nodes()];
+        for (at, &i) in order.iter().enumerate() {
+            for j in 0..grid.n_rows() {
+                column_at[grid.node(i, j)] = at;
+            }
         }
         let p = &state.pattern;
         let mut col_of = vec![0; nnz];
         for c in 0..p.n {
             col_of[p.col_ptr[c]..p.col_ptr[c + 1]].fill(c);
         }
-        let family = Family { state, t0, t1, squeeze, f, inlet: inp.inlet, sym: g.sym, columns, col_of };
+        let family = Family { state, t0, t1, squeeze, f, inlet: inp.inlet, sym: g.sym, columns, column_at, col_of };
         let mut t = vec![0.0; nnz];
         let mut theta = vec![0.0; p.n];
         let mut g_at = |x: f64| family.excess(x, &mut t, &mut theta);

@@ -26,11 +26,16 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::fem::LuSolver;
 use crate::physics::reynolds::jfo::{JfoState, ThetaRule};
 use crate::physics::reynolds::FilmError;
 
 /// Most changed columns handled by an update before a refactorisation (each costs one back-substitution).
 pub(super) const MAX_UPDATE_COLUMNS: usize = 12;
+
+/// Largest accepted residual of a solve after a factorisation without row exchanges, relative to the
+/// size of the products it sums (a stable factorisation reaches ~1e-15).
+const RESIDUAL_TOL: f64 = 1e-10;
 
 /// Smallest pivot of the capacitance matrix, relative to its largest entry, accepted for an update.
 const MIN_PIVOT: f64 = 1e-8;
@@ -64,11 +69,74 @@ impl JfoState {
                 }
             }
         }
-        self.lu.factor(&self.pattern, &self.m)?;
+        self.factor_base(cav, false)?;
+        Ok(true)
+    }
+
+    /// Factorises `m` as the new base: without row exchanges (`fem::ldu`) unless `pivoted` or the static
+    /// factorisation refuses a pivot, then with the pivoting LU (counted in `fallbacks`).
+    fn factor_base(&mut self, cav: &[bool], pivoted: bool) -> Result<(), FilmError> {
+        self.update = None;
+        self.base_pivoted = pivoted || self.pivot_always || self.ldu.factor(&self.m).is_err();
+        if self.base_pivoted {
+            self.fallbacks += 1;
+            if self.lu.is_none() {
+                self.lu = Some(LuSolver::new_supernodal(&self.pattern)?);
+            }
+            let Some(lu) = self.lu.as_mut() else { unreachable!("built above") };
+            lu.factor(&self.pattern, &self.m)?;
+        }
         self.m_base.copy_from_slice(&self.m);
         self.base_cav.copy_from_slice(cav);
-        self.update = None;
+        Ok(())
+    }
+
+    /// Solves with the base factorisation (either kind).
+    fn base_solve(&mut self, rhs: &mut [f64], n: usize) -> Result<(), FilmError> {
+        match (&mut self.lu, self.base_pivoted) {
+            (Some(lu), true) => lu.solve_in_place(rhs, n)?,
+            _ => self.ldu.solve_in_place(rhs, n)?,
+        }
+        Ok(())
+    }
+
+    /// Solves `M x = b` in place (`rhs` holds b, one column) and checks the residual: when
+    /// `max |M x − b| > RESIDUAL_TOL · max (|M| |x| + |b|)` after a factorisation without row exchanges, the
+    /// matrix is factorised again with the pivoting LU (counted) and solved again. Returns whether it
+    /// factorised.
+    pub(super) fn solve_checked(&mut self, rhs: &mut [f64], cav: &[bool]) -> Result<bool, FilmError> {
+        let b = rhs.to_vec();
+        self.solve_mixed(rhs)?;
+        if self.base_pivoted || self.residual(&b, rhs) <= RESIDUAL_TOL {
+            return Ok(false);
+        }
+        self.factor_base(cav, true)?;
+        rhs.copy_from_slice(&b);
+        self.solve_mixed(rhs)?;
         Ok(true)
+    }
+
+    /// `max |M x − b| / max (|M| |x| + |b|)` for the matrix in `m`.
+    fn residual(&self, b: &[f64], x: &[f64]) -> f64 {
+        let p = &self.pattern;
+        let mut r: Vec<f64> = b.iter().map(|v| -v).collect();
+        let mut size: Vec<f64> = b.iter().map(|v| v.abs()).collect();
+        for c in 0..p.n {
+            for k in p.col_ptr[c]..p.col_ptr[c + 1] {
+                let v = self.m[k] * x[c];
+                r[p.row_idx[k]] += v;
+                size[p.row_idx[k]] += v.abs();
+            }
+        }
+        let worst = r.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let scale = size.iter().fold(0.0_f64, |m, &v| m.max(v));
+        if worst.is_finite() && scale > 0.0 {
+            worst / scale
+        } else if worst == 0.0 {
+            0.0
+        } else {
+            f64::INFINITY
+        }
     }
 
     /// `W` and the capacitance LU for the changed columns, or `None` when the capacitance matrix is near
@@ -82,7 +150,7 @@ impl JfoState {
                 w[c * n + self.pattern.row_idx[p]] = self.m[p] - self.m_base[p];
             }
         }
-        self.lu.solve_in_place(&mut w, n)?;
+        self.base_solve(&mut w, n)?;
         let cap = DMatrix::from_fn(k, k, |r, c| f64::from(u8::from(r == c)) + w[c * n + nodes[r]]);
         let big = cap.amax();
         let capacitance = cap.lu();
@@ -99,7 +167,7 @@ impl JfoState {
     /// the current update.
     pub(super) fn solve_mixed(&mut self, rhs: &mut [f64]) -> Result<(), FilmError> {
         let n = self.pattern.n;
-        self.lu.solve_in_place(rhs, n)?;
+        self.base_solve(rhs, n)?;
         if let Some(u) = &self.update {
             for col in rhs.chunks_mut(n) {
                 let b = DVector::from_iterator(u.nodes.len(), u.nodes.iter().map(|&j| col[j]));
@@ -112,5 +180,14 @@ impl JfoState {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+impl crate::physics::reynolds::PadFilm {
+    /// Makes every mass-conserving factorisation of this film use the pivoting LU (tests compare the two).
+    pub(super) fn always_pivot(&mut self) {
+        let state = self.jfo.get_or_insert_with(|| Box::new(JfoState::new(&self.geom).expect("film state")));
+        state.pivot_always = true;
     }
 }

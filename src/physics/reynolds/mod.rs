@@ -154,6 +154,9 @@ pub struct FilmSolveInfo {
     pub factorizations: usize,
     pub active_set_iterations: usize,
     pub cavitated_nodes: usize,
+    /// Mass-conserving cavitation: factorisations (of `factorizations`) that the factorisation without row
+    /// exchanges refused or solved inaccurately, done again with the pivoting LU (`jfo_update.rs`).
+    pub pivoted_factorizations: usize,
     /// Largest complementarity violation relative to the peak pressure (0 when converged).
     pub complementarity: f64,
     pub warnings: Vec<FilmWarning>,
