@@ -299,16 +299,7 @@ impl WorkbenchApp {
 
     /// Submits the wanted request when it changed, and takes in the worker's events.
     fn drive_solver(&mut self) {
-        if let Some(req) = self.wanted_request() {
-            // While a value is dragged, let the running (preview) solve finish and then take the latest
-            // value, so results keep coming during the drag; otherwise a newer request cancels at once.
-            let hold = self.dragging && self.worker.busy();
-            if self.submitted.as_ref() != Some(&req) && !hold {
-                self.worker.submit(req.clone());
-                self.submitted = Some(req);
-                self.status = Status::Solving { stage: None, fraction: 0.0 };
-            }
-        }
+        self.submit_wanted();
         for event in self.worker.poll(WEB_SOLVE_BUDGET_S) {
             match event {
                 Event::Progress { stage, fraction, .. } => {
@@ -323,12 +314,28 @@ impl WorkbenchApp {
                 Event::Failed { error, .. } => self.status = Status::Failed(error),
             }
         }
+        // A dragged value that waited for the running solve goes now, in the frame that solve came back:
+        // no frame shows the older value's result as solved.
+        self.submit_wanted();
         // A pin's re-solve runs when the edited case is solved (on the web: in the frames it leaves free).
         if !self.worker.busy() {
             self.pinned.poll(WEB_SOLVE_BUDGET_S);
             self.pinned.complete(&mut self.persisted.pins);
         }
         self.pinned.retain(&self.persisted.pins);
+    }
+
+    /// Submits the request the screen needs when it differs from the last one submitted. While a value is
+    /// dragged, the running (preview) solve finishes first and then the latest value is taken, so results
+    /// keep coming during the drag; otherwise a newer request cancels the running one at once.
+    fn submit_wanted(&mut self) {
+        let Some(req) = self.wanted_request() else { return };
+        let hold = self.dragging && self.worker.busy();
+        if self.submitted.as_ref() != Some(&req) && !hold {
+            self.worker.submit(req.clone());
+            self.submitted = Some(req);
+            self.status = Status::Solving { stage: None, fraction: 0.0 };
+        }
     }
 
     fn accept(&mut self, outcome: Outcome) {
@@ -347,15 +354,36 @@ impl WorkbenchApp {
         });
     }
 
-    /// The case of the shown result differs from the edited one (invalid, solving or failed).
+    /// Which case the shown result is of, against the edited one.
     #[must_use]
-    pub fn result_is_stale(&self) -> bool {
+    pub fn shown_for(&self) -> ShownFor {
         match (&self.shown, self.doc.validation()) {
-            (Some(s), Ok(case)) => s.solution.inputs != *case,
-            (Some(_), Err(_)) => true,
-            (None, _) => false,
+            (None, _) => ShownFor::Nothing,
+            (Some(s), Ok(case)) if s.solution.inputs == *case => ShownFor::Edited,
+            (Some(s), Ok(case)) if s.solution.inputs == preview(case) => ShownFor::EditedPreview,
+            (Some(_), _) => ShownFor::Previous,
         }
     }
+
+    /// The shown result is of an earlier case than the edited one (invalid, solving or failed); a preview
+    /// solve of the edited case is not stale.
+    #[must_use]
+    pub fn result_is_stale(&self) -> bool {
+        self.shown_for() == ShownFor::Previous
+    }
+}
+
+/// Which case the result on screen is of ([`WorkbenchApp::shown_for`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShownFor {
+    /// No result yet.
+    Nothing,
+    /// The edited case.
+    Edited,
+    /// The edited case on the preview mesh (solved while a value is dragged).
+    EditedPreview,
+    /// An earlier case: before the last edit, or the last valid one of an invalid case.
+    Previous,
 }
 
 /// The case at preview fidelity (explicit element counts dropped), for fast solves while dragging.

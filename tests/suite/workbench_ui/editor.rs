@@ -9,6 +9,7 @@ use egui_kittest::Harness;
 use tiltpad::app::state::Persisted;
 use tiltpad::app::WorkbenchApp;
 use tiltpad::units::L_PER_MIN;
+use web_time::Instant;
 
 use super::harness::{snapshot, solved_app, solved_app_at, spin_button, text_of, wait_for_solve};
 
@@ -152,4 +153,58 @@ fn the_per_pad_supply_flow_row_edits_one_pads_flow() {
     for (k, (q, want)) in offered.iter().zip([5.0, 5.0, 4.0, 5.0, 5.0]).enumerate() {
         assert!((q - want).abs() < 1e-9, "pad {k}: {q} l/min");
     }
+}
+
+/// The status bar says what the drawing shows. A load dragged on (two steps a frame apart, three times) waits
+/// for the running preview solve of the value before it; each frame with the pointer held still, "Solved" is
+/// shown only while the drawn result is of the edited load, otherwise the bar says the previous result is
+/// shown. (It said "Solved" for a frame after each waited-for solve, over the result of the older value.)
+/// After the release, "Solved" is the case's own mesh.
+#[test]
+fn the_status_bar_says_solved_only_when_the_drawn_result_is_of_the_edited_case() {
+    let mut h = solved_app(None, |_| {});
+    let drawn_is_edited = |h: &Harness<'_, WorkbenchApp>| {
+        let s = h.state().shown.clone().unwrap().solution;
+        h.state().doc.validation().as_ref().is_ok_and(|c| s.inputs.operating == c.operating)
+    };
+    let start = spin_button(&h, "Load W").rect().center();
+    h.hover_at(start);
+    h.step();
+    h.drag_at(start);
+    h.step();
+    let (mut stale_solved, mut previous_said) = (Vec::new(), 0);
+    let mut x = 0.0;
+    for _ in 0..3 {
+        for _ in 0..2 {
+            x += 4.0;
+            h.hover_at(start + egui::vec2(x, 0.0));
+            h.step();
+        }
+        let waiting = Instant::now();
+        loop {
+            std::thread::sleep(Duration::from_millis(5));
+            h.step();
+            let load = h.state().doc.file().operating.load_n;
+            if h.query_by_label_contains("Solved").is_some() && !drawn_is_edited(&h) {
+                let drawn = h.state().shown.clone().unwrap().solution.inputs.operating.load;
+                stale_solved.push(format!("\"Solved\" over the result of {drawn:?}, the load is {load:?} N"));
+            }
+            if h.query_by_label_contains("(showing the previous result)").is_some() {
+                previous_said += 1;
+            }
+            if drawn_is_edited(&h) && h.state().is_idle() {
+                break;
+            }
+            assert!(waiting.elapsed() < Duration::from_secs(120), "the drag's solve did not come back");
+        }
+    }
+    assert!(stale_solved.is_empty(), "{}", stale_solved.join("\n"));
+    assert!(previous_said > 0, "the bar never said that the previous result is shown");
+    assert!(h.state().doc.file().operating.load_n.unwrap() > 1918.0 + 20.0, "the drag moved the load");
+    h.drop_at(start + egui::vec2(x, 0.0));
+    h.run_steps(2);
+    wait_for_solve(&mut h);
+    h.get_by_label("Solved");
+    let s = h.state().shown.clone().unwrap().solution;
+    assert_eq!(Ok(&s.inputs), h.state().doc.validation().as_ref(), "the case's own mesh");
 }
