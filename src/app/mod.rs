@@ -183,11 +183,17 @@ impl WorkbenchApp {
         }
     }
 
-    /// Loads a case text as the document (after the unsaved-changes guard).
+    /// Loads a case text as the document (after the unsaved-changes guard): every way of opening a case
+    /// ends here. The views hear whether the new case has the same bearing ([`views::View::case_opened`]).
     pub fn load_text(&mut self, name: &str, path: Option<std::path::PathBuf>, text: &str) {
         match parse_case_file(text, &[]) {
             Ok(file) => {
+                let before = self.doc.validation().as_ref().ok().map(|c| c.bearing.clone());
                 self.doc.replace(file, name, path, text);
+                let same_bearing = before.is_some_and(|b| self.doc.validation().as_ref().is_ok_and(|c| c.bearing == b));
+                for view in &mut self.views {
+                    view.case_opened(same_bearing);
+                }
                 self.say(format!("Opened {name}"));
             }
             Err(e) => self.say(format!("Cannot open {name}: {e}")),
