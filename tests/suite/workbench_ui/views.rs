@@ -109,3 +109,47 @@ fn no_text_covers_another_in_any_view_at_1280x720_and_1920x1080_in_both_themes()
     }
     assert!(found.is_empty(), "{}", found.join("\n"));
 }
+
+/// Every view at 1280×720 names what a screen reader (and a test) finds in it: each plot says what it shows
+/// (egui_plot left its area an unnamed node: four in the coefficient view, two in the FRF view, one in the
+/// rotor view, three in the Control view), no control or picture is unnamed, every legend sample is
+/// "legend: <name>" (the rotor's were "legend sample: …"), and an optional value whose default is a rule
+/// says the rule without a unit ("unchecked: rigid pivot", not "rigid pivot N/m").
+#[test]
+fn every_view_names_its_plots_and_controls() {
+    use egui_kittest::kittest::NodeT;
+    let mut unnamed = Vec::new();
+    let mut plots = std::collections::BTreeMap::new();
+    for view in tiltpad::app::views::all() {
+        let id = view.id();
+        let h = solved_app_at([1280.0, 720.0], None, move |app| assert!(app.open_for_snapshot(id)));
+        for n in h.query_all_by(|_| true) {
+            let a = n.accesskit_node();
+            let (role, label) = (a.role(), a.label().unwrap_or_default());
+            let named = [
+                Role::Unknown,
+                Role::Image,
+                Role::Button,
+                Role::CheckBox,
+                Role::ComboBox,
+                Role::SpinButton,
+                Role::Slider,
+                Role::TextInput,
+                Role::MultilineTextInput,
+            ];
+            if named.contains(&role) && label.trim().is_empty() {
+                unnamed.push(format!("{id}: an unnamed {role:?} at {:?}", n.rect()));
+            }
+            if label.starts_with("legend sample") || label.contains("rigid pivot N/m") {
+                unnamed.push(format!("{id}: {role:?} {label:?}"));
+            }
+            if let Some(plot) = label.strip_prefix("plot: ") {
+                plots.entry(id).or_insert_with(Vec::new).push(plot.to_string());
+            }
+        }
+    }
+    assert!(unnamed.is_empty(), "{}", unnamed.join("\n"));
+    let counts: Vec<(&str, usize)> = plots.iter().map(|(id, p)| (*id, p.len())).collect();
+    assert_eq!(counts, [("coefficients", 4), ("control", 3), ("frf", 2), ("rotor", 1)], "{plots:#?}");
+    assert!(plots["frf"].contains(&"|G| [V/V] of G1 against frequency [Hz]".to_string()), "{:?}", plots["frf"]);
+}
