@@ -22,6 +22,7 @@ mod frame;
 pub mod frame_probe;
 pub mod ink;
 pub mod job_runner;
+pub mod notation;
 pub mod open_dialog;
 pub mod path_fields;
 pub mod pinned;
@@ -148,6 +149,7 @@ impl WorkbenchApp {
                 .with_source(text),
         };
         ink::apply(ctx);
+        notation::apply(ctx);
         let mut views = views::all();
         for v in &mut views {
             let id = v.id();

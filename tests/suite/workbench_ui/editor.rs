@@ -208,3 +208,24 @@ fn the_status_bar_says_solved_only_when_the_drawn_result_is_of_the_edited_case()
     let s = h.state().shown.clone().unwrap().solution;
     assert_eq!(Ok(&s.inputs), h.state().doc.validation().as_ref(), "the case's own mesh");
 }
+
+/// Large values read in engineering notation (the exponent a multiple of three): the test rig's pivot stiffness
+/// 2e7 N/m shows as "20e6" (it showed "20000000"); typed as plain digits, 35000000 is taken and shows as
+/// "35e6". Values of everyday size keep their plain form (the speed "3000").
+#[test]
+fn large_editor_values_read_in_engineering_notation_and_plain_digits_are_taken() {
+    let mut h = solved_app_at([1400.0, 2600.0], Some(include_str!("../../../cases/test-rig.toml")), |_| {});
+    let shown = |h: &Harness<'_, WorkbenchApp>, label: &str| text_of(&spin_button(h, label));
+    assert_eq!(h.state().doc.file().bearing.pads.pivot_stiffness_n_per_m, Some(2e7));
+    assert_eq!(shown(&h, "Pivot stiffness"), "20e6");
+    assert_eq!(shown(&h, "Speed"), "3000");
+    spin_button(&h, "Pivot stiffness").focus();
+    h.run_steps(2);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.event(egui::Event::Text("35000000".into()));
+    h.run_steps(1);
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+    assert_eq!(h.state().doc.file().bearing.pads.pivot_stiffness_n_per_m, Some(3.5e7));
+    assert_eq!(shown(&h, "Pivot stiffness"), "35e6");
+}
