@@ -6,7 +6,7 @@ use super::editor::editor_ui;
 use super::ink;
 use super::presets::PRESETS;
 use super::views::{compare_panel, limits_view, results_panel, ViewContext};
-use super::{Pending, Status, WorkbenchApp};
+use super::{Pending, ShownFor, Status, WorkbenchApp};
 use crate::scene::{export, summary};
 use crate::units::MS;
 
@@ -224,15 +224,31 @@ impl WorkbenchApp {
             });
         };
         ui.horizontal(|ui| {
-            // One state at a time: an invalid case is not solved, whatever result is still on screen.
+            // One state at a time, and what the drawing shows: an invalid case is not solved, whatever result
+            // is still on screen; "Solved" only over a result of the edited case.
             let invalid = self.doc.validation().is_err();
+            let shown_for = self.shown_for();
+            let drawn = match shown_for {
+                ShownFor::Previous => " (showing the previous result)",
+                ShownFor::EditedPreview => " (showing the preview-mesh result)",
+                ShownFor::Edited | ShownFor::Nothing => "",
+            };
             match &self.status {
                 Status::Idle if invalid => {
                     ui.label(RichText::new("Not solved").color(ui.visuals().warn_fg_color))
                         .on_hover_text("The edited case is invalid; the views show the last valid result.");
                 }
-                Status::Idle => {
+                Status::Idle if shown_for == ShownFor::Edited => {
                     ui.label(RichText::new("Solved").color(ink::GOOD.of(ui)));
+                }
+                Status::Idle if shown_for == ShownFor::EditedPreview => {
+                    ui.label(RichText::new("Solved on the preview mesh").color(ink::GOOD.of(ui)))
+                        .on_hover_text("Solved on the coarse preview mesh while the value is dragged; the case's own mesh follows on release.");
+                }
+                // The result of an older value, its successor not yet submitted (a drag's next value).
+                Status::Idle => {
+                    ui.spinner();
+                    ui.label(format!("Solving: starting…{drawn}"));
                 }
                 Status::Solving { stage, fraction } => {
                     ui.spinner();
@@ -242,7 +258,7 @@ impl WorkbenchApp {
                         Some(s) if *fraction < 1.0 => format!("{} {:.0} %", s.label(), 100.0 * fraction),
                         Some(s) => format!("{} done", s.label()),
                     };
-                    ui.label(format!("Solving: {now}…"));
+                    ui.label(format!("Solving: {now}…{drawn}"));
                 }
                 Status::Failed(e) => cut(ui, RichText::new(format!("Solve failed: {e}")).color(ink::ERROR.of(ui))),
             }

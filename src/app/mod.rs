@@ -22,6 +22,7 @@ mod frame;
 pub mod frame_probe;
 pub mod ink;
 pub mod job_runner;
+pub mod notation;
 pub mod open_dialog;
 pub mod path_fields;
 pub mod pinned;
@@ -148,6 +149,7 @@ impl WorkbenchApp {
                 .with_source(text),
         };
         ink::apply(ctx);
+        notation::apply(ctx);
         let mut views = views::all();
         for v in &mut views {
             let id = v.id();
@@ -183,11 +185,17 @@ impl WorkbenchApp {
         }
     }
 
-    /// Loads a case text as the document (after the unsaved-changes guard).
+    /// Loads a case text as the document (after the unsaved-changes guard): every way of opening a case
+    /// ends here. The views hear whether the new case has the same bearing ([`views::View::case_opened`]).
     pub fn load_text(&mut self, name: &str, path: Option<std::path::PathBuf>, text: &str) {
         match parse_case_file(text, &[]) {
             Ok(file) => {
+                let before = self.doc.validation().as_ref().ok().map(|c| c.bearing.clone());
                 self.doc.replace(file, name, path, text);
+                let same_bearing = before.is_some_and(|b| self.doc.validation().as_ref().is_ok_and(|c| c.bearing == b));
+                for view in &mut self.views {
+                    view.case_opened(same_bearing);
+                }
                 self.say(format!("Opened {name}"));
             }
             Err(e) => self.say(format!("Cannot open {name}: {e}")),
@@ -299,16 +307,7 @@ impl WorkbenchApp {
 
     /// Submits the wanted request when it changed, and takes in the worker's events.
     fn drive_solver(&mut self) {
-        if let Some(req) = self.wanted_request() {
-            // While a value is dragged, let the running (preview) solve finish and then take the latest
-            // value, so results keep coming during the drag; otherwise a newer request cancels at once.
-            let hold = self.dragging && self.worker.busy();
-            if self.submitted.as_ref() != Some(&req) && !hold {
-                self.worker.submit(req.clone());
-                self.submitted = Some(req);
-                self.status = Status::Solving { stage: None, fraction: 0.0 };
-            }
-        }
+        self.submit_wanted();
         for event in self.worker.poll(WEB_SOLVE_BUDGET_S) {
             match event {
                 Event::Progress { stage, fraction, .. } => {
@@ -323,12 +322,28 @@ impl WorkbenchApp {
                 Event::Failed { error, .. } => self.status = Status::Failed(error),
             }
         }
+        // A dragged value that waited for the running solve goes now, in the frame that solve came back:
+        // no frame shows the older value's result as solved.
+        self.submit_wanted();
         // A pin's re-solve runs when the edited case is solved (on the web: in the frames it leaves free).
         if !self.worker.busy() {
             self.pinned.poll(WEB_SOLVE_BUDGET_S);
             self.pinned.complete(&mut self.persisted.pins);
         }
         self.pinned.retain(&self.persisted.pins);
+    }
+
+    /// Submits the request the screen needs when it differs from the last one submitted. While a value is
+    /// dragged, the running (preview) solve finishes first and then the latest value is taken, so results
+    /// keep coming during the drag; otherwise a newer request cancels the running one at once.
+    fn submit_wanted(&mut self) {
+        let Some(req) = self.wanted_request() else { return };
+        let hold = self.dragging && self.worker.busy();
+        if self.submitted.as_ref() != Some(&req) && !hold {
+            self.worker.submit(req.clone());
+            self.submitted = Some(req);
+            self.status = Status::Solving { stage: None, fraction: 0.0 };
+        }
     }
 
     fn accept(&mut self, outcome: Outcome) {
@@ -347,15 +362,36 @@ impl WorkbenchApp {
         });
     }
 
-    /// The case of the shown result differs from the edited one (invalid, solving or failed).
+    /// Which case the shown result is of, against the edited one.
     #[must_use]
-    pub fn result_is_stale(&self) -> bool {
+    pub fn shown_for(&self) -> ShownFor {
         match (&self.shown, self.doc.validation()) {
-            (Some(s), Ok(case)) => s.solution.inputs != *case,
-            (Some(_), Err(_)) => true,
-            (None, _) => false,
+            (None, _) => ShownFor::Nothing,
+            (Some(s), Ok(case)) if s.solution.inputs == *case => ShownFor::Edited,
+            (Some(s), Ok(case)) if s.solution.inputs == preview(case) => ShownFor::EditedPreview,
+            (Some(_), _) => ShownFor::Previous,
         }
     }
+
+    /// The shown result is of an earlier case than the edited one (invalid, solving or failed); a preview
+    /// solve of the edited case is not stale.
+    #[must_use]
+    pub fn result_is_stale(&self) -> bool {
+        self.shown_for() == ShownFor::Previous
+    }
+}
+
+/// Which case the result on screen is of ([`WorkbenchApp::shown_for`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShownFor {
+    /// No result yet.
+    Nothing,
+    /// The edited case.
+    Edited,
+    /// The edited case on the preview mesh (solved while a value is dragged).
+    EditedPreview,
+    /// An earlier case: before the last edit, or the last valid one of an invalid case.
+    Previous,
 }
 
 /// The case at preview fidelity (explicit element counts dropped), for fast solves while dragging.

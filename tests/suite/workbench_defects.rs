@@ -1,7 +1,7 @@
 //! Defects a new user met in the workbench, each driven headlessly (egui_kittest) as that user met it: a
 //! long case title in the editor, the tab row when a view opens from its "More" menu, the status bar after
 //! an edit, the minimum-film labels of the bearing view, the rotor's mass, the power loss in the results
-//! panel, and the Control view's LQR page at 1280×720. The helpers are those of [`crate::workbench_ui`].
+//! panel, and the Control view's LQR page at 1280×720. The helpers are those of [`crate::workbench_ui::harness`].
 #![cfg(feature = "gui")]
 
 use egui::accesskit::Role;
@@ -13,10 +13,11 @@ use tiltpad::app::views::bearing_view::BearingView;
 use tiltpad::app::WorkbenchApp;
 
 use crate::common::painted_text;
-use crate::workbench_ui::{
-    choose_light_theme, cut_texts_in_view, edit_and_solve, open_rotor, rotor, snapshot, solved_app_at, spin_button,
-    text_of, texts_below_view, two_bearing_shaft, wait_for_rotor, wait_for_solve,
+use crate::workbench_ui::harness::{
+    choose_light_theme, edit_and_solve, open_rotor, rotor, snapshot, solved_app_at, spin_button, text_of,
+    two_bearing_shaft, wait_for_rotor, wait_for_solve,
 };
+use crate::workbench_ui::reading::{cut_texts_in_view, texts_below_view};
 
 const SMALL: [f32; 2] = [1280.0, 720.0];
 

@@ -1,7 +1,7 @@
 //! What a new user met in the release build (native, under Xvfb at 1280×720 and 1920×1080), each driven
 //! headlessly (egui_kittest) as that user met it: a pin kept from an older workbench, the open dialog in a
 //! folder with many sub-folders, the minimum-film labels of the two-pad test rig, the status bar. The
-//! helpers are those of [`crate::workbench_ui`].
+//! helpers are those of [`crate::workbench_ui::harness`].
 #![cfg(feature = "gui")]
 
 use egui::accesskit::Role;
@@ -11,7 +11,7 @@ use tiltpad::app::views::bearing_view::BearingView;
 use tiltpad::scene::compare::Pin;
 
 use crate::common::painted_text::painted_texts;
-use crate::workbench_ui::{solved_app_at, solved_app_from, spin_button, text_of, wait_for_solve};
+use crate::workbench_ui::harness::{solved_app_at, solved_app_from, spin_button, text_of, wait_for_solve};
 
 const SMALL: [f32; 2] = [1280.0, 720.0];
 

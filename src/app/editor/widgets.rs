@@ -200,7 +200,9 @@ pub fn optional_ui(
     let mut out = EditOutput::default();
     let label = ui
         .horizontal(|ui| {
-            let unit = if n.unit().is_empty() { String::new() } else { format!(" {}", n.unit()) };
+            // A default given as a number has the unit; one given as a rule ("rigid pivot") has none.
+            let numeric = absent.parse::<f64>().is_ok();
+            let unit = if n.unit().is_empty() || !numeric { String::new() } else { format!(" {}", n.unit()) };
             if ui
                 .checkbox(&mut on, "")
                 .on_hover_text(format!("Give {} explicitly (unchecked: {absent}{unit})", n.label))

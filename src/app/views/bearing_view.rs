@@ -57,7 +57,9 @@ impl View for BearingView {
         let pinned = cx.compare_with_ui(ui, self.needs(), |_| {});
         let solution = cx.shown.map(|s| s.solution.as_ref());
         let lock = &mut self.settings.outline_lock;
-        if lock.is_none() && !self.settings.unlocked && solution.is_some() {
+        // Locked on the first result of the edited case (not on an earlier case's, still drawn while the
+        // newly opened one solves).
+        if lock.is_none() && !self.settings.unlocked && solution.is_some() && !cx.stale {
             *lock = Some(outline::bearing_outline_with(&case, solution, None).scales());
         }
         let o = outline::bearing_outline_with(&case, solution, *lock);
@@ -82,6 +84,15 @@ impl View for BearingView {
 
     fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
         Some(&mut self.settings)
+    }
+
+    /// Another bearing's scales would draw this one's film and pressure out of proportion: the lock is
+    /// dropped, and taken again on the new case's first result (unless the user unlocked the scales). A
+    /// variant of the same bearing keeps it, as an edit does, so the two pictures compare.
+    fn case_opened(&mut self, same_bearing: bool) {
+        if !same_bearing {
+            self.settings.outline_lock = None;
+        }
     }
 }
 

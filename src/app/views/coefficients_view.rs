@@ -7,7 +7,7 @@ use egui_plot::{GridInput, GridMark, Line, LineStyle, MarkerShape, Plot, Points,
 use serde::{Deserialize, Serialize};
 
 use crate::app::ink;
-use super::plot_kit::{legend_ui, PALETTE};
+use super::plot_kit::{legend_ui, NamedPlot, PALETTE};
 use super::{View, ViewContext};
 use crate::app::Shown;
 use crate::bearing::stages::StageId;
@@ -188,7 +188,7 @@ fn plot_ui(
                     );
                 }
             }
-        });
+        }).named(&format!("{title} [{unit}] against {x_label}"));
 }
 
 /// Grid lines at round values (1, 2 or 5 × 10ⁿ apart, up to five labelled and at least `label_px` points

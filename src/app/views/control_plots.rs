@@ -10,7 +10,7 @@ use egui::{Color32, RichText, Ui};
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, Points, Text, VLine};
 
 use super::control_jobs::{Built, Tuned, GAIN_RANGE};
-use super::plot_kit::{legend_ui, LabelledAxes, PALETTE};
+use super::plot_kit::{legend_ui, LabelledAxes, NamedPlot, PALETTE};
 use crate::units::{RPM, UM};
 
 /// The root locus shows poles up to [`super::control_jobs::LOCUS_MAX_HZ`] and this damping ratio.
@@ -95,7 +95,8 @@ pub fn locus_ui(ui: &mut Ui, tuned: &Tuned, height: f32) {
                 Text::new("margins", PlotPoint::new(x_min * 1.05, y_top), RichText::new(margins).small())
                     .anchor(egui::Align2::LEFT_TOP),
             );
-        });
+        })
+        .named("root locus, damped frequency [Hz] against real part [1/s]");
 }
 
 /// A plot against speed [rpm] from 0 up.
@@ -121,16 +122,18 @@ pub fn stability_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, onset_open: Optio
     let closed = finite(rpm.iter().zip(&tuned.speeds).map(|(x, s)| [*x, s.poles.min_log_dec()]).collect());
     // The onsets are the vertical lines (their speeds are in the summary above).
     legend_ui(ui, &[("open (dashed)".to_string(), OPEN), (format!("gain {:.2}", tuned.tuning.gain), CLOSED)]);
-    speed_plot("control_stability", "smallest log dec [–]", ui, height).show(ui, |p| {
-        p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
-        open_and_closed(p, open, closed);
-        if let Some(w) = onset_open {
-            p.vline(VLine::new("onset open", RPM.from_si(w)).color(OPEN).style(LineStyle::dashed_loose()));
-        }
-        if let Some(w) = tuned.onset_rad_s {
-            p.vline(VLine::new("onset closed", RPM.from_si(w)).color(CLOSED).width(2.0));
-        }
-    });
+    speed_plot("control_stability", "smallest log dec [–]", ui, height)
+        .show(ui, |p| {
+            p.hline(HLine::new("δ = 0", 0.0).color(Color32::from_gray(120)));
+            open_and_closed(p, open, closed);
+            if let Some(w) = onset_open {
+                p.vline(VLine::new("onset open", RPM.from_si(w)).color(OPEN).style(LineStyle::dashed_loose()));
+            }
+            if let Some(w) = tuned.onset_rad_s {
+                p.vline(VLine::new("onset closed", RPM.from_si(w)).color(CLOSED).width(2.0));
+            }
+        })
+        .named("smallest log dec [–] against speed [rpm]");
 }
 
 pub fn unbalance_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, nodes: &[usize], node: &mut usize, height: f32) {
@@ -155,8 +158,10 @@ pub fn unbalance_ui(ui: &mut Ui, built: &Built, tuned: &Tuned, nodes: &[usize], 
             .labelled_by(label.id);
     });
     legend_ui(ui, &[("open (dashed)".into(), OPEN), ("closed".into(), CLOSED), ("API 617 (dotted)".into(), API)]);
-    speed_plot("control_unbalance", "orbit p-p [µm]", ui, height).show(ui, |p| {
-        open_and_closed(p, open, closed);
-        p.line(Line::new("API 617 limit", api).color(API).style(LineStyle::dotted_dense()).width(1.5));
-    });
+    speed_plot("control_unbalance", "orbit p-p [µm]", ui, height)
+        .show(ui, |p| {
+            open_and_closed(p, open, closed);
+            p.line(Line::new("API 617 limit", api).color(API).style(LineStyle::dotted_dense()).width(1.5));
+        })
+        .named("unbalance response, orbit p-p [µm] against speed [rpm]");
 }

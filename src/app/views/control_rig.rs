@@ -10,7 +10,7 @@
 use egui::{Color32, RichText, Ui};
 use egui_plot::{Line, LineStyle, Plot};
 
-use super::plot_kit::{legend_ui, phase_label, wrapped_phase, LabelledAxes, PALETTE, PHASE_TICKS};
+use super::plot_kit::{legend_ui, phase_label, wrapped_phase, LabelledAxes, NamedPlot, PALETTE, PHASE_TICKS};
 use crate::app::job_runner::{Event, Runner, Work};
 use crate::bearing::frf::model::{band, FrfModel};
 use crate::bearing::{NoCancel, Stages};
@@ -190,7 +190,8 @@ pub fn rig_ui(ui: &mut Ui, page: &mut RigPage) {
                 Line::new("without control", magnitude(false)).color(OPEN).style(LineStyle::dashed_loose()).width(1.6),
             );
             p.line(Line::new("with control", magnitude(true)).color(CLOSED).width(2.0));
-        });
+        })
+        .named("X/F [µm/kN] against frequency [Hz]");
     let phase = |closed: bool| -> Vec<f64> {
         sw.points.iter().map(|p| if closed { p.closed_phase_deg } else { p.open_phase_deg }).collect()
     };
@@ -212,5 +213,6 @@ pub fn rig_ui(ui: &mut Ui, page: &mut RigPage) {
             for piece in wrapped_phase(&f, &phase(true)) {
                 p.line(Line::new("with control", piece).color(CLOSED).width(2.0));
             }
-        });
+        })
+        .named("phase of X/F [°] against frequency [Hz]");
 }

@@ -151,6 +151,14 @@ impl View for FieldView {
     fn settings(&mut self) -> Option<&mut dyn super::view::Settings> {
         Some(&mut self.settings)
     }
+
+    /// Colour ranges locked on another bearing do not describe this one (a 2 MPa range over a 4.5 MPa
+    /// field): they are dropped. A variant of the same bearing keeps them, as an edit does.
+    fn case_opened(&mut self, same_bearing: bool) {
+        if !same_bearing {
+            self.settings.locks.clear();
+        }
+    }
 }
 
 /// Drawables of the shown result, of the pinned result compared with it, and of their difference.

@@ -12,7 +12,7 @@ use egui::{Color32, RichText, Ui};
 use egui_plot::{HoverPosition, Line, Plot, VLine};
 
 use crate::app::ink;
-use super::plot_kit::{decade_label, legend_ui, phase_label, wrapped_phase, PALETTE, PHASE_TICKS};
+use super::plot_kit::{decade_label, legend_ui, phase_label, wrapped_phase, NamedPlot, PALETTE, PHASE_TICKS};
 
 use super::{View, ViewContext};
 use crate::bearing::frf::model::{band, FrfModel};
@@ -264,6 +264,9 @@ fn bode_ui(ui: &mut Ui, curves: &FrfCurves, family: &Family, db: bool) {
                 .y_grid_spacer(egui_plot::log_grid_spacer(10))
                 .y_axis_formatter(|m, _| decade_label(m.value))
         };
+        // "|G| [V/V] of G1 against frequency [Hz]": the curves' names without the family's unit.
+        let names = family.label.split(" [").next().unwrap_or_default();
+        let name = format!("{} of {names} against frequency [Hz]", if phase { "phase [°]" } else { &mag_label });
         plot.show(ui, |p| {
             for (c, color) in shown.iter().zip(&colors) {
                 if phase {
@@ -287,7 +290,8 @@ fn bode_ui(ui: &mut Ui, curves: &FrfCurves, family: &Family, db: bool) {
                         .style(egui_plot::LineStyle::dashed_loose()),
                 );
             }
-        });
+        })
+        .named(&name);
     }
 }
 

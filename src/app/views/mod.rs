@@ -7,7 +7,7 @@
 //!
 //! **Adding a view**: a new file here implementing [`View`] for a `Default` type, and its line in the
 //! list below. The workbench then shows its tab, solves what it needs while it is open, saves its settings,
-//! and `tests/suite/workbench_ui.rs` snapshots it (`tests/snapshots/view_<id>.png`).
+//! and `tests/suite/workbench_ui/views.rs` snapshots it (`tests/snapshots/view_<id>.png`).
 //!
 //! Parts of views and panels that are not tabs: [`compare_panel`], [`control_jobs`], [`control_plots`], [`control_rig`], [`field_paint`], [`limits_view`], [`results_panel`],
 //! [`rotor_edit`], [`rotor_plots`], [`rotor_sketch`]; [`plot_kit`]: what the plots share (the legend above the plot, decade and phase ticks,

@@ -10,7 +10,8 @@
 //!   (labelled every 90°) as the axis' grid;
 //! - [`footer_height`]: the room the lines below a drawing take, measured before the drawing is laid out;
 //! - [`text_within`]: a title painted into a drawing, cut with "…" at the width it has rather than over
-//!   its neighbours.
+//!   its neighbours;
+//! - [`NamedPlot`]: a plot's name for screen readers and UI tests (`plot: <what it shows>`).
 
 use egui::{Color32, RichText, Ui};
 
@@ -52,6 +53,18 @@ pub fn legend_ui(ui: &mut Ui, entries: &[LegendEntry]) {
             ui.add_space(6.0);
         }
     });
+}
+
+/// Names a shown plot: egui_plot leaves its area an unnamed node, which a screen reader announces as
+/// nothing. The name says what the plot shows (`plot: X/F [µm/kN] against frequency [Hz]`).
+pub trait NamedPlot {
+    fn named(self, name: &str);
+}
+
+impl<R> NamedPlot for egui_plot::PlotResponse<R> {
+    fn named(self, name: &str) {
+        self.response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("plot: {name}")));
+    }
 }
 
 /// A decade tick of a log10 axis (`value` = log10 of the number) as the number it stands for, with an SI

@@ -11,7 +11,9 @@
 use egui::{Color32, RichText, Stroke, Ui};
 use egui_plot::{HLine, Line, LineStyle, Plot, Points, VLine};
 
-use super::plot_kit::{decade_label, legend_ui, phase_label, wrapped_phase, LabelledAxes, PALETTE, PHASE_TICKS};
+use super::plot_kit::{
+    decade_label, legend_ui, phase_label, wrapped_phase, LabelledAxes, NamedPlot, PALETTE, PHASE_TICKS,
+};
 use crate::app::ink::{self, Ink};
 use crate::model::rotor::Rotor;
 use crate::rotor::analysis::AnalysisResult;
@@ -76,7 +78,7 @@ fn curves_legend_ui(ui: &mut Ui, campbell: bool, operating: bool, onset: Option<
         for (label, color, sample) in entries {
             let (rect, sample_response) = ui.allocate_exact_size(egui::vec2(18.0, 12.0), egui::Sense::hover());
             sample_response
-                .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend sample: {label}")));
+                .widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, format!("legend: {label}")));
             let (a, b) = (rect.left_center(), rect.right_center());
             let stroke = Stroke::new(1.6, color);
             let painter = ui.painter();
@@ -146,7 +148,8 @@ pub(super) fn curves_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor, campbell
                     p.vline(VLine::new(format!("onset {x:.0} rpm"), x).color(limit).width(2.0));
                 }
             }
-        });
+        })
+        .named(&format!("{y_label} against speed [rpm]"));
 }
 
 /// The mode shape of the chosen mode (`indices`: speed and mode, clamped to the analysis) with their pickers.
@@ -224,7 +227,8 @@ pub(super) fn mode_shape_ui(
             for z in &bearings {
                 p.vline(VLine::new("bearings", *z).color(Color32::from_gray(150)).style(LineStyle::dotted_dense()));
             }
-        });
+        })
+        .named("mode shape, deflection against axial position [mm]");
 }
 
 /// The unbalance response (orbit amplitude and phase) with the API 617 limit said in words.
@@ -257,7 +261,8 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
                     .style(LineStyle::dashed_dense())
                     .width(2.0),
             );
-        });
+        })
+        .named("unbalance response, orbit p-p [µm] against speed [rpm]");
     plot_without_legend("rotor_unbalance_phase", ui, height)
         .x_axis_label("speed [rpm]")
         .y_axis_label("phase of x [°]")
@@ -275,7 +280,8 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
                     p.line(Line::new(n.name.clone(), piece).color(*color).width(1.6));
                 }
             }
-        });
+        })
+        .named("unbalance response, phase of x [°] against speed [rpm]");
 }
 
 /// The undamped critical-speed map with the bearings' stiffness over speed.
@@ -304,7 +310,8 @@ pub(super) fn critical_map_ui(ui: &mut Ui, m: &MapDrawing) {
             p.points(
                 Points::new("crossings: critical speeds on the bearings", m.crossings.clone()).radius(5.0).color(limit),
             );
-        });
+        })
+        .named("undamped critical speed [rpm] against support stiffness [N/m]");
 }
 
 /// A slider value (an index held as `f64`) as an index.

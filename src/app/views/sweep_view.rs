@@ -20,7 +20,7 @@ use crate::number::sig;
 use crate::scene::sommerfeld::{chart, ChartGeometry, ChartPlot};
 use crate::scene::sweep::{column_label, sweepable_keys, SweepSpec, MAX_POINTS};
 
-use super::plot_kit::{decade_label, legend_ui, log_spacer, LabelledAxes, PALETTE};
+use super::plot_kit::{decade_label, legend_ui, log_spacer, LabelledAxes, NamedPlot, PALETTE};
 use crate::study::COLUMNS;
 
 /// The swept curve and the current case's point (sky blue and amber on the dark theme; darker on the light).
@@ -274,7 +274,7 @@ fn chart_ui(ui: &mut Ui, table: &crate::scene::sweep::SweepTable, g: &ChartGeome
                 if let Some(s) = current_s {
                     plot.vline(VLine::new("this case", s.log10()).color(Color32::from_gray(150)));
                 }
-            });
+            }).named(&format!("{} against the Sommerfeld number S [–]", p.title));
     };
     ui.columns(2, |cols| {
         let [left, right] = cols else { return };
@@ -358,7 +358,7 @@ fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solu
                             );
                         }
                     }
-                });
+                }).named(&format!("{label} [{unit}] against {x_label}"));
         }
         for (x, why) in table.failures() {
             let x = crate::number::sig(x, 6);

@@ -47,6 +47,11 @@ pub trait View: AsAny {
         None
     }
 
+    /// Another case was opened (a file, a dropped file, a preset, the web page's `?case=`). `same_bearing`:
+    /// it has the bearing of the case before (geometry, pads, pivots, orifices), as a variant of one bearing
+    /// at another load or with another physics has. Default: nothing changes.
+    fn case_opened(&mut self, _same_bearing: bool) {}
+
     /// Work of the view's own running in the background (a sweep, a rotor analysis), if any.
     fn busy(&self) -> Option<Job> {
         None

@@ -1,0 +1,244 @@
+//! The rotor view: the compressor rotor's analysis and tabs, a rotor file, and edits on the rotor sketch.
+
+use egui_kittest::kittest::Queryable;
+use egui_kittest::Harness;
+use tiltpad::app::views::rotor_view::RotorView;
+use tiltpad::app::WorkbenchApp;
+use tiltpad::model::rotor::CoefficientModel;
+use tiltpad::scene::rotor::unbalance_bode;
+use tiltpad::units::RPM;
+
+use super::harness::{
+    open_rotor, rotor, rotor_mut, snapshot, solved_app, solved_app_at, spin_button, text_of, two_bearing_shaft,
+    wait_for_rotor,
+};
+
+/// The shipped compressor rotor, analysed once (its bearing cases at preview fidelity): the onset and the
+/// critical speeds as the view states them, and every tab. Choosing reduced coefficients starts a new
+/// analysis with them; that they overestimate the onset is checked through the library
+/// (`tests/suite/rotor_compressor.rs`), so this test solves only once.
+#[test]
+fn rotor_view_analyses_the_compressor_rotor_and_shows_every_tab() {
+    let mut h = solved_app(None, |app| app.open::<RotorView>());
+    wait_for_rotor(&mut h);
+    h.get_by_label_contains("representative shaft, not the thesis' rotor");
+    let full = rotor(&h).result().unwrap().clone();
+    let onset_full = RPM.from_si(full.onset.as_ref().expect("an onset inside the view's sweep").speed_rad_s);
+    h.get_by_label_contains(&format!("Onset of instability: {onset_full:.0} rpm"));
+    assert!(!full.critical_speeds.is_empty(), "the 1× line crosses a forward mode");
+    snapshot(&mut h, "rotor_campbell");
+    h.get_by_label("Stability map").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_stability");
+    h.get_by_label("Mode shapes").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_mode_shape");
+    h.get_by_label("Unbalance response").click();
+    h.run_steps(3);
+    // The check against API 617 in words, the nodes by name (bearings numbered along the shaft).
+    let bode = unbalance_bode(rotor(&h).result().unwrap(), rotor(&h).analysed_rotor().unwrap());
+    let sentence = bode.api617_sentence();
+    h.get_by_label(&sentence);
+    assert!(sentence.contains("API 617 limit"), "{sentence}");
+    for name in ["bearing 1 (210 mm)", "bearing 2 (1470 mm)", "shaft end, disk (0 mm)", "mid-span, disk (780 mm)"] {
+        // Each entry whole: its sample on the row of its name, just before it (at 1280×720 the legend
+        // wraps, and "bearing 2" left its sample at the end of the first row).
+        let sample = h.get_by_label(&format!("legend: {name}")).rect();
+        let label = h.get_by_label(name).rect();
+        assert!(
+            (sample.center().y - label.center().y).abs() < 4.0
+                && (0.0..20.0).contains(&(label.left() - sample.right())),
+            "{name}: sample at {sample:?}, name at {label:?}"
+        );
+    }
+    assert!(h.query_by_label_contains("node 7").is_none());
+    snapshot(&mut h, "rotor_unbalance");
+    h.get_by_label("Critical-speed map").click();
+    h.run_steps(3);
+    snapshot(&mut h, "rotor_critical_map");
+    h.get_by_label("reduced 2×2").click();
+    h.run_steps(2);
+    let view = rotor(&h);
+    assert_eq!(view.coefficients, CoefficientModel::Reduced);
+    assert!(!view.is_idle() && view.result().is_none(), "a new analysis runs, the full one is not shown");
+    h.get_by_label_contains("Analysing: speed");
+}
+
+#[test]
+fn a_rotor_file_opens_in_the_rotor_view_and_a_bad_one_names_key_value_and_range() {
+    let text = two_bearing_shaft("opened two-bearing shaft");
+    let opened = text.clone();
+    let mut h = solved_app(None, move |app| open_rotor(app, &opened));
+    wait_for_rotor(&mut h);
+    h.get_by_label_contains("opened two-bearing shaft");
+    assert!(rotor(&h).result().is_some_and(|r| !r.critical_speeds.is_empty()));
+    rotor_mut(&mut h).open_file("bad.toml", None, &text.replace("node = 5", "node = 11"));
+    h.run_steps(3);
+    let shown = text_of(&h.get_by_label_contains("Cannot read the rotor"));
+    assert!(shown.contains("rotor.disk[0].node") && shown.contains("11") && shown.contains("[0, 10]"), "{shown}");
+}
+
+/// On [`two_bearing_shaft`] (bearings by numbers: each analysis is quick), the disk picked on the sketch.
+#[test]
+fn a_disk_selected_on_the_rotor_sketch_made_heavier_lowers_the_first_natural_frequency() {
+    use tiltpad::app::views::rotor_edit::Selected;
+    use tiltpad::app::views::rotor_view::first_mode_at_top_speed;
+    let mut h = shaft_with_numbered_bearings();
+    // The lowest mode at the sweep's last speed (the file gives no operating range), lightly damped there.
+    let first_hz = |h: &Harness<'_, WorkbenchApp>| {
+        let view = rotor(h);
+        first_mode_at_top_speed(view.result().unwrap(), view.edit().unwrap().rotor()).unwrap()
+    };
+    let before = first_hz(&h);
+    // The 20 kg disk sits at node 5, z = 500 mm of the 1000 mm shaft.
+    click_sketch(&mut h, 500.0, 1000.0, 0.0);
+    assert_eq!(rotor(&h).edit().unwrap().selected, Some(Selected::Disk(0)));
+    // An invalid mass is kept, named with its range, and the last analysis stays.
+    spin_button(&h, "mass [kg]").set_value_accesskit(-1.0);
+    h.run_steps(3);
+    let shown = text_of(&h.get_by_label_contains("Invalid rotor"));
+    assert!(shown.contains("rotor.disk[0].mass_kg") && shown.contains("-1"), "{shown}");
+    assert!(rotor(&h).is_idle() && first_hz(&h) == before);
+    // Twice the mass: every frequency of the rotor–bearing system falls (Rayleigh: more kinetic energy for
+    // the same strain energy), the first one too.
+    spin_button(&h, "mass [kg]").set_value_accesskit(40.0);
+    h.run_steps(2);
+    wait_for_rotor(&mut h);
+    assert_eq!(rotor(&h).edit().unwrap().file().rotor.disk[0].mass_kg, 40.0);
+    let after = first_hz(&h);
+    assert_eq!(after.0, before.0, "the same speed");
+    assert!(
+        after.1 < before.1,
+        "heavier disk: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm",
+        before.1,
+        after.1,
+        after.0
+    );
+    h.get_by_label_contains(&format!("{:.3} Hz", after.1));
+    assert!(h.query_by_label_contains("Invalid rotor").is_none());
+    snapshot(&mut h, "rotor_edit_disk_selected_1280x720");
+}
+
+/// [`two_bearing_shaft`] opened in the rotor view at 1280×720, analysed.
+fn shaft_with_numbered_bearings() -> Harness<'static, WorkbenchApp> {
+    let mut h =
+        solved_app_at([1280.0, 720.0], None, |app| open_rotor(app, &two_bearing_shaft("edited two-bearing shaft")));
+    wait_for_rotor(&mut h);
+    h
+}
+
+/// Clicks the rotor sketch at `z_mm` along a shaft `length_mm` long, `below` points under the axis (the
+/// sketch maps the shaft onto its width less 12-point margins, the axis 50 points below its top; bearings
+/// are drawn 24 points under it).
+fn click_sketch(h: &mut Harness<'_, WorkbenchApp>, z_mm: f32, length_mm: f32, below: f32) {
+    let rect = h.get_by_label("rotor sketch").rect();
+    let pos = egui::pos2(rect.left() + 12.0 + (rect.width() - 24.0) * z_mm / length_mm, rect.top() + 50.0 + below);
+    h.hover_at(pos);
+    h.drag_at(pos);
+    h.step();
+    h.drop_at(pos);
+    h.run_steps(2);
+}
+
+/// The first free–free flexible frequency [rad/s] the CLI gives for the rotor file `text`.
+fn cli_first_free_free(text: &str) -> f64 {
+    let path = std::env::temp_dir().join(format!("tiltpad-ui-edited-rotor-{}.toml", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_tiltpad"))
+        .args(["rotor", path.to_str().unwrap(), "--speeds", "1000:2000:2", "--json", "-"])
+        .output()
+        .unwrap();
+    std::fs::remove_file(&path).ok();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    json["free_free_rad_s"][0].as_f64().unwrap()
+}
+
+#[test]
+fn shaft_sections_added_and_removed_on_the_sketch_change_mass_and_free_free_frequency_as_the_cli_says() {
+    use tiltpad::app::views::rotor_edit::Selected;
+    let mut h = shaft_with_numbered_bearings();
+    let view = |h: &Harness<'_, WorkbenchApp>| {
+        let v = rotor(h);
+        (v.edit().unwrap().rotor().mass(), v.result().unwrap().free_free_rad_s[0])
+    };
+    let (mass, free_free) = view(&h);
+    // A 100 mm section of the end section's diameter appended at the end: mass + ρ π d²/4 · 0.1 m, and a
+    // longer shaft bends more easily (lower first free–free frequency), as the CLI finds on the saved file.
+    h.get_by_label("Add section at end").click();
+    wait_for_rotor(&mut h);
+    let (longer_mass, longer_ff) = view(&h);
+    let section = 7850.0 * std::f64::consts::PI / 4.0 * 0.05_f64.powi(2) * 0.1;
+    assert!((longer_mass - mass - section).abs() < 1e-12 * mass, "{mass} → {longer_mass} kg");
+    assert!(longer_ff < free_free, "{free_free} → {longer_ff} rad/s");
+    let cli = cli_first_free_free(&rotor(&h).edit().unwrap().text().unwrap());
+    assert!((cli - longer_ff).abs() < 1e-9 * cli, "view {longer_ff} vs CLI {cli} rad/s");
+    // Split the original section (clicked at 250 mm of 1100) in two: the mesh and the mass are unchanged.
+    click_sketch(&mut h, 250.0, 1100.0, 0.0);
+    assert_eq!(rotor(&h).edit().unwrap().selected, Some(Selected::Section(0)));
+    h.get_by_label("Split section").click();
+    wait_for_rotor(&mut h);
+    assert_eq!(rotor(&h).edit().unwrap().file().rotor.section.len(), 3);
+    let (split_mass, split_ff) = view(&h);
+    assert!(
+        (split_mass - longer_mass).abs() < 1e-14 * mass && (split_ff - longer_ff).abs() < 1e-9 * longer_ff,
+        "{longer_ff} → {split_ff} rad/s"
+    );
+    // Remove its first half (nodes 0–5): the bearing on the removed free end moves to the new end, and the
+    // strip says so; the shaft loses 500 mm of Ø 50 mm.
+    h.get_by_label("Remove section").click();
+    wait_for_rotor(&mut h);
+    h.get_by_label_contains("rotor.bearing[0] (on removed node 0) now at node 0");
+    let (shorter_mass, shorter_ff) = view(&h);
+    assert!((longer_mass - shorter_mass - 5.0 * section).abs() < 1e-12 * mass, "{longer_mass} → {shorter_mass} kg");
+    assert_eq!(rotor(&h).edit().unwrap().file().rotor.bearing.iter().map(|b| b.node).collect::<Vec<_>>(), vec![0, 5]);
+    let cli = cli_first_free_free(&rotor(&h).edit().unwrap().text().unwrap());
+    assert!((cli - shorter_ff).abs() < 1e-9 * cli, "view {shorter_ff} vs CLI {cli} rad/s");
+    assert!(shorter_ff > longer_ff, "a shorter shaft is stiffer: {longer_ff} → {shorter_ff} rad/s");
+}
+
+#[test]
+fn a_bearing_stiffness_given_by_numbers_edited_on_the_sketch_raises_the_first_natural_frequency() {
+    use tiltpad::app::views::rotor_edit::Selected;
+    use tiltpad::app::views::rotor_view::first_mode_at_top_speed;
+    let mut h = shaft_with_numbered_bearings();
+    let first_hz = |h: &Harness<'_, WorkbenchApp>| {
+        let view = rotor(h);
+        first_mode_at_top_speed(view.result().unwrap(), view.edit().unwrap().rotor()).unwrap()
+    };
+    let before = first_hz(&h);
+    click_sketch(&mut h, 0.0, 1000.0, 24.0);
+    assert_eq!(rotor(&h).edit().unwrap().selected, Some(Selected::Bearing(0)));
+    // An out-of-range stiffness is kept as typed and named with its range; the last analysis stays.
+    spin_button(&h, "K xx [N/m]").set_value_accesskit(2e15);
+    h.run_steps(3);
+    let shown = text_of(&h.get_by_label_contains("Invalid rotor"));
+    assert!(
+        shown.contains("rotor.bearing[0].k_n_per_m[0]")
+            && shown.contains("2000000000000000")
+            && shown.contains("[-1e15, 1e15]"),
+        "{shown}"
+    );
+    assert_eq!(rotor(&h).edit().unwrap().file().rotor.bearing[0].k_n_per_m[0][0], 2e15);
+    assert!(rotor(&h).is_idle() && first_hz(&h) == before);
+    // Ten times stiffer in both directions: every mode of the shaft on these bearings stiffens (Rayleigh:
+    // more strain energy for the same kinetic energy), the first one too.
+    spin_button(&h, "K xx [N/m]").set_value_accesskit(1e8);
+    h.run_steps(2);
+    spin_button(&h, "K yy [N/m]").set_value_accesskit(1e8);
+    h.run_steps(2);
+    wait_for_rotor(&mut h);
+    assert_eq!(rotor(&h).edit().unwrap().file().rotor.bearing[0].k_n_per_m[0], [1e8, 0.0, 0.0, 1e8]);
+    let after = first_hz(&h);
+    assert_eq!(after.0, before.0, "the same speed");
+    assert!(
+        after.1 > before.1,
+        "stiffer bearing: first natural frequency {:.3} → {:.3} Hz at {:.0} rpm",
+        before.1,
+        after.1,
+        after.0
+    );
+    h.get_by_label_contains(&format!("{:.3} Hz", after.1));
+    assert!(h.query_by_label_contains("Invalid rotor").is_none());
+    snapshot(&mut h, "rotor_edit_bearing_numbers_1280x720");
+}
