@@ -85,11 +85,12 @@ pub(super) fn t_rise(s: &Solution) -> Option<f64> {
     s.thermal.as_ref().map(|t| t.t_max_film_c - s.inputs.operating.supply_temperature_c)
 }
 
-/// Levels of one case (with extra overrides) against its reference-fine solution.
-pub(super) fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Vec<LevelRow>> {
+/// `extra` and the overrides of the reference-fine mesh, the truth of every error column: twice the
+/// reference level's element counts.
+pub(super) fn reference_fine(extra: &[String]) -> Vec<String> {
     let (nx, nz, no) = Fidelity::Reference.elements();
-    let mut fine_set = extra.to_vec();
-    fine_set.extend([
+    let mut set = extra.to_vec();
+    set.extend([
         "mesh.fidelity=\"reference\"".into(),
         format!("mesh.circumferential_elements={}", 2 * nx),
         format!("mesh.axial_elements={}", 2 * nz),
@@ -97,7 +98,12 @@ pub(super) fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -
         // Twice the reference mesh exceeds the default node budget with the pad solids of the thermal model.
         "mesh.max_nodes=2000000".into(),
     ]);
-    let fine = with_mesh(text, &fine_set)?;
+    set
+}
+
+/// Levels of one case (with extra overrides) against its reference-fine solution.
+pub(super) fn levels(name: &str, text: &str, extra: &[String], repeats: usize) -> Result<Vec<LevelRow>> {
+    let fine = with_mesh(text, &reference_fine(extra))?;
     let truth = solve_case(&fine)?;
     let mut rows = Vec::new();
     for level in [Fidelity::Preview, Fidelity::Standard, Fidelity::Reference] {

@@ -1,8 +1,7 @@
 //! Bench section: flows against the mesh on every shipped case. Each case as shipped (its own cavitation
 //! condition and thermal model) and with the mass-conserving film (`physics.cavitation = "jfo"`), at the
 //! standard level against twice the reference level's element counts: the worst relative flow error (as in
-//! the first table: leading edges, trailing edges, sides, orifices, into cavitation, each against itself,
-//! over those carrying at least 1 % of the throughput), which flow it is, and the oil the Reynolds
+//! the first table, [`crate::scene::fidelity::worst_flow`]), which flow it is, and the oil the Reynolds
 //! condition creates in cavitated zones (the report's warning) as a share of the leading-edge inflow.
 
 use std::fmt::Write as _;
@@ -11,45 +10,12 @@ use std::path::Path;
 use anyhow::Result;
 
 use crate::bearing::report::warning::Warning;
-use crate::bearing::solution::BearingFlows;
 use crate::bearing::{solve_case, Solution};
-use crate::model::Fidelity;
+use crate::scene::fidelity::worst_flow;
 
-use super::bench::{pct, with_mesh};
+use super::bench::{pct, reference_fine, with_mesh};
 
 pub const HEADING: &str = "## Flows against the mesh, every shipped case";
-
-/// The overrides of twice the reference level's element counts (the first table's truth).
-fn reference_fine() -> Vec<String> {
-    let (nx, nz, no) = Fidelity::Reference.elements();
-    vec![
-        "mesh.fidelity=\"reference\"".into(),
-        format!("mesh.circumferential_elements={}", 2 * nx),
-        format!("mesh.axial_elements={}", 2 * nz),
-        format!("mesh.orifice_elements={}", 2 * no),
-        "mesh.max_nodes=2000000".into(),
-    ]
-}
-
-/// The worst flow's relative error and its name, over the flows above 1 % of the throughput.
-fn worst_flow(flows: &BearingFlows, truth: &BearingFlows) -> Option<(f64, &'static str)> {
-    let parts = |f: &BearingFlows| {
-        [
-            ("leading edges", f.leading_edges_in),
-            ("trailing edges", f.trailing_edges_out),
-            ("sides", f.sides_out),
-            ("orifices", f.orifices_in),
-            ("into cavitation", f.to_cavitation),
-        ]
-    };
-    let throughput: f64 = parts(truth).iter().map(|(_, v)| v.abs()).sum();
-    parts(flows)
-        .iter()
-        .zip(parts(truth))
-        .filter(|(_, (_, t))| throughput > 0.0 && t.abs() >= 0.01 * throughput)
-        .map(|((name, a), (_, t))| (((a - t) / t).abs(), *name))
-        .max_by(|a, b| a.0.total_cmp(&b.0))
-}
 
 /// The share of the leading-edge inflow the cavitation condition creates ([`Warning::CavitationCreatesOil`]).
 fn created_share(s: &Solution) -> Option<f64> {
@@ -59,21 +25,27 @@ fn created_share(s: &Solution) -> Option<f64> {
     })
 }
 
-/// One cell pair of the table: the worst flow error at standard and its flow, or why there is none.
-fn cells(text: &str, extra: &[String]) -> (String, String, Option<f64>) {
+/// The worst flow at standard against the reference-fine mesh: its relative error and name (`None`: no
+/// flow above 1 % of the throughput), and the share of oil the cavitation condition creates; or why a
+/// solve failed.
+type FlowCells = Result<(Option<(f64, &'static str)>, Option<f64>), String>;
+
+fn flow_cells(text: &str, extra: &[String]) -> FlowCells {
     let solve = |set: &[String]| with_mesh(text, set).and_then(|c| Ok(solve_case(&c)?));
     let mut standard = extra.to_vec();
     standard.push("mesh.fidelity=\"standard\"".into());
-    let fine: Vec<String> = extra.iter().cloned().chain(reference_fine()).collect();
-    match (solve(&standard), solve(&fine)) {
-        (Ok(s), Ok(t)) => {
-            let created = created_share(&s);
-            match worst_flow(&s.flows_m3_per_s, &t.flows_m3_per_s) {
-                Some((e, name)) => (pct(e), name.to_string(), created),
-                None => ("—".into(), "no flow above 1 %".into(), created),
-            }
-        }
-        (Err(e), _) | (_, Err(e)) => ("failed".into(), first_words(&e.to_string()), None),
+    match (solve(&standard), solve(&reference_fine(extra))) {
+        (Ok(s), Ok(t)) => Ok((worst_flow(&s.flows_m3_per_s, &t.flows_m3_per_s), created_share(&s))),
+        (Err(e), _) | (_, Err(e)) => Err(first_words(&e.to_string())),
+    }
+}
+
+/// The error and flow columns of [`FlowCells`].
+fn error_cells(cells: &FlowCells) -> (String, String) {
+    match cells {
+        Ok((Some((e, name)), _)) => (pct(*e), (*name).to_string()),
+        Ok((None, _)) => ("—".into(), "no flow above 1 %".into()),
+        Err(why) => ("failed".into(), why.clone()),
     }
 }
 
@@ -116,20 +88,23 @@ pub fn section(root: &Path) -> Result<String> {
                 continue;
             }
         };
-        let (err, flow, created) = cells(&text, &[]);
-        let (jerr, jflow) = if shipped == "jfo" {
-            ("(as shipped)".to_string(), String::new())
-        } else {
-            let (e, f, _) = cells(&text, &jfo);
-            (e, f)
+        let as_shipped = flow_cells(&text, &[]);
+        let jfo_cells = if shipped == "jfo" { None } else { Some(flow_cells(&text, &jfo)) };
+        let jfo_error = match jfo_cells.as_ref().unwrap_or(&as_shipped) {
+            Ok((Some((e, _)), _)) => Some(*e),
+            _ => None,
         };
-        let je = if shipped == "jfo" { &err } else { &jerr };
-        if let Ok(v) = je.trim_end_matches(" %").parse::<f64>() {
-            if worst_jfo.as_ref().is_none_or(|(w, _)| v > *w) {
-                worst_jfo = Some((v, name.clone()));
+        if let Some(e) = jfo_error {
+            if worst_jfo.as_ref().is_none_or(|(w, _)| e > *w) {
+                worst_jfo = Some((e, name.clone()));
             }
         }
-        let created = created.map_or("—".into(), pct);
+        let (err, flow) = error_cells(&as_shipped);
+        let (jerr, jflow) = jfo_cells.as_ref().map_or(("(as shipped)".into(), String::new()), error_cells);
+        let created = match &as_shipped {
+            Ok((_, Some(c))) => pct(*c),
+            _ => "—".into(),
+        };
         let _ = writeln!(md, "| `{name}` | {shipped} | {err} | {flow} | {created} | {jerr} | {jflow} |");
     }
     if let Some((w, name)) = worst_jfo {
@@ -137,34 +112,4 @@ pub fn section(root: &Path) -> Result<String> {
             writeln!(md, "\nWith the mass-conserving film the worst flow error at standard is {w:.2} % (`{name}`).");
     }
     Ok(md)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::worst_flow;
-    use crate::bearing::solution::BearingFlows;
-
-    /// The worst flow is named, and a flow below 1 % of the throughput is left out however far off it is.
-    #[test]
-    fn the_worst_flow_is_named_and_flows_below_one_percent_of_the_throughput_are_left_out() {
-        let truth = BearingFlows {
-            leading_edges_in: 10.0,
-            trailing_edges_out: 4.0,
-            sides_out: 5.95,
-            orifices_in: 0.0,
-            to_cavitation: 0.05,
-            ..BearingFlows::default()
-        };
-        let flows = BearingFlows {
-            leading_edges_in: 10.2,
-            trailing_edges_out: 4.2,
-            sides_out: 5.9,
-            to_cavitation: 0.5,
-            ..truth
-        };
-        let (e, name) = worst_flow(&flows, &truth).unwrap();
-        assert_eq!(name, "trailing edges");
-        assert!((e - 0.05).abs() < 1e-12, "{e}");
-        assert_eq!(worst_flow(&truth, &BearingFlows::default()), None);
-    }
 }

@@ -30,15 +30,28 @@ pub struct LevelCost {
 /// 1 % of the throughput (smaller ones are round-off of a balance); `None` when no flow does.
 #[must_use]
 pub fn flow_error(flows: &BearingFlows, truth: &BearingFlows) -> Option<f64> {
-    let parts =
-        |f: &BearingFlows| [f.leading_edges_in, f.trailing_edges_out, f.sides_out, f.orifices_in, f.to_cavitation];
+    worst_flow(flows, truth).map(|(e, _)| e)
+}
+
+/// [`flow_error`] and the name of the flow it is (`"orifices"`, `"into cavitation"`, …).
+#[must_use]
+pub fn worst_flow(flows: &BearingFlows, truth: &BearingFlows) -> Option<(f64, &'static str)> {
+    let parts = |f: &BearingFlows| {
+        [
+            ("leading edges", f.leading_edges_in),
+            ("trailing edges", f.trailing_edges_out),
+            ("sides", f.sides_out),
+            ("orifices", f.orifices_in),
+            ("into cavitation", f.to_cavitation),
+        ]
+    };
     let (a, t) = (parts(flows), parts(truth));
-    let throughput: f64 = t.iter().map(|v| v.abs()).sum();
+    let throughput: f64 = t.iter().map(|(_, v)| v.abs()).sum();
     a.iter()
         .zip(&t)
-        .filter(|(_, t)| t.abs() >= 0.01 * throughput && throughput > 0.0)
-        .map(|(a, t)| ((a - t) / t).abs())
-        .reduce(f64::max)
+        .filter(|(_, (_, t))| throughput > 0.0 && t.abs() >= 0.01 * throughput)
+        .map(|((name, a), (_, t))| (((a - t) / t).abs(), *name))
+        .reduce(|w, x| if x.0 > w.0 { x } else { w })
 }
 
 /// The measured table.
@@ -111,6 +124,7 @@ mod tests {
         let coarse = BearingFlows { leading_edges_in: 10.1, orifices_in: 1.3, to_cavitation: 0.2, ..truth };
         let e = flow_error(&coarse, &truth).unwrap();
         assert!((e - 0.3).abs() < 1e-12, "{e}");
+        assert_eq!(worst_flow(&coarse, &truth).map(|(_, name)| name), Some("orifices"));
         assert_eq!(flow_error(&truth, &truth), Some(0.0));
         assert_eq!(flow_error(&truth, &BearingFlows::default()), None);
         let mut row = shipped().unwrap().rows[0].clone();
