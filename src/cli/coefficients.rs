@@ -126,15 +126,24 @@ fn speed_table(
     let mut pb = progress(speeds.len(), "speeds");
     let mut solves = 0;
     let mut solved: Vec<Sample> = Vec::new();
+    let most = params.max_samples.max(speeds.len());
     let result = band::sample(speeds, &params, &mut |rpm| {
         if interrupt::requested() {
             return Err(PointError::Solve(SolveError::Cancelled));
         }
         solves += 1;
-        if solves > speeds.len() {
-            pb.inc_length(1);
+        // Refinement adds speeds until the cubic fits: count against its bound (not against the speeds done,
+        // which read "29/29" as if the band were finishing).
+        if solves == speeds.len() + 1 {
+            pb.inc_length((most - speeds.len()) as u64);
         }
-        pb.set_message(format!("{rpm:.0} rpm"));
+        if solves > speeds.len() {
+            pb.set_message(format!(
+                "{rpm:.0} rpm (refining the band for ROSS's spline: at most {most} speeds, usually far fewer)"
+            ));
+        } else {
+            pb.set_message(format!("{rpm:.0} rpm"));
+        }
         let s = band::solve_point(runner, rpm, &Interrupt);
         if let Ok(sample) = &s {
             solved.push(sample.clone());
