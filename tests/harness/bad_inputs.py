@@ -709,7 +709,10 @@ class Harness:
             # feeding keys
             "groove wider than the gap": (["solve", c, "--set", "feeding.groove_width_deg=80"] + groove, "error"),
             "groove width 0": (["solve", c, "--set", "feeding.groove_width_deg=0"] + groove, "error"),
-            "churning with a groove": (["solve", c, "--set", "feeding.churning_factor=5"] + groove, "error"),
+            # the later --set wins: a feeding kind given after the churning factor replaces it (with a note),
+            # a churning factor given after a groove is refused
+            "churning then a groove": (["solve", c, "--set", "feeding.churning_factor=5"] + groove, "ok"),
+            "a groove then churning": (["solve", c] + groove + ["--set", "feeding.churning_factor=5"], "error"),
             "churning nan": (["solve", c, "--set", "feeding.churning_factor=nan"], "error"),
             "ram coefficient 2": (["solve", c, "--set", "feeding.ram_pressure_coefficient=2"], "error"),
             "vary feeding kinds": (["sweep", c, "--vary", "feeding.kind=flooded,leading_edge_groove,spray_bar,bath"]
