@@ -102,11 +102,13 @@ pub fn summary_text(s: &Solution) -> String {
         );
         let _ = writeln!(
             o,
-            "    heat: power in {:.1} W = carried by oil {:.1} W + conducted {:.1} W (closure {:+.2e}); pads to surroundings {:.1} W",
-            t.heat.power_in(),
+            "    heat: generated {:.1} W = carried by oil {:.1} W + conducted {:.1} W (closure {:+.2e}; journal power {:.1} W, identity {:+.2e}); pads to surroundings {:.1} W",
+            t.heat.heat_generated(),
             t.heat_carried_by_oil_w,
             t.heat_conducted_w,
             t.energy_balance_closure,
+            t.heat.power_in(),
+            t.report.power_identity,
             t.heat_pads_to_surroundings_w
         );
         let r = &t.report;

@@ -215,7 +215,7 @@ fn thermal_group(t: &crate::bearing::solution::ThermalResult) -> Group {
             row("Journal T", format!("{:.1}", t.journal_temperature_c), "°C", "Journal surface temperature: given, or from zero net heat flux into the journal."),
             row("Inlet T per pad", inlets.join(", "), "°C", "Leading-edge oil temperature of each pad from the groove mixing of hot carried-over oil with fresh supply."),
             eng_row("Heat to oil, conducted", &[t.heat_carried_by_oil_w, t.heat_conducted_w], "W", "Friction power leaves as enthalpy of the oil and by conduction into pads and journal."),
-            row("Energy balance", small(t.energy_balance_closure), "–", "(power − heat to oil − heat conducted) / power: the discrete energy balance, should be small."),
+            row("Energy balance", small(t.energy_balance_closure), "–", "(heat generated − heat to oil − heat conducted) / heat generated: the discrete energy balance, should be at round-off."),
             row("Thermal loop", rep.outer_iterations.to_string(), "iterations", "Outer iterations of equilibrium + temperatures until the viscosity field converged."),
             row("Thermal loop time", format!("{:.0}", MS.from_si(rep.seconds)), "ms", "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing)."),
             row("Viscosity change", rep.viscosity_change.last().map_or_else(|| "—".into(), |v| format!("{v:.1e}")), "–", "Largest nodal relative viscosity change of the last outer iteration (converged below 1e-4)."),

@@ -17,6 +17,7 @@ mod fidelity_arc;
 mod film_checks;
 mod flexible_pads;
 mod jfo_closed_form;
+mod jfo_energy;
 mod literature_fillon;
 mod literature_someya;
 mod long_runs;

@@ -132,8 +132,14 @@ pub struct ThermalReport {
     pub converged: bool,
     /// Why the loop stopped, when it converged.
     pub stop_reason: Option<ThermalConvergence>,
-    /// Energy balance closure of the converged state (P − H − C)/P, whole bearing.
+    /// Energy balance closure of the converged state (G − H − C)/G, whole bearing: heat generated in the
+    /// films against the heat the oil carries away and the heat conducted (physics::energy::balance).
     pub energy_balance_closure: f64,
+    /// The films' power identity (P − G)/P, whole bearing: the journal's shear power against the heat the
+    /// films generate; round-off with the Reynolds and Gümbel conditions, a discretisation error with the
+    /// mass-conserving film (physics::energy::balance).
+    #[serde(default)]
+    pub power_identity: f64,
     /// Worst closure over the pads.
     pub energy_balance_worst_pad: f64,
     pub equilibrium_iterations: usize,

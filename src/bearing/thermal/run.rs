@@ -464,6 +464,7 @@ fn finish(
     }
     report.thermal_seconds += tt.elapsed().as_secs_f64();
     report.energy_balance_closure = heat.closure();
+    report.power_identity = heat.power_identity();
     report.energy_balance_worst_pad = worst;
     report.thermal_factorizations =
         thermal.pads.iter().map(|p| p.factorizations).sum::<usize>() - report.thermal_factorizations;

@@ -56,8 +56,13 @@
 //! equals `ρ c_p Σ_j o_j T_j` with `o_j = ∫ q·∇N_j + ∫ v_inj N_j` the consistent nodal outflow of the same
 //! flux field. In full film `o_j` is the Reynolds solver's own consistent flow (same quadrature), zero at
 //! interior nodes; so the discrete energy balance (generation = heat carried by the oil through the edges +
-//! heat conducted out) closes to round-off there, and its residual measures only the film-fraction model's
-//! discrete mass leak at rupture boundaries. [`FlowState::outflow`] exposes `o_j`.
+//! heat conducted out) closes to round-off there. With the Reynolds and Gümbel conditions `o_j` is not zero at
+//! the interior nodes of rupture and reformation (they do not conserve mass); the balance books that heat
+//! apart (`cavitation_transport_w`). After a mass-conserving film solve the Galerkin flux alone leaves
+//! `o_j = (D θ)_j / 12` there, the oil the film's upwinding `D` moves between neighbours
+//! (physics::reynolds::jfo_exchange); the equation carries those exchanges too, upwind, as
+//! `ρ c_p m (T_to − T_from)` in the receiving row, and adds them to `o_j`, which is then zero at every
+//! interior node to round-off. [`FlowState::outflow`] exposes `o_j`.
 //!
 //! Units: SI, temperatures °C, heats in W (whole pad: symmetry factor applied where stated).
 
@@ -72,7 +77,7 @@ use crate::fem::supg::{
 };
 use crate::fem::GeneralPattern;
 use crate::mesh::grid::NodeSite;
-use crate::physics::reynolds::{FilmGeometry, FilmInputs, PadFilm};
+use crate::physics::reynolds::{FilmGeometry, FilmInputs, NodeExchange, PadFilm};
 use crate::physics::turbulence::Factors;
 
 /// Sub-cells per direction for elements cut by an orifice edge (the value the Reynolds solver uses, so the
@@ -219,8 +224,12 @@ pub struct FlowState {
     /// laminar everywhere (physics::turbulence).
     eddy: Vec<[[f64; 2]; 4]>,
     inj: NodalInjection,
-    /// Consistent nodal outflow `o_j` of the flux field [m³/s] (modelled domain, no symmetry factor).
+    /// Consistent nodal outflow `o_j` of the flux field [m³/s] (modelled domain, no symmetry factor), the
+    /// mass-conserving film's exchanges included.
     pub outflow: Vec<f64>,
+    /// After a mass-conserving film solve: the oil its upwinding moves between neighbouring nodes
+    /// ([`NodeExchange`]), carried as heat by the energy equation too (module documentation, Conservation).
+    exchanges: Vec<NodeExchange>,
     /// Journal shear power with the film fraction, `U ∫ (θ µ U/h + (h/2) ∂p/∂s) dA` [W] (whole pad).
     pub shear_power: f64,
     /// `∫ p v_inj dA`: pressure work of the injected oil dissipated in the film [W] (whole pad).
@@ -314,6 +323,7 @@ impl FilmEnergy {
                 elements: Vec::with_capacity(self.cells.len()),
             },
             outflow: vec![0.0; self.n_nodes],
+            exchanges: if striated { film.upwinding_exchanges(u) } else { Vec::new() },
             shear_power: 0.0,
             pumping_power: 0.0,
             injection_work: 0.0,
@@ -367,6 +377,10 @@ impl FilmEnergy {
                     st.outflow[nodes[a]] += q.w * (qs * q.dn_ds[a] + qz * q.dn_dz[a]);
                 }
             }
+        }
+        for x in &st.exchanges {
+            st.outflow[x.to] += x.m;
+            st.outflow[x.from] -= x.m;
         }
         for cell in &self.cells {
             let nodes = g.elements[cell.element];
@@ -493,8 +507,15 @@ impl FilmEnergy {
                 }
             }
         }
-        // Injection, lumped on the nodes.
+        // The mass-conserving film's exchanges between neighbours, upwind: the oil arriving at `to` brings
+        // the temperature of `from` (advective form, like the flux field's term).
         let rc = oil.capacity();
+        for x in &st.exchanges {
+            let c = rc * x.m;
+            values[pattern.diag[x.to]] += c;
+            values[pattern.position(x.to, x.from).expect("neighbours share an element")] -= c;
+        }
+        // Injection, lumped on the nodes.
         for j in 0..g.n_nodes() {
             let r = rc * st.inj.inflow[j] + st.inj.pipe[j];
             if r != 0.0 || st.inj.work[j] != 0.0 {

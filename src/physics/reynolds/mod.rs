@@ -64,6 +64,7 @@ use thiserror::Error;
 mod geometry;
 mod injection;
 mod jfo;
+mod jfo_exchange;
 mod jfo_linearize;
 mod jfo_onset;
 mod jfo_operators;
@@ -76,6 +77,7 @@ mod solve;
 pub use geometry::{FilmGeometry, OrificeOperator};
 pub use injection::InjectionResponse;
 pub use jfo::MAX_JFO_ITERATIONS;
+pub use jfo_exchange::NodeExchange;
 
 /// Largest number of active-set iterations for the Reynolds cavitation condition.
 pub const MAX_ACTIVE_SET_ITERATIONS: usize = 60;
