@@ -512,8 +512,13 @@ impl FilmEnergy {
         let rc = oil.capacity();
         for x in &st.exchanges {
             let c = rc * x.m;
-            values[pattern.diag[x.to]] += c;
-            values[pattern.position(x.to, x.from).expect("neighbours share an element")] -= c;
+            // The exchanges come from the film's own element pattern, so (to, from) is always an entry here.
+            let off = pattern.position(x.to, x.from);
+            debug_assert!(off.is_some(), "nodes {} and {} share no element", x.to, x.from);
+            if let Some(k) = off {
+                values[pattern.diag[x.to]] += c;
+                values[k] -= c;
+            }
         }
         // Injection, lumped on the nodes.
         for j in 0..g.n_nodes() {
