@@ -105,7 +105,11 @@ pub fn section(root: &Path) -> Result<String> {
             Ok((_, Some(c))) => pct(*c),
             _ => "—".into(),
         };
-        let _ = writeln!(md, "| `{name}` | {shipped} | {err} | {flow} | {created} | {jerr} | {jflow} |");
+        let row = format!("| `{name}` | {shipped} | {err} | {flow} | {created} | {jerr} | {jflow} |");
+        // each row on standard error as it is measured: the section takes about an hour, and a run stopped
+        // before its end still leaves the rows it finished
+        eprintln!("{row}");
+        let _ = writeln!(md, "{row}");
     }
     if let Some((w, name)) = worst_jfo {
         let _ =
