@@ -389,7 +389,7 @@ fn on_a_large_fast_bearing_a_groove_cuts_the_total_loss_of_a_flooded_housing() {
 /// mesh): as the grooves' supply falls from more than the films take (2000 l/min: the fully fed solution) to 900
 /// and 700 l/min, the power loss and the hottest pad temperature both fall — the trend measured on starved
 /// turbine bearings. Measured: 110.8 → 104.5 → 96.2 kW; pad maximum 66.9 → 63.1 → 61.5 °C. Below that the loaded
-/// pad runs short (500 l/min: 84.7 kW but 64.7 °C at the standard mesh), which the shipped case does not reach.
+/// pad runs short (500 l/min: 84.7 kW but 64.9 °C at the standard mesh), which the shipped case does not reach.
 /// Energy closure 1.3e-15, 1.1e-15 and −1.9e-15; the films' power identity −2.6e-16 fully fed, 2.6e-4 at 900 and
 /// 7.5e-4 at 700 l/min (the mass-conserving film's discretisation error next to its cavitated zones).
 #[test]
