@@ -7,6 +7,13 @@
 //! journal directions that have stiffness plus the loaded pads' coordinates, so a zero-stiffness journal
 //! direction (a two-pad bearing sideways) is held, as in the pad-assembly method. A backtracking line search
 //! on the scaled residual keeps every film open.
+//!
+//! Before accepting a converged state, every unloaded pad is searched once for a loaded state
+//! ([`recheck_unloaded`]); Newton goes on from one it finds. A lightly loaded pad near the fold of its tilt
+//! equilibrium (its moment rises through zero past the onset of pressure and falls again) can lose that
+//! state within Newton's first step: its film drops to the onset of pressure again and the pads are back
+//! in the states the solve had converged in. Newton then returns to that converged state rather than
+//! iterating to it a second time.
 
 use crate::bearing::report::error::StallReason;
 use crate::bearing::report::warning::Method;
@@ -77,6 +84,8 @@ pub(super) fn coupled_newton(
     let base_radius = ctx.params.max_step * model.assembled_clearance;
     let mut radius = base_radius;
     let mut kink_steps = 0;
+    // The converged state before the search before acceptance loaded a pad again ([`recheck_unloaded`]).
+    let mut before_recheck: Option<Accepted> = None;
     place_hard_pads(model, &mut u, &mut states, &none_moved, ctx)?;
     for it in 0..ctx.params.max_iterations {
         if cancel.cancelled() {
@@ -84,6 +93,15 @@ pub(super) fn coupled_newton(
         }
         if it > 0 && cancel.suspend() {
             return Ok(Progress::Suspended(Resume { coordinates: u, placed_pads: 0, report: Default::default() }));
+        }
+        if before_recheck.as_ref().is_some_and(|(_, s1)| same_unloaded(s1, &states)) {
+            // Newton dropped every pad the search loaded again (it passed the fold of the pad's loaded branch:
+            // no equilibrium with it loaded is reachable from here) and is back among the pad states it had
+            // converged in, whose unloaded pads have all been searched: that converged state is the answer,
+            // which Newton would otherwise reach again (in seven iterations on the preview compressor, JFO).
+            if let Some((u1, s1)) = before_recheck.take() {
+                (u, states) = (u1, s1);
+            }
         }
         ctx.report.iterations += 1;
         let (r, merit) = coupled_residual(model, &u, &states, w, ctx.force_scale);
@@ -93,7 +111,11 @@ pub(super) fn coupled_newton(
             // Before accepting, give every unloaded (not held) pad the safeguarded search: a pad without film
             // pressure is in equilibrium only trivially, and from a warm start (a sweep, an edit) it may sit in
             // its pressure-free range although a loaded equilibrium exists at this operating point.
+            let converged = (u.clone(), states.clone());
             let loaded_again = recheck_unloaded(model, &mut u, &mut states, &mut rechecked, ctx)?;
+            if loaded_again && before_recheck.is_none() {
+                before_recheck = Some(converged);
+            }
             let (r2, _) = coupled_residual(model, &u, &states, w, ctx.force_scale);
             if !loaded_again && r2[0].hypot(r2[1]) <= tol {
                 let force = total_force(&states);
@@ -157,6 +179,11 @@ pub(super) fn coupled_newton(
         return Ok(Progress::Done(Err(stall(&u, &states, w, reason, ctx))));
     }
     Ok(Progress::Done(Err(stall(&u, &states, w, StallReason::IterationLimit(ctx.params.max_iterations), ctx))))
+}
+
+/// Whether two sets of pad states have the same pads unloaded.
+fn same_unloaded(a: &[PadState], b: &[PadState]) -> bool {
+    a.iter().zip(b).all(|(x, y)| x.unloaded == y.unloaded)
 }
 
 fn stall(u: &[f64], states: &[PadState], w: [f64; 2], reason: StallReason, ctx: &Ctx<'_>) -> Stall {

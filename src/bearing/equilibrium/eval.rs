@@ -164,9 +164,10 @@ pub(super) fn film_eval(
 }
 
 /// Accounts for one film solve in the report.
-fn account(ctx: &mut Ctx<'_>, k: usize, info: FilmSolveInfo) {
+pub(super) fn account(ctx: &mut Ctx<'_>, k: usize, info: FilmSolveInfo) {
     ctx.report.film_solves += 1;
     ctx.report.factorizations += info.factorizations;
+    ctx.report.pivoted_factorizations += info.pivoted_factorizations;
     for warning in info.warnings {
         ctx.report.warn(Warning::Film { pad: k, warning });
     }

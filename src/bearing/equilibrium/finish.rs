@@ -15,7 +15,7 @@ use crate::bearing::report::warning::Warning;
 use crate::model::LoadSpec;
 use crate::physics::reynolds::{FilmError, FilmLinearization};
 
-use crate::bearing::equilibrium::eval::{external_load, min_film, Ctx};
+use crate::bearing::equilibrium::eval::{account, external_load, min_film, Ctx};
 use crate::bearing::equilibrium::journal::{nearest_normal, pads_surround};
 use crate::bearing::equilibrium::state::{Equilibrium, Found, FLOATING_SHARE, TOUCHDOWN_FRACTION};
 use crate::bearing::film::coordinates::PadDof;
@@ -45,8 +45,8 @@ pub(super) fn finish(model: &mut BearingModel, found: Found, mut ctx: Ctx<'_>) -
         if model.pads[k].film.coordinates() != local.as_slice() {
             let film = &mut model.pads[k].film;
             film.set_coordinates(&local).map_err(|e| SolveError::Film { pad: k, error: e })?;
-            film.solve(&op.film_inputs(k), true).map_err(|e| SolveError::Film { pad: k, error: e })?;
-            ctx.report.film_solves += 1;
+            let info = film.solve(&op.film_inputs(k), true).map_err(|e| SolveError::Film { pad: k, error: e })?;
+            account(&mut ctx, k, info);
         }
         let share = ctx.share(p);
         let film = &mut model.pads[k].film;

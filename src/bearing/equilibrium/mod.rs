@@ -38,6 +38,8 @@ pub mod pivots;
 mod polar;
 mod solve;
 pub mod state;
+#[cfg(test)]
+mod tests;
 
 pub use eval::force_scale;
 pub use solve::{solve_equilibrium, step_equilibrium};

@@ -16,6 +16,10 @@ pub struct SolveReport {
     pub inner_iterations: usize,
     pub film_solves: usize,
     pub factorizations: usize,
+    /// Of `factorizations`: those of the mass-conserving film that the factorisation without row exchanges
+    /// refused (or solved inaccurately) and the pivoting sparse LU did again.
+    #[serde(default)]
+    pub pivoted_factorizations: usize,
     /// Final journal force residual |ΣF + W| relative to the force scale.
     pub residual: f64,
     /// Largest final pad residual relative to the pad's scale (floating pads excluded).
@@ -69,6 +73,7 @@ impl SolveReport {
         self.inner_iterations += other.inner_iterations;
         self.film_solves += other.film_solves;
         self.factorizations += other.factorizations;
+        self.pivoted_factorizations += other.pivoted_factorizations;
         self.seconds += other.seconds;
     }
 
@@ -80,6 +85,7 @@ impl SolveReport {
         self.inner_iterations += earlier.inner_iterations;
         self.film_solves += earlier.film_solves;
         self.factorizations += earlier.factorizations;
+        self.pivoted_factorizations += earlier.pivoted_factorizations;
         self.seconds += earlier.seconds;
         let mut history = earlier.residual_history;
         history.append(&mut self.residual_history);

@@ -185,8 +185,9 @@ impl JfoState {
 
 #[cfg(test)]
 impl crate::physics::reynolds::PadFilm {
-    /// Makes every mass-conserving factorisation of this film use the pivoting LU (tests compare the two).
-    pub(super) fn always_pivot(&mut self) {
+    /// Makes every mass-conserving factorisation of this film use the pivoting LU (tests compare the two, and
+    /// count the pivoted factorisations up to the bearing's report).
+    pub(crate) fn always_pivot(&mut self) {
         let state = self.jfo.get_or_insert_with(|| Box::new(JfoState::new(&self.geom).expect("film state")));
         state.pivot_always = true;
     }
