@@ -197,6 +197,27 @@ fn shaft_sections_added_and_removed_on_the_sketch_change_mass_and_free_free_freq
     assert!(shorter_ff > longer_ff, "a shorter shaft is stiffer: {longer_ff} → {shorter_ff} rad/s");
 }
 
+/// At 1280×720 every field of a bearing given by numbers lies inside the view: a label and its field move
+/// to the next row together (the last field, "C yy", ran past the view's right edge).
+#[test]
+fn the_fields_of_a_bearing_given_by_numbers_lie_inside_the_view_at_1280x720() {
+    use tiltpad::app::views::rotor_edit::Selected;
+    let mut h = shaft_with_numbered_bearings();
+    click_sketch(&mut h, 0.0, 1000.0, 24.0);
+    assert_eq!(rotor(&h).edit().unwrap().selected, Some(Selected::Bearing(0)));
+    let view = h.state().view_rect().unwrap();
+    for matrix in ["K", "C"] {
+        for entry in ["xx", "xy", "yx", "yy"] {
+            let unit = if matrix == "K" { "N/m" } else { "N·s/m" };
+            let label = format!("{matrix} {entry} [{unit}]");
+            let field = spin_button(&h, &label).rect();
+            let name = h.get_by_label(&label).rect();
+            assert!(view.contains_rect(field), "{label}: field at {field:?} outside the view {view:?}");
+            assert!((name.center().y - field.center().y).abs() < 4.0, "{label}: name at {name:?}, field at {field:?}");
+        }
+    }
+}
+
 #[test]
 fn a_bearing_stiffness_given_by_numbers_edited_on_the_sketch_raises_the_first_natural_frequency() {
     use tiltpad::app::views::rotor_edit::Selected;
