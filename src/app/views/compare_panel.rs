@@ -79,7 +79,16 @@ fn cell(ui: &mut Ui, width: f32, text: RichText, align: egui::Align) -> egui::Re
         egui::Align::Max => egui::Layout::right_to_left(egui::Align::Center),
         _ => egui::Layout::left_to_right(egui::Align::Center),
     };
-    let height = ui.spacing().interact_size.y;
+    // A name's cell is as high as its wrapped lines: the grid centres a cell in its row by the height asked
+    // for, so a name of three lines in a cell asked one line high ran into the next row.
+    let lines = |ui: &Ui| {
+        egui::WidgetText::from(text.clone())
+            .into_galley(ui, Some(egui::TextWrapMode::Wrap), width, egui::TextStyle::Body)
+            .size()
+            .y
+    };
+    let one_line = ui.spacing().interact_size.y;
+    let height = if align == egui::Align::Min { lines(ui).max(one_line) } else { one_line };
     ui.allocate_ui_with_layout(egui::vec2(width, height), layout, |ui| {
         ui.set_min_width(width);
         ui.set_max_width(width);

@@ -233,6 +233,22 @@ pub enum SectionChange {
     Remove(usize),
 }
 
+/// Starts a new row of the wrapping strip when a label and its field, showing `shown`, would not both fit
+/// on this one. egui wraps each widget on its own, and a field inside a scope not at all: at 1280×720 the
+/// last field of a row ("C yy") ran past the view's edge.
+fn keep_with_label_ui(ui: &mut Ui, label: &str, shown: &str) {
+    let width = |text: &str, style: egui::TextStyle| {
+        egui::WidgetText::from(text).into_galley(ui, Some(egui::TextWrapMode::Extend), f32::INFINITY, style).size().x
+    };
+    let spacing = ui.spacing();
+    let field = (width(shown, egui::TextStyle::Button) + 2.0 * spacing.button_padding.x).max(spacing.interact_size.x);
+    let needed = width(label, egui::TextStyle::Body) + spacing.item_spacing.x + field;
+    let at_row_start = ui.cursor().min.x <= ui.max_rect().min.x + 0.5;
+    if !at_row_start && ui.available_size_before_wrap().x < needed {
+        ui.end_row();
+    }
+}
+
 /// A number of the rotor file: label with its unit, value; the edit is applied when it changed.
 fn number_ui(
     ui: &mut Ui,
@@ -244,9 +260,14 @@ fn number_ui(
 ) {
     let (unit, tip) = schema(key);
     let text = if unit.is_empty() || unit == "–" { label.to_string() } else { format!("{label} [{unit}]") };
+    let speed = (value.abs() * 0.005).max(1e-3);
+    // The decimals the field shows (egui's rule for a drag value of this speed).
+    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+    let decimals = (f64::from(ui.input(egui::InputState::aim_radius)) / speed).log10().ceil().clamp(0.0, 6.0) as usize;
+    let shown = ui.style().number_formatter.format(value, decimals..=6);
+    keep_with_label_ui(ui, &text, &shown);
     let l = ui.add(egui::Label::new(text).extend()).on_hover_text(&tip);
     let mut v = value;
-    let speed = (value.abs() * 0.005).max(1e-3);
     let r = ui
         .scope(|ui| {
             flag_invalid_ui(ui, edit.invalid(key));
@@ -270,6 +291,7 @@ fn integer_ui(
     set: impl FnOnce(&mut RotorFile, usize),
 ) {
     let (_, tip) = schema(key);
+    keep_with_label_ui(ui, label, &value.to_string());
     let l = ui.add(egui::Label::new(label).extend()).on_hover_text(&tip);
     let mut v = value;
     let r = ui

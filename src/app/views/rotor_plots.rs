@@ -242,46 +242,63 @@ pub(super) fn unbalance_ui(ui: &mut Ui, r: &AnalysisResult, rotor: &Rotor) {
     let mut legend: Vec<(String, Color32)> = b.nodes.iter().zip(&colors).map(|(n, c)| (n.name.clone(), *c)).collect();
     legend.push(("API 617 limit 25.4 sqrt(12000/N) µm (dashed)".into(), limit));
     legend_ui(ui, &legend);
-    let height = ((ui.available_height() - 20.0) / 2.0).max(120.0);
     let link = ui.scope_id().with("rotor_bode");
-    plot_without_legend("rotor_unbalance_amplitude", ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label("orbit p-p [µm]")
-        .labelled_x(70.0)
-        .labelled_y(32.0)
-        .include_y(0.0)
-        .link_axis(link, [true, false])
-        .show(ui, |p| {
-            for (n, color) in b.nodes.iter().zip(&colors) {
-                p.line(Line::new(n.name.clone(), n.amplitude_um.clone()).color(*color).width(1.6));
-            }
-            p.line(
-                Line::new("API 617 limit", b.api617_um.clone())
-                    .color(limit)
-                    .style(LineStyle::dashed_dense())
-                    .width(2.0),
-            );
-        })
-        .named("unbalance response, orbit p-p [µm] against speed [rpm]");
-    plot_without_legend("rotor_unbalance_phase", ui, height)
-        .x_axis_label("speed [rpm]")
-        .y_axis_label("phase of x [°]")
-        .labelled_x(70.0)
-        .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
-        .y_axis_formatter(|m, _| phase_label(m.value))
-        .include_y(-180.0)
-        .include_y(180.0)
-        .link_axis(link, [true, false])
-        .show(ui, |p| {
-            for (n, color) in b.nodes.iter().zip(&colors) {
-                let x: Vec<f64> = n.phase_deg.iter().map(|q| q[0]).collect();
-                let y: Vec<f64> = n.phase_deg.iter().map(|q| q[1]).collect();
-                for piece in wrapped_phase(&x, &y) {
-                    p.line(Line::new(n.name.clone(), piece).color(*color).width(1.6));
+    let amplitude = |ui: &mut Ui, height: f32| {
+        plot_without_legend("rotor_unbalance_amplitude", ui, height)
+            .x_axis_label("speed [rpm]")
+            .y_axis_label("orbit p-p [µm]")
+            .labelled_x(70.0)
+            .labelled_y(32.0)
+            .include_y(0.0)
+            .link_axis(link, [true, false])
+            .show(ui, |p| {
+                for (n, color) in b.nodes.iter().zip(&colors) {
+                    p.line(Line::new(n.name.clone(), n.amplitude_um.clone()).color(*color).width(1.6));
                 }
-            }
-        })
-        .named("unbalance response, phase of x [°] against speed [rpm]");
+                p.line(
+                    Line::new("API 617 limit", b.api617_um.clone())
+                        .color(limit)
+                        .style(LineStyle::dashed_dense())
+                        .width(2.0),
+                );
+            })
+            .named("unbalance response, orbit p-p [µm] against speed [rpm]");
+    };
+    let phase = |ui: &mut Ui, height: f32| {
+        plot_without_legend("rotor_unbalance_phase", ui, height)
+            .x_axis_label("speed [rpm]")
+            .y_axis_label("phase of x [°]")
+            .labelled_x(70.0)
+            .y_grid_spacer(egui_plot::uniform_grid_spacer(|_| PHASE_TICKS))
+            .y_axis_formatter(|m, _| phase_label(m.value))
+            .include_y(-180.0)
+            .include_y(180.0)
+            .link_axis(link, [true, false])
+            .show(ui, |p| {
+                for (n, color) in b.nodes.iter().zip(&colors) {
+                    let x: Vec<f64> = n.phase_deg.iter().map(|q| q[0]).collect();
+                    let y: Vec<f64> = n.phase_deg.iter().map(|q| q[1]).collect();
+                    for piece in wrapped_phase(&x, &y) {
+                        p.line(Line::new(n.name.clone(), piece).color(*color).width(1.6));
+                    }
+                }
+            })
+            .named("unbalance response, phase of x [°] against speed [rpm]");
+    };
+    // Amplitude over phase, each at least 120 points high; where the view is shorter than that, side by
+    // side at its full height: at 1280×720 the rotor view leaves about 220 points under the legend, and
+    // stacked, the phase plot's lower half (its −180° and its speed axis) ran past the view's bottom.
+    let room = ui.available_height();
+    if room - 20.0 >= 2.0 * 120.0 || ui.available_width() < 400.0 {
+        let height = ((room - 20.0) / 2.0).max(120.0);
+        amplitude(ui, height);
+        phase(ui, height);
+    } else {
+        ui.columns(2, |c| {
+            amplitude(&mut c[0], room - 10.0);
+            phase(&mut c[1], room - 10.0);
+        });
+    }
 }
 
 /// The undamped critical-speed map with the bearings' stiffness over speed.

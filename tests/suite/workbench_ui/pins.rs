@@ -43,6 +43,19 @@ fn pinning_a_result_compares_it_with_the_live_one_at_1280x720() {
     h.key_press(egui::Key::Escape);
     h.run_steps(2);
     snapshot(&mut h, "compare_pinned_1280x720");
+    // Each quantity's name, wrapped onto as many lines as it takes, stays in its own row: "flow trailing
+    // edges out [l/min]" took three lines in a row of two, its unit under "flow sides out".
+    let names: Vec<(String, egui::Rect)> =
+        comparison_cells(&h).into_iter().filter(|(t, _)| t.chars().next().is_some_and(char::is_alphabetic)).collect();
+    assert!(names.len() > 10, "{names:?}");
+    for (i, (a, ra)) in names.iter().enumerate() {
+        for (b, rb) in &names[i + 1..] {
+            assert!(
+                ra.intersect(*rb).height() < 1.0 || ra.intersect(*rb).width() < 1.0,
+                "{a:?} at {ra:?} over {b:?} at {rb:?}"
+            );
+        }
+    }
 
     open_fields(h.state_mut(), |f| f.flowlines = false);
     h.run_steps(3);

@@ -197,6 +197,71 @@ fn shaft_sections_added_and_removed_on_the_sketch_change_mass_and_free_free_freq
     assert!(shorter_ff > longer_ff, "a shorter shaft is stiffer: {longer_ff} → {shorter_ff} rad/s");
 }
 
+/// At 1280×720 the unbalance response's two plots lie inside the view (side by side there), each with its
+/// axis titles whole and its numbered ticks: stacked, the phase plot's lower half (its −180° and its speed
+/// axis) ran past the view's bottom.
+#[test]
+fn the_unbalance_response_keeps_both_plots_inside_the_view_at_1280x720() {
+    let mut h = solved_app_at([1280.0, 720.0], None, |app| app.open::<RotorView>());
+    wait_for_rotor(&mut h);
+    h.get_by_label("Unbalance response").click();
+    h.run_steps(3);
+    let view = h.state().view_rect().unwrap();
+    for plot in ["orbit p-p [µm]", "phase of x [°]"] {
+        let r = h.get_by_label(&format!("plot: unbalance response, {plot} against speed [rpm]")).rect();
+        // (Every rotor plot's frame reaches 2.5 points into the panel's right margin, inside its clip.)
+        assert!(view.expand2(egui::vec2(3.0, 0.0)).contains_rect(r), "{plot} plot at {r:?} outside the view {view:?}");
+    }
+    // Their speed axes' titles too, whole; and numbered ticks: on the amplitude axis, and every 90° of phase.
+    let texts = crate::common::painted_text::painted_texts(&h.output().shapes);
+    let titles: Vec<egui::Rect> = texts.iter().filter(|t| t.text == "speed [rpm]").map(|t| t.full).collect();
+    assert!(titles.len() == 2 && titles.iter().all(|t| view.contains_rect(*t)), "{titles:?} in {view:?}");
+    for title in ["orbit p-p [µm]", "phase of x [°]"] {
+        let t = texts.iter().find(|t| t.text == title).unwrap();
+        // (A rotated axis title starts 2 points into the panel's left margin, inside its clip.)
+        let view = view.expand2(egui::vec2(3.0, 0.0));
+        assert!(view.contains_rect(t.full) && t.shown.height() + 1.0 >= t.full.height(), "{title}: {t:?}");
+    }
+    let y_ticks = |plot: &str| {
+        let r = h.get_by_label(&format!("plot: unbalance response, {plot} against speed [rpm]")).rect();
+        let mut ticks: Vec<String> = texts
+            .iter()
+            .filter(|t| {
+                view.contains_rect(t.full) && t.full.right() <= r.left() + 1.0 && t.full.left() > r.left() - 50.0
+            })
+            .filter(|t| r.y_range().contains(t.full.center().y))
+            .filter(|t| t.text.trim_end_matches('°').parse::<f64>().is_ok())
+            .map(|t| t.text.clone())
+            .collect();
+        ticks.sort();
+        ticks
+    };
+    assert!(y_ticks("orbit p-p [µm]").len() >= 2, "{:?}", y_ticks("orbit p-p [µm]"));
+    assert_eq!(y_ticks("phase of x [°]"), ["-180°", "-90°", "0°", "180°", "90°"]);
+    snapshot(&mut h, "rotor_unbalance_1280x720");
+}
+
+/// At 1280×720 every field of a bearing given by numbers lies inside the view: a label and its field move
+/// to the next row together (the last field, "C yy", ran past the view's right edge).
+#[test]
+fn the_fields_of_a_bearing_given_by_numbers_lie_inside_the_view_at_1280x720() {
+    use tiltpad::app::views::rotor_edit::Selected;
+    let mut h = shaft_with_numbered_bearings();
+    click_sketch(&mut h, 0.0, 1000.0, 24.0);
+    assert_eq!(rotor(&h).edit().unwrap().selected, Some(Selected::Bearing(0)));
+    let view = h.state().view_rect().unwrap();
+    for matrix in ["K", "C"] {
+        for entry in ["xx", "xy", "yx", "yy"] {
+            let unit = if matrix == "K" { "N/m" } else { "N·s/m" };
+            let label = format!("{matrix} {entry} [{unit}]");
+            let field = spin_button(&h, &label).rect();
+            let name = h.get_by_label(&label).rect();
+            assert!(view.contains_rect(field), "{label}: field at {field:?} outside the view {view:?}");
+            assert!((name.center().y - field.center().y).abs() < 4.0, "{label}: name at {name:?}, field at {field:?}");
+        }
+    }
+}
+
 #[test]
 fn a_bearing_stiffness_given_by_numbers_edited_on_the_sketch_raises_the_first_natural_frequency() {
     use tiltpad::app::views::rotor_edit::Selected;
