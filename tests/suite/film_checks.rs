@@ -210,13 +210,14 @@ fn created_oil(s: &tiltpad::bearing::Solution) -> Option<(f64, Vec<usize>)> {
 
 /// The Reynolds condition holds `p = 0` in a cavitated zone and counts its gap as full: a diverging film's
 /// Couette flow and an orifice draining the zone draw oil there that is gas in the bearing. The report says
-/// how much, and which pads. At the Reynolds condition's rupture the pressure gradient vanishes, so almost
+/// how much, and which pads (the overloaded compressor's two floating pads, 7.4 % of the inflow; Someya's
+/// bearing 17 %). At the Reynolds condition's rupture the pressure gradient vanishes, so almost
 /// no flow leaves the full film into the zone and the created oil is the net flow "into cavitation" with
 /// its sign changed (to round-off: the condition keeps the residual of every cavitated node of one sign).
 /// The mass-conserving option creates none and says nothing.
 #[test]
 fn a_cavitation_condition_that_does_not_conserve_mass_says_how_much_oil_it_creates() {
-    for (name, pads_named) in [("compressor-bearing.toml", vec![0, 1, 2, 3, 4]), ("someya-4pad-lbp.toml", vec![0, 1])] {
+    for (name, pads_named) in [("compressor-overload.toml", vec![0, 1]), ("someya-4pad-lbp.toml", vec![0, 1])] {
         let s = common::solve(name, &["thermal.model=\"isothermal\""]);
         let (share, pads) = created_oil(&s).unwrap_or_else(|| panic!("{name}: {:?}", s.report.warnings));
         let f = &s.flows_m3_per_s;

@@ -18,6 +18,7 @@ use tiltpad::bearing::solve_case;
 
 const CASE: &str = "compressor-bearing-rocker-pivot.toml";
 const PREVIEW: &str = "mesh.fidelity=preview";
+const THD: &str = "thermal.model=\"thd\"";
 /// The case's static load [N].
 const LOAD_N: f64 = 1918.0;
 
@@ -103,16 +104,28 @@ fn softer_pivots_soften_the_bearing() {
 }
 
 /// THD with Hertz pivots: each pivot carries its pad's film load at the converged temperatures with exactly
-/// the Hertz approach, and linear springs at the converged secants give the same THD state (journal, pads
-/// and film temperature), within what the thermal loop's tolerance (viscosity change 1e-4) leaves.
+/// the Hertz approach, a floating pad's pivot the floor load, and linear springs at the converged secants give
+/// the same THD state (journal, pads and film temperature), within what the thermal loop's tolerance
+/// (viscosity change 1e-4) leaves. The springs are compared on the pads without their holes, where every pad
+/// carries load: with the holes open to ambient, pads 0 and 1 float in THD (their films cavitate whole), and a
+/// floating pad's place is not set by its film, so the springs solve may settle a floating pad elsewhere
+/// (measured: pad 0 lifted 1.4 µm, the journal 0.6 % away).
 #[test]
 fn hertz_pivots_converge_inside_the_thd_loop() {
-    let c = case(CASE, &[PREVIEW, "thermal.model=\"thd\""]);
+    for (set, compare_springs) in [(&[PREVIEW, THD][..], false), (&[PREVIEW, THD, "bearing.pads.orifice=[]"][..], true)]
+    {
+        hertz_thd_state(set, compare_springs);
+    }
+}
+
+fn hertz_thd_state(set: &[&str], compare_springs: bool) {
+    let c = case(CASE, set);
     let s = solve_case(&c).expect("THD Hertz-pivot solve");
     let t = s.thermal.as_ref().expect("thermal result");
     eprintln!("{}; {} outer iterations; {:?}", s.report.method_text(), t.report.outer_iterations, s.report.warnings);
     assert!(t.report.converged && s.report.pivot_load_iterations.is_some_and(|n| n > 1));
-    let iso = solve_case(&case(CASE, &[PREVIEW])).expect("isothermal");
+    let iso_set: Vec<&str> = set.iter().copied().filter(|x| *x != THD).collect();
+    let iso = solve_case(&case(CASE, &iso_set)).expect("isothermal");
     let mut springs = c.clone();
     for (k, (pad, res)) in c.bearing.pads.iter().zip(&s.pads).enumerate() {
         let contact = pad.pivot_contact.expect("contact pads");
@@ -129,23 +142,23 @@ fn hertz_pivots_converge_inside_the_thd_loop() {
         );
         if res.unloaded {
             // A floating pad's pivot takes the floor load's stiffness (its ξ is held, not balanced by a film):
-            // its film carries less than the floor load (here 1.14e-3 N of the 1.918 N floor: the THD film of
-            // the floating pad keeps a trace of pressure).
+            // its film carries less than the floor load (here none: the film of the floating pad is
+            // cavitated).
+            assert!(!compare_springs, "pad {k} floats");
             assert!(
                 load.abs() < FLOOR * LOAD_N && (state.load_n / (FLOOR * LOAD_N) - 1.0).abs() < 1e-12,
                 "pad {k}: load {load:.3e} N"
             );
-        } else {
-            let hertz = contact.state(load).expect("in Hertz range");
-            assert!(
-                (xi - hertz.approach_m).abs() < 1e-4 * hertz.approach_m,
-                "pad {k}: ξ {xi} vs δ {}",
-                hertz.approach_m
-            );
-            assert!((state.load_n / load - 1.0).abs() < 1e-4, "pad {k}: state at {} N, film {load} N", state.load_n);
+            continue;
         }
+        let hertz = contact.state(load).expect("in Hertz range");
+        assert!((xi - hertz.approach_m).abs() < 1e-4 * hertz.approach_m, "pad {k}: ξ {xi} vs δ {}", hertz.approach_m);
+        assert!((state.load_n / load - 1.0).abs() < 1e-4, "pad {k}: state at {} N, film {load} N", state.load_n);
         springs.bearing.pads[k].pivot_contact = None;
         springs.bearing.pads[k].pivot_stiffness_n_per_m = Some(state.secant_n_per_m());
+    }
+    if !compare_springs {
+        return;
     }
     let lin = solve_case(&springs).expect("THD on linear springs");
     let tl = lin.thermal.as_ref().expect("thermal result");

@@ -396,16 +396,21 @@ impl FilmEnergy {
                 let pipe = if v > 0.0 { oil.conductivity / op.length } else { 0.0 };
                 for a in 0..4 {
                     let wn = q.w * q.n[a];
-                    st.outflow[nodes[a]] += wn * v;
-                    st.inj.inflow[nodes[a]] += wn * v.max(0.0);
-                    st.inj.drain[nodes[a]] += wn * v.min(0.0);
-                    st.inj.pipe[nodes[a]] += wn * pipe;
+                    // The nodal flows through the hole with the film's lumped capillary term (the node's own
+                    // pressure, physics::reynolds::geometry): the film's consistent flow, so the interior
+                    // outflow stays zero and the pumping power meets the film's power identity.
+                    let pa = film.p[nodes[a]];
+                    let va = op.g * (inj.pressure - pa) / (4.0 * inj.viscosity * op.length);
+                    st.outflow[nodes[a]] += wn * va;
+                    st.inj.inflow[nodes[a]] += wn * va.max(0.0);
+                    st.inj.drain[nodes[a]] += wn * va.min(0.0);
+                    st.inj.pipe[nodes[a]] += wn * if va > 0.0 { oil.conductivity / op.length } else { 0.0 };
                     st.inj.work[nodes[a]] += wn * work;
+                    st.pumping_power += g.sym * wn * pa * va;
                 }
                 let reaction = rc * v.max(0.0) + pipe;
                 c_avg += q.w * reaction / area;
                 f_avg += q.w * (reaction * inj.temperature_c + work) / area;
-                st.pumping_power += g.sym * q.w * p * v;
                 st.injection_work += g.sym * q.w * work;
             }
             st.inj.elements.push((cell.element, c_avg, f_avg));
