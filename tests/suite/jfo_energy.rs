@@ -34,8 +34,10 @@ fn the_energy_equation_carries_the_oil_the_mass_conserving_film_moves() {
 
 /// The power identity `(P − G)/P` (physics::energy::balance): round-off with the Reynolds condition; with the
 /// mass-conserving film a discretisation error of the nodes next to rupture and reformation that falls with the
-/// mesh. Measured on the starved bearing: preview 2.22e-4 (1620 film nodes), standard 6.55e-5 (4940 nodes): order 2.19 in the
-/// element size (release build).
+/// mesh, at first order (the film's upwinding `D` is first order). Measured on the starved bearing: preview 2.92e-5
+/// (1620 film nodes), standard 1.69e-5 (4940 nodes), reference 6.6e-6: order 0.98, then 0.90 in the element size
+/// (release build). Before the capillary term was lumped the spurious ring under the holes' rims put it at
+/// 2.2e-4 and 6.6e-5, an apparent order 2.2 that was that ring resolving.
 #[test]
 fn the_films_power_identity_converges_with_the_mesh() {
     let r = common::solve("compressor-bearing.toml", &[THD, "mesh.fidelity=\"preview\""]);
@@ -52,5 +54,5 @@ fn the_films_power_identity_converges_with_the_mesh() {
     let order = (a / b).ln() / (0.5 * (nb as f64 / na as f64).ln());
     eprintln!("JFO: power identity {a:.2e} ({na} nodes) → {b:.2e} ({nb} nodes): order {order:.2}");
     assert!(a > 0.0 && b > 0.0, "{a} {b}");
-    assert!(order > 2.0, "order {order}");
+    assert!(order > 0.85, "order {order}");
 }
