@@ -296,6 +296,13 @@ pub(super) fn pct(x: f64) -> String {
 /// # Errors
 /// Case, solve and I/O errors.
 pub fn run(root: &Path, repeats: usize) -> Result<()> {
+    run_parts(root, repeats, false)
+}
+
+/// The whole file, or (`table_only`) its first part: the fidelity table with its flow note and plot, the
+/// targets, the thermal loop's cost and the cost growth, and `assets/fidelity.json`, the sections after it
+/// kept as they are.
+fn run_parts(root: &Path, repeats: usize, table_only: bool) -> Result<()> {
     let mut rows = Vec::new();
     let mut texts = Vec::new();
     let thd = vec!["thermal.model=\"thd\"".to_string(), "thermal.pad_film_bc=\"bc1\"".to_string()];
@@ -315,7 +322,12 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     let (pts, exponent) = growth(&texts[0].1, repeats.min(3))?;
     super::interrupt::say("bench: thermal loop cost");
     let thermal = thermal_cost(&texts, repeats)?;
-    let (cavitation, flow_note) = super::bench_cavitation::measured(root, repeats.min(3))?;
+    let (cavitation, flow_note) = if table_only {
+        super::interrupt::say("bench: flow note (JFO)");
+        (String::new(), super::bench_cavitation::flow_note_measured(root, repeats.min(3))?)
+    } else {
+        super::bench_cavitation::measured(root, repeats.min(3))?
+    };
     let machine = machine();
     let date = today();
     let mut md = String::new();
@@ -376,10 +388,34 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     #[allow(clippy::cast_precision_loss)]
     let range = pts.last().map_or(0.0, |p| p.0 as f64) / pts.first().map_or(1.0, |p| p.0 as f64);
     let _ = writeln!(md, "\nFitted t ∝ nodes^a over a {range:.0}× range: **a = {exponent:.2}** (sparse Cholesky of a 2-D grid with nested-dissection-like ordering grows as n^1.5 at worst; the coupled Newton needs a nearly constant number of film solves).");
+    if table_only {
+        let doc = std::fs::read_to_string(root.join("docs").join("PERFORMANCE.md"))?;
+        let rest = doc.find(&format!("\n{}", super::bench_batch::HEADING)).map_or("", |i| &doc[i..]);
+        md.push_str(rest);
+    } else {
+        md.push_str(&sections(root, repeats, &cavitation)?);
+    }
+    write_atomic(&root.join("docs").join("PERFORMANCE.md"), md.as_bytes())?;
+    write_atomic(&root.join("docs").join("performance-error-vs-time.svg"), svg_plot(&rows).as_bytes())?;
+    let table = FidelityTable {
+        generated: date,
+        machine,
+        case: "compressor-bearing".into(),
+        rows: rows.iter().filter(|r| r.case.starts_with("compressor-bearing")).cloned().collect(),
+    };
+    std::fs::create_dir_all(root.join("assets"))?;
+    write_atomic(&root.join("assets").join("fidelity.json"), serde_json::to_string_pretty(&table)?.as_bytes())?;
+    println!("wrote docs/PERFORMANCE.md, docs/performance-error-vs-time.svg, assets/fidelity.json");
+    Ok(())
+}
+
+/// Every section after the first part, the notes and the carried-over sections.
+fn sections(root: &Path, repeats: usize, cavitation: &str) -> Result<String> {
+    let mut md = String::new();
     md.push_str(&super::bench_batch::section(root, repeats.min(3))?);
     md.push_str(&super::bench_frf::section(root, repeats)?);
     md.push_str(&super::bench_flex::section(root, repeats.min(3))?);
-    md.push_str(&cavitation);
+    md.push_str(cavitation);
     md.push_str(&super::bench_rotor::section(root, repeats.min(3))?);
     md.push_str(&super::bench_turb::section(root, repeats.min(3))?);
     md.push_str(&super::bench_control::section(root, repeats.min(3))?);
@@ -406,18 +442,7 @@ pub fn run(root: &Path, repeats: usize) -> Result<()> {
     // this command): carried over as they are.
     md.push_str(&kept_section(root, PYTHON_SECTION));
     md.push_str(&kept_section(root, WEB_SECTION));
-    write_atomic(&root.join("docs").join("PERFORMANCE.md"), md.as_bytes())?;
-    write_atomic(&root.join("docs").join("performance-error-vs-time.svg"), svg_plot(&rows).as_bytes())?;
-    let table = FidelityTable {
-        generated: date,
-        machine,
-        case: "compressor-bearing".into(),
-        rows: rows.iter().filter(|r| r.case.starts_with("compressor-bearing")).cloned().collect(),
-    };
-    std::fs::create_dir_all(root.join("assets"))?;
-    write_atomic(&root.join("assets").join("fidelity.json"), serde_json::to_string_pretty(&table)?.as_bytes())?;
-    println!("wrote docs/PERFORMANCE.md, docs/performance-error-vs-time.svg, assets/fidelity.json");
-    Ok(())
+    Ok(md)
 }
 
 /// Heading of the Python package's cost against the command line (`python python/benchmarks/overhead.py
@@ -501,9 +526,23 @@ fn calibration_note(only: &str, before_ms: f64, after_ms: f64, in_doc_ms: Option
 /// # Errors
 /// An unknown section, a failed measurement, I/O.
 pub fn run_only(root: &Path, only: Option<&str>, repeats: usize) -> Result<()> {
-    const SECTIONS: [&str; 10] =
-        ["frf", "flex", "rotor", "turbulence", "cavitation", "control", "sommerfeld", "feeding", "flows", "estimates"];
+    const SECTIONS: [&str; 11] = [
+        "table",
+        "frf",
+        "flex",
+        "rotor",
+        "turbulence",
+        "cavitation",
+        "control",
+        "sommerfeld",
+        "feeding",
+        "flows",
+        "estimates",
+    ];
     let Some(only) = only else { return run(root, repeats.max(1)) };
+    if only == "table" {
+        return run_parts(root, repeats.max(1), true);
+    }
     if !SECTIONS.contains(&only) {
         anyhow::bail!("--only {only}: known sections: {}", SECTIONS.join(", "));
     }

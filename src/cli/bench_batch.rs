@@ -34,6 +34,9 @@ fn worst(a: &[Row], b: &[Row], name: &str) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The section's heading.
+pub const HEADING: &str = "## Design-space batches (`tiltpad batch`)";
+
 /// The markdown section.
 ///
 /// # Errors
@@ -49,7 +52,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let mut md = String::new();
     let _ = writeln!(
         md,
-        "\n## Design-space batches (`tiltpad batch`)\n\n`cases/designs-compressor.csv`: {} designs of the compressor bearing (isothermal), each solved from \
+        "\n{HEADING}\n\n`cases/designs-compressor.csv`: {} designs of the compressor bearing (isothermal), each solved from \
          scratch on one core as `tiltpad batch` does; time per design is the median over {repeats} runs of the whole batch. \
          Errors are the largest over the designs, against the reference level.\n\n\
          | level | time per design | designs per core-hour | ε error | h_min error | K_yy error | failed |\n|---|---|---|---|---|---|---|",

@@ -256,7 +256,7 @@ pub enum Command {
         /// Project root (where `cases/` and `docs/` are).
         #[arg(long, default_value = ".")]
         root: PathBuf,
-        /// Re-measure one section only (`frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`, `sommerfeld`, `feeding`, `flows`, `estimates`) and replace it in docs/PERFORMANCE.md, keeping the rest; the section closes with the time of a calibration solve before and after it, against the same solve in the first table (the machine's speed drifts between runs).
+        /// Re-measure one section only (`table`: the first table with its targets, thermal-loop cost, cost growth and `assets/fidelity.json`; `frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`, `sommerfeld`, `feeding`, `flows`, `estimates`) and replace it in docs/PERFORMANCE.md, keeping the rest; the section closes with the time of a calibration solve before and after it, against the same solve in the first table (the machine's speed drifts between runs).
         #[arg(long, value_name = "SECTION")]
         only: Option<String>,
     },
