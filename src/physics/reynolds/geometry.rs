@@ -2,8 +2,11 @@
 //! sampled thickness shapes `h0`, `φ_k` and their loads `f_k,i = ∫ φ_k N_i dA`, and the orifice operators.
 //!
 //! ```text
-//! M_ij = ∫ 3 g N_i N_j / l0 dA,   v_i = ∫ 3 g N_i / l0 dA    (g = 1 inside the hole, 0 outside)
+//! M_ii = v_i = ∫ 3 g N_i / l0 dA,   M_ij = 0 (i ≠ j)             (g: the hole's paraboloid weight)
 //! ```
+//! The capillary term is lumped (M is the row sums of the consistent `∫ 3 g N_i N_j / l0 dA`): the term is
+//! about 10⁸ times the film's `h³/µ` per element, and the consistent form's positive off-diagonal weights
+//! make the pressure undershoot below an open hole's rim, a spurious cavitated ring (docs/MODEL.md §2.4).
 //! The orifice weight has a kink at the hole's edge, so the elements the hole touches are integrated with
 //! sub-cell quadrature; the operators are stored sparse (only the hole's footprint), and a hole across the
 //! seam of a 360° sector wraps.
@@ -17,8 +20,8 @@ use crate::physics::reynolds::{FilmShape, SampledField};
 /// Sub-cells per direction for elements cut by an orifice edge.
 const ORIFICE_SUBCELLS: usize = 6;
 
-/// The discretised orifice operator: `∫ 3 g N_i N_j / l0` (matrix, lower triangle in the pattern) and
-/// `∫ 3 g N_i / l0` (vector), both sparse: only the nodes of the elements the hole touches, so the memory
+/// The discretised orifice operator: `∫ 3 g N_i / l0` lumped on the diagonal (matrix, positions in the
+/// pattern) and as a vector, both sparse: only the nodes of the elements the hole touches, so the memory
 /// of an operator follows the hole's footprint, not the mesh.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrificeOperator {
@@ -182,11 +185,9 @@ fn orifice_operator(o: &LocalOrifice, geom: OperatorGrid<'_>) -> OrificeOperator
                 }
                 for a in 0..4 {
                     vector.push((nodes[a], wg * q.n[a]));
-                    for b in 0..4 {
-                        let pos = pattern.scatter[e][4 * a + b];
-                        if pos != usize::MAX {
-                            matrix.push((pos, wg * q.n[a] * q.n[b]));
-                        }
+                    let pos = pattern.scatter[e][4 * a + a];
+                    if pos != usize::MAX {
+                        matrix.push((pos, wg * q.n[a]));
                     }
                 }
             }

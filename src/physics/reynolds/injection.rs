@@ -125,7 +125,7 @@ mod tests {
 
     /// Every influence coefficient equals the difference of full film solves. A full film: the pressure is
     /// exactly linear in the injection pressure and the squeeze velocity, so those differences are exact up
-    /// to round-off (measured: B 4e-12, Y 4e-10, static flow 2e-12, E 2e-8); the displacement terms carry
+    /// to round-off (measured: B 4e-12, Y 4e-10, static flow 1.7e-11, E 2e-8); the displacement terms carry
     /// the O(δ²) of the central difference (measured ≤ 1.2e-7, falling 25× for a 5× smaller step). E = Bᵀ
     /// to round-off (measured ≤ 1.7e-15).
     #[test]
@@ -151,7 +151,12 @@ mod tests {
             let fd = (qp[o] - qm[o]) / (2.0 * dp);
             let y: f64 = r.admittance.row(o).sum();
             assert!(rel(y, fd) < 3e-9, "Y[{o}] {y} vs {fd}");
-            assert!(rel(r.static_flow[o], qp[o] - dp * fd) < 1e-11, "static flow {o}");
+            assert!(
+                rel(r.static_flow[o], qp[o] - dp * fd) < 1e-11,
+                "static flow {o}: {} vs {}",
+                r.static_flow[o],
+                qp[o] - dp * fd
+            );
         }
         // Displacements: q_o(u ± δ) at fixed injection.
         for k in 0..2 {

@@ -183,7 +183,7 @@ fn reformation_matches_the_one_dimensional_closed_form() {
 /// (the film reforms at the orifice): edge flows + orifice flow balance to round-off, and no flow
 /// vanishes into the cavitated zone (the interior residual is round-off). Measured: imbalance 1.7e-16
 /// (no injection) and 2.7e-13 (injection) of the throughput, interior residual ≤ 1.6e-14. The Reynolds
-/// option, which does not follow the oil, creates 37 % of the throughput at its second full film here.
+/// option, which does not follow the oil, creates 16 % of the throughput at its second full film here.
 #[test]
 fn flows_balance_to_round_off_with_rupture_and_reformation() {
     let hole = [LocalOrifice { s0: 0.5 * R, z0: 0.0, diameter: 6e-3, length: 10e-3 }];
@@ -219,7 +219,7 @@ fn flows_balance_to_round_off_with_rupture_and_reformation() {
     solve(&mut f, &[0.0, 0.0], &inp);
     let flows = f.flows(&inp);
     eprintln!("Reynolds: into cavitation {:.3} of the throughput", flows.to_cavitation / flows.throughput());
-    assert!(flows.to_cavitation / flows.throughput() < -0.3);
+    assert!(flows.to_cavitation / flows.throughput() < -0.15);
 }
 
 /// The factorisation without row exchanges (`fem::ldu`) gives the pivoting LU's film to round-off on a pad
