@@ -78,7 +78,12 @@ fn where_the_time_goes(reynolds: &[CpuCost], jfo: &[CpuCost]) -> String {
          fill of the Reynolds matrix's Cholesky factor (about twice a Cholesky factorisation's arithmetic, done \
          simplicially; a pivoting sparse LU takes over a refused pivot), against a Cholesky factorisation of the \
          symmetric Reynolds matrix (supernodal from 2500 nodes per pad); the counts include the Reynolds \
-         active-set solve that starts each pad's first mass-conserving solve.",
+         active-set solve that starts each pad's first mass-conserving solve. The CPU time per factorisation \
+         divides the whole solve's time by the factorisations: at the preview level a factorisation without row \
+         exchanges costs about what the simplicial Cholesky costs (with its per-factorisation symbolic pass), and \
+         most of the difference lies around it: the search for the end of an unloaded pad's pressure-free range \
+         (column sweeps of the film-fraction transport), the Couette right-hand sides of the linearisation and the \
+         back-substitutions of the low-rank active-set updates and of the linearisation.",
         cells.join("; ")
     )
 }

@@ -157,20 +157,18 @@ fn starved_to_12_l_per_min_two_pads_split_the_load_along_their_pivot_lines() {
     assert!((inflow - 12.0).abs() < 1e-9 * 12.0, "{inflow}");
 }
 
-/// The preview compressor bearing with mass-conserving cavitation: its lightly loaded top pad (pad 0) floats
-/// on this mesh. The search before acceptance finds a loaded state of it at the converged journal (its tilt
-/// moment rises through zero past the onset of pressure and falls again), Newton's first step with it loaded
-/// passes the fold of that branch and drops it, and the solve returns to the state it had converged in
-/// instead of converging to it again. Measured: 8 coupled iterations, 99 film solves, 154 factorisations
-/// (before the return: 13, 125, 191; the Reynolds option on this mesh: 6, 69, 106).
+/// The preview compressor bearing with mass-conserving cavitation needs the Reynolds option's work on the same
+/// mesh. Measured: 6 coupled iterations, 69 film solves, 83 factorisations (the Reynolds option: 6, 69, 80).
+/// Before the orifice operator was lumped on the diagonal, a spurious cavitated ring under the hole made the
+/// lightly loaded top pad (pad 0) float and pass a fold of its tilt equilibrium: 8 iterations, 99 film solves
+/// with the return to the converged state past the fold (`coupled.rs`), 13 and 125 without it. No case tried
+/// reaches that return now (speeds 5000–13000 rpm × loads 800–8000 N, preview and standard: no pad near a fold).
 #[test]
-fn the_preview_compressor_returns_to_its_converged_state_past_a_fold() {
+fn the_preview_compressor_needs_the_reynolds_options_work() {
     let s = common::solve("compressor-bearing.toml", &[JFO, PREVIEW, "thermal.model=\"isothermal\""]);
     let r = &s.report;
     eprintln!("{} iterations, {} film solves, {} factorisations", r.iterations, r.film_solves, r.factorizations);
-    assert!(r.iterations <= 8 && r.film_solves <= 100, "{} iterations, {} film solves", r.iterations, r.film_solves);
+    assert!(r.iterations <= 6 && r.film_solves <= 69, "{} iterations, {} film solves", r.iterations, r.film_solves);
     assert!(r.residual < 1e-9, "{}", r.residual);
-    assert_eq!(r.floating_pads, vec![0]);
-    let near_fold = tiltpad::bearing::report::warning::Warning::PadNearFold { pad: 0 };
-    assert!(r.warnings.contains(&near_fold), "{:?}", r.warnings);
+    assert!(r.floating_pads.is_empty(), "{:?}", r.floating_pads);
 }
