@@ -396,17 +396,16 @@ impl FilmEnergy {
                 let pipe = if v > 0.0 { oil.conductivity / op.length } else { 0.0 };
                 for a in 0..4 {
                     let wn = q.w * q.n[a];
-                    // The nodal flows through the hole with the film's lumped capillary term (the node's own
-                    // pressure, physics::reynolds::geometry): the film's consistent flow, so the interior
-                    // outflow stays zero and the pumping power meets the film's power identity.
-                    let pa = film.p[nodes[a]];
-                    let va = op.g * (inj.pressure - pa) / (4.0 * inj.viscosity * op.length);
-                    st.outflow[nodes[a]] += wn * va;
-                    st.inj.inflow[nodes[a]] += wn * va.max(0.0);
-                    st.inj.drain[nodes[a]] += wn * va.min(0.0);
-                    st.inj.pipe[nodes[a]] += wn * if va > 0.0 { oil.conductivity / op.length } else { 0.0 };
+                    st.outflow[nodes[a]] += wn * v;
+                    st.inj.inflow[nodes[a]] += wn * v.max(0.0);
+                    st.inj.drain[nodes[a]] += wn * v.min(0.0);
+                    st.inj.pipe[nodes[a]] += wn * pipe;
                     st.inj.work[nodes[a]] += wn * work;
-                    st.pumping_power += g.sym * wn * pa * va;
+                    // The pumping power with the film's lumped capillary term (the node's own pressure,
+                    // physics::reynolds::geometry), so that it meets the film's power identity to round-off.
+                    let pa = film.p[nodes[a]];
+                    st.pumping_power +=
+                        g.sym * wn * pa * op.g * (inj.pressure - pa) / (4.0 * inj.viscosity * op.length);
                 }
                 let reaction = rc * v.max(0.0) + pipe;
                 c_avg += q.w * reaction / area;
