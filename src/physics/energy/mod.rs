@@ -401,11 +401,17 @@ impl FilmEnergy {
                     st.inj.drain[nodes[a]] += wn * v.min(0.0);
                     st.inj.pipe[nodes[a]] += wn * pipe;
                     st.inj.work[nodes[a]] += wn * work;
-                    // The pumping power with the film's lumped capillary term (the node's own pressure,
-                    // physics::reynolds::geometry), so that it meets the film's power identity to round-off.
-                    let pa = film.p[nodes[a]];
-                    st.pumping_power +=
-                        g.sym * wn * pa * op.g * (inj.pressure - pa) / (4.0 * inj.viscosity * op.length);
+                    // The pumping power in the film's form of the capillary term (lumped, the node's own
+                    // pressure, for a hole open to ambient: physics::reynolds::geometry), so that it meets the
+                    // film's power identity to round-off.
+                    if inj.pressure <= 0.0 {
+                        let pa = film.p[nodes[a]];
+                        st.pumping_power +=
+                            g.sym * wn * pa * op.g * (inj.pressure - pa) / (4.0 * inj.viscosity * op.length);
+                    }
+                }
+                if inj.pressure > 0.0 {
+                    st.pumping_power += g.sym * q.w * p * v;
                 }
                 let reaction = rc * v.max(0.0) + pipe;
                 c_avg += q.w * reaction / area;

@@ -2,11 +2,14 @@
 //! sampled thickness shapes `h0`, `φ_k` and their loads `f_k,i = ∫ φ_k N_i dA`, and the orifice operators.
 //!
 //! ```text
-//! M_ii = v_i = ∫ 3 g N_i / l0 dA,   M_ij = 0 (i ≠ j)             (g: the hole's paraboloid weight)
+//! M_ij = ∫ 3 g N_i N_j / l0 dA,   v_i = ∫ 3 g N_i / l0 dA          (g: the hole's paraboloid weight)
 //! ```
-//! The capillary term is lumped (M is the row sums of the consistent `∫ 3 g N_i N_j / l0 dA`): the term is
-//! about 10⁸ times the film's `h³/µ` per element, and the consistent form's positive off-diagonal weights
-//! make the pressure undershoot below an open hole's rim, a spurious cavitated ring (docs/MODEL.md §2.4).
+//! A hole open to ambient (entry pressure at or below the cavitation pressure) takes M lumped on the diagonal
+//! (`M_ii = v_i`, the row sums): the term is about 10⁸ times the film's `h³/µ` per element, and the
+//! consistent form's positive off-diagonal weights make the pressure undershoot below the rim, which the
+//! cavitation condition turns into a spurious cavitated ring (docs/MODEL.md §2.4). An injecting hole keeps
+//! the consistent form, which converges faster there (the pressure peaks at the hole, no undershoot reaches
+//! the cavitation pressure).
 //! The orifice weight has a kink at the hole's edge, so the elements the hole touches are integrated with
 //! sub-cell quadrature; the operators are stored sparse (only the hole's footprint), and a hole across the
 //! seam of a 360° sector wraps.
@@ -20,14 +23,17 @@ use crate::physics::reynolds::{FilmShape, SampledField};
 /// Sub-cells per direction for elements cut by an orifice edge.
 const ORIFICE_SUBCELLS: usize = 6;
 
-/// The discretised orifice operator: `∫ 3 g N_i / l0` lumped on the diagonal (matrix, positions in the
+/// The discretised orifice operator: `∫ 3 g N_i N_j / l0` (matrix, consistent and lumped, positions in the
 /// pattern) and as a vector, both sparse: only the nodes of the elements the hole touches, so the memory
 /// of an operator follows the hole's footprint, not the mesh.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OrificeOperator {
     pub orifice: LocalOrifice,
-    /// (position in the pattern's values, value), positions increasing.
+    /// The consistent `∫ 3 g N_i N_j / l0`: (position in the pattern's values, value), positions increasing.
     pub matrix: Vec<(usize, f64)>,
+    /// The lumped `∫ 3 g N_i / l0` on the diagonal (positions in the pattern's values), for a hole open to
+    /// ambient ([`OrificeOperator::entries`]).
+    pub lumped: Vec<(usize, f64)>,
     /// (node, value), nodes increasing.
     pub vector: Vec<(usize, f64)>,
     /// `∫ 3 g / l0 dA` over the modelled domain.
@@ -147,6 +153,7 @@ impl FilmGeometry {
 fn orifice_operator(o: &LocalOrifice, geom: OperatorGrid<'_>) -> OrificeOperator {
     let OperatorGrid { grid, elements, rects, pattern, period } = geom;
     let mut matrix: Vec<(usize, f64)> = Vec::new();
+    let mut diagonal: Vec<(usize, f64)> = Vec::new();
     let mut vector: Vec<(usize, f64)> = Vec::new();
     let l0 = o.length;
     let r = 0.5 * o.diameter;
@@ -187,7 +194,13 @@ fn orifice_operator(o: &LocalOrifice, geom: OperatorGrid<'_>) -> OrificeOperator
                     vector.push((nodes[a], wg * q.n[a]));
                     let pos = pattern.scatter[e][4 * a + a];
                     if pos != usize::MAX {
-                        matrix.push((pos, wg * q.n[a]));
+                        diagonal.push((pos, wg * q.n[a]));
+                    }
+                    for b in 0..4 {
+                        let pos = pattern.scatter[e][4 * a + b];
+                        if pos != usize::MAX {
+                            matrix.push((pos, wg * q.n[a] * q.n[b]));
+                        }
                     }
                 }
             }
@@ -195,7 +208,20 @@ fn orifice_operator(o: &LocalOrifice, geom: OperatorGrid<'_>) -> OrificeOperator
     }
     let vector = merge_sorted(vector);
     let total = vector.iter().map(|(_, v)| v).sum();
-    OrificeOperator { orifice: *o, matrix: merge_sorted(matrix), vector, total }
+    OrificeOperator { orifice: *o, matrix: merge_sorted(matrix), lumped: merge_sorted(diagonal), vector, total }
+}
+
+impl OrificeOperator {
+    /// The matrix entries for a hole whose entry pressure is `injection_pressure` [Pa]: lumped when the hole
+    /// is open to ambient (`≤ 0`), consistent when it injects (module documentation).
+    #[must_use]
+    pub fn entries(&self, injection_pressure: f64) -> &[(usize, f64)] {
+        if injection_pressure <= 0.0 {
+            &self.lumped
+        } else {
+            &self.matrix
+        }
+    }
 }
 
 /// What [`orifice_operator`] reads of a film mesh.

@@ -50,7 +50,7 @@ impl PadFilm {
         // Orifices: 3 g (p − p_inj) / (µ_inj l0).
         let mu_inj = inp.injection_viscosity;
         for o in &g.orifices {
-            for &(pos, v) in &o.matrix {
+            for &(pos, v) in o.entries(inp.injection_pressure) {
                 self.a_raw[pos] += v / mu_inj;
             }
             if inp.injection_pressure != 0.0 {
