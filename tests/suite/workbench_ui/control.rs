@@ -35,8 +35,9 @@ fn control_view_gain_slider_moves_the_onset() {
 
 /// The Control view on the test rig: X/F with control against without, magnitude and phase, from the FRF
 /// stage off the UI thread — the same numbers `tiltpad frf --control` writes (run here as a user runs it):
-/// at the rig's resonance (60.3 Hz on the band's logarithmic grid) the loop cuts X/F from 169.23 to 97.57 µm/kN,
-/// and the closed loop's own peak is 105.90 µm/kN at 64.3 Hz (docs/VALIDATION.md gives the peaks on a 1 Hz grid).
+/// at the rig's resonance (60.3 Hz on the band's logarithmic grid) the loop cuts X/F from 167.07 to 96.89 µm/kN,
+/// and the closed loop's own peak is 104.97 µm/kN at 64.3 Hz (docs/VALIDATION.md gives the peaks on a 1 Hz grid:
+/// 166.8 and 104.9).
 #[test]
 fn control_view_draws_the_rigs_xf_with_and_without_control_as_the_cli_gives() {
     use tiltpad::app::views::control_view::{ControlView, System};
@@ -92,15 +93,15 @@ fn control_view_draws_the_rigs_xf_with_and_without_control_as_the_cli_gives() {
     // the curves differ at the resonance by what the command gives (its numbers to 0.01 µm/kN)
     // (the band's points are spaced logarithmically, as the command's: 60.3 and 64.3 Hz are the grid's)
     assert!((f_open - 60.3).abs() < 0.05 && (f_closed - 64.3).abs() < 0.05, "{f_open} {f_closed}");
-    assert!((per_kn(open) - 169.23).abs() < 0.005, "{}", per_kn(open));
-    assert!((per_kn(points[i_open].closed_m_per_n) - 97.57).abs() < 0.005, "{}", per_kn(points[i_open].closed_m_per_n));
-    assert!((per_kn(closed) - 105.90).abs() < 0.005, "{}", per_kn(closed));
+    assert!((per_kn(open) - 167.07).abs() < 0.005, "{}", per_kn(open));
+    assert!((per_kn(points[i_open].closed_m_per_n) - 96.89).abs() < 0.005, "{}", per_kn(points[i_open].closed_m_per_n));
+    assert!((per_kn(closed) - 104.97).abs() < 0.005, "{}", per_kn(closed));
     assert!(shown.sweep.stable);
     // both curves drawn, their legend above the plots, the axes named with their units
     h.get_by_label("legend: without control (dashed)");
     h.get_by_label("legend: with control");
     h.get_by_label_contains(
-        "X/F peak: without control 169.2 µm/kN at 60 Hz, with control 105.9 µm/kN at 64 Hz (-37 %)",
+        "X/F peak: without control 167.1 µm/kN at 60 Hz, with control 105.0 µm/kN at 64 Hz (-37 %)",
     );
     assert_eq!(text_of(&h.get_by_role_and_label(Role::ComboBox, "System")), "Test rig, X/F with and without control");
     snapshot(&mut h, "control_rig_xf");
@@ -110,8 +111,8 @@ fn control_view_draws_the_rigs_xf_with_and_without_control_as_the_cli_gives() {
 /// compensator's gains in a table with units, and the closed loop as for the other kinds — its onset is the
 /// one `tiltpad control` gives on the view's speeds with the same (preview) bearings, within the
 /// interpolation between two of the sweep's speeds (764 rpm apart) that the view does and the command's
-/// bisection does not (open: 8821 rpm bisected), and both find the closed loop stable over the whole sweep
-/// (its smallest log decrement 0.014 at 20 340 rpm).
+/// bisection does not: measured 18 812 against 18 818 rpm closed (0.03 %), 8661 against 8755 rpm open (1.1 %,
+/// where the smallest log decrement bends between the grid's speeds).
 #[test]
 fn control_view_shows_the_lqr_design_and_the_onset_the_cli_gives() {
     use tiltpad::app::views::control_view::{ControlView, System};
@@ -144,22 +145,21 @@ fn control_view_shows_the_lqr_design_and_the_onset_the_cli_gives() {
     let view = h.state().view::<ControlView>().unwrap();
     let design = view.lqr().expect("the LQR design");
     let tuned = view.tuned().unwrap();
-    let open = view.onset_open_rad_s().unwrap();
+    let (open, closed) = (view.onset_open_rad_s().unwrap(), tuned.onset_rad_s.unwrap());
     eprintln!(
-        "LQR: view onset open {:.0} rpm, closed {:?}; CLI open {:.0} rpm, closed {}; reduced {} of {} states",
+        "LQR: view onset open {:.0} closed {:.0} rpm; CLI open {:.0} closed {:.0} rpm; reduced {} of {} states",
         RPM.from_si(open),
-        tuned.onset_rad_s,
+        RPM.from_si(closed),
         RPM.from_si(cli_onset("onset_open")),
-        cli["onset_closed"],
+        RPM.from_si(cli_onset("onset_closed")),
         design.reduced_states,
         design.full_states
     );
     assert_eq!((design.reduced_states, design.full_states), (20, 108));
     assert_eq!(cli["lqr"]["reduced_states"].as_u64(), Some(20));
-    // the closed loop stable over the sweep, in the view and the command
-    assert!(tuned.onset_rad_s.is_none() && tuned.speeds.iter().all(|s| s.poles.stable()), "{:?}", tuned.onset_rad_s);
-    assert!(cli["onset_closed"]["onset_rad_s"].is_null() && cli["onset_closed"]["stable_at_first"] == true);
+    assert!((closed / cli_onset("onset_closed") - 1.0).abs() < 1e-3, "{closed} {}", cli_onset("onset_closed"));
     assert!((open / cli_onset("onset_open") - 1.0).abs() < 1.5e-2, "{open} {}", cli_onset("onset_open"));
+    assert!(closed > 2.0 * open);
     h.get_by_label_contains("Onset of instability: loop open");
     snapshot(&mut h, "control_lqr");
     // the weights and the gains' table with units, one click away
@@ -170,11 +170,6 @@ fn control_view_shows_the_lqr_design_and_the_onset_the_cli_gives() {
     h.get_by_label("node 26 y");
     assert_eq!(h.query_all_by_label_contains(" V/µm, ").count(), 12);
     assert_eq!(h.query_all_by_label("1 1/V²").count(), 2);
-    // the design's compensator at 150 Hz, in V/µm: its largest gain (the table's twelve, any order)
-    use egui_kittest::kittest::NodeT as _;
-    let largest = h
-        .query_all_by_label_contains(" V/µm, ")
-        .filter_map(|n| n.accesskit_node().value().and_then(|v| v.split(' ').next()?.parse::<f64>().ok()))
-        .fold(0.0, f64::max);
-    assert!((largest - 0.1233).abs() < 5e-5, "largest gain {largest} V/µm");
+    // the journal-0 vertical probe to valve 0 at 150 Hz, in V/µm (the design's compensator)
+    h.get_by_label("0.1175 V/µm, +40°");
 }
