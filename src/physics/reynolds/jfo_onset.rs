@@ -15,8 +15,10 @@
 //! column a tridiagonal solve over its nodes (the couplings between rows of a column; an outflow node's
 //! column folded into the node it copies), solves the system; whatever the sweep lags (a squeeze, a
 //! periodic sector, a reversed sliding direction) is taken by repeated sweeps until no film fraction
-//! changes; a sweep that used no film fraction before updating it has solved the system exactly and ends it. Each evaluation of `g` costs a few passes over the
-//! matrix entries instead of a sparse LU.
+//! changes; a sweep that used no film fraction before updating it has solved the system exactly and ends it.
+//! What each entry of a free node's row is to the sweep (the row's own unknown, its neighbour above or below
+//! in the grid column, or a known film fraction) is found once per search. Each evaluation of `g` costs a
+//! few passes over the matrix entries instead of a sparse LU.
 //!
 //! A film that is pressure-free under the Reynolds condition (`pressure_free_interval`, whose right-hand side
 //! is `f − T̃ 1`) is pressure-free here too (the upwinded transport is monotone: `T̃ (1 − θ) ≥ 0` gives
@@ -44,16 +46,28 @@ struct Family<'a> {
     state: &'a JfoState,
     t0: Vec<f64>,
     t1: Vec<f64>,
-    squeeze: Vec<f64>,
+    /// The squeeze operator, if the film has a squeeze velocity.
+    squeeze: Option<Vec<f64>>,
     f: Vec<f64>,
     inlet: Inlet,
     sym: f64,
     /// Grid columns from the leading edge in the sliding direction, each with its free nodes by row.
     columns: Vec<Vec<usize>>,
-    /// Position in `columns` of every node's grid column.
-    column_at: Vec<usize>,
-    /// Column node of every entry.
-    col_of: Vec<usize>,
+    /// The row of every free node, in the order of `columns`, as the transport sweep reads it: the entries of
+    /// free node `a` are `links[link_ptr[a]..link_ptr[a + 1]]` (built once per search, [`Family::links`]).
+    link_ptr: Vec<usize>,
+    links: Vec<(usize, Link)>,
+}
+
+/// What an entry of a free node's row is to the column sweep (`Family::transport`): the unknown of the row,
+/// of its neighbour above or below in the same grid column, or a film fraction taken as known (with whether
+/// the sweep may not have updated it yet).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Link {
+    Diagonal,
+    Above,
+    Below,
+    Known { node: usize, lags: bool },
 }
 
 impl Family<'_> {
@@ -81,8 +95,10 @@ impl Family<'_> {
                 }
             }
         };
-        for (v, sq) in t.iter_mut().zip(&self.squeeze) {
-            *v += sq;
+        if let Some(squeeze) = &self.squeeze {
+            for (v, sq) in t.iter_mut().zip(squeeze) {
+                *v += sq;
+            }
         }
         for (i, v) in theta.iter_mut().enumerate() {
             *v = match s.rule[i] {
@@ -95,42 +111,69 @@ impl Family<'_> {
         (0..p.n).filter(|&i| s.rule[i] == ThetaRule::Free).map(|i| theta[i] - 1.0).reduce(f64::max)
     }
 
+    /// The rows of the free nodes classified for the sweep (an outflow node's column belongs to the node it
+    /// copies): the sweep then reads each entry once per evaluation without looking up its node.
+    fn links(state: &JfoState, columns: &[Vec<usize>], column_at: &[usize]) -> (Vec<usize>, Vec<(usize, Link)>) {
+        let p = &state.pattern;
+        let mut col_of = vec![0; p.nnz()];
+        for c in 0..p.n {
+            col_of[p.col_ptr[c]..p.col_ptr[c + 1]].fill(c);
+        }
+        let (mut link_ptr, mut links) = (vec![0], Vec::new());
+        for (at, free) in columns.iter().enumerate() {
+            for (a, &r) in free.iter().enumerate() {
+                let above = a.checked_sub(1).map(|b| free[b]);
+                let below = free.get(a + 1).copied();
+                for &k in p.row_positions(r) {
+                    let c = match state.rule[col_of[k]] {
+                        ThetaRule::Copy(j) => j,
+                        _ => col_of[k],
+                    };
+                    let link = if c == r {
+                        Link::Diagonal
+                    } else if Some(c) == above {
+                        Link::Above
+                    } else if Some(c) == below {
+                        Link::Below
+                    } else {
+                        Link::Known { node: c, lags: state.rule[c] == ThetaRule::Free && column_at[c] >= at }
+                    };
+                    links.push((k, link));
+                }
+                link_ptr.push(links.len());
+            }
+        }
+        (link_ptr, links)
+    }
+
     /// Solves `T̃ θ = f` at the free nodes by column sweeps (module documentation).
     fn transport(&self, t: &[f64], theta: &mut [f64]) -> Option<()> {
-        let s = self.state;
-        let p = &s.pattern;
         let (mut lower, mut diag, mut upper, mut rhs) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         for _ in 0..MAX_SWEEPS {
             let mut change = 0.0_f64;
             let mut size = 0.0_f64;
             // Whether the sweep used a film fraction it had not updated yet (then it is repeated).
             let mut lagged = false;
-            for (at, free) in self.columns.iter().enumerate() {
+            let mut row = 0;
+            for free in &self.columns {
                 lower.clear();
                 diag.clear();
                 upper.clear();
                 rhs.clear();
-                for (a, &r) in free.iter().enumerate() {
-                    let above = a.checked_sub(1).map(|b| free[b]);
-                    let below = free.get(a + 1).copied();
+                for &r in free {
                     let (mut l, mut d, mut u, mut b) = (0.0, 0.0, 0.0, self.f[r]);
-                    for &k in p.row_positions(r) {
-                        // An outflow node's column belongs to the node it copies.
-                        let c = match s.rule[self.col_of[k]] {
-                            ThetaRule::Copy(j) => j,
-                            _ => self.col_of[k],
-                        };
-                        if c == r {
-                            d += t[k];
-                        } else if Some(c) == above {
-                            l += t[k];
-                        } else if Some(c) == below {
-                            u += t[k];
-                        } else {
-                            b -= t[k] * theta[c];
-                            lagged |= t[k] != 0.0 && s.rule[c] == ThetaRule::Free && self.column_at[c] >= at;
+                    for &(k, link) in &self.links[self.link_ptr[row]..self.link_ptr[row + 1]] {
+                        match link {
+                            Link::Diagonal => d += t[k],
+                            Link::Above => l += t[k],
+                            Link::Below => u += t[k],
+                            Link::Known { node, lags } => {
+                                b -= t[k] * theta[node];
+                                lagged |= t[k] != 0.0 && lags;
+                            }
                         }
                     }
+                    row += 1;
                     lower.push(l);
                     diag.push(d);
                     upper.push(u);
@@ -236,10 +279,11 @@ impl PadFilm {
         let (mut t0, mut t1) = (vec![0.0; nnz], vec![0.0; nnz]);
         state.add_couette(g, inp.surface_speed, &h0_qp, &mut t0);
         state.add_couette(g, inp.surface_speed, &phi.qp, &mut t1);
-        let mut squeeze = vec![0.0; nnz];
-        if let Some(sq) = &self.squeeze {
-            state.add_squeeze(g, &sq.qp, &mut squeeze);
-        }
+        let squeeze = self.squeeze.as_ref().map(|sq| {
+            let mut s = vec![0.0; nnz];
+            state.add_squeeze(g, &sq.qp, &mut s);
+            s
+        });
         let mut f = vec![0.0; g.n_nodes()];
         if inp.injection_pressure != 0.0 {
             for o in &g.orifices {
@@ -266,11 +310,8 @@ impl PadFilm {
             }
         }
         let p = &state.pattern;
-        let mut col_of = vec![0; nnz];
-        for c in 0..p.n {
-            col_of[p.col_ptr[c]..p.col_ptr[c + 1]].fill(c);
-        }
-        let family = Family { state, t0, t1, squeeze, f, inlet: inp.inlet, sym: g.sym, columns, column_at, col_of };
+        let (link_ptr, links) = Family::links(state, &columns, &column_at);
+        let family = Family { state, t0, t1, squeeze, f, inlet: inp.inlet, sym: g.sym, columns, link_ptr, links };
         let mut t = vec![0.0; nnz];
         let mut theta = vec![0.0; p.n];
         let mut g_at = |x: f64| family.excess(x, &mut t, &mut theta);
