@@ -53,10 +53,11 @@
 //! reference level, least of 15 on a loaded machine: 3.6 s with the pivoting LU, 1.5 s without). A refused pivot or an inaccurate solve
 //! falls back to the pivoting LU, counted in [`FilmSolveInfo::pivoted_factorizations`]. After the first step
 //! of a solve, a step that moves few nodes corrects the factorisation by a low-rank update instead
-//! (`jfo_update.rs`). Then nodes with `p < 0` move to `C` and nodes with
-//! `θ > 1` to `P`, until no node moves. The start is the previous solve's sets (warm) or the Reynolds
-//! (Swift–Stieber) active set, which places the ruptures nearly right; the iteration typically ends after
-//! 2–4 steps. At convergence every node satisfies the complementarity conditions and the discrete mass
+//! (`jfo_update.rs`), and only the columns of the nodes that moved are filled again. Then nodes with
+//! `p < 0` move to `C` and nodes with `θ > 1` to `P`, until no node moves; the residual of the unmodified
+//! equations (the edge flows) is formed once, for the final sets. The start is the previous solve's sets
+//! (warm) or the Reynolds (Swift–Stieber) active set, which places the ruptures nearly right; the iteration
+//! typically ends after 2–4 steps. At convergence every node satisfies the complementarity conditions and the discrete mass
 //! balance holds at every free node to round-off.
 //!
 //! ## Boundary film fraction
@@ -291,9 +292,14 @@ impl JfoState {
         let mut rhs = vec![0.0; n];
         let mut known = vec![0.0; n];
         let mut next = out.cavitated.to_vec();
+        // The sets the mixed matrix was last filled for (its columns of other nodes are kept).
+        let mut filled = out.cavitated.to_vec();
+        let mut stalled = false;
         loop {
             info.active_set_iterations += 1;
             let first = info.active_set_iterations == 1;
+            self.fill_matrix(out.cavitated, (!first).then_some(&filled[..]));
+            filled.copy_from_slice(out.cavitated);
             info.factorizations += self.solve_sets(inp, out, &mut rhs, &mut known, first)?;
             let p_scale = out.p.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
             let mut changed = 0;
@@ -316,20 +322,29 @@ impl JfoState {
                     changed_nodes: changed,
                     complementarity: info.complementarity,
                 });
-                for v in out.p.iter_mut() {
-                    *v = v.max(0.0);
-                }
+                stalled = true;
                 break;
             }
             out.cavitated.copy_from_slice(&next);
+        }
+        // Residual of the unmodified equations: reactions at the boundary, ~0 at free nodes.
+        self.pattern.matvec(&self.a, out.p, out.r);
+        self.pattern.matvec(&self.t, out.theta, &mut rhs);
+        for i in 0..n {
+            out.r[i] += rhs[i] - inp.f[i];
+        }
+        if stalled {
+            for v in out.p.iter_mut() {
+                *v = v.max(0.0);
+            }
         }
         info.cavitated_nodes = out.cavitated.iter().filter(|&&c| c).count();
         info.pivoted_factorizations = self.fallbacks;
         Ok(info)
     }
 
-    /// One linear solve for the current sets: fills p, θ and the residual r. The first step of a solve
-    /// factorises; later steps update the factorisation when few columns changed (`jfo_update.rs`).
+    /// One linear solve for the sets the mixed matrix was filled for: fills p and θ. The first step of a
+    /// solve factorises; later steps update the factorisation when few columns changed (`jfo_update.rs`).
     /// Returns how many times it factorised (0, 1, or 2 after a refused factorisation without row exchanges).
     fn solve_sets(
         &mut self,
@@ -340,7 +355,6 @@ impl JfoState {
         first: bool,
     ) -> Result<usize, FilmError> {
         let n = self.pattern.n;
-        self.fill_matrix(out.cavitated);
         let factorised = self.update_or_factor(out.cavitated, first)?;
         // Known film fractions (1 on P, θ_in at the inlet, copies of those) and known pressures (0).
         self.known_theta(out.cavitated, known);
@@ -361,21 +375,17 @@ impl JfoState {
             }
         }
         self.boundary_theta(out.cavitated, out.theta);
-        // Residual of the unmodified equations: reactions at the boundary, ~0 at free nodes.
-        self.pattern.matvec(&self.a, out.p, out.r);
-        self.pattern.matvec(&self.t, out.theta, rhs);
-        for i in 0..n {
-            out.r[i] += rhs[i] - inp.f[i];
-        }
         Ok(usize::from(factorised) + usize::from(refactorised))
     }
 
     /// The mixed matrix for the cavitated set `cav`: A columns for pressurised nodes, scaled T̃ + S columns
     /// for cavitated ones (with the columns of the outflow nodes that copy them folded in), identity rows
-    /// for the boundary nodes.
-    fn fill_matrix(&mut self, cav: &[bool]) {
+    /// for the boundary nodes. With `filled`, the sets the matrix holds now, only the columns of the nodes
+    /// that changed set are filled again (the same values as a full fill, entry by entry).
+    pub(super) fn fill_matrix(&mut self, cav: &[bool], filled: Option<&[bool]>) {
         let p = &self.pattern;
-        for c in 0..p.n {
+        let changed = |c: usize| filled.is_none_or(|f| f[c] != cav[c]);
+        for c in (0..p.n).filter(|&c| changed(c)) {
             let range = p.col_ptr[c]..p.col_ptr[c + 1];
             match (self.rule[c], cav[c]) {
                 (ThetaRule::Free, false) => self.m[range.clone()].copy_from_slice(&self.a[range]),
@@ -389,15 +399,26 @@ impl JfoState {
         }
         for (j, pairs) in &self.folds {
             let ThetaRule::Copy(k) = self.rule[*j] else { continue };
-            if cav[k] {
+            if cav[k] && changed(k) {
                 for &(pj, pk) in pairs {
                     self.m[pk] += self.t[pj] / self.scale;
                 }
             }
         }
-        for r in 0..p.n {
-            if self.rule[r] != ThetaRule::Free {
-                p.set_identity_row(&mut self.m, r);
+        if filled.is_none() {
+            for r in 0..p.n {
+                if self.rule[r] != ThetaRule::Free {
+                    p.set_identity_row(&mut self.m, r);
+                }
+            }
+        } else {
+            // The refilled columns' entries in the boundary rows (the identity rows are kept).
+            for c in (0..p.n).filter(|&c| changed(c)) {
+                for k in p.col_ptr[c]..p.col_ptr[c + 1] {
+                    if self.rule[p.row_idx[k]] != ThetaRule::Free {
+                        self.m[k] = 0.0;
+                    }
+                }
             }
         }
     }
