@@ -101,9 +101,10 @@ impl JfoState {
     /// (D[φ] θ)_r = Σ_c d_rc (θ_r − θ_c)   over the upwinded pairs, d_rc the limited entry of T[φ]
     /// ```
     ///
-    /// The upwinding term vanishes where `θ_r = θ_c`, so its entries are assembled only on the elements whose
-    /// film fraction is not uniform (the ruptured zone and its edge). A starved inlet, whose film fraction
-    /// moves with the thickness, takes the assembled path.
+    /// The upwinding term vanishes where `θ_r = θ_c`, so it is summed only over the pairs whose film fractions
+    /// differ (on the elements whose film fraction is not uniform: the ruptured zone and its edge), and of each
+    /// such pair only the limited entry the recorded branch picks is assembled. A starved inlet, whose film
+    /// fraction moves with the thickness, takes the assembled path.
     pub(super) fn perturbation_rhs(
         &mut self,
         geom: &FilmGeometry,
@@ -150,51 +151,71 @@ impl JfoState {
         if mixed.is_empty() {
             return;
         }
-        // The upwinding of the Couette derivative on the elements with a non-uniform film fraction.
+        // The upwinding of the Couette derivative on the elements with a non-uniform film fraction: only the
+        // limited entry of each upwinded pair whose film fractions differ is needed (`d = dt_k` or its
+        // transpose's, by the recorded branch), summed over the elements that hold the pair.
+        let (pairs, entries) = self.upwinded_pairs(geom, &mixed, theta);
+        if pairs.is_empty() {
+            return;
+        }
         let mut dt = std::mem::take(&mut self.scratch);
         dt.resize(self.pattern.nnz(), 0.0);
         for (s, shape) in geom.shapes.iter().enumerate() {
-            for &e in &mixed {
-                let pos = self.pattern.group_positions(e);
+            for &(e, a, b, pos) in &entries {
                 for (k, q) in geom.qp[e].iter().enumerate() {
                     let c = q.w * 6.0 * u * shape.qp[e][k];
-                    for a in 0..4 {
-                        for b in 0..4 {
-                            dt[pos[4 * a + b]] -= c * q.n[b] * q.dn_ds[a];
-                        }
-                    }
+                    dt[pos] -= c * q.n[b] * q.dn_ds[a];
                 }
             }
             let col = &mut rhs[s * n..(s + 1) * n];
-            for &e in &mixed {
-                let nodes = geom.elements[e];
-                let pos = self.pattern.group_positions(e);
-                for a in 0..4 {
-                    for b in 0..4 {
-                        let (r, c, k) = (nodes[a], nodes[b], pos[4 * a + b]);
-                        if r <= c || dt[k].is_nan() {
-                            continue;
-                        }
-                        let kt = self.transpose[k];
-                        let d = match self.branch[k] {
-                            1 => dt[k],
-                            2 => dt[kt],
-                            _ => 0.0,
-                        };
-                        let jump = d * (theta[r] - theta[c]);
-                        col[r] -= jump;
-                        col[c] += jump;
-                        // Done: a pair shared by two elements is counted once (cleared below).
-                        dt[k] = f64::NAN;
-                    }
-                }
+            for &(r, c, pos) in &pairs {
+                let jump = dt[pos] * (theta[r] - theta[c]);
+                col[r] -= jump;
+                col[c] += jump;
             }
-            for &e in &mixed {
-                for &k in self.pattern.group_positions(e) {
-                    dt[k] = 0.0;
-                }
+            for &(_, _, _, pos) in &entries {
+                dt[pos] = 0.0;
             }
         }
         self.scratch = dt;
+    }
+
+    /// The upwinded pairs `(r, c, position of the limited entry)` (r > c) of the elements `mixed` whose film
+    /// fractions differ, in the order the elements meet them, and the element entries `(element, a, b,
+    /// position)` that sum into those limited entries, element by element (so each limited entry is summed in
+    /// the order of a full assembly of the operator).
+    #[allow(clippy::type_complexity)]
+    fn upwinded_pairs(
+        &self,
+        geom: &FilmGeometry,
+        mixed: &[usize],
+        theta: &[f64],
+    ) -> (Vec<(usize, usize, usize)>, Vec<(usize, usize, usize, usize)>) {
+        let (mut pairs, mut entries) = (Vec::new(), Vec::new());
+        let mut listed = vec![false; self.pattern.nnz()];
+        for &e in mixed {
+            let nodes = geom.elements[e];
+            let pos = self.pattern.group_positions(e);
+            for a in 0..4 {
+                for b in 0..4 {
+                    let (r, c, k) = (nodes[a], nodes[b], pos[4 * a + b]);
+                    if r <= c || theta[r] == theta[c] {
+                        continue;
+                    }
+                    // The limited entry: (r, c) itself or its transpose, element entry (b, a).
+                    let (limited, ea, eb) = match self.branch[k] {
+                        1 => (k, a, b),
+                        2 => (self.transpose[k], b, a),
+                        _ => continue,
+                    };
+                    if !listed[limited] {
+                        listed[limited] = true;
+                        pairs.push((r, c, limited));
+                    }
+                    entries.push((e, ea, eb, limited));
+                }
+            }
+        }
+        (pairs, entries)
     }
 }
