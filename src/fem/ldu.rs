@@ -208,10 +208,17 @@ impl StaticLdu {
                 self.lv[pik] = lki;
                 self.uv[pik] = yi / self.d[i];
                 dk -= lki * yi;
-                for p in self.l_ptr[i] + 1..pik {
-                    let r = self.l_row[p];
-                    self.x[r] -= self.lv[p] * yi;
-                    self.z[r] -= self.uv[p] * zi;
+                // A zero entry of both triangular solves changes nothing below it (the mixed matrix's
+                // upwinded film-fraction columns hold many).
+                if yi == 0.0 && zi == 0.0 {
+                    continue;
+                }
+                let below = self.l_ptr[i] + 1..pik;
+                let (x, z) = (&mut self.x, &mut self.z);
+                for ((&r, &l), &u) in self.l_row[below.clone()].iter().zip(&self.lv[below.clone()]).zip(&self.uv[below])
+                {
+                    x[r] -= l * yi;
+                    z[r] -= u * zi;
                 }
             }
             if !dk.is_finite() || dk.abs() <= MIN_PIVOT * big {
@@ -267,16 +274,18 @@ impl StaticLdu {
         for c in 0..n {
             let yc = y[c];
             if yc != 0.0 {
-                for p in self.l_ptr[c] + 1..self.l_ptr[c + 1] {
-                    y[self.l_row[p]] -= self.lv[p] * yc;
+                let below = self.l_ptr[c] + 1..self.l_ptr[c + 1];
+                for (&r, &l) in self.l_row[below.clone()].iter().zip(&self.lv[below]) {
+                    y[r] -= l * yc;
                 }
             }
         }
         // D, then U x = y from the last unknown up (row c of U is column c of the factor).
         for c in (0..n).rev() {
             let mut s = y[c] / self.d[c];
-            for p in self.l_ptr[c] + 1..self.l_ptr[c + 1] {
-                s -= self.uv[p] * y[self.l_row[p]];
+            let below = self.l_ptr[c] + 1..self.l_ptr[c + 1];
+            for (&r, &u) in self.l_row[below.clone()].iter().zip(&self.uv[below]) {
+                s -= u * y[r];
             }
             y[c] = s;
         }
@@ -297,9 +306,9 @@ impl StaticLdu {
         }
         for c in 0..n {
             let yc = w[c];
-            for p in self.l_ptr[c] + 1..self.l_ptr[c + 1] {
-                let l = self.lv[p];
-                let r = &mut w[self.l_row[p]];
+            let below = self.l_ptr[c] + 1..self.l_ptr[c + 1];
+            for (&row, &l) in self.l_row[below.clone()].iter().zip(&self.lv[below]) {
+                let r = &mut w[row];
                 for j in 0..LANES {
                     r[j] -= l * yc[j];
                 }
@@ -308,9 +317,9 @@ impl StaticLdu {
         for c in (0..n).rev() {
             let d = self.d[c];
             let mut s = w[c].map(|v| v / d);
-            for p in self.l_ptr[c] + 1..self.l_ptr[c + 1] {
-                let u = self.uv[p];
-                let r = &w[self.l_row[p]];
+            let below = self.l_ptr[c] + 1..self.l_ptr[c + 1];
+            for (&row, &u) in self.l_row[below.clone()].iter().zip(&self.uv[below]) {
+                let r = &w[row];
                 for j in 0..LANES {
                     s[j] -= u * r[j];
                 }
