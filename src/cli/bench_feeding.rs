@@ -50,7 +50,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         repeats,
     )?;
     md.push_str(
-        "\nThe same with the leading-edge ram pressure, `feeding.ram_pressure_coefficient` 0.5 (4.9 bar at 9000 rpm):\n\n\
+        "\nThe same with the leading-edge ram pressure, `feeding.ram_pressure_coefficient` 0.5 (4.9 bar on the mid-plane at 9000 rpm):\n\n\
          | level | film nodes | time | ε error | K error | C error | p_max error | T_max error | flow error |\n\
          |---|---|---|---|---|---|---|---|---|\n",
     );

@@ -170,7 +170,8 @@ pub struct OperatingPoint {
     pub turbulence: TurbulenceLaw,
     /// Oil supply at each pad's leading edge (flooded, or a share of the bearing's supply flow).
     pub inlet: Vec<Inlet>,
-    /// Pressure on every pad's leading edge [Pa]: the ram pressure `k_ram ρ U²/2` (docs/MODEL.md §2.2).
+    /// Peak pressure on every pad's leading edge [Pa], on its mid-plane: the ram pressure `k_ram ρ U²/2`
+    /// (the edge carries it times `cos(π z/L)`; docs/MODEL.md §2.2).
     pub leading_edge_pressure: f64,
     pub load: LoadSpec,
     /// Film thickness below which an equilibrium is touchdown [m].

@@ -57,5 +57,5 @@ pub(super) const KEYS: &[Key] = &[
         .typical(0.0, 0.5)
         .or(0.0)
         .edit(Physics, "Ram pressure k_ram", Optional(2))
-        .meaning("Leading-edge (ram) pressure of the oil entering each film: p_le = k_ram · ρU²/2, with U the journal surface speed, imposed along every pad's leading edge (the corners on the axial ends stay at ambient). 0: ambient leading edges (the default and the thesis' condition); 1: the oil brought to rest from the full journal speed (Bernoulli's bound). Measured inlet pressures are a fraction of ρU²/2; the coefficient is the model's handle, not fitted to a test. Reynolds and Gümbel cavitation only (a starved, mass-conserving inlet has no pressure)."),
+        .meaning("Leading-edge (ram) pressure of the oil entering each film: p_le = k_ram · ρU²/2 on the pad's mid-plane, with U the journal surface speed, imposed along every pad's leading edge as p_le cos(π z/L), ambient at the axial ends where the oil escapes sideways. 0: ambient leading edges (the default and the thesis' condition); 1: the oil brought to rest from the full journal speed (Bernoulli's bound). Measured inlet pressures are a fraction of ρU²/2; the coefficient is the model's handle, not fitted to a test. Reynolds and Gümbel cavitation only (a starved, mass-conserving inlet has no pressure)."),
 ];

@@ -18,7 +18,9 @@
 //! ## Discretisation (nodal residual, bilinear elements)
 //! ```text
 //! r_i = Σ_j A_ij p_j + Σ_j (T̃_ij + S_ij) θ_j − f_i
-//!   A_ij = ∫ h³/µ ∇N_i·∇N_j + δ_ij ∫ 3 g N_i /(µ_inj l0)    Poiseuille and orifice, lumped (the Reynolds matrix)
+//!   A_ij = ∫ h³/µ ∇N_i·∇N_j + ∫ 3 g N_i N_j /(µ_inj l0)      Poiseuille and orifice (the Reynolds matrix: the
+//!                                                             orifice term lumped, δ_ij ∫ 3 g N_i, for a hole open
+//!                                                             to ambient, consistent for an injecting one)
 //!   T_ij = −∫ 6 U h N_j ∂N_i/∂s                               Couette flow of the oil, integrated by parts
 //!   T̃    = T + D,  D_ij = −max(0, T_ij, T_ji) (i ≠ j), D_ii = −Σ_{j≠i} D_ij   (discrete upwinding)
 //!   S_ij = ∫ 12 ∂h/∂t N_i N_j                                  squeeze of the oil

@@ -9,8 +9,9 @@
 //!
 //! with `p = 0` (ambient) on the leading and trailing edges and the axial ends, `∂p/∂z = 0` on the symmetry
 //! plane of a half model, and periodicity in `s` for a 360° sector. The leading edge may instead carry a
-//! given pressure `p_le` (the ram pressure, docs/MODEL.md §2.2), imposed by lifting: the known nodal values
-//! move to the right-hand side, `A_ff p_f = b_f − A_fd p_d`.
+//! given pressure `p_le cos(π z/L)` (the ram pressure, peak `p_le` on the mid-plane, ambient at the axial
+//! ends; docs/MODEL.md §2.2), imposed by lifting: the known nodal values move to the right-hand side,
+//! `A_ff p_f = b_f − A_fd p_d`.
 //!
 //! ## Weak form (bilinear rectangles, 2×2 Gauss), term by term
 //! For every test function `N_i` vanishing on the Dirichlet boundary:
@@ -114,8 +115,9 @@ pub struct FilmInputs<'a> {
     pub turbulence: TurbulenceLaw,
     /// Oil supply at the leading edge (read by the mass-conserving cavitation option only).
     pub inlet: Inlet,
-    /// Pressure on the leading edge [Pa] (the ram pressure of the oil entering the gap; 0: ambient). The
-    /// leading-edge corners stay at ambient with the axial ends. Reynolds and Gümbel cavitation only.
+    /// Peak pressure on the leading edge [Pa] (the ram pressure of the oil entering the gap; 0: ambient),
+    /// on the pad's mid-plane: the edge carries `p_le cos(π z/L)`, ambient at the axial ends (`z = ±L/2`).
+    /// Reynolds and Gümbel cavitation only.
     pub leading_edge_pressure: f64,
 }
 
@@ -247,9 +249,10 @@ pub struct PadFilm {
     /// The mass-conserving solver (built on its first use).
     jfo: Option<Box<jfo::JfoState>>,
     fixed: Vec<bool>,
-    /// Leading-edge nodes that carry the leading-edge pressure (the corners on the axial ends excluded).
-    leading: Vec<usize>,
-    /// The leading-edge pressure of the last solve [Pa].
+    /// Leading-edge nodes that carry the leading-edge pressure (the corners on the axial ends excluded), each
+    /// with its share `cos(π z/L)` of the peak.
+    leading: Vec<(usize, f64)>,
+    /// The peak leading-edge pressure of the last solve [Pa].
     leading_edge_pressure: f64,
     r: Vec<f64>,
     solved_with: Option<Cavitation>,
@@ -271,9 +274,10 @@ impl PadFilm {
         let solver = SpdSolver::new(&geom.pattern)?;
         let last_row = geom.grid.n_rows() - 1;
         let leading = (0..n)
-            .filter(|&k| {
+            .filter_map(|k| {
                 let (_, j) = geom.grid.col_row(k);
-                geom.sites[k] == NodeSite::Leading && j != last_row && (geom.grid.half || j != 0)
+                let on_edge = geom.sites[k] == NodeSite::Leading && j != last_row && (geom.grid.half || j != 0);
+                on_edge.then(|| (k, ram_profile(&geom.grid, j)))
             })
             .collect();
         Ok(Self {
@@ -515,4 +519,15 @@ impl PadFilm {
         }
         Ok(())
     }
+}
+
+/// The leading-edge pressure's share at row `j`: `cos(π z/L)`, 1 on the pad's mid-plane (`z = 0`, where a
+/// half model starts) and 0 at the axial ends (`z = ±L/2`). The oil brought to rest against the leading edge
+/// escapes sideways at the ends, which are ambient; a profile continuous to ambient there has finite flows at
+/// the corners, where a uniform edge pressure would meet the ends' ambient in a jump whose corner flow has no
+/// mesh limit (docs/MODEL.md §2.2).
+fn ram_profile(grid: &crate::mesh::grid::PadGrid, j: usize) -> f64 {
+    let length = if grid.half { 2.0 * grid.z[grid.z.len() - 1] } else { grid.z[grid.z.len() - 1] - grid.z[0] };
+    let mid = if grid.half { 0.0 } else { 0.5 * (grid.z[0] + grid.z[grid.z.len() - 1]) };
+    (std::f64::consts::PI * (grid.z[j] - mid) / length).cos()
 }

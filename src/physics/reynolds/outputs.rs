@@ -41,14 +41,14 @@ impl PadFilm {
     }
 
     /// Flow work of the oil entering through a pressurised leading edge [W, whole pad]: `Σ p_i q_i` over the
-    /// leading-edge nodes with their consistent nodal inflows, `p_le Q_in` (0 with an ambient leading edge).
+    /// leading-edge nodes with their consistent nodal inflows (0 with an ambient leading edge).
     /// The film dissipates it with the journal's shear power.
     #[must_use]
     pub fn leading_edge_pressure_work(&self) -> f64 {
         if self.leading_edge_pressure == 0.0 {
             return 0.0;
         }
-        self.leading.iter().map(|&i| self.p[i] * self.geom.sym * self.r[i] / 12.0).sum()
+        self.leading.iter().map(|&(i, _)| self.p[i] * self.geom.sym * self.r[i] / 12.0).sum()
     }
 
     /// Flow into the film through orifice `k` [m³/s] (negative when the hole drains the film).

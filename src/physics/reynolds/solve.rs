@@ -113,8 +113,8 @@ impl PadFilm {
             // Lifting: the leading-edge values p_d are known; A_ff p_f = b_f − A_fd p_d, and the fixed rows
             // (identity after fix_rows) return p_d itself.
             self.p.fill(0.0);
-            for &i in &self.leading {
-                self.p[i] = p_le;
+            for &(i, share) in &self.leading {
+                self.p[i] = p_le * share;
             }
             g.pattern.sym_matvec(&self.a_raw, &self.p, &mut self.r);
             for i in 0..self.p.len() {
