@@ -142,6 +142,13 @@ pub enum Inconsistency {
         "a leading-edge (ram) pressure needs a full inlet: physics.cavitation = \"reynolds\" or \"gumbel\" (the mass-conserving inlet is a film fraction)"
     )]
     RamPressureWithJfo,
+    /// The mass-conserving film on a 360° sleeve with no oil fed into it: the sleeve has no leading edge.
+    #[error(
+        "\"jfo\" on a 360° sleeve (pad {pad}) without an injecting orifice: a sleeve has no leading edge, so the \
+         mass-conserving film has no oil coming in and carries nothing; allowed: \"reynolds\" or \"gumbel\", or an \
+         orifice on the pad (bearing.pads.orifice) with operating.injection_pressure_bar > 0"
+    )]
+    JfoSleeveWithoutFeed { pad: usize },
     // ------------------------------------------------------------------------------------ hydraulics
     #[error("must be below the supply pressure")]
     ReturnNotBelowSupply,

@@ -47,6 +47,7 @@ impl CaseFile {
         };
         let thermal = thermal::resolve_thermal(self)?;
         thermal::check_groove_width(self, &bearing)?;
+        check_sleeve_feed(physics.cavitation, &bearing, &operating)?;
         let hydraulics = self
             .hydraulics
             .as_ref()
@@ -111,6 +112,22 @@ fn check_ports(
         }
     }
     Ok(())
+}
+
+/// A 360° sleeve has no leading edge: with the mass-conserving film its only oil is what an injecting orifice
+/// feeds (without one the film drains through its ends and carries no load, which the equilibrium would
+/// report as a missing stiffness, not as the input's fault).
+fn check_sleeve_feed(cavitation: Cavitation, bearing: &Bearing, operating: &Operating) -> Result<(), CaseError> {
+    if cavitation != Cavitation::Jfo {
+        return Ok(());
+    }
+    let unfed = bearing.pads.iter().enumerate().find(|(k, pad)| {
+        pad.is_full_circle() && (pad.orifices.is_empty() || operating.injection_pressure_pa[*k] <= 0.0)
+    });
+    match unfed {
+        Some((pad, _)) => Err(inconsistent("physics.cavitation", Inconsistency::JfoSleeveWithoutFeed { pad })),
+        None => Ok(()),
+    }
 }
 
 fn inconsistent(key: impl Into<String>, reason: Inconsistency) -> CaseError {

@@ -1,7 +1,7 @@
 //! Mass-conserving (JFO) cavitation and starvation on whole bearings: the flooded bearing without
 //! reformation is the Reynolds option's; flows balance per pad to round-off with rupture and reformation
 //! (orifices draining the film, starved inlets); a large supply is the flooded bearing; less oil, less
-//! friction power; bad supply flows are refused naming the key.
+//! friction power; bad supply flows are refused naming the key, as is a 360° sleeve that nothing feeds.
 
 use crate::common;
 use tiltpad::model::load_case;
@@ -102,6 +102,34 @@ fn bad_supply_flows_are_refused_naming_the_key() {
             load_case(&text, &[JFO.into(), format!("operating.supply_flow_l_per_min={bad}")]).unwrap_err().to_string();
         assert!(err.contains("operating.supply_flow_l_per_min") && err.contains("(0, 100000]"), "{err}");
     }
+}
+
+/// A 360° sleeve has no leading edge: with the mass-conserving film its only oil is what an injecting orifice
+/// feeds. Without one the case is refused naming the key, the pad and what is allowed (it used to fail in the
+/// equilibrium as "no stiffness along the 90° axis"); a hole open to ambient feeds nothing and is refused too.
+/// With a 1 bar feed hole at the top the sleeve carries its load, and what the hole feeds leaves through the
+/// ends (measured at preview: ε 0.7425, 1.1642e-5 m³/s in through the hole and out through the ends).
+#[test]
+fn a_360_sleeve_needs_an_injecting_orifice_for_the_mass_conserving_film() {
+    let text = std::fs::read_to_string(common::case_path("plain-360-sommerfeld.toml")).unwrap();
+    let err = load_case(&text, &[JFO.into()]).unwrap_err().to_string();
+    assert!(
+        err.contains("physics.cavitation") && err.contains("jfo") && err.contains("pad 0") && err.contains("gumbel"),
+        "{err}"
+    );
+    assert!(load_case(&text, &[]).is_ok());
+    let hole = "preload = 0.0\n\n[[bearing.pads.orifice]]\nposition_frac = 0.75\ndiameter_mm = 3.0\nlength_mm = 10.0\n";
+    let fed = text.replace("preload = 0.0\n", hole);
+    let err = load_case(&fed, &[JFO.into()]).unwrap_err().to_string();
+    assert!(err.contains("360° sleeve"), "a hole open to ambient feeds nothing: {err}");
+    let case = load_case(&fed, &[JFO.into(), "operating.injection_pressure_bar=1.0".into(), PREVIEW.into()]).unwrap();
+    let s = tiltpad::bearing::solve_case(&case.1).unwrap();
+    let q = &s.flows_m3_per_s;
+    eprintln!(
+        "fed 360° sleeve, JFO: ε {:.4}, orifice in {:.4e}, sides out {:.4e} m³/s",
+        s.eccentricity_ratio, q.orifices_in, q.sides_out
+    );
+    assert!(q.orifices_in > 0.0 && (q.orifices_in - q.sides_out).abs() < 1e-10 * q.orifices_in, "{q:?}");
 }
 
 /// Active-set steps that move few nodes update the LU factorisation (low rank) instead of refactoring:
