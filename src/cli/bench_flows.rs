@@ -29,12 +29,16 @@ fn created_share(s: &Solution) -> Option<f64> {
 }
 
 /// The worst flow at standard against the reference-fine mesh: its relative error and name (`None`: no
-/// flow above 1 % of the throughput), and the share of oil the cavitation condition creates; or why a
-/// solve failed.
-type FlowCells = Result<(Option<(f64, &'static str)>, Option<f64>), String>;
+/// flow above 1 % of the throughput), and the share of oil the cavitation condition creates; or why not:
+/// `refused` (the case's validation refuses the variant, e.g. a ram pressure with the mass-conserving inlet)
+/// or `failed` (a solve failed), with the error's first words.
+type FlowCells = Result<(Option<(f64, &'static str)>, Option<f64>), (&'static str, String)>;
 
 fn flow_cells(text: &str, extra: &[String], truth: Truth) -> FlowCells {
-    let solve = |set: &[String]| with_mesh(text, set).and_then(|c| Ok(solve_case(&c)?));
+    let solve = |set: &[String]| {
+        let case = with_mesh(text, set).map_err(|e| ("refused", first_words(&e.to_string())))?;
+        solve_case(&case).map_err(|e| ("failed", first_words(&e.to_string())))
+    };
     let mut standard = extra.to_vec();
     standard.push("mesh.fidelity=\"standard\"".into());
     let fine = match truth {
@@ -47,7 +51,7 @@ fn flow_cells(text: &str, extra: &[String], truth: Truth) -> FlowCells {
     };
     match (solve(&standard), solve(&fine)) {
         (Ok(s), Ok(t)) => Ok((worst_flow(&s.flows_m3_per_s, &t.flows_m3_per_s), created_share(&s))),
-        (Err(e), _) | (_, Err(e)) => Err(first_words(&e.to_string())),
+        (Err(e), _) | (_, Err(e)) => Err(e),
     }
 }
 
@@ -82,7 +86,7 @@ fn error_cells(cells: &FlowCells) -> (String, String) {
     match cells {
         Ok((Some((e, name)), _)) => (pct(*e), (*name).to_string()),
         Ok((None, _)) => ("—".into(), "no flow above 1 %".into()),
-        Err(why) => ("failed".into(), why.clone()),
+        Err((what, why)) => ((*what).to_string(), why.clone()),
     }
 }
 
@@ -118,6 +122,7 @@ pub fn section(root: &Path) -> Result<String> {
     );
     let jfo = ["physics.cavitation=\"jfo\"".to_string()];
     let mut worst_jfo: Option<(f64, String)> = None;
+    let mut refused_jfo = Vec::new();
     for name in &names {
         super::interrupt::say(format!("bench: flows: {name}"));
         let text = std::fs::read_to_string(root.join("cases").join(name))?;
@@ -134,6 +139,9 @@ pub fn section(root: &Path) -> Result<String> {
             Ok((Some((e, _)), _)) => Some(*e),
             _ => None,
         };
+        if let Some(Err(("refused", _))) = &jfo_cells {
+            refused_jfo.push(format!("`{name}`"));
+        }
         if let Some(e) = jfo_error {
             if worst_jfo.as_ref().is_none_or(|(w, _)| e > *w) {
                 worst_jfo = Some((e, name.clone()));
@@ -153,8 +161,16 @@ pub fn section(root: &Path) -> Result<String> {
         let _ = writeln!(md, "{row}");
     }
     if let Some((w, name)) = worst_jfo {
-        let _ =
-            writeln!(md, "\nWith the mass-conserving film the worst flow error at standard is {w:.2} % (`{name}`).");
+        let refused = if refused_jfo.is_empty() {
+            String::new()
+        } else {
+            format!(" The variant is refused for {} (the reason in its row).", refused_jfo.join(", "))
+        };
+        let _ = writeln!(
+            md,
+            "\nWith the mass-conserving film the worst flow error at standard is {} (`{name}`).{refused}",
+            pct(w)
+        );
     }
     Ok(md)
 }
