@@ -164,7 +164,7 @@ pub fn section(root: &Path) -> Result<String> {
         let refused = if refused_jfo.is_empty() {
             String::new()
         } else {
-            format!(" The variant is refused for {} (the reason in its row).", refused_jfo.join(", "))
+            format!(" The variant is refused for {} (the reason in each row).", refused_jfo.join(", "))
         };
         let _ = writeln!(
             md,
