@@ -77,7 +77,7 @@ use crate::fem::supg::{
 };
 use crate::fem::GeneralPattern;
 use crate::mesh::grid::NodeSite;
-use crate::physics::reynolds::{FilmGeometry, FilmInputs, NodeExchange, PadFilm};
+use crate::physics::reynolds::{FilmGeometry, FilmInputs, NodeExchange, OrificeOperator, PadFilm};
 use crate::physics::turbulence::Factors;
 
 /// Sub-cells per direction for elements cut by an orifice edge (the value the Reynolds solver uses, so the
@@ -382,6 +382,10 @@ impl FilmEnergy {
             st.outflow[x.to] += x.m;
             st.outflow[x.from] -= x.m;
         }
+        // The pumping power in the film's form of the capillary term, so that it meets the film's power
+        // identity to round-off: lumped (each node's own pressure) for a hole open to ambient, consistent (the
+        // interpolated pressure) for an injecting one (physics::reynolds::geometry).
+        let lumped = OrificeOperator::lumped_at(inj.pressure);
         for cell in &self.cells {
             let nodes = g.elements[cell.element];
             let area: f64 = g.qp[cell.element].iter().map(|q| q.w).sum();
@@ -401,16 +405,13 @@ impl FilmEnergy {
                     st.inj.drain[nodes[a]] += wn * v.min(0.0);
                     st.inj.pipe[nodes[a]] += wn * pipe;
                     st.inj.work[nodes[a]] += wn * work;
-                    // The pumping power in the film's form of the capillary term (lumped, the node's own
-                    // pressure, for a hole open to ambient: physics::reynolds::geometry), so that it meets the
-                    // film's power identity to round-off.
-                    if inj.pressure <= 0.0 {
+                    if lumped {
                         let pa = film.p[nodes[a]];
                         st.pumping_power +=
                             g.sym * wn * pa * op.g * (inj.pressure - pa) / (4.0 * inj.viscosity * op.length);
                     }
                 }
-                if inj.pressure > 0.0 {
+                if !lumped {
                     st.pumping_power += g.sym * q.w * p * v;
                 }
                 let reaction = rc * v.max(0.0) + pipe;

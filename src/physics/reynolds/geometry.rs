@@ -212,11 +212,20 @@ fn orifice_operator(o: &LocalOrifice, geom: OperatorGrid<'_>) -> OrificeOperator
 }
 
 impl OrificeOperator {
-    /// The matrix entries for a hole whose entry pressure is `injection_pressure` [Pa]: lumped when the hole
-    /// is open to ambient (`≤ 0`), consistent when it injects (module documentation).
+    /// Whether a hole whose entry pressure is `injection_pressure` [Pa] takes the lumped capillary term: when
+    /// it is open to ambient (`≤ 0`); an injecting hole takes the consistent one (module documentation). The
+    /// one place the rule lives: the film's matrix ([`Self::entries`]) and the energy equation's pumping
+    /// power both ask here.
+    #[must_use]
+    pub fn lumped_at(injection_pressure: f64) -> bool {
+        injection_pressure <= 0.0
+    }
+
+    /// The matrix entries for a hole whose entry pressure is `injection_pressure` [Pa]: lumped or consistent
+    /// as [`Self::lumped_at`] says.
     #[must_use]
     pub fn entries(&self, injection_pressure: f64) -> &[(usize, f64)] {
-        if injection_pressure <= 0.0 {
+        if Self::lumped_at(injection_pressure) {
             &self.lumped
         } else {
             &self.matrix

@@ -527,7 +527,7 @@ impl PadFilm {
 /// the corners, where a uniform edge pressure would meet the ends' ambient in a jump whose corner flow has no
 /// mesh limit (docs/MODEL.md §2.2).
 fn ram_profile(grid: &crate::mesh::grid::PadGrid, j: usize) -> f64 {
-    let length = if grid.half { 2.0 * grid.z[grid.z.len() - 1] } else { grid.z[grid.z.len() - 1] - grid.z[0] };
-    let mid = if grid.half { 0.0 } else { 0.5 * (grid.z[0] + grid.z[grid.z.len() - 1]) };
+    let (first, last) = (grid.z[0], grid.z[grid.z.len() - 1]);
+    let (mid, length) = if grid.half { (0.0, 2.0 * last) } else { (0.5 * (first + last), last - first) };
     (std::f64::consts::PI * (grid.z[j] - mid) / length).cos()
 }
