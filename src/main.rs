@@ -50,7 +50,7 @@ fn main() {
     if web_sys::window().is_some() {
         tiltpad::app::web::start();
     } else {
-        tiltpad::app::web_solver::init_worker();
+        tiltpad::app::jobs::web_worker::init_worker();
     }
 }
 
@@ -58,5 +58,5 @@ fn main() {
 #[cfg(all(target_arch = "wasm32", feature = "gui"))]
 #[wasm_bindgen::prelude::wasm_bindgen]
 pub fn tiltpad_worker_receive(bytes: &[u8]) {
-    tiltpad::app::web_solver::receive(bytes);
+    tiltpad::app::jobs::web_worker::receive(bytes);
 }

@@ -5,6 +5,10 @@
 //! text ([`CaseFile::to_toml_preserving`]), so a save keeps the user's comments, order and units and
 //! changes only the values that were edited.
 //!
+//! Every change of the document — an edit, an undo or redo, another case opened — gives it a new
+//! [`Document::revision`]. Results carry the revision they were computed from, so a view can tell a result
+//! of the design on screen from one of an earlier design (and say so, or recompute), never mixing the two.
+//!
 //! Undo works on whole `CaseFile` snapshots (a case is a few hundred bytes). Continuous edits of one field
 //! (dragging a value) form one undo step: an edit that continues the previous edit of the same key does
 //! not push a new snapshot.
@@ -29,6 +33,8 @@ pub struct Document {
     validation: Result<Case, CaseError>,
     /// The TOML text the case was opened from or last saved as.
     source: Option<String>,
+    /// Counts changes (never repeats: an undo is a new revision too).
+    revision: u64,
 }
 
 impl Document {
@@ -46,7 +52,14 @@ impl Document {
             last_key: None,
             validation,
             source: None,
+            revision: 0,
         }
+    }
+
+    /// The revision of the edited design: a new one after every change.
+    #[must_use]
+    pub fn revision(&self) -> u64 {
+        self.revision
     }
 
     /// The document with the text its case was read from (kept for comment-preserving saves).
@@ -111,7 +124,8 @@ impl Document {
 
     /// Replaces the whole case (opening a file or a preset): a fresh history.
     pub fn replace(&mut self, file: CaseFile, name: impl Into<String>, path: Option<std::path::PathBuf>, source: &str) {
-        *self = Self { path, ..Self::new(file, name, true).with_source(source) };
+        let revision = self.revision + 1;
+        *self = Self { path, revision, ..Self::new(file, name, true).with_source(source) };
     }
 
     /// Ends a continuous gesture, so the next edit of the same key is a new undo step.
@@ -162,6 +176,7 @@ impl Document {
     }
 
     fn revalidate(&mut self) {
+        self.revision += 1;
         self.validation = self.file.resolve();
     }
 }
@@ -192,7 +207,12 @@ mod tests {
     fn edits_undo_redo_and_dirty_state() {
         let mut d = doc();
         assert!(!d.is_dirty() && !d.can_undo());
+        let r0 = d.revision();
         d.edit("operating.speed_rpm", false, |f| f.operating.speed_rpm = 8000.0);
+        // An edit that changes nothing is no new revision; every change is.
+        let r1 = d.revision();
+        d.edit("operating.speed_rpm", true, |f| f.operating.speed_rpm = 8000.0);
+        assert!(r1 > r0 && d.revision() == r1);
         // A drag on the same key joins the step; a new key starts one.
         d.edit("operating.speed_rpm", true, |f| f.operating.speed_rpm = 8100.0);
         d.edit("operating.load_n", false, |f| f.operating.load_n = Some(2500.0));
@@ -203,8 +223,13 @@ mod tests {
         assert!(d.undo());
         assert_eq!(d.file().operating.speed_rpm, 9000.0);
         assert!(!d.is_dirty() && !d.undo());
+        let before_redo = d.revision();
         assert!(d.redo() && d.redo() && !d.redo());
         assert_eq!(d.file().operating.load_n, Some(2500.0));
+        assert_eq!(d.revision(), before_redo + 2, "an undo or a redo is a new revision");
+        let before_open = d.revision();
+        d.replace(d.file().clone(), "again", None, "");
+        assert!(d.revision() > before_open, "opening a case is a new revision");
         d.mark_saved("x.toml", None, String::new());
         assert!(!d.is_dirty());
     }

@@ -21,23 +21,18 @@ pub mod files;
 mod frame;
 pub mod frame_probe;
 pub mod ink;
-pub mod job_runner;
+pub mod jobs;
 pub mod notation;
 pub mod open_dialog;
 pub mod path_fields;
 pub mod pinned;
 pub mod presets;
-pub mod rotor_worker;
 pub mod save_dialog;
 pub mod state;
-pub mod sweep_job;
-pub mod sweep_steps;
+pub mod sweep_run;
 pub mod views;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
-#[cfg(target_arch = "wasm32")]
-pub mod web_solver;
-pub mod worker;
 
 use std::sync::Arc;
 
@@ -48,12 +43,13 @@ use crate::bearing::{ReducedCoefficients, Solution};
 use crate::model::{parse_case_file, Case, Fidelity};
 use document::Document;
 use files::Files;
+use jobs::solve::{stage_of, SolveJob};
+use jobs::{Event, Runner};
 use state::Persisted;
 use views::View;
-use worker::{Event, Worker};
 
-/// Per-frame time the web build may spend solving [s].
-const WEB_SOLVE_BUDGET_S: f64 = 0.012;
+/// Per-frame time the web build may spend stepping a job where no web worker runs it [s].
+pub const WEB_SOLVE_BUDGET_S: f64 = 0.012;
 /// What the results panel shows: the solution at the operating point (asked for whatever view is open).
 const RESULTS_PANEL_NEEDS: &[StageId] = &[StageId::Reduction];
 
@@ -88,7 +84,8 @@ pub enum Pending {
 pub struct WorkbenchApp {
     pub persisted: Persisted,
     pub doc: Document,
-    worker: Worker,
+    /// The edited case's solve.
+    solver: Runner<SolveJob>,
     files: Files,
     submitted: Option<Request>,
     pub shown: Option<Shown>,
@@ -161,7 +158,7 @@ impl WorkbenchApp {
         Self {
             persisted,
             doc,
-            worker: Worker::new(ctx.clone()),
+            solver: Runner::new(ctx),
             files: Files::new(ctx.clone()),
             submitted: None,
             shown: None,
@@ -231,7 +228,7 @@ impl WorkbenchApp {
     /// and no result is pending.
     #[must_use]
     pub fn is_idle(&self) -> bool {
-        !self.worker.busy() && !self.pinned.busy() && self.open_view().busy().is_none()
+        !self.solver.busy() && !self.pinned.busy() && self.open_view().busy().is_none()
     }
 
     /// The open view.
@@ -281,7 +278,7 @@ impl WorkbenchApp {
         use frame_probe::Job;
         if let Some(job) = self.open_view().busy() {
             job
-        } else if self.worker.busy() {
+        } else if self.solver.busy() {
             let thd =
                 self.submitted.as_ref().is_some_and(|r| r.case.thermal.model == crate::model::ThermalModelKind::Thd);
             Job::Solve {
@@ -308,25 +305,22 @@ impl WorkbenchApp {
     /// Submits the wanted request when it changed, and takes in the worker's events.
     fn drive_solver(&mut self) {
         self.submit_wanted();
-        for event in self.worker.poll(WEB_SOLVE_BUDGET_S) {
+        for event in self.solver.poll(WEB_SOLVE_BUDGET_S) {
             match event {
-                Event::Progress { stage, fraction, .. } => {
-                    self.status = Status::Solving { stage: Some(stage), fraction }
-                }
-                Event::Solved { outcome, complete, .. } => {
+                Event::Progress(p) => self.status = Status::Solving { stage: stage_of(&p), fraction: p.fraction() },
+                Event::Partial(outcome) => self.accept(outcome),
+                Event::Done(outcome) => {
                     self.accept(outcome);
-                    if complete {
-                        self.status = Status::Idle;
-                    }
+                    self.status = Status::Idle;
                 }
-                Event::Failed { error, .. } => self.status = Status::Failed(error),
+                Event::Failed(error) => self.status = Status::Failed(error),
             }
         }
         // A dragged value that waited for the running solve goes now, in the frame that solve came back:
         // no frame shows the older value's result as solved.
         self.submit_wanted();
         // A pin's re-solve runs when the edited case is solved (on the web: in the frames it leaves free).
-        if !self.worker.busy() {
+        if !self.solver.busy() {
             self.pinned.poll(WEB_SOLVE_BUDGET_S);
             self.pinned.complete(&mut self.persisted.pins);
         }
@@ -338,9 +332,9 @@ impl WorkbenchApp {
     /// keep coming during the drag; otherwise a newer request cancels the running one at once.
     fn submit_wanted(&mut self) {
         let Some(req) = self.wanted_request() else { return };
-        let hold = self.dragging && self.worker.busy();
+        let hold = self.dragging && self.solver.busy();
         if self.submitted.as_ref() != Some(&req) && !hold {
-            self.worker.submit(req.clone());
+            self.solver.submit(SolveJob::new(req.clone()));
             self.submitted = Some(req);
             self.status = Status::Solving { stage: None, fraction: 0.0 };
         }
@@ -418,7 +412,7 @@ impl eframe::App for WorkbenchApp {
             log::info!(
                 "slow frame: {:.1} ms ({}): menu and editor {edit:.1}, results {results:.1}, view {view:.1}, solver events {solver:.1} ms",
                 crate::units::MS.from_si(dt),
-                if self.worker.busy() { "solving" } else { "idle" }
+                if self.solver.busy() { "solving" } else { "idle" }
             );
         }
         self.frame_time_s = if self.frame_time_s == 0.0 { dt } else { 0.9 * self.frame_time_s + 0.1 * dt };

@@ -6,7 +6,8 @@
 //! - pinned in this session: the result on screen is shared (an `Arc`, no copy, no solve);
 //! - after a restart, or when a view needs a stage the pinned result lacks (the coefficient curves of a
 //!   pin made in the bearing view): the pin's case text is solved once, in the background, by a second
-//!   [`Worker`] (on the web it steps only in frames where the main solve is idle), and cached.
+//!   solve slot ([`SolveJob`] in a [`Runner`] of its own; on the web without a worker it steps only in
+//!   frames where the main solve is idle), and cached.
 //!
 //! Re-solving rather than storing drawables keeps every overlay exact (the same scene code draws live
 //! and pinned) and works for views added later, at the cost of one solve per pin and session.
@@ -14,7 +15,8 @@
 use crate::bearing::stages::{Request, StageId};
 use crate::scene::compare::Pin;
 
-use super::worker::{Event, Worker};
+use super::jobs::solve::SolveJob;
+use super::jobs::{Event, Runner};
 use super::Shown;
 
 /// The identity of a pin: its name and the case it was solved from.
@@ -38,7 +40,7 @@ pub enum Pinned<'a> {
 
 /// The pinned results kept for overlays, and the worker that re-solves pins.
 pub struct PinnedResults {
-    worker: Worker,
+    worker: Runner<SolveJob>,
     cache: Vec<(Key, Shown)>,
     solving: Option<(Key, Request)>,
     failed: Vec<(Key, String)>,
@@ -57,7 +59,7 @@ fn covers(shown: &Shown, needs: &[StageId]) -> bool {
 impl PinnedResults {
     #[must_use]
     pub fn new(ctx: egui::Context) -> Self {
-        Self { worker: Worker::new(ctx), cache: Vec::new(), solving: None, failed: Vec::new() }
+        Self { worker: Runner::new(&ctx), cache: Vec::new(), solving: None, failed: Vec::new() }
     }
 
     /// Keeps the result on screen as the pinned result of `pin` (just pinned).
@@ -80,7 +82,7 @@ impl PinnedResults {
             match crate::model::load_case(&pin.case_toml, &[]) {
                 Ok((_, case)) => {
                     let request = crate::scene::request::request(case, [needs]);
-                    self.worker.submit(request.clone());
+                    self.worker.submit(SolveJob::new(request.clone()));
                     self.solving = Some((key(pin), request));
                 }
                 Err(e) => {
@@ -99,32 +101,33 @@ impl PinnedResults {
         }
         for event in self.worker.poll(budget_s) {
             let Some((k, _)) = &self.solving else { continue };
-            match event {
-                Event::Progress { .. } => {}
-                Event::Solved { outcome, complete, .. } => {
-                    if let Some(solution) = outcome.solution() {
-                        let shown = Shown {
-                            solution,
-                            frequency_sweep: outcome.frequency_sweep(),
-                            speed_sweep: outcome.speed_sweep(),
-                            frf: outcome.get(StageId::Frf),
-                        };
-                        let k = k.clone();
-                        self.cache.retain(|(c, _)| *c != k);
-                        self.cache.push((k, shown));
-                    }
-                    if complete {
-                        // Never asked again in a loop: a finished solve with no solution counts as failed.
-                        if !self.cache.iter().any(|(c, _)| c == k) {
-                            self.failed.push((k.clone(), "the solve gave no solution".into()));
-                        }
-                        self.solving = None;
-                    }
-                }
-                Event::Failed { error, .. } => {
+            let (outcome, complete) = match event {
+                Event::Progress(_) => continue,
+                Event::Partial(o) => (o, false),
+                Event::Done(o) => (o, true),
+                Event::Failed(error) => {
                     self.failed.push((k.clone(), error));
                     self.solving = None;
+                    continue;
                 }
+            };
+            if let Some(solution) = outcome.solution() {
+                let shown = Shown {
+                    solution,
+                    frequency_sweep: outcome.frequency_sweep(),
+                    speed_sweep: outcome.speed_sweep(),
+                    frf: outcome.get(StageId::Frf),
+                };
+                let k = k.clone();
+                self.cache.retain(|(c, _)| *c != k);
+                self.cache.push((k, shown));
+            }
+            if complete {
+                // Never asked again in a loop: a finished solve with no solution counts as failed.
+                if !self.cache.iter().any(|(c, _)| c == k) {
+                    self.failed.push((k.clone(), "the solve gave no solution".into()));
+                }
+                self.solving = None;
             }
         }
     }

@@ -41,9 +41,11 @@ pub fn start() {
                     if probe.is_some() && query.trim_start_matches('?').split('&').any(|kv| kv == "sweep") {
                         app.open::<super::views::sweep_view::SweepView>();
                         let text = app.doc.text().ok();
+                        let revision = app.doc.revision();
                         if let (Some(text), Some(sweep)) = (text, app.view_mut::<super::views::sweep_view::SweepView>())
                         {
-                            sweep.job = super::sweep_job::SweepJob::start(text, &sweep.spec, &cc.egui_ctx).ok();
+                            sweep.job =
+                                super::sweep_run::SweepRun::start(text, &sweep.spec, revision, &cc.egui_ctx).ok();
                         }
                     }
                     // `?probe&rotor`: the rotor view opens (its analysis starts at once).

@@ -59,7 +59,7 @@ pub struct ValvePlant {
 }
 
 /// The plant at one speed.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub struct Plant {
     /// Inputs: the actuators' signals [V]; outputs: the sensors' readings [m, m/s].
     pub ss: StateSpace,

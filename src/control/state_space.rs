@@ -17,7 +17,7 @@ use super::error::ControlError;
 pub type C64 = Complex<f64>;
 
 /// `ẋ = A x + B u`, `y = C x + D u`.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct StateSpace {
     pub a: DMatrix<f64>,
     pub b: DMatrix<f64>,

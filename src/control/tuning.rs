@@ -23,7 +23,7 @@ use crate::rotor::assembly::Weights;
 use crate::rotor::unbalance::Orbit;
 
 /// The plants of a speed sweep and what the unbalance response reads from them.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct PlantSweep {
     /// Spin speeds [rad/s], ascending.
     pub speeds_rad_s: Vec<f64>,

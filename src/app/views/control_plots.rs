@@ -9,11 +9,11 @@ use std::fmt::Write as _;
 use egui::{Color32, RichText, Ui};
 use egui_plot::{HLine, Line, LineStyle, Plot, PlotPoint, Points, Text, VLine};
 
-use super::control_jobs::{Built, Tuned, GAIN_RANGE};
 use super::plot_kit::{legend_ui, LabelledAxes, NamedPlot, PALETTE};
+use crate::app::jobs::control::{Built, Tuned, GAIN_RANGE};
 use crate::units::{RPM, UM};
 
-/// The root locus shows poles up to [`super::control_jobs::LOCUS_MAX_HZ`] and this damping ratio.
+/// The root locus shows poles up to [`crate::app::jobs::control::LOCUS_MAX_HZ`] and this damping ratio.
 const LOCUS_MAX_DAMPING: f64 = 0.25;
 /// Loop open and closed, in every plot of the view.
 pub const OPEN: Color32 = PALETTE[0];

@@ -4,80 +4,20 @@
 //! against without — magnitude and phase over the band `tiltpad frf --control` documents (10–200 Hz, 1 Hz
 //! apart), the same numbers ([`crate::control::rig::RigLoop::sweep`], called by both).
 //!
-//! The work runs off the UI thread ([`crate::app::job_runner`]; stepped per frame on the web): the FRF
-//! stage (one bearing solve and its linearisation), then the loop closed over the band.
+//! The work runs off the UI thread ([`crate::app::jobs::rig`]): the FRF stage (one bearing solve and its
+//! linearisation), then the loop closed over the band.
 
 use egui::{Color32, RichText, Ui};
 use egui_plot::{Line, LineStyle, Plot};
 
 use super::plot_kit::{legend_ui, phase_label, wrapped_phase, LabelledAxes, NamedPlot, PALETTE, PHASE_TICKS};
-use crate::app::job_runner::{Event, Runner, Work};
-use crate::bearing::frf::model::{band, FrfModel};
-use crate::bearing::{NoCancel, Stages};
-use crate::control::rig::{RigLoop, RigSweep};
-use crate::model::control::parse_control_file;
-use crate::model::control::PlantInfo;
-use crate::model::{load_case, Case};
+use crate::app::jobs::rig::{RigJob, RigShown, CASE_NAME};
+use crate::app::jobs::{Event, Runner};
 use crate::units::{KN, UM};
-
-pub const CASE_NAME: &str = "test-rig-pub5.toml";
-const CASE_TEXT: &str = include_str!("../../../cases/test-rig-pub5.toml");
-pub const CONTROLLER_NAME: &str = "controllers/test-rig-pub5-control.toml";
-const CONTROLLER_TEXT: &str = include_str!("../../../cases/controllers/test-rig-pub5-control.toml");
-/// The band [Hz] and its points (1 Hz apart), as in the controller file's header.
-pub const BAND_HZ: [f64; 2] = [10.0, 200.0];
-pub const BAND_POINTS: usize = 191;
 
 const OPEN: Color32 = PALETTE[0];
 const CLOSED: Color32 = PALETTE[1];
 const LIMIT: Color32 = Color32::from_rgb(213, 94, 0);
-
-/// The rig's loop as computed for the page.
-pub struct RigShown {
-    pub title: String,
-    pub sweep: RigSweep,
-}
-
-/// The job: the FRF stage, then the loop over the band.
-pub struct RigJob {
-    case: Option<Case>,
-    frf: Option<std::sync::Arc<FrfModel>>,
-}
-
-impl RigJob {
-    /// The shipped rig and controller.
-    ///
-    /// # Errors
-    /// The shipped case does not parse (a broken build).
-    pub fn shipped() -> Result<Self, String> {
-        let case = load_case(CASE_TEXT, &[]).map_err(|e| format!("{CASE_NAME}: {e}"))?.1;
-        Ok(Self { case: Some(case), frf: None })
-    }
-}
-
-impl Work for RigJob {
-    type Output = RigShown;
-
-    fn step(&mut self) -> Result<Option<RigShown>, String> {
-        let case = self.case.as_ref().ok_or("the rig job already finished")?;
-        let Some(frf) = &self.frf else {
-            self.frf = Some(Stages::new().frf(case, &NoCancel).map_err(|e| format!("{CASE_NAME}: {e}"))?);
-            return Ok(None);
-        };
-        let file = parse_control_file(CONTROLLER_TEXT).map_err(|e| format!("{CONTROLLER_NAME}: {e}"))?;
-        let control = file.control.resolve(&PlantInfo::rig(case)).map_err(|e| format!("{CONTROLLER_NAME}: {e}"))?;
-        let sweep = RigLoop::new(case, frf, &control)
-            .and_then(|l| l.sweep(&band(BAND_HZ[0], BAND_HZ[1], BAND_POINTS)))
-            .map_err(|e| format!("closing the rig's loop: {e}"))?;
-        let title = format!("{} — {CASE_NAME} closed by {CONTROLLER_NAME}", case.title);
-        self.case = None;
-        Ok(Some(RigShown { title, sweep }))
-    }
-
-    fn progress(&self) -> (usize, usize) {
-        (usize::from(self.frf.is_some()), 2)
-    }
-}
 
 /// The page's state.
 #[derive(Default)]
@@ -102,17 +42,19 @@ impl RigPage {
         if self.shown.is_none() && self.runner.is_none() {
             match RigJob::shipped() {
                 Ok(job) => {
-                    let mut runner = Runner::new(ctx.clone());
-                    runner.start(job);
+                    let mut runner = Runner::new(ctx);
+                    runner.submit(job);
                     self.runner = Some(runner);
                 }
                 Err(e) => self.shown = Some(Err(e)),
             }
         }
         if let Some(runner) = self.runner.as_mut() {
-            for e in runner.poll() {
-                if let Event::Done(r) = e {
-                    self.shown = Some(r);
+            for e in runner.poll(crate::app::WEB_SOLVE_BUDGET_S) {
+                match e {
+                    Event::Done(r) => self.shown = Some(Ok(r)),
+                    Event::Failed(e) => self.shown = Some(Err(e)),
+                    Event::Progress(_) | Event::Partial(_) => {}
                 }
             }
         }

@@ -18,7 +18,7 @@
 //! - the **unbalance response** at one node through the critical speeds, open and closed, with the valve
 //!   signal it needs against the valve's small-signal range.
 //!
-//! Two background jobs ([`super::control_jobs`], run by [`crate::app::job_runner`]): the sweep solves
+//! Two background jobs ([`crate::app::jobs::control`]): the sweep solves
 //! the bearings once per speed and builds the plants ([`crate::control::analysis::ControlAnalysis`]); each
 //! slider change closes the loop again on those plants ([`crate::control::tuning`]: an eigen-solution and a
 //! complex solve per speed, no bearing solve). The onset on the map is interpolated between the sweep's
@@ -29,14 +29,14 @@ use std::sync::Arc;
 
 use egui::{RichText, Ui};
 
-use super::control_jobs::{Build, Built, Tune, Tuned, Tuning, GAIN_RANGE, SPEEDS};
+use crate::app::jobs::control::{Build, Built, Tune, Tuned, Tuning, GAIN_RANGE, SPEEDS};
 use super::control_plots::{locus_ui, stability_ui, unbalance_ui, LIMIT};
 use super::control_rig::{rig_ui, RigPage};
 use super::{View, ViewContext};
-use crate::app::job_runner::{Event, Runner};
+use crate::app::jobs::{Event, Runner};
 use crate::app::frame_probe::Job;
 use crate::bearing::stages::StageId;
-use crate::control::analysis::{ControlAnalysis, ControlParams};
+use crate::control::analysis::ControlParams;
 use crate::control::tuning::onset_on_grid;
 use crate::model::control::{Control, Law, LqrSpec, PlantInfo, Quantity, Rule, SensorAt};
 use crate::model::load_case;
@@ -111,7 +111,7 @@ pub struct ControlView {
     progress: Option<(usize, usize)>,
     tune: Option<Runner<Tune>>,
     submitted: Option<Tuning>,
-    tuned: Option<Result<Tuned, String>>,
+    tuned: Option<Result<Arc<Tuned>, String>>,
 }
 
 impl Default for ControlView {
@@ -222,7 +222,7 @@ impl ControlView {
     /// The loop closed at the sliders, once computed.
     #[must_use]
     pub fn tuned(&self) -> Option<&Tuned> {
-        self.tuned.as_ref().and_then(|t| t.as_ref().ok())
+        self.tuned.as_ref().and_then(|t| t.as_ref().ok()).map(AsRef::as_ref)
     }
 
     /// The onset with the loop open [rad/s] (interpolated on the sweep), once the sweep is done.
@@ -245,26 +245,27 @@ impl ControlView {
                 self.tuning.locus_at = SPEEDS * 2 / 3;
                 let mut params = ControlParams::new(speeds(rotor, control));
                 params.nyquist = false;
-                match ControlAnalysis::new(rotor, control, params) {
-                    Ok(analysis) => {
-                        let mut runner = Runner::new(ctx.clone());
-                        runner.start(Build { analysis });
-                        self.build = Some(runner);
-                    }
-                    Err(e) => self.built = Some(Err(e.to_string())),
-                }
+                let mut runner = Runner::new(ctx);
+                runner.submit(Build::new(rotor.clone(), control.clone(), params));
+                self.build = Some(runner);
             }
             self.loaded = Some(loaded);
         }
         if let Some(runner) = self.build.as_mut() {
-            for e in runner.poll() {
+            for e in runner.poll(crate::app::WEB_SOLVE_BUDGET_S) {
                 match e {
-                    Event::Progress { done, of } => self.progress = Some((done, of)),
-                    Event::Done(r) => {
-                        if let (Ok(b), Some(Ok((rotor, _)))) = (&r, &self.loaded) {
-                            self.node = first_unbalance(b, rotor);
+                    #[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+                    Event::Progress(p) => self.progress = Some((p.done as usize, p.of as usize)),
+                    Event::Partial(_) => {}
+                    Event::Done(b) => {
+                        if let Some(Ok((rotor, _))) = &self.loaded {
+                            self.node = first_unbalance(&b, rotor);
                         }
-                        self.built = Some(r.map(Arc::new));
+                        self.built = Some(Ok(b));
+                        self.progress = None;
+                    }
+                    Event::Failed(e) => {
+                        self.built = Some(Err(e));
                         self.progress = None;
                     }
                 }
@@ -273,18 +274,15 @@ impl ControlView {
         let (Some(Ok(built)), Some(Ok((_, control)))) = (&self.built, &self.loaded) else { return };
         if self.submitted != Some(self.tuning) {
             self.submitted = Some(self.tuning);
-            let work = Tune {
-                built: built.clone(),
-                control: tuned_control(control, &self.tuning),
-                tuning: self.tuning,
-                speeds: Vec::new(),
-            };
-            self.tune.get_or_insert_with(|| Runner::new(ctx.clone())).start(work);
+            let work = Tune::new(built.clone(), tuned_control(control, &self.tuning), self.tuning);
+            self.tune.get_or_insert_with(|| Runner::new(ctx)).submit(work);
         }
         if let Some(runner) = self.tune.as_mut() {
-            for e in runner.poll() {
-                if let Event::Done(r) = e {
-                    self.tuned = Some(r);
+            for e in runner.poll(crate::app::WEB_SOLVE_BUDGET_S) {
+                match e {
+                    Event::Done(t) => self.tuned = Some(Ok(t)),
+                    Event::Failed(e) => self.tuned = Some(Err(e)),
+                    Event::Progress(_) | Event::Partial(_) => {}
                 }
             }
         }

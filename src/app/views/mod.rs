@@ -9,12 +9,11 @@
 //! list below. The workbench then shows its tab, solves what it needs while it is open, saves its settings,
 //! and `tests/suite/workbench_ui/views.rs` snapshots it (`tests/snapshots/view_<id>.png`).
 //!
-//! Parts of views and panels that are not tabs: [`compare_panel`], [`control_jobs`], [`control_plots`], [`control_rig`], [`field_paint`], [`limits_view`], [`results_panel`],
+//! Parts of views and panels that are not tabs: [`compare_panel`], [`control_plots`], [`control_rig`], [`field_paint`], [`limits_view`], [`results_panel`],
 //! [`rotor_edit`], [`rotor_plots`], [`rotor_sketch`]; [`plot_kit`]: what the plots share (the legend above the plot, decade and phase ticks,
 //! the palette).
 
 pub mod compare_panel;
-pub mod control_jobs;
 pub mod control_plots;
 pub mod control_rig;
 pub mod field_paint;

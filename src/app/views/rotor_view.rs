@@ -20,7 +20,8 @@ use super::rotor_plots::{critical_map_ui, curves_ui, mode_shape_ui, unbalance_ui
 use super::rotor_sketch::sketch_ui;
 use super::{View, ViewContext};
 use crate::app::frame_probe::Job;
-use crate::app::rotor_worker::{RotorEvent, RotorRunner};
+use crate::app::jobs::rotor::RotorJob;
+use crate::app::jobs::{Event, Runner};
 use crate::bearing::stages::StageId;
 use crate::model::rotor::{CoefficientModel, Rotor};
 use crate::rotor::analysis::{AnalysisParams, AnalysisResult};
@@ -81,7 +82,7 @@ pub struct RotorView {
     /// Speed point and mode (ascending frequency) of the mode-shape tab.
     pub speed_index: usize,
     pub mode_index: usize,
-    runner: Option<RotorRunner>,
+    runner: Option<Runner<RotorJob>>,
     /// What was submitted: (preset, coefficients, generation, edit revision), the rotor, and the result
     /// (or why it failed).
     submitted: Option<(usize, CoefficientModel, usize, usize)>,
@@ -223,21 +224,30 @@ impl RotorView {
                     r
                 })
                 .map_err(Clone::clone);
-            let runner = self.runner.get_or_insert_with(|| RotorRunner::new(ctx.clone()));
-            if let Ok(r) = &rotor {
-                runner.start(r, AnalysisParams::new(speeds(r)));
+            let runner = self.runner.get_or_insert_with(|| Runner::new(ctx));
+            match &rotor {
+                Ok(r) => runner.submit(RotorJob::new(r.clone(), AnalysisParams::new(speeds(r)))),
+                Err(_) => runner.stop(),
             }
             self.rotor = Some(rotor);
             (self.result, self.progress, self.map) = (None, None, None);
         }
         let Some(runner) = self.runner.as_mut() else { return };
-        for e in runner.poll() {
+        for e in runner.poll(crate::app::WEB_SOLVE_BUDGET_S) {
             match e {
-                RotorEvent::Progress { done, of } => self.progress = Some((done, of)),
-                RotorEvent::Done(r) => (self.result, self.progress, self.map) = (Some(r), None, None),
+                Event::Progress(p) => self.progress = Some(progress_counts(&p)),
+                Event::Partial(_) => {}
+                Event::Done(r) => (self.result, self.progress, self.map) = (Some(Ok(r.0)), None, None),
+                Event::Failed(e) => (self.result, self.progress, self.map) = (Some(Err(e)), None, None),
             }
         }
     }
+}
+
+/// A job's progress as whole units done and in all (speeds).
+#[allow(clippy::cast_possible_truncation, clippy::cast_sign_loss)]
+fn progress_counts(p: &crate::app::jobs::Progress) -> (usize, usize) {
+    (p.done.round().max(0.0) as usize, p.of.round().max(0.0) as usize)
 }
 
 /// Draws the view; returns a save of the rotor file the user asked for.

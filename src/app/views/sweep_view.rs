@@ -4,7 +4,7 @@
 //! against S, with the closed-form curves of a plain bearing; [`crate::scene::sommerfeld`]), CSV export with
 //! every column.
 //!
-//! The points are solved by a [`SweepJob`] (a thread on native, one point per frame on the web); the view
+//! The points are solved by a [`SweepRun`] (a thread on native, one point per frame on the web); the view
 //! only reads its table.
 
 use egui::{Color32, ComboBox, DragValue, RichText, Ui};
@@ -13,7 +13,7 @@ use egui_plot::{Line, MarkerShape, Plot, Points, VLine};
 use super::{View, ViewContext};
 use crate::app::ink::{self, Ink};
 use crate::app::frame_probe::Job;
-use crate::app::sweep_job::SweepJob;
+use crate::app::sweep_run::SweepRun;
 use crate::bearing::stages::StageId;
 use crate::bearing::Solution;
 use crate::number::sig;
@@ -32,10 +32,12 @@ const CURRENT: Ink = Ink { dark: Color32::from_rgb(230, 159, 0), light: Color32:
 pub struct SweepView {
     /// The input, its range and the outputs.
     pub spec: SweepSpec,
-    pub job: Option<SweepJob>,
+    pub job: Option<SweepRun>,
     pub error: Option<String>,
     /// What the swept key replaces in the case (an alternative pad-geometry key), said above the plots.
     pub replaced: Vec<String>,
+    /// Whether the sweep belongs to the edited design, as last checked (at this document revision).
+    checked: Option<(u64, bool)>,
 }
 
 impl View for SweepView {
@@ -54,7 +56,8 @@ impl View for SweepView {
 
     fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
         let current = cx.shown.map(|s| s.solution.clone());
-        if let Some(SweepAction::ExportCsv(csv)) = sweep_view_ui(ui, self, cx.case_text(), current.as_deref()) {
+        let design = Design { text: cx.case_text(), revision: cx.doc.revision() };
+        if let Some(SweepAction::ExportCsv(csv)) = sweep_view_ui(ui, self, design, current.as_deref()) {
             cx.export("sweep", "CSV", "csv", csv.into_bytes());
         }
     }
@@ -165,21 +168,65 @@ fn controls_ui(ui: &mut Ui, spec: &mut SweepSpec, case: Option<&crate::model::Ca
     run
 }
 
-/// Draws the view; `text` is the edited case (TOML) the sweep starts from, `current` the shown solution.
+/// The edited design: the case as TOML (`None`: invalid) and the document's revision.
+pub struct Design {
+    pub text: Option<String>,
+    pub revision: u64,
+}
+
+impl SweepView {
+    /// The sweep shown belongs to the edited design (checked once per document revision).
+    fn sweep_is_current(&mut self, design: &Design) -> bool {
+        let Some(job) = &self.job else { return false };
+        match self.checked {
+            Some((r, current)) if r == design.revision => current,
+            _ => {
+                let current = design.text.as_deref().is_some_and(|t| job.is_for(t));
+                self.checked = Some((design.revision, current));
+                current
+            }
+        }
+    }
+}
+
+/// Draws the view; `design` is the edited case the sweep starts from, `current` the shown solution.
 pub fn sweep_view_ui(
     ui: &mut Ui,
     view: &mut SweepView,
-    text: Option<String>,
+    design: Design,
     current: Option<&Solution>,
 ) -> Option<SweepAction> {
+    let text = design.text.clone();
+    let run_again = view.job.is_some() && !view.sweep_is_current(&design);
     let spec = &mut view.spec;
     let key_x = |key: &str| text.as_deref().and_then(|t| key_value(t, key));
-    let run = controls_ui(ui, spec, current.map(|s| &s.inputs));
-    let current_x = view.job.as_ref().and_then(|j| key_x(&j.spec.key)).or_else(|| key_x(&spec.key));
+    let mut run = controls_ui(ui, spec, current.map(|s| &s.inputs));
+    if run_again {
+        // Never drawn as if it were this design's: said, with its own geometry, and one click from a rerun.
+        ui.horizontal_wrapped(|ui| {
+            let of = view.job.as_ref().map_or(0, |j| j.revision);
+            ui.label(RichText::new(format!(
+                "This sweep belongs to an earlier design (revision {of}; the case has changed since): its curves                  are that design's, and this case is not marked on them."
+            ))
+            .color(ink::WARNING.of(ui)));
+            if let Some(job) = &view.job {
+                if ui.add_enabled(design.text.is_some(), egui::Button::new("Run it again for this design")).clicked() {
+                    *spec = job.spec.clone();
+                    run = true;
+                }
+            }
+        });
+    }
+    let current_x = if run_again {
+        None
+    } else {
+        view.job.as_ref().and_then(|j| key_x(&j.spec.key)).or_else(|| key_x(&spec.key))
+    };
     if run {
         match text {
-            Some(text) => match SweepJob::start(text.clone(), spec, ui.ctx()) {
+            Some(text) => match SweepRun::start(text.clone(), spec, design.revision, ui.ctx()) {
                 Ok(job) => {
+                    view.checked = Some((design.revision, true));
                     let first = format!("{}={:?}", spec.key, spec.from);
                     let replaced = crate::model::replaced_keys(&text, &[first]).unwrap_or_default();
                     view.replaced = replaced.iter().map(ToString::to_string).collect();
@@ -219,9 +266,11 @@ pub fn sweep_view_ui(
             action = Some(SweepAction::ExportCsv(job.table.csv()));
         }
     });
+    // What is drawn of the shown solution: nothing when the sweep is of an earlier design.
+    let current = if run_again { None } else { current };
     if spec.chart && job.spec.chart {
-        let case = current.map(|s| &s.inputs);
-        if let Some(case) = case {
+        // The chart is normalised with the geometry of the design that was swept, never the edited one's.
+        if let Some(case) = job.design() {
             chart_ui(ui, &job.table, &ChartGeometry::of(case), current.and_then(|s| s.sommerfeld));
         }
     } else {
@@ -288,7 +337,7 @@ fn chart_ui(ui: &mut Ui, table: &crate::scene::sweep::SweepTable, g: &ChartGeome
 }
 
 /// `key_x`: the swept key's value in the edited case (absent from the file: not marked).
-fn plots_ui(ui: &mut Ui, job: &SweepJob, spec: &SweepSpec, current: Option<&Solution>, key_x: Option<f64>) {
+fn plots_ui(ui: &mut Ui, job: &SweepRun, spec: &SweepSpec, current: Option<&Solution>, key_x: Option<f64>) {
     let table = &job.table;
     let against_s = spec.against_sommerfeld;
     let x_label = if against_s {
