@@ -356,6 +356,7 @@ impl WorkbenchApp {
             shown: self.shown.as_ref(),
             doc: &self.doc,
             stale: self.result_is_stale(),
+            preview: self.dragging && self.persisted.preview_while_dragging,
             pins: &self.persisted.pins,
             compare_with: &mut self.persisted.compare_with,
             pinned: &mut self.pinned,

@@ -54,8 +54,9 @@ pub struct RotorEdit {
     pub selected: Option<Selected>,
     /// Why the edited file is invalid, if it is.
     error: Option<CaseError>,
-    /// The last valid rotor (bearing cases at preview fidelity).
+    /// The last valid rotor (bearing cases at preview fidelity), and its file.
     valid: Rotor,
+    valid_file: RotorFile,
     /// Counts valid edits.
     pub revision: usize,
     /// What the last section change did besides itself (entries moved off removed nodes), or why it was
@@ -117,6 +118,7 @@ impl RotorEdit {
             name: name.to_string(),
             path: path.map(Path::to_path_buf),
             source: text.to_string(),
+            valid_file: file.clone(),
             file,
             selected: None,
             error: None,
@@ -130,6 +132,36 @@ impl RotorEdit {
     #[must_use]
     pub fn rotor(&self) -> &Rotor {
         &self.valid
+    }
+
+    /// The rotor as edited (its last valid file) with every bearing position that names a bearing case on the
+    /// case `case_text` instead (each position's own `set` overrides kept; `preview`: at preview fidelity);
+    /// positions given by numbers stay.
+    ///
+    /// # Errors
+    /// The rotor file does not resolve with that case (a key, a value and its range).
+    pub fn on_case(&self, case_text: &str, preview: bool) -> Result<Rotor, CaseError> {
+        let mut file = self.valid_file.clone();
+        if preview {
+            for b in &mut file.rotor.bearing {
+                if b.case.is_some() {
+                    b.set.push("mesh.fidelity=\"preview\"".into());
+                }
+            }
+        }
+        file.resolve(&|_| Ok(case_text.to_string()))
+    }
+
+    /// Whether any bearing position names a bearing case (the rotor can run on the edited one).
+    #[must_use]
+    pub fn has_bearing_cases(&self) -> bool {
+        self.valid_file.rotor.bearing.iter().any(|b| b.case.is_some())
+    }
+
+    /// The nodes of the bearing positions that name a bearing case.
+    #[must_use]
+    pub fn case_nodes(&self) -> Vec<usize> {
+        self.valid_file.rotor.bearing.iter().filter(|b| b.case.is_some()).map(|b| b.node).collect()
     }
 
     /// The rotor file as edited.
@@ -162,6 +194,7 @@ impl RotorEdit {
         match resolve_preview(&self.file, self.path.as_deref()) {
             Ok(r) => {
                 self.valid = r;
+                self.valid_file = self.file.clone();
                 self.error = None;
                 self.revision += 1;
             }

@@ -1,5 +1,8 @@
-//! The rotor view (`View::Rotor`): a shipped rotor (its bearing cases at preview fidelity) analysed over a
-//! speed range in the background ([`crate::app::rotor_worker`]), shown as a sketch of the rotor and, by tab,
+//! The rotor view (`View::Rotor`): a rotor analysed over a speed range in the background
+//! ([`crate::app::jobs::rotor`]) — by default the shipped rotor on the **edited bearing** (every bearing
+//! position that names a bearing case runs on the edited case, at its fidelity, at preview fidelity while a
+//! value is dragged), or on the rotor file's own bearing cases (at preview fidelity; how an opened rotor file
+//! starts) — shown as a sketch of the rotor and, by tab,
 //! the Campbell diagram (1× line, critical speeds), the stability map (log dec, onset marked), the mode
 //! shapes (deflected shaft, forward blue / backward orange, exaggerated), the unbalance Bode plot with
 //! the API 617 line and the undamped critical-speed map (log stiffness axis, the bearings' k_xx, k_yy over
@@ -11,6 +14,9 @@
 //! [`crate::scene::rotor`]; nothing here computes physics. A click on the sketch
 //! selects a section, disk, bearing or unbalance to edit ([`super::rotor_edit`]); each rotor keeps its edits
 //! while another is shown. A rotor file opened from the File menu (native) joins the shipped ones.
+//!
+//! The view says which bearings, fidelity and speeds its analysis used. An edit of the case re-runs the
+//! analysis; until it is done the previous one stays on screen, said to be of an earlier design.
 
 use std::sync::Arc;
 
@@ -68,6 +74,64 @@ impl RotorTab {
     }
 }
 
+/// Which bearings the rotor runs on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Bearings {
+    /// The edited case at every bearing position that names a case.
+    #[default]
+    Edited,
+    /// The bearing cases the rotor file names (at preview fidelity).
+    RotorFile,
+}
+
+/// What an analysis was asked for: the rotor chosen and its edit, the coefficients, the bearings and — on
+/// the edited bearing — the case text and whether at preview fidelity.
+#[derive(Debug, Clone, PartialEq)]
+struct Wanted {
+    preset: usize,
+    coefficients: CoefficientModel,
+    generation: usize,
+    edit_revision: usize,
+    bearings: Bearings,
+    case: Option<(String, bool)>,
+}
+
+/// What an analysis used, as the view states it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Uses {
+    /// "the edited case compressor-bearing.toml (standard fidelity)" or "the rotor file's bearing cases …".
+    pub bearings: String,
+    pub nodes: Vec<usize>,
+    pub speeds_rpm: (f64, f64, usize),
+    /// The document's revision the analysis is of (the edited bearing's).
+    pub revision: u64,
+}
+
+impl Uses {
+    /// One line: the bearings, their nodes, the speeds.
+    #[must_use]
+    pub fn sentence(&self) -> String {
+        let nodes: Vec<String> = self.nodes.iter().map(ToString::to_string).collect();
+        let (a, b, n) = self.speeds_rpm;
+        format!(
+            "Bearings: {} at node{} {}; {n} speeds from {a:.0} to {b:.0} rpm.",
+            self.bearings,
+            if nodes.len() == 1 { "" } else { "s" },
+            nodes.join(", ")
+        )
+    }
+}
+
+/// The edited case as the view runs the rotor on it.
+pub struct EditedBearing {
+    /// The case as TOML (`None`: it is invalid).
+    pub text: Option<String>,
+    pub name: String,
+    /// A value is being dragged: preview fidelity, and a running analysis finishes before the next starts.
+    pub preview: bool,
+    pub revision: u64,
+}
+
 /// The view's runtime state (not persisted).
 pub struct RotorView {
     /// The shipped rotor shown; `ROTOR_PRESETS.len()` is the rotor file opened ([`RotorView::open_file`]).
@@ -82,12 +146,20 @@ pub struct RotorView {
     /// Speed point and mode (ascending frequency) of the mode-shape tab.
     pub speed_index: usize,
     pub mode_index: usize,
+    /// The bearings each rotor (the shipped ones, then the opened file) runs on.
+    pub bearings: Vec<Bearings>,
     runner: Option<Runner<RotorJob>>,
-    /// What was submitted: (preset, coefficients, generation, edit revision), the rotor, and the result
-    /// (or why it failed).
-    submitted: Option<(usize, CoefficientModel, usize, usize)>,
+    /// What was submitted, the rotor (or why it cannot be read) and what it uses.
+    submitted: Option<Wanted>,
     rotor: Option<Result<Rotor, String>>,
+    uses: Option<Uses>,
+    /// The result shown (or why it failed), what it was asked for, its rotor and what it used.
     result: Option<Result<Arc<AnalysisResult>, String>>,
+    result_for: Option<Wanted>,
+    result_rotor: Option<Rotor>,
+    result_uses: Option<Uses>,
+    /// The edited case is invalid: the analysis on screen is of its last valid version.
+    case_invalid: bool,
     progress: Option<(usize, usize)>,
     /// The critical-speed map of the current result (computed when first shown).
     map: Option<Result<MapDrawing, String>>,
@@ -103,10 +175,18 @@ impl Default for RotorView {
             tab: RotorTab::Campbell,
             speed_index: 0,
             mode_index: 0,
+            bearings: (0..=ROTOR_PRESETS.len())
+                .map(|i| if i < ROTOR_PRESETS.len() { Bearings::Edited } else { Bearings::RotorFile })
+                .collect(),
             runner: None,
             submitted: None,
             rotor: None,
+            uses: None,
             result: None,
+            result_for: None,
+            result_rotor: None,
+            result_uses: None,
+            case_invalid: false,
             progress: None,
             map: None,
         }
@@ -130,13 +210,19 @@ impl View for RotorView {
         "Rotor"
     }
 
-    /// Nothing of the edited case: the view analyses its rotor file in the background.
+    /// No stage of the edited case's solve: the view runs its own analysis on the edited case.
     fn needs(&self) -> &'static [StageId] {
         &[]
     }
 
     fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
-        if let Some(save) = rotor_ui(ui, self) {
+        let edited = EditedBearing {
+            text: cx.case_text(),
+            name: cx.doc.name.clone(),
+            preview: cx.preview,
+            revision: cx.doc.revision(),
+        };
+        if let Some(save) = rotor_ui(ui, self, &edited) {
             cx.export_as(save.name, "Rotor (TOML)", "toml", save.text.into_bytes());
         }
     }
@@ -167,10 +253,22 @@ impl RotorView {
         self.runner.as_ref().is_none_or(|r| !r.busy())
     }
 
-    /// The rotor of the analysis shown (as submitted), if it could be read.
+    /// The rotor of the analysis shown, if any.
     #[must_use]
     pub fn analysed_rotor(&self) -> Option<&Rotor> {
-        self.rotor.as_ref().and_then(|r| r.as_ref().ok())
+        self.result_rotor.as_ref()
+    }
+
+    /// What the analysis shown used (bearings, nodes, speeds), if any.
+    #[must_use]
+    pub fn uses(&self) -> Option<&Uses> {
+        self.result_uses.as_ref()
+    }
+
+    /// The analysis shown is the one last asked for (not of an earlier design or setting).
+    #[must_use]
+    pub fn result_is_current(&self) -> bool {
+        self.result.is_some() && self.result_for == self.submitted
     }
 
     /// The finished analysis, if any.
@@ -183,6 +281,8 @@ impl RotorView {
     /// shows its error (the key, the value and the allowed range) in the view.
     pub fn open_file(&mut self, name: &str, path: Option<&std::path::Path>, text: &str) {
         self.edits[ROTOR_PRESETS.len()] = Some(RotorEdit::open(name, path, text));
+        // An opened rotor file runs on its own bearing cases until told otherwise.
+        self.bearings[ROTOR_PRESETS.len()] = Bearings::RotorFile;
         self.preset = ROTOR_PRESETS.len();
         self.generation += 1;
     }
@@ -207,41 +307,94 @@ impl RotorView {
         self.edits.get(self.preset)?.as_ref()?.as_ref().ok()
     }
 
-    /// Starts the analysis when the rotor (or an edit of it) or the coefficient model changed; takes in the
-    /// runner's events.
-    fn drive(&mut self, ctx: &egui::Context) {
-        let revision = self.edit_mut().as_ref().map_or(0, |e| e.revision);
-        let wanted = (self.preset, self.coefficients, self.generation, revision);
-        if self.submitted != Some(wanted) {
-            self.submitted = Some(wanted);
-            let coefficients = self.coefficients;
-            let rotor = self
-                .edit_mut()
-                .as_ref()
-                .map(|e| {
-                    let mut r = e.rotor().clone();
-                    r.coefficients = coefficients;
-                    r
-                })
-                .map_err(Clone::clone);
-            let runner = self.runner.get_or_insert_with(|| Runner::new(ctx));
-            match &rotor {
-                Ok(r) => runner.submit(RotorJob::new(r.clone(), AnalysisParams::new(speeds(r)))),
-                Err(_) => runner.stop(),
+    /// The analysis the view wants now: the rotor (or why not) and what it uses; `None` while the edited
+    /// case is invalid and the rotor runs on it (the analysis on screen stays).
+    fn wanted(&mut self, edited: &EditedBearing) -> Option<(Wanted, Result<Rotor, String>, Option<Uses>)> {
+        let (preset, coefficients, generation) = (self.preset, self.coefficients, self.generation);
+        let choice = self.preset.min(ROTOR_PRESETS.len());
+        let bearings = self.bearings[choice];
+        let edit = match self.edit_mut() {
+            Ok(e) => e,
+            Err(e) => {
+                let e = e.clone();
+                let wanted = Wanted { preset, coefficients, generation, edit_revision: 0, bearings, case: None };
+                return Some((wanted, Err(e), None));
             }
-            self.rotor = Some(rotor);
-            (self.result, self.progress, self.map) = (None, None, None);
+        };
+        let on_edited = bearings == Bearings::Edited && edit.has_bearing_cases();
+        let (rotor, case, what) = if on_edited {
+            let text = edited.text.as_ref()?;
+            let rotor = edit.on_case(text, edited.preview).map_err(|e| format!("on the edited case {}: {e}", edited.name));
+            let fidelity = rotor.as_ref().ok().and_then(|r| first_case(r)).map(|c| c.mesh.fidelity);
+            let fidelity =
+                fidelity.map_or_else(String::new, |f| format!(" ({} fidelity)", format!("{f:?}").to_lowercase()));
+            let while_dragged = if edited.preview { ", while the value is dragged" } else { "" };
+            (rotor, Some((text.clone(), edited.preview)), format!("the edited case {}{fidelity}{while_dragged}", edited.name))
+        } else if edit.has_bearing_cases() {
+            (Ok(edit.rotor().clone()), None, "the rotor file's bearing cases (preview fidelity)".to_string())
+        } else {
+            (Ok(edit.rotor().clone()), None, "the rotor file's bearings (given by numbers)".to_string())
+        };
+        let wanted = Wanted { preset, coefficients, generation, edit_revision: edit.revision, bearings, case };
+        let rotor = rotor.map(|mut r| {
+            r.coefficients = coefficients;
+            r
+        });
+        let uses = rotor.as_ref().ok().map(|r| {
+            let s = speeds(r);
+            Uses {
+                bearings: what,
+                nodes: if on_edited { edit.case_nodes() } else { r.bearings.iter().map(|b| b.node).collect() },
+                speeds_rpm: (RPM.from_si(s[0]), RPM.from_si(s[s.len() - 1]), s.len()),
+                revision: edited.revision,
+            }
+        });
+        Some((wanted, rotor, uses))
+    }
+
+    /// Starts the analysis when what it is asked for changed (the rotor or an edit of it, the coefficient
+    /// model, the bearings, the edited case); takes in the runner's events. While a value is dragged a running
+    /// analysis finishes before the next value's starts, so results keep coming during the drag.
+    fn drive(&mut self, ctx: &egui::Context, edited: &EditedBearing) {
+        let wanted = self.wanted(edited);
+        self.case_invalid = wanted.is_none();
+        let busy = self.runner.as_ref().is_some_and(Runner::busy);
+        if let Some((wanted, rotor, uses)) = wanted {
+            if self.submitted.as_ref() != Some(&wanted) && !(edited.preview && busy) {
+                self.submitted = Some(wanted);
+                let runner = self.runner.get_or_insert_with(|| Runner::new(ctx));
+                match &rotor {
+                    Ok(r) => runner.submit(RotorJob::new(r.clone(), AnalysisParams::new(speeds(r)))),
+                    Err(_) => runner.stop(),
+                }
+                (self.rotor, self.uses, self.progress) = (Some(rotor), uses, None);
+            }
         }
         let Some(runner) = self.runner.as_mut() else { return };
         for e in runner.poll(crate::app::WEB_SOLVE_BUDGET_S) {
-            match e {
-                Event::Progress(p) => self.progress = Some(progress_counts(&p)),
-                Event::Partial(_) => {}
-                Event::Done(r) => (self.result, self.progress, self.map) = (Some(Ok(r.0)), None, None),
-                Event::Failed(e) => (self.result, self.progress, self.map) = (Some(Err(e)), None, None),
-            }
+            let result = match e {
+                Event::Progress(p) => {
+                    self.progress = Some(progress_counts(&p));
+                    continue;
+                }
+                Event::Partial(_) => continue,
+                Event::Done(r) => Ok(r.0),
+                Event::Failed(e) => Err(e),
+            };
+            (self.result, self.progress, self.map) = (Some(result), None, None);
+            self.result_for.clone_from(&self.submitted);
+            self.result_rotor = self.rotor.as_ref().and_then(|r| r.as_ref().ok()).cloned();
+            self.result_uses.clone_from(&self.uses);
         }
     }
+}
+
+/// The bearing case of a rotor's first position that has one.
+fn first_case(r: &Rotor) -> Option<&crate::model::Case> {
+    r.bearings.iter().find_map(|b| match &b.support {
+        crate::model::rotor::BearingSupport::Case { case, .. } => Some(case.as_ref()),
+        crate::model::rotor::BearingSupport::Numbers(_) => None,
+    })
 }
 
 /// A job's progress as whole units done and in all (speeds).
@@ -251,8 +404,8 @@ fn progress_counts(p: &crate::app::jobs::Progress) -> (usize, usize) {
 }
 
 /// Draws the view; returns a save of the rotor file the user asked for.
-pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
-    view.drive(ui.ctx());
+pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView, edited: &EditedBearing) -> Option<SaveRequest> {
+    view.drive(ui.ctx(), edited);
     // Wrapped rows throughout: a row wider than the central panel would widen the whole view under the side
     // panels and clip it.
     ui.horizontal_wrapped(|ui| {
@@ -280,15 +433,30 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
             .on_hover_text("Journal and pad coordinates with the pads' inertia (no reduction).");
         ui.selectable_value(&mut view.coefficients, CoefficientModel::Reduced, "reduced 2×2")
             .on_hover_text("Synchronously reduced (ω = Ω): overestimates the stable range.");
+        let choice = view.preset.min(ROTOR_PRESETS.len());
+        if view.edit().is_some_and(RotorEdit::has_bearing_cases) {
+            ui.separator();
+            let bearings = &mut view.bearings[choice];
+            ui.selectable_value(bearings, Bearings::Edited, format!("on {}", edited.name)).on_hover_text(
+                "Every bearing position that names a bearing case runs on the edited case (its own overrides kept), \
+                 at the case's fidelity (preview while a value is dragged).",
+            );
+            ui.selectable_value(bearings, Bearings::RotorFile, "on the rotor file's cases")
+                .on_hover_text("The bearing cases the rotor file names, at preview fidelity.");
+        }
     });
-    let rotor = match &view.rotor {
-        Some(Ok(r)) => r.clone(),
+    match &view.rotor {
+        Some(Ok(_)) => {}
         Some(Err(e)) => {
             ui.label(RichText::new(format!("Cannot read the rotor: {e}")).color(LIMIT.of(ui)));
             return None;
         }
+        None if view.case_invalid => {
+            ui.label(RichText::new("The edited case is invalid: fix it in the editor to analyse the rotor on it.").color(LIMIT.of(ui)));
+            return None;
+        }
         None => return None,
-    };
+    }
     let save = match view.edit_mut() {
         Ok(edit) => {
             let shown = edit.rotor();
@@ -307,21 +475,44 @@ pub fn rotor_ui(ui: &mut Ui, view: &mut RotorView) -> Option<SaveRequest> {
         }
         Err(_) => None,
     };
-    let result = match &view.result {
-        Some(Ok(r)) => r.clone(),
-        Some(Err(e)) => {
+    // What is being analysed, and whether what is shown is of it.
+    let current = view.result_is_current();
+    if !current {
+        ui.horizontal_wrapped(|ui| {
+            ui.spinner();
+            let (done, of) = view.progress.unwrap_or((0, SPEEDS));
+            let what = view.uses.as_ref().map_or_else(String::new, |u| format!(" on {}", u.bearings));
+            ui.label(format!("Analysing{what}: speed {done} of {of} (bearings solved at each speed)…"));
+        });
+    }
+    if view.case_invalid {
+        ui.label(
+            RichText::new("The edited case is invalid: the analysis shown is of its last valid version.").color(LIMIT.of(ui)),
+        );
+    }
+    let (result, rotor) = match (&view.result, &view.result_rotor) {
+        (Some(Ok(r)), Some(rotor)) => (r.clone(), rotor.clone()),
+        (Some(Err(e)), _) => {
             ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT.of(ui)));
             return save;
         }
-        None => {
-            ui.horizontal(|ui| {
-                ui.spinner();
-                let (done, of) = view.progress.unwrap_or((0, SPEEDS));
-                ui.label(format!("Analysing: speed {done} of {of} (bearings solved at each speed, preview fidelity)…"));
-            });
-            return save;
-        }
+        _ => return save,
     };
+    if let Some(uses) = &view.result_uses {
+        let line = uses.sentence();
+        if current {
+            ui.label(line);
+        } else {
+            // Kept while the edited design is analysed, and said to be of the design it was computed for.
+            ui.label(
+                RichText::new(format!(
+                    "Shown until the analysis above is done: the analysis of an earlier design (revision {}). {line}",
+                    uses.revision
+                ))
+                .color(LIMIT.of(ui)),
+            );
+        }
+    }
     // Wrapped: every tab stays readable in a narrow central panel.
     ui.horizontal_wrapped(|ui| {
         for t in RotorTab::ALL {

@@ -134,6 +134,9 @@ pub struct ViewContext<'a> {
     pub doc: &'a Document,
     /// The shown result does not match the edited case (invalid, solving or failed).
     pub stale: bool,
+    /// A value is being dragged and solves run at preview fidelity meanwhile (a view's own background work
+    /// on the edited case follows suit).
+    pub preview: bool,
     /// The pins, the one the views compare with, and their results ([`ViewContext::compare_with_ui`]).
     pub(crate) pins: &'a [Pin],
     pub(crate) compare_with: &'a mut Option<String>,

@@ -137,7 +137,7 @@ pub(crate) fn open_preset(h: &mut Harness<'_, WorkbenchApp>, name: &str) {
 pub(crate) fn wait_for_rotor(h: &mut Harness<'_, WorkbenchApp>) {
     let start = Instant::now();
     h.run_steps(2);
-    while !(rotor(h).is_idle() && rotor(h).result().is_some()) {
+    while !(rotor(h).is_idle() && rotor(h).result_is_current()) {
         assert!(start.elapsed() < Duration::from_secs(300), "rotor analysis did not finish");
         std::thread::sleep(Duration::from_millis(10));
         h.step();
