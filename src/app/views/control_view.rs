@@ -3,8 +3,10 @@
 //!
 //! - the active compressor rotor (`cases/rotors/compressor-rotor-active.toml`, PD loops) or the same rotor
 //!   with the LQR tiltpad designs (`cases/rotors/compressor-rotor-lqr.toml`: its weights, the designed
-//!   compensator's gains at the design speed's running frequency, its reduced model), bearings at preview
-//!   fidelity;
+//!   compensator's gains at the design speed's running frequency, its reduced model), its bearings on the
+//!   **edited case** when it is a controllable bearing (it has `[hydraulics]`: a valve to close the loop
+//!   through; at its fidelity, preview while a value is dragged), else on the shipped
+//!   `compressor-bearing-active.toml` at preview fidelity — the view says which;
 //! - the test rig closed by its shipped controller: X/F with control against without
 //!   ([`super::control_rig`]).
 //!
@@ -32,6 +34,7 @@ use egui::{RichText, Ui};
 use crate::app::jobs::control::{Build, Built, Tune, Tuned, Tuning, GAIN_RANGE, SPEEDS};
 use super::control_plots::{locus_ui, stability_ui, unbalance_ui, LIMIT};
 use super::control_rig::{rig_ui, RigPage};
+use super::view::EditedBearing;
 use super::{View, ViewContext};
 use crate::app::jobs::{Event, Runner};
 use crate::app::frame_probe::Job;
@@ -106,6 +109,11 @@ pub struct ControlView {
     /// Response node shown (index in the sweep's response nodes).
     pub node: usize,
     loaded: Option<Result<(Rotor, Control), String>>,
+    /// The bearing `loaded` runs on (`None`: not loaded yet), and the same said in words.
+    loaded_on: Option<BearingChoice>,
+    pub bearing_said: String,
+    /// `built` (and `tuned`) are of an earlier bearing than `loaded`, kept on screen until the new ones come.
+    built_earlier: bool,
     build: Option<Runner<Build>>,
     built: Option<Result<Arc<Built>, String>>,
     progress: Option<(usize, usize)>,
@@ -122,6 +130,9 @@ impl Default for ControlView {
             tuning: Tuning { gain: 1.0, kp_v_per_um: None, kd_v_per_mm_s: None, locus_at: 0 },
             node: 0,
             loaded: None,
+            loaded_on: None,
+            bearing_said: String::new(),
+            built_earlier: false,
             build: None,
             built: None,
             progress: None,
@@ -132,8 +143,56 @@ impl Default for ControlView {
     }
 }
 
-/// A shipped active rotor (`text`), its bearing cases at preview fidelity, and its controller.
-fn load(text: &str) -> Result<(Rotor, Control), String> {
+/// The bearing case the rotor runs on: the edited one (its text, at preview fidelity or not), or the shipped
+/// controllable case at preview fidelity.
+#[derive(Debug, Clone, PartialEq)]
+struct BearingChoice {
+    edited: Option<String>,
+    preview: bool,
+}
+
+impl BearingChoice {
+    /// What the view runs on for the edited case `edited` (`None`: keep what it runs on).
+    fn of(edited: &EditedBearing, now: Option<&BearingChoice>) -> Option<Self> {
+        match &edited.text {
+            Some(t) if edited.controllable => Some(Self { edited: Some(t.clone()), preview: edited.preview }),
+            Some(_) => Some(Self { edited: None, preview: true }),
+            None => now.cloned().or(Some(Self { edited: None, preview: true })),
+        }
+    }
+
+    /// In words, for the view.
+    fn said(&self, edited: &EditedBearing, rotor: Option<&Rotor>) -> String {
+        let nodes: Vec<String> = rotor
+            .map(|r| {
+                r.bearings
+                    .iter()
+                    .filter(|b| matches!(b.support, BearingSupport::Case { .. }))
+                    .map(|b| b.node.to_string())
+                    .collect()
+            })
+            .unwrap_or_default();
+        let at = format!("at nodes {}", nodes.join(", "));
+        match &self.edited {
+            Some(_) => {
+                let fidelity = rotor
+                    .and_then(|r| {
+                        r.bearings.iter().find_map(|b| match &b.support {
+                            BearingSupport::Case { case, .. } => Some(format!("{:?}", case.mesh.fidelity).to_lowercase()),
+                            BearingSupport::Numbers(_) => None,
+                        })
+                    })
+                    .unwrap_or_default();
+                format!("Bearings: the edited case {} ({fidelity} fidelity) {at}", edited.name)
+            }
+            None => format!("Bearings: the shipped {BEARING_NAME} (preview) {at}: the edited case has no [hydraulics]"),
+        }
+    }
+}
+
+/// A shipped active rotor (`text`) with its bearing positions on `bearing` (the edited case, or the shipped
+/// controllable one), and its controller.
+fn load(text: &str, bearing: &BearingChoice) -> Result<(Rotor, Control), String> {
     let file = parse_rotor_file(text).map_err(|e| e.to_string())?;
     let read = |name: &str| {
         if name.rsplit('/').next() == Some(BEARING_NAME) {
@@ -143,11 +202,12 @@ fn load(text: &str) -> Result<(Rotor, Control), String> {
         }
     };
     let mut rotor = file.resolve(&read).map_err(|e| e.to_string())?;
+    let case_text = bearing.edited.as_deref().unwrap_or(BEARING_TEXT);
     for (b, table) in rotor.bearings.iter_mut().zip(&file.rotor.bearing) {
         if let BearingSupport::Case { case, .. } = &mut b.support {
-            let set: Vec<String> =
-                std::iter::once("mesh.fidelity=\"preview\"".to_string()).chain(table.set.clone()).collect();
-            **case = load_case(BEARING_TEXT, &set).map_err(|e| e.to_string())?.1;
+            let preview = bearing.preview.then(|| "mesh.fidelity=\"preview\"".to_string());
+            let set: Vec<String> = preview.into_iter().chain(table.set.clone()).collect();
+            **case = load_case(case_text, &set).map_err(|e| e.to_string())?.1;
         }
     }
     let table = file.control.ok_or_else(|| crate::control::ControlError::NoController.to_string())?;
@@ -232,11 +292,28 @@ impl ControlView {
         onset_on_grid(&b.sweep.speeds_rad_s, &b.open_log_dec)
     }
 
-    /// Loads the rotor, starts the sweep, and closes the loop again when a slider moved.
-    fn drive(&mut self, ctx: &egui::Context) {
+    /// The results shown are of an earlier bearing than the one the view now runs on (a new sweep is under
+    /// way).
+    #[must_use]
+    pub fn shows_earlier_design(&self) -> bool {
+        self.built_earlier
+    }
+
+    /// Loads the rotor on the bearing it runs on (again when the edited case changed), starts the sweep, and
+    /// closes the loop again when a slider moved.
+    fn drive(&mut self, ctx: &egui::Context, edited: &EditedBearing) {
         let Some((_, text)) = self.system.rotor() else { return };
+        let busy = self.build.as_ref().is_some_and(Runner::busy);
+        let choice = BearingChoice::of(edited, self.loaded_on.as_ref());
+        if choice != self.loaded_on && !(edited.preview && busy && self.loaded.is_some()) {
+            // Another bearing: a new sweep; what is on screen stays, said to be of an earlier design.
+            self.built_earlier = self.built.is_some();
+            (self.loaded, self.loaded_on, self.submitted) = (None, choice, None);
+        }
         if self.loaded.is_none() {
-            let loaded = load(text);
+            let Some(choice) = self.loaded_on.clone() else { return };
+            let loaded = load(text, &choice);
+            self.bearing_said = choice.said(edited, loaded.as_ref().ok().map(|(r, _)| r));
             if let Ok((rotor, control)) = &loaded {
                 if let Some((kp, kd)) = shared_pd(control) {
                     (self.tuning.kp_v_per_um, self.tuning.kd_v_per_mm_s) = (Some(kp), Some(kd));
@@ -245,9 +322,11 @@ impl ControlView {
                 self.tuning.locus_at = SPEEDS * 2 / 3;
                 let mut params = ControlParams::new(speeds(rotor, control));
                 params.nyquist = false;
-                let mut runner = Runner::new(ctx);
-                runner.submit(Build::new(rotor.clone(), control.clone(), params));
-                self.build = Some(runner);
+                self.build.get_or_insert_with(|| Runner::new(ctx)).submit(Build::new(
+                    rotor.clone(),
+                    control.clone(),
+                    params,
+                ));
             }
             self.loaded = Some(loaded);
         }
@@ -261,18 +340,16 @@ impl ControlView {
                         if let Some(Ok((rotor, _))) = &self.loaded {
                             self.node = first_unbalance(&b, rotor);
                         }
-                        self.built = Some(Ok(b));
-                        self.progress = None;
+                        (self.built, self.progress, self.built_earlier, self.submitted) = (Some(Ok(b)), None, false, None);
                     }
                     Event::Failed(e) => {
-                        self.built = Some(Err(e));
-                        self.progress = None;
+                        (self.built, self.progress, self.built_earlier) = (Some(Err(e)), None, false);
                     }
                 }
             }
         }
         let (Some(Ok(built)), Some(Ok((_, control)))) = (&self.built, &self.loaded) else { return };
-        if self.submitted != Some(self.tuning) {
+        if self.submitted != Some(self.tuning) && !self.built_earlier {
             self.submitted = Some(self.tuning);
             let work = Tune::new(built.clone(), tuned_control(control, &self.tuning), self.tuning);
             self.tune.get_or_insert_with(|| Runner::new(ctx)).submit(work);
@@ -303,8 +380,8 @@ impl View for ControlView {
         &[]
     }
 
-    fn ui(&mut self, ui: &mut Ui, _cx: &mut ViewContext<'_>) {
-        control_ui(ui, self);
+    fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
+        control_ui(ui, self, &cx.edited_bearing());
     }
 
     fn busy(&self) -> Option<Job> {
@@ -313,7 +390,7 @@ impl View for ControlView {
 }
 
 /// Draws the view.
-pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
+pub fn control_ui(ui: &mut Ui, view: &mut ControlView, edited: &EditedBearing) {
     let mut system = view.system;
     ui.horizontal(|ui| {
         let label = ui.label("System");
@@ -332,7 +409,7 @@ pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
         rig_ui(ui, &mut view.rig);
         return;
     };
-    view.drive(ui.ctx());
+    view.drive(ui.ctx(), edited);
     let (title, control) = match &view.loaded {
         Some(Ok(l)) => (l.0.title.clone(), l.1.clone()),
         Some(Err(e)) => {
@@ -342,22 +419,30 @@ pub fn control_ui(ui: &mut Ui, view: &mut ControlView) {
         None => return,
     };
     // The rotor's title on hover: one line, so the plots keep their height at 1280×720.
-    ui.label(RichText::new(format!("{name} — bearings at preview fidelity, {SPEEDS} speeds")).strong())
-        .on_hover_text(title);
+    ui.label(RichText::new(format!("{name} — {SPEEDS} speeds")).strong()).on_hover_text(title);
+    ui.label(&view.bearing_said).on_hover_text(
+        "The loop closes through the bearings' servovalves: a case without [hydraulics] has none, and the shipped \
+         controllable compressor bearing is used instead. Open it (File → Open preset) to edit the bearing the loop \
+         runs on.",
+    );
+    let solving = view.build.as_ref().is_some_and(Runner::busy);
+    if solving {
+        ui.horizontal(|ui| {
+            ui.spinner();
+            let (done, of) = view.progress.unwrap_or((0, SPEEDS));
+            ui.label(format!("Solving the bearings and building the loop: speed {done} of {of}…"));
+        });
+    }
+    if view.built_earlier {
+        ui.label(RichText::new("Shown until the new sweep is done: the results of an earlier design.").color(LIMIT));
+    }
     let built = match &view.built {
         Some(Ok(b)) => b.clone(),
         Some(Err(e)) => {
             ui.label(RichText::new(format!("Analysis failed: {e}")).color(LIMIT));
             return;
         }
-        None => {
-            ui.horizontal(|ui| {
-                ui.spinner();
-                let (done, of) = view.progress.unwrap_or((0, SPEEDS));
-                ui.label(format!("Solving the bearings and building the loop: speed {done} of {of}…"));
-            });
-            return;
-        }
+        None => return,
     };
     sliders_ui(ui, view, &built);
     let tuned = match &view.tuned {

@@ -24,6 +24,7 @@ use egui::{RichText, Ui};
 
 use super::rotor_plots::{critical_map_ui, curves_ui, mode_shape_ui, unbalance_ui, LIMIT};
 use super::rotor_sketch::sketch_ui;
+use super::view::EditedBearing;
 use super::{View, ViewContext};
 use crate::app::frame_probe::Job;
 use crate::app::jobs::rotor::RotorJob;
@@ -122,16 +123,6 @@ impl Uses {
     }
 }
 
-/// The edited case as the view runs the rotor on it.
-pub struct EditedBearing {
-    /// The case as TOML (`None`: it is invalid).
-    pub text: Option<String>,
-    pub name: String,
-    /// A value is being dragged: preview fidelity, and a running analysis finishes before the next starts.
-    pub preview: bool,
-    pub revision: u64,
-}
-
 /// The view's runtime state (not persisted).
 pub struct RotorView {
     /// The shipped rotor shown; `ROTOR_PRESETS.len()` is the rotor file opened ([`RotorView::open_file`]).
@@ -216,13 +207,7 @@ impl View for RotorView {
     }
 
     fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
-        let edited = EditedBearing {
-            text: cx.case_text(),
-            name: cx.doc.name.clone(),
-            preview: cx.preview,
-            revision: cx.doc.revision(),
-        };
-        if let Some(save) = rotor_ui(ui, self, &edited) {
+        if let Some(save) = rotor_ui(ui, self, &cx.edited_bearing()) {
             cx.export_as(save.name, "Rotor (TOML)", "toml", save.text.into_bytes());
         }
     }

@@ -126,6 +126,20 @@ pub fn export_name(doc_name: &str, what: &str, extension: &str) -> String {
     format!("{stem}-{what}.{extension}")
 }
 
+/// The edited case as a view's own analysis runs on it (the rotor and Control views put it in their machine).
+#[derive(Debug, Clone)]
+pub struct EditedBearing {
+    /// The case as TOML (`None`: it is invalid).
+    pub text: Option<String>,
+    pub name: String,
+    /// A value is being dragged: preview fidelity, and a running analysis finishes before the next starts.
+    pub preview: bool,
+    /// The document's revision.
+    pub revision: u64,
+    /// The case has `[hydraulics]` (a valve to close a control loop through).
+    pub controllable: bool,
+}
+
 /// What a view draws from, built by the app every frame.
 pub struct ViewContext<'a> {
     /// The result on screen (`None` before the first solve).
@@ -155,6 +169,18 @@ impl ViewContext<'_> {
     #[must_use]
     pub fn case_text(&self) -> Option<String> {
         self.doc.validation().is_ok().then(|| self.doc.text().ok()).flatten()
+    }
+
+    /// The edited case, for a view that runs its own analysis on it.
+    #[must_use]
+    pub fn edited_bearing(&self) -> EditedBearing {
+        EditedBearing {
+            text: self.case_text(),
+            name: self.doc.name.clone(),
+            preview: self.preview,
+            revision: self.doc.revision(),
+            controllable: self.case().is_some_and(|c| c.hydraulics.is_some()),
+        }
     }
 
     /// Asks the app to write `bytes` as `<case>-<what>.<extension>`.
