@@ -175,6 +175,19 @@ pub struct Design {
 }
 
 impl SweepView {
+    /// Whether the sweep shown belongs to the edited design, as the view last drew it (`None`: no sweep, or
+    /// not drawn since it started).
+    #[must_use]
+    pub fn shows_edited_design(&self) -> Option<bool> {
+        self.job.as_ref().and(self.checked.map(|(_, current)| current))
+    }
+
+    /// The geometry the Sommerfeld chart is normalised with: the swept design's (never the edited one's).
+    #[must_use]
+    pub fn chart_geometry(&self) -> Option<ChartGeometry> {
+        self.job.as_ref()?.design().map(ChartGeometry::of)
+    }
+
     /// The sweep shown belongs to the edited design (checked once per document revision).
     fn sweep_is_current(&mut self, design: &Design) -> bool {
         let Some(job) = &self.job else { return false };
@@ -270,8 +283,8 @@ pub fn sweep_view_ui(
     let current = if run_again { None } else { current };
     if spec.chart && job.spec.chart {
         // The chart is normalised with the geometry of the design that was swept, never the edited one's.
-        if let Some(case) = job.design() {
-            chart_ui(ui, &job.table, &ChartGeometry::of(case), current.and_then(|s| s.sommerfeld));
+        if let Some(g) = job.design().map(ChartGeometry::of) {
+            chart_ui(ui, &job.table, &g, current.and_then(|s| s.sommerfeld));
         }
     } else {
         plots_ui(ui, job, spec, current, current_x);

@@ -136,3 +136,59 @@ fn another_input_after_the_sommerfeld_chart_is_drawn_against_itself() {
         .collect();
     assert!(!axes.is_empty() && axes.iter().all(|t| t.starts_with("bearing.pads.preload")), "{axes:?}");
 }
+
+/// A sweep knows the design it belongs to. The Sommerfeld chart of the compressor at Cb = 130 µm, then the
+/// edit undone (Cb back to 102 µm): the view says the sweep is of an earlier design, marks nothing of the
+/// edited case on it and keeps normalising it with the swept design's Cb (re-normalised with 102 µm its
+/// h_min/Cb would read 130/102 times too high); one click runs it again for the design on screen. Opening
+/// another case does the same; an edit of the swept key itself keeps the sweep current.
+#[test]
+fn a_sweep_of_an_earlier_design_is_said_to_be_one_and_never_renormalised() {
+    use super::harness::{open_preset, spin_button, wait_for_solve};
+    let mut h = solved_app(None, |app| app.open::<SweepView>());
+    spin_button(&h, "Assembled clearance Cb").set_value_accesskit(130.0);
+    wait_for_solve(&mut h);
+    h.get_by_label("Sommerfeld chart").click();
+    let table = wait_for_sweep(&mut h);
+    assert_eq!(sweep_view(&h).shows_edited_design(), Some(true));
+    let cb =
+        |h: &egui_kittest::Harness<'_, tiltpad::app::WorkbenchApp>| sweep_view(h).chart_geometry().unwrap().clearance_m;
+    assert!((cb(&h) - 130e-6).abs() < 1e-12);
+    assert!(h.query_by_label_contains("belongs to an earlier design").is_none());
+    // An edit of the swept key (the load) keeps the sweep current: its marker moves along the curves.
+    spin_button(&h, "Load W").set_value_accesskit(2500.0);
+    wait_for_solve(&mut h);
+    assert_eq!(sweep_view(&h).shows_edited_design(), Some(true));
+
+    // Undo the load, then the clearance: the chart stays the 130 µm design's and says so.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    wait_for_solve(&mut h);
+    assert_eq!(h.state().doc.file().bearing.assembled_clearance_um, 102.0);
+    assert_eq!(sweep_view(&h).shows_edited_design(), Some(false));
+    h.get_by_label_contains("This sweep belongs to an earlier design");
+    assert!((cb(&h) - 130e-6).abs() < 1e-12, "normalised with the swept design's Cb, not the edited one's");
+    let h_min_over_cb = |g| {
+        let plots = tiltpad::scene::sommerfeld::chart(&table, &g);
+        let p = plots.iter().find(|p| p.title.contains("h_min / Cb")).expect("an h_min/Cb plot");
+        p.curves[0].1.iter().fold(0.0_f64, |m, q| m.max(q[1]))
+    };
+    let drawn = h_min_over_cb(sweep_view(&h).chart_geometry().unwrap());
+    let renormalised = h_min_over_cb(tiltpad::scene::sommerfeld::ChartGeometry::of(
+        &h.state().shown.as_ref().unwrap().solution.inputs,
+    ));
+    assert!((renormalised / drawn - 130.0 / 102.0).abs() < 1e-9, "{drawn} {renormalised}");
+
+    // Run again: the chart of the design on screen.
+    h.get_by_label("Run it again for this design").click();
+    wait_for_sweep(&mut h);
+    assert_eq!(sweep_view(&h).shows_edited_design(), Some(true));
+    assert!((cb(&h) - 102e-6).abs() < 1e-12);
+    assert!(h.query_by_label_contains("belongs to an earlier design").is_none());
+
+    // Another case opened: the sweep is of the compressor's design.
+    open_preset(&mut h, "fillon-a.toml");
+    wait_for_solve(&mut h);
+    assert_eq!(sweep_view(&h).shows_edited_design(), Some(false));
+    h.get_by_label_contains("This sweep belongs to an earlier design");
+}
