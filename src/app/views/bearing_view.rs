@@ -3,7 +3,7 @@
 //! outline dashed over it; the scales can be locked across edits. Before the first result: the case's
 //! outline, unsolved.
 
-use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, Sense, Shape, Stroke, Ui, Vec2};
+use egui::{Align2, Color32, FontId, Mesh, Pos2, Rect, RichText, Sense, Shape, Stroke, Ui, Vec2};
 use serde::{Deserialize, Serialize};
 
 use super::{View, ViewContext};
@@ -70,11 +70,37 @@ impl View for BearingView {
         scale_note_ui(ui, *lock, free, solution.map(|s| s.p_max_pa));
         let pads = solution.map(|s| summary::summary(s).pads).unwrap_or_default();
         let checks = solution.map(|s| crate::bearing::solution::limits::check(&s.inputs.limits, s)).unwrap_or_default();
-        // The pinned outline at the live picture's scales, so the two overlay.
-        let overlay = pinned.map(|(name, p)| {
-            (name, outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales())))
-        });
-        bearing_view_ui(ui, &o, &pads, &checks, cx.stale, overlay.as_ref().map(|(n, o)| (n.as_str(), o)));
+        let Some((name, p)) = pinned else {
+            bearing_view_ui(ui, &o, &pads, &checks, cx.stale, None);
+            return;
+        };
+        match geometry_difference(&case.bearing, &p.solution.inputs.bearing) {
+            // The pinned outline at the live picture's scales, so the two overlay.
+            None => {
+                let over = outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), Some(o.scales()));
+                bearing_view_ui(ui, &o, &pads, &checks, cx.stale, Some((name.as_str(), &over)));
+            }
+            // Another geometry is never drawn over this journal: beside it, each at its own scales.
+            Some(why) => {
+                ui.colored_label(
+                    ink::PINNED.of(ui),
+                    format!(
+                        "Pinned \"{name}\" is another bearing ({why}): drawn beside this one at its own scales, not \
+                         over it; the results panel compares the numbers."
+                    ),
+                );
+                let pin_outline = outline::bearing_outline_with(&p.solution.inputs, Some(&p.solution), None);
+                let pin_pads = summary::summary(&p.solution).pads;
+                let pin_checks = crate::bearing::solution::limits::check(&p.solution.inputs.limits, &p.solution);
+                ui.columns(2, |cols| {
+                    let [live, pin] = cols else { return };
+                    live.label(RichText::new("Live").strong());
+                    bearing_view_ui(live, &o, &pads, &checks, cx.stale, None);
+                    pin.label(RichText::new(format!("Pinned \"{name}\"")).strong().color(ink::PINNED.of(pin)));
+                    bearing_view_ui(pin, &pin_outline, &pin_pads, &pin_checks, false, None);
+                });
+            }
+        }
     }
 
     /// The case's outline, unsolved.
@@ -94,6 +120,33 @@ impl View for BearingView {
             self.settings.outline_lock = None;
         }
     }
+}
+
+/// How the bearing `b` differs in geometry from `a` (the journal, the clearance, the pads' arcs, angles,
+/// offsets, clearances and thickness), said in words; `None`: the same geometry, so one may be drawn over the
+/// other. Everything else (the operating point, the physics, the pivots' stiffness) may differ.
+#[must_use]
+pub fn geometry_difference(a: &crate::model::case::Bearing, b: &crate::model::case::Bearing) -> Option<String> {
+    use crate::units::MM;
+    let mut why = Vec::new();
+    if a.journal_radius_m != b.journal_radius_m {
+        why.push(format!("its R {} mm, this one's {} mm", sig(MM.from_si(b.journal_radius_m), 5), sig(MM.from_si(a.journal_radius_m), 5)));
+    }
+    if a.length_m != b.length_m {
+        why.push(format!("its L {} mm, this one's {} mm", sig(MM.from_si(b.length_m), 5), sig(MM.from_si(a.length_m), 5)));
+    }
+    if a.assembled_clearance_m != b.assembled_clearance_m {
+        why.push(format!("its Cb {} µm, this one's {} µm", sig(UM.from_si(b.assembled_clearance_m), 5), sig(UM.from_si(a.assembled_clearance_m), 5)));
+    }
+    if a.pads.len() != b.pads.len() {
+        why.push(format!("its {} pads, this one's {}", b.pads.len(), a.pads.len()));
+    } else if a.pads.iter().zip(&b.pads).any(|(p, q)| {
+        (p.kind, p.leading_edge_rad, p.arc_rad, p.pivot_rad, p.offset, p.clearance_m, p.thickness_m)
+            != (q.kind, q.leading_edge_rad, q.arc_rad, q.pivot_rad, q.offset, q.clearance_m, q.thickness_m)
+    }) {
+        why.push("its pads differ".into());
+    }
+    (!why.is_empty()).then(|| why.join(", "))
 }
 
 /// Maps the bearing frame (metres, y up) to the screen (points, y down).

@@ -168,3 +168,28 @@ fn the_pin_dialog_refuses_ambiguous_names() {
     h.get_by_label_contains("a pin named \"live 2\" exists already");
     assert_eq!(h.state().persisted.pins.len(), 1);
 }
+
+/// A pin of another bearing geometry is never drawn over the journal: pinned at Cb = 102 µm, then the
+/// clearance edited to 130 µm, the bearing view draws the two side by side, each at its own scales, and says
+/// why; back at 102 µm (another speed, the same geometry) the pin is overlaid again.
+#[test]
+fn a_pin_of_another_geometry_is_drawn_beside_the_bearing_not_over_it() {
+    let mut h = solved_app_at([1280.0, 720.0], None, |_| {});
+    h.get_by_label("Pin current result").click();
+    h.run_steps(2);
+    h.key_press(egui::Key::Escape);
+    spin_button(&h, "Assembled clearance Cb").set_value_accesskit(130.0);
+    wait_for_solve(&mut h);
+    assert!(h.query_by_label_contains("Pinned \"pin 1\" (dashed").is_none(), "not overlaid");
+    h.get_by_label(
+        "Pinned \"pin 1\" is another bearing (its Cb 102 µm, this one's 130 µm): drawn beside this one at its own \
+         scales, not over it; the results panel compares the numbers.",
+    );
+    h.get_by_label("Live");
+    snapshot(&mut h, "compare_pin_other_geometry_1280x720");
+    spin_button(&h, "Assembled clearance Cb").set_value_accesskit(102.0);
+    spin_button(&h, "Speed").set_value_accesskit(6000.0);
+    wait_for_solve(&mut h);
+    h.get_by_label_contains("Pinned \"pin 1\" (dashed");
+    assert!(h.query_by_label_contains("is another bearing").is_none());
+}
