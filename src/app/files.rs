@@ -10,39 +10,8 @@
 
 use std::sync::mpsc::{channel, Receiver, Sender};
 
-/// What came back from a dialog.
-#[derive(Debug)]
-pub enum FileEvent {
-    /// A case file was read: display name, path (native), text.
-    Opened {
-        name: String,
-        path: Option<std::path::PathBuf>,
-        text: String,
-    },
-    /// A rotor file was read (native): display name, path (its bearing cases are beside it), text.
-    OpenedRotor {
-        name: String,
-        path: std::path::PathBuf,
-        text: String,
-    },
-    /// The case was saved under this name (and path, on native) as `text`.
-    SavedCase {
-        name: String,
-        path: Option<std::path::PathBuf>,
-        saved: Box<crate::model::CaseFile>,
-        text: String,
-    },
-    /// An export was written (to `path`, when known).
-    Exported {
-        name: String,
-        path: Option<std::path::PathBuf>,
-    },
-    /// No native dialog: the workbench asks for a name itself ([`super::save_dialog`]).
-    NameNeeded(Box<super::save_dialog::PendingSave>),
-    /// No native dialog: the workbench asks for the path of a file to open ([`super::open_dialog`]).
-    PathNeeded(super::open_dialog::OpenKind),
-    Error(String),
-}
+pub use super::file_event::{display_name, FileEvent};
+use super::file_event::{OpenKind, PendingSave};
 
 /// Dialog runner and its event channel.
 pub struct Files {
@@ -95,7 +64,7 @@ impl Files {
     /// Asks for a case file to open.
     pub fn open_case(&self) {
         if !self.native_dialogs {
-            let _ = self.tx.send(FileEvent::PathNeeded(super::open_dialog::OpenKind::Case));
+            let _ = self.tx.send(FileEvent::PathNeeded(OpenKind::Case));
             // The event is taken at the start of a frame: ask for one, or the dialog waits for the next
             // input (it did after "Discard changes", whose frame asks for no other).
             self.repaint.request_repaint();
@@ -125,7 +94,7 @@ impl Files {
     #[cfg(not(target_arch = "wasm32"))]
     pub fn open_rotor(&self) {
         if !self.native_dialogs {
-            let _ = self.tx.send(FileEvent::PathNeeded(super::open_dialog::OpenKind::Rotor));
+            let _ = self.tx.send(FileEvent::PathNeeded(OpenKind::Rotor));
             // The event is taken at the start of a frame: ask for one, or the dialog waits for the next
             // input (it did after "Discard changes", whose frame asks for no other).
             self.repaint.request_repaint();
@@ -205,7 +174,7 @@ impl Files {
     ) {
         if !self.native_dialogs {
             // Without a dialog, the workbench asks for a name: nothing is written under a name not typed.
-            let pending = super::save_dialog::PendingSave {
+            let pending = PendingSave {
                 suggested: name.to_string(),
                 extension: extension.to_string(),
                 bytes,
@@ -257,12 +226,6 @@ fn handle_path(handle: &rfd::FileHandle) -> Option<std::path::PathBuf> {
 #[cfg(target_arch = "wasm32")]
 fn handle_path(_: &rfd::FileHandle) -> Option<std::path::PathBuf> {
     None
-}
-
-/// File name for display.
-#[must_use]
-pub fn display_name(path: &std::path::Path) -> String {
-    path.file_name().map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned())
 }
 
 /// Runs a dialog future without blocking the UI.

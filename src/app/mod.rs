@@ -17,6 +17,7 @@ mod actions;
 mod compare_views;
 pub mod document;
 pub mod editor;
+pub mod file_event;
 pub mod files;
 mod frame;
 pub mod frame_probe;

@@ -9,27 +9,9 @@ use std::path::{Path, PathBuf};
 
 use egui::RichText;
 
-use super::files::{display_name, FileEvent};
+use super::file_event::{display_name, FileEvent, OpenKind};
 use super::path_fields::PathFields;
 use crate::app::ink;
-
-/// What the dialog opens.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum OpenKind {
-    /// A case file: it replaces the edited case (after the unsaved-changes guard).
-    Case,
-    /// A rotor file: shown in the Rotor view, its bearing cases read from beside it.
-    Rotor,
-}
-
-impl OpenKind {
-    fn title(self) -> &'static str {
-        match self {
-            Self::Case => "Open a case",
-            Self::Rotor => "Open a rotor",
-        }
-    }
-}
 
 /// What the dialog did this frame.
 pub enum OpenOutcome {

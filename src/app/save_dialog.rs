@@ -7,30 +7,8 @@ use std::path::{Path, PathBuf};
 
 use egui::RichText;
 
-use super::files::{display_name, FileEvent};
+use super::file_event::{display_name, FileEvent, PendingSave};
 use super::path_fields::PathFields;
-
-/// What to report once a save was written: display name and path → event.
-pub type SaveDone = Box<dyn FnOnce(String, Option<PathBuf>) -> FileEvent + Send>;
-
-/// A save waiting for a name.
-pub struct PendingSave {
-    /// The name the dialog proposes (shown as a hint, never used unless typed).
-    pub suggested: String,
-    /// Added to a typed name without an extension.
-    pub extension: String,
-    pub bytes: Vec<u8>,
-    pub done: SaveDone,
-}
-
-impl std::fmt::Debug for PendingSave {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("PendingSave")
-            .field("suggested", &self.suggested)
-            .field("bytes", &self.bytes.len())
-            .finish_non_exhaustive()
-    }
-}
 
 /// What the dialog did this frame.
 pub enum SaveOutcome {
