@@ -68,9 +68,15 @@ pub struct BearingOutline {
     pub load: Option<(Point, Point, f64)>,
     /// Pressure scale: the pressure drawn at a third of the journal radius [Pa].
     pub pressure_scale_pa: f64,
+    /// Some pressure band was cut at [`PRESSURE_BAND_MAX`] of the radius (a locked scale below this result's
+    /// peak would otherwise draw it through the journal's centre and out of the housing).
+    pub pressure_clipped: bool,
     /// Half-size of a square that holds the drawing [m].
     pub extent_m: f64,
 }
+
+/// The longest pressure band, as a fraction of the journal radius (twice the scale's R/3).
+pub const PRESSURE_BAND_MAX: f64 = 2.0 / 3.0;
 
 /// The scales of a drawing: the film exaggeration and the pressure drawn at a third of the radius. A view
 /// that locks them passes them back ([`bearing_outline_with`]) so two pictures compare (otherwise the
@@ -137,6 +143,7 @@ pub fn bearing_outline_with(case: &Case, solution: Option<&Solution>, lock: Opti
         (_, s) => s.map_or(0.0, |s| s.p_max_pa),
     };
     let p_len = r / 3.0;
+    let mut clipped = false;
     let mut pads = Vec::with_capacity(b.pads.len());
     let mut extent = r;
     for (idx, pad) in b.pads.iter().enumerate() {
@@ -190,7 +197,11 @@ pub fn bearing_outline_with(case: &Case, solution: Option<&Solution>, lock: Opti
                     .theta_rad
                     .iter()
                     .enumerate()
-                    .map(|(i, &t)| polar(rho_j(t) - p_len * f.pressure_pa[f.index(i, row)].max(0.0) / p_max, t))
+                    .map(|(i, &t)| {
+                        let band = p_len * f.pressure_pa[f.index(i, row)].max(0.0) / p_max;
+                        clipped |= band > PRESSURE_BAND_MAX * r;
+                        polar(rho_j(t) - band.min(PRESSURE_BAND_MAX * r), t)
+                    })
                     .collect();
                 outer.into_iter().chain(inner.into_iter().rev()).collect()
             }
@@ -228,6 +239,7 @@ pub fn bearing_outline_with(case: &Case, solution: Option<&Solution>, lock: Opti
         pads,
         load,
         pressure_scale_pa: p_max,
+        pressure_clipped: clipped,
         extent_m: extent * 1.05,
     }
 }
@@ -239,6 +251,33 @@ mod tests {
 
     fn compressor() -> Case {
         load_case(include_str!("../../cases/compressor-bearing.toml"), &[]).unwrap().1
+    }
+
+    /// A scale locked at a third of this result's peak would draw the band three times R/3, through the
+    /// journal's centre: it is cut at 2R/3 and said to be; at the peak's own scale nothing is cut.
+    #[test]
+    fn a_pressure_band_past_twice_the_locked_scale_is_cut_inside_the_journal() {
+        let mut case = compressor();
+        case.mesh.fidelity = crate::model::Fidelity::Preview;
+        let (_, nz, no) = crate::model::Fidelity::Preview.elements();
+        case.mesh.circumferential_elements = crate::model::Fidelity::Preview.circumferential_elements(1.0);
+        (case.mesh.axial_elements, case.mesh.orifice_elements) = (nz, no);
+        let s = crate::bearing::solve_case(&case).unwrap();
+        let r = case.bearing.journal_radius_m;
+        let deepest = |o: &BearingOutline| {
+            let c = o.journal_centre;
+            o.pads.iter().flat_map(|p| &p.pressure).map(|q| (q[0] - c[0]).hypot(q[1] - c[1])).fold(f64::MAX, f64::min)
+        };
+        let own = bearing_outline_with(&case, Some(&s), None);
+        assert!(!own.pressure_clipped);
+        // At its own scale the peak is drawn R/3 deep (the journal's eccentricity drawn aside).
+        let free_depth = r - deepest(&own);
+        assert!((free_depth / (r / 3.0) - 1.0).abs() < 0.05, "{free_depth}");
+        let lock = OutlineScales { exaggeration: own.exaggeration, pressure_scale_pa: s.p_max_pa / 3.0 };
+        let locked = bearing_outline_with(&case, Some(&s), Some(lock));
+        assert!(locked.pressure_clipped);
+        let depth = r - deepest(&locked);
+        assert!((depth / (PRESSURE_BAND_MAX * r) - 1.0).abs() < 0.05, "{depth} of {r}");
     }
 
     #[test]

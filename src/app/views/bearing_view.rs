@@ -227,10 +227,16 @@ fn scale_note_ui(ui: &mut Ui, lock: Option<OutlineScales>, free: OutlineScales, 
     let warn = ui.visuals().warn_fg_color;
     match (lock, p_max_pa) {
         (Some(l), Some(p)) if p > l.pressure_scale_pa * (1.0 + 1e-9) => {
+            // Past twice the scale the band would cross the journal's centre: it is cut at 2R/3.
+            let reach = if p > 2.0 * l.pressure_scale_pa {
+                "its band is cut at 2R/3 (unlock the scales to see it whole)"
+            } else {
+                "its band reaches further"
+            };
             ui.colored_label(
                 warn,
                 format!(
-                    "Peak pressure {} is above the locked scale ({} at R/3): its band reaches further.",
+                    "Peak pressure {} is above the locked scale ({} at R/3): {reach}.",
                     eng(p, "Pa"),
                     eng(l.pressure_scale_pa, "Pa")
                 ),
@@ -242,7 +248,9 @@ fn scale_note_ui(ui: &mut Ui, lock: Option<OutlineScales>, free: OutlineScales, 
                 ui.data(|d| d.get_temp(id)).unwrap_or((None, None));
             let (before, now) = if now == Some(free) { (before, now) } else { (now, Some(free)) };
             ui.data_mut(|d| d.insert_temp(id, (before, now)));
-            if let Some(b) = before.filter(|b| *b != free) {
+            // Said only when the change shows in the numbers printed (a scale a rounding apart is the same).
+            let printed = |s: &OutlineScales| (eng(s.pressure_scale_pa, "Pa"), s.exaggeration.to_string());
+            if let Some(b) = before.filter(|b| printed(b) != printed(&free)) {
                 ui.colored_label(
                     warn,
                     format!(

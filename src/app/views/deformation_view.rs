@@ -97,14 +97,27 @@ impl View for DeformationView {
     }
 
     fn ui(&mut self, ui: &mut Ui, cx: &mut ViewContext<'_>) {
-        if let Some(shown) = cx.shown {
-            deformation_view_ui(ui, self, &shown.solution);
+        let Some(shown) = cx.shown else { return };
+        // The result on screen is of an earlier case whose pads do not deform, while the edited case's do:
+        // its solve is under way (or failed) — never "rigid" for a case with flexible pads.
+        if cx.stale && cx.case().is_some_and(pads_deform) && flexible_pads(&shown.solution).1.is_none() {
+            ui.add_space(16.0);
+            ui.label(RichText::new("The edited case's pads deform: waiting for its solution").heading());
+            ui.label("The result on screen is of an earlier case, whose pads are rigid.");
+            return;
         }
+        deformation_view_ui(ui, self, &shown.solution);
     }
 
     fn snapshot_setup(&mut self) -> Option<&'static str> {
         Some(include_str!("../../../cases/compressor-bearing-flexible.toml"))
     }
+}
+
+/// The case's pads deform: bending modes, or thermal growth in a THD solve.
+fn pads_deform(case: &crate::model::Case) -> bool {
+    let thd = case.thermal.model == crate::model::ThermalModelKind::Thd;
+    case.physics.pad_modes > 0 || (thd && case.thermal.pad_expansion_per_k != 0.0)
 }
 
 /// The deforming pads of a solution (bending modes or thermal growth), and the most loaded of them.
