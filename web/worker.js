@@ -1,4 +1,4 @@
-// The solver's web worker (src/app/web_solver.rs): a second instance of the program that runs the solver
+// The solver's web worker (src/app/jobs/web_worker.rs, src/app/jobs/remote.rs): a second instance of the program that runs the solver
 // stages off the page's thread. The page posts jobs and receives results as bytes. Messages that arrive
 // while the module is still loading wait here, in order.
 import init, { tiltpad_worker_receive } from "./pkg/tiltpad.js";
