@@ -77,3 +77,5 @@ pub use wire::{from_bytes, to_bytes, OutputData, UnnamedOutput, WireError};
 mod tests;
 #[cfg(test)]
 mod tests_hertz;
+#[cfg(test)]
+mod tests_views;
