@@ -20,12 +20,8 @@ use crate::mesh::grid::{graded_cells, orifice_zone, Refinement};
 use super::case::{Case, Pad, ThermalModelKind};
 use super::error::CaseError;
 
-/// Default of `mesh.max_nodes`: about 1 GB. Measured peaks (release build, `/usr/bin/time`): the isothermal
-/// compressor bearing with 16 k / 51 k / 114 k film nodes uses 35 / 93 / 204 MB (≈ 1.8 kB per node), Fillon's
-/// THD bearing with 175 k nodes (165 k in pad solids) 358 MB (≈ 2 kB per node); time grows as about N^1.2
-/// (docs/PERFORMANCE.md, cost growth). The reference fidelity of every shipped case needs less than a
-/// quarter of it (tests/suite/node_budget.rs).
-pub const DEFAULT_MAX_NODES: usize = 500_000;
+/// Default of `mesh.max_nodes`, with its key's row (the measurements behind it are there).
+pub use super::schema::DEFAULT_MAX_NODES;
 /// Allowed values of `mesh.max_nodes`.
 pub const MAX_NODES_RANGE: (usize, usize) = (1_000, 50_000_000);
 

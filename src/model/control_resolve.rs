@@ -2,6 +2,7 @@
 //! against its row in [`super::control_schema`], the sensors, actuators and law checked against the plant
 //! ([`PlantInfo`]), converted to SI ([`Control`]). Errors name the key, the value and the allowed range.
 
+use super::control::routh_unstable_roots;
 use super::control::{
     Actuator, ActuatorKind, ActuatorWord, Control, ControlTable, Law, LawWord, Loop, LoopTable, LqrSpec, LqrTable,
     MimoTable, PlantInfo, Quantity, Rule, SecondOrder, Sensor, SensorAt,
@@ -33,44 +34,6 @@ fn index(key: &str, value: usize, count: usize) -> Result<usize, CaseError> {
             },
         })
     }
-}
-
-/// Number of roots of `p` (highest power first, `p[0] ≠ 0`) with Re ≥ 0, by the Routh–Hurwitz array: the
-/// sign changes in its first column; a zero in the first column (a root on the imaginary axis, or a
-/// symmetric pair) counts as at least one.
-#[must_use]
-pub fn routh_unstable_roots(p: &[f64]) -> usize {
-    let n = p.len();
-    if n < 2 {
-        return 0;
-    }
-    let mut rows: Vec<Vec<f64>> =
-        vec![p.iter().step_by(2).copied().collect(), p.iter().skip(1).step_by(2).copied().collect()];
-    let width = rows[0].len();
-    rows[1].resize(width, 0.0);
-    for _ in 2..n {
-        let (a, b) = (&rows[rows.len() - 2], &rows[rows.len() - 1]);
-        if b[0] == 0.0 {
-            return 1.max(count_changes(&rows));
-        }
-        let next: Vec<f64> = (0..width)
-            .map(|j| {
-                let a1 = a.get(j + 1).copied().unwrap_or(0.0);
-                let b1 = b.get(j + 1).copied().unwrap_or(0.0);
-                (b[0] * a1 - a[0] * b1) / b[0]
-            })
-            .collect();
-        rows.push(next);
-    }
-    if rows.last().is_some_and(|r| r[0] == 0.0) {
-        return 1.max(count_changes(&rows));
-    }
-    count_changes(&rows)
-}
-
-fn count_changes(rows: &[Vec<f64>]) -> usize {
-    let col: Vec<f64> = rows.iter().map(|r| r[0]).filter(|v| *v != 0.0).collect();
-    col.windows(2).filter(|w| w[0].signum() != w[1].signum()).count()
 }
 
 /// A polynomial as written (`key`: its key for errors), finite, leading zeros removed.
@@ -368,28 +331,3 @@ fn resolve_lqr(l: &LqrTable, n_sensors: usize, n_actuators: usize) -> Result<Lqr
 }
 
 type KeyRow = super::schema::KeySpec<super::rotor::RotorFile>;
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn routh_counts_the_right_half_plane_roots() {
-        // (s + 1)(s + 2)(s + 3) = s³ + 6s² + 11s + 6: stable
-        assert_eq!(routh_unstable_roots(&[1.0, 6.0, 11.0, 6.0]), 0);
-        // (s − 1)(s + 2) = s² + s − 2: one
-        assert_eq!(routh_unstable_roots(&[1.0, 1.0, -2.0]), 1);
-        // s² − 2s + 5 (1 ± 2i): two
-        assert_eq!(routh_unstable_roots(&[1.0, -2.0, 5.0]), 2);
-        // s² + 4 (±2i, on the axis): counted
-        assert!(routh_unstable_roots(&[1.0, 0.0, 4.0]) >= 1);
-        // s (a pole at 0): counted
-        assert!(routh_unstable_roots(&[1.0, 0.0]) >= 1);
-        // first order
-        assert_eq!(routh_unstable_roots(&[1.0, 5.0]), 0);
-        assert_eq!(routh_unstable_roots(&[2.0]), 0);
-        // (s + 1)⁴ and (s − 0.5)(s + 1)³
-        assert_eq!(routh_unstable_roots(&[1.0, 4.0, 6.0, 4.0, 1.0]), 0);
-        assert_eq!(routh_unstable_roots(&[1.0, 2.5, 1.5, -0.5, -0.5]), 1);
-    }
-}

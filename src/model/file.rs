@@ -23,7 +23,13 @@
 //! [limits]             # design limits: h_min, pad temperature, specific load, p_max, Reynolds (see super::limits)
 //! ```
 
+use std::collections::BTreeMap;
+
 use serde::{Deserialize, Serialize};
+
+/// The keys of one section that its struct has no field for (tuning keys, or unknown ones), as written; read
+/// by [`super::tuning`].
+pub type TuningFile = BTreeMap<String, toml::Value>;
 
 /// A whole case file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -322,7 +328,7 @@ pub enum Turbulence {
 pub struct PhysicsFile {
     /// The section's tuning keys (and any unknown key, refused when the file is read): [`super::tuning`].
     #[serde(flatten)]
-    pub tuning: super::tuning::TuningFile,
+    pub tuning: TuningFile,
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cavitation: Option<Cavitation>,
     /// Smallest film thickness accepted at equilibrium; below it the solve reports touchdown (surfaces in
@@ -427,7 +433,7 @@ pub enum CavitatedFilmFile {
 pub struct ThermalFile {
     /// The section's tuning keys (and any unknown key, refused when the file is read): [`super::tuning`].
     #[serde(flatten)]
-    pub tuning: super::tuning::TuningFile,
+    pub tuning: TuningFile,
     /// `isothermal` or `thd`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub model: Option<ThermalModelKind>,

@@ -17,6 +17,7 @@ use crate::key;
 use crate::units::DEG;
 
 mod contact;
+mod hydraulics;
 mod lubricant;
 mod thermal;
 
@@ -48,11 +49,8 @@ impl CaseFile {
         let thermal = thermal::resolve_thermal(self)?;
         thermal::check_groove_width(self, &bearing)?;
         check_sleeve_feed(physics.cavitation, &bearing, &operating)?;
-        let hydraulics = self
-            .hydraulics
-            .as_ref()
-            .map(|h| super::hydraulics::resolve_hydraulics(h, bearing.pads.len()))
-            .transpose()?;
+        let hydraulics =
+            self.hydraulics.as_ref().map(|h| hydraulics::resolve_hydraulics(h, bearing.pads.len())).transpose()?;
         if let Some(h) = &hydraulics {
             check_ports(h, &bearing, &operating)?;
         }

@@ -21,8 +21,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::control::PlantInfo;
 use super::error::CaseError;
-use super::rotor_schema::{rotor_default, rotor_row as row};
 use super::shaft::{BeamSection, BeamTheory};
 use super::Case;
 
@@ -30,14 +30,6 @@ use super::Case;
 /// the whole system per speed without reduction) takes seconds; 25 sections of 200 elements (20 004
 /// coordinates) would allocate gigabytes before the first speed.
 pub const MAX_SHAFT_ELEMENTS: usize = 400;
-
-/// The row of a rotor-file key, found while compiling (a key without a row fails the build).
-macro_rules! rotor_key {
-    ($key:literal) => {
-        const { row($key) }
-    };
-}
-pub(super) use rotor_key;
 
 /// Which bearing coefficients enter the rotor equations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -111,14 +103,18 @@ fn is_false(b: &bool) -> bool {
 fn is_zero(x: &f64) -> bool {
     *x == 0.0
 }
+/// Defaults of the shaft's material (a steel), which the rows of [`super::rotor_schema`] give as theirs.
+pub const DEFAULT_DENSITY_KG_PER_M3: f64 = 7850.0;
+pub const DEFAULT_YOUNGS_MODULUS_GPA: f64 = 211.0;
+pub const DEFAULT_POISSON_RATIO: f64 = 0.3;
 fn default_density() -> f64 {
-    rotor_default(rotor_key!("rotor.density_kg_per_m3"))
+    DEFAULT_DENSITY_KG_PER_M3
 }
 fn default_youngs() -> f64 {
-    rotor_default(rotor_key!("rotor.youngs_modulus_gpa"))
+    DEFAULT_YOUNGS_MODULUS_GPA
 }
 fn default_poisson() -> f64 {
-    rotor_default(rotor_key!("rotor.poisson_ratio"))
+    DEFAULT_POISSON_RATIO
 }
 /// Default shaft reduction (modes per plane), chosen by measurement (docs/PERFORMANCE.md, compressor rotor
 /// on preview bearings): its errors against the full shaft (first damped frequencies ~1e-4 relative, log
@@ -154,8 +150,10 @@ pub struct SectionTable {
     pub elements: usize,
 }
 
+/// Default element count of a shaft section (its row's default in [`super::rotor_schema`]).
+pub const DEFAULT_SECTION_ELEMENTS: usize = 1;
 fn one() -> usize {
-    rotor_key!("rotor.section[].elements").count(None).unwrap_or_default()
+    DEFAULT_SECTION_ELEMENTS
 }
 
 /// `[[rotor.disk]]`
@@ -339,6 +337,27 @@ impl Rotor {
     #[must_use]
     pub fn mass(&self) -> f64 {
         self.elements.iter().map(BeamSection::mass).sum::<f64>() + self.disks.iter().map(|d| d.mass).sum::<f64>()
+    }
+}
+
+/// The controller's plant on a rotor (the rotor file holds the controller's table, so the rotor, not the
+/// controller, knows both).
+impl<'a> PlantInfo<'a> {
+    /// The rotor's: its nodes, and each bearing position's node and case.
+    #[must_use]
+    pub fn rotor(rotor: &'a Rotor) -> Self {
+        let bearings = rotor
+            .bearings
+            .iter()
+            .map(|b| {
+                let case = match &b.support {
+                    BearingSupport::Case { case, .. } => Some(case.as_ref()),
+                    BearingSupport::Numbers(_) => None,
+                };
+                (b.node, case)
+            })
+            .collect();
+        Self { n_nodes: rotor.n_nodes(), bearings }
     }
 }
 

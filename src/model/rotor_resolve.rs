@@ -5,10 +5,10 @@
 
 use super::error::{CaseError, Inconsistency, Range};
 use super::rotor::{
-    rotor_key, BearingPosition, BearingSupport, BearingTable, CoefficientTable, Disk, ModalDamping, Rotor, RotorFile,
-    Support, Unbalance, MAX_SHAFT_ELEMENTS,
+    BearingPosition, BearingSupport, BearingTable, CoefficientTable, Disk, ModalDamping, Rotor, RotorFile, Support,
+    Unbalance, MAX_SHAFT_ELEMENTS,
 };
-use super::rotor_schema::rotor_row as row;
+use super::rotor_schema::{rotor_key, rotor_row as row};
 use super::shaft::BeamSection;
 
 fn check_node(key: &str, node: usize, n_nodes: usize) -> Result<usize, CaseError> {

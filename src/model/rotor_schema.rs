@@ -6,7 +6,10 @@
 //! from here by key; its rows are not drawn from the table.)
 
 use super::error::Range;
-use super::rotor::{RotorFile, DEFAULT_SHAFT_MODES};
+use super::rotor::{
+    RotorFile, DEFAULT_DENSITY_KG_PER_M3, DEFAULT_POISSON_RATIO, DEFAULT_SECTION_ELEMENTS, DEFAULT_SHAFT_MODES,
+    DEFAULT_YOUNGS_MODULUS_GPA,
+};
 use super::schema::{Fallback, KeySpec};
 use crate::units::{COUNT, DEG, GPA, G_MM, KG, KG_M2, KG_PER_M3, MM, NS_PER_M, N_PER_M, ONE, RPM};
 
@@ -32,15 +35,15 @@ pub const ROTOR_KEYS: &[Key] = &[
         .meaning("Shaft reduction (Craig–Bampton): fixed-interface modes kept per bending plane besides the x, y of the attached nodes; 0 keeps the full finite-element shaft. Time and error per level in docs/PERFORMANCE.md."),
     Key::number("rotor.density_kg_per_m3", KG_PER_M3, Range::positive(1e5))
         .typical(2000.0, 9000.0)
-        .or(7850.0)
+        .or(DEFAULT_DENSITY_KG_PER_M3)
         .meaning("Density of the shaft material."),
     Key::number("rotor.youngs_modulus_gpa", GPA, Range::positive(1e4))
         .typical(70.0, 220.0)
-        .or(211.0)
+        .or(DEFAULT_YOUNGS_MODULUS_GPA)
         .meaning("Young's modulus of the shaft material."),
     Key::number("rotor.poisson_ratio", ONE, Range::closed(0.0, 0.5))
         .typical(0.25, 0.35)
-        .or(0.3)
+        .or(DEFAULT_POISSON_RATIO)
         .meaning("Poisson's ratio (the shear modulus of the Timoshenko elements)."),
     Key::number("rotor.min_speed_rpm", RPM, Range::positive(1e6))
         .typical(1000.0, 20000.0)
@@ -64,7 +67,7 @@ pub const ROTOR_KEYS: &[Key] = &[
         .meaning("Outer diameter of the section."),
     Key::rule("rotor.section[].inner_diameter_mm", MM, "[0, outer_diameter_mm)").or(0.0).meaning("Bore of a hollow section."),
     Key::integer("rotor.section[].elements", COUNT, 1, 200)
-        .default(Fallback::Count(1))
+        .default(Fallback::Count(DEFAULT_SECTION_ELEMENTS))
         .meaning("Finite elements in the section; section i ends at node Σ elements."),
     Key::rule("rotor.disk[].node", COUNT, NODE).meaning("Node carrying a rigid disk (impeller, coupling hub, collar)."),
     Key::number("rotor.disk[].mass_kg", KG, Range::closed(0.0, 1e6)).typical(1.0, 500.0).meaning("Mass of the disk."),
@@ -127,11 +130,14 @@ pub const fn rotor_row(key: &str) -> &'static Key {
     panic!("no row in model::rotor_schema::ROTOR_KEYS for this key")
 }
 
-/// A fixed default of a rotor row (for serde's defaults of the rotor file).
-#[must_use]
-pub fn rotor_default(key: &'static Key) -> f64 {
-    key.default_number().unwrap_or_default()
+/// The row of a rotor-file key, found while compiling (a key without a row fails the build); `rotor_row`
+/// must be in scope as `row` where it is used.
+macro_rules! rotor_key {
+    ($key:literal) => {
+        const { row($key) }
+    };
 }
+pub(super) use rotor_key;
 
 #[cfg(test)]
 mod tests {

@@ -24,11 +24,8 @@ use std::collections::BTreeMap;
 use serde::{Deserialize, Serialize};
 
 use super::error::CaseError;
-use super::file::CaseFile;
+use super::file::{CaseFile, TuningFile};
 use super::schema::{Allowed, Fallback, KeySpec, KEYS};
-
-/// The keys of one section that its struct has no field for (tuning keys, or unknown ones), as written.
-pub type TuningFile = BTreeMap<String, toml::Value>;
 
 /// The sections that may hold tuning keys.
 pub const SECTIONS: [&str; 2] = ["physics", "thermal"];

@@ -13,7 +13,6 @@ use nalgebra::{DMatrix, SymmetricEigen};
 
 use super::element::{element_matrices, NODE_DOFS};
 use super::error::RotorError;
-use super::reduction::Basis;
 use crate::model::rotor::Rotor;
 
 /// Slot of a shaft coordinate.
@@ -49,6 +48,17 @@ pub struct ShaftModel {
     /// `None`: the matrices are over the nodal coordinates; `Some`: over the working coordinates of a
     /// reduced shaft ([`super::reduction`]), which the basis maps back to the nodal ones.
     pub basis: Option<Basis>,
+}
+
+/// The working coordinates of a reduced shaft ([`super::reduction`]) → nodal coordinates.
+#[derive(Debug, Clone)]
+pub struct Basis {
+    /// Nodal indices kept as the first working coordinates, in order.
+    pub boundary: Vec<usize>,
+    /// `u_nodal = t q` (nodal × working).
+    pub t: DMatrix<f64>,
+    /// Frequencies of the kept fixed-interface modes [rad/s], ascending.
+    pub modal_rad_s: Vec<f64>,
 }
 
 /// A nodal coordinate as a combination of working coordinates: `(working index, weight)` pairs.

@@ -16,25 +16,15 @@
 //! one (all interior modes kept: T is square and the reduction exact).
 //!
 //! Contract: the caller's shaft model in nodal coordinates ([`ShaftModel::new`]); returns a shaft model in the
-//! working coordinates with [`Basis`] mapping back. Fails ([`RotorError::Reduction`]) when the interior
-//! stiffness is singular — the boundary does not hold the shaft (fewer than two distinct attached nodes and no
-//! support): then the full model is the only one.
+//! working coordinates with [`Basis`] mapping back (a field of the shaft model, defined with it in
+//! [`super::assembly`]). Fails ([`RotorError::Reduction`]) when the interior stiffness is singular — the
+//! boundary does not hold the shaft (fewer than two distinct attached nodes and no support): then the full
+//! model is the only one.
 
 use nalgebra::{DMatrix, SymmetricEigen};
 
-use super::assembly::{shaft_index, NodeDof, ShaftModel};
+use super::assembly::{shaft_index, Basis, NodeDof, ShaftModel};
 use super::error::RotorError;
-
-/// Working coordinates → nodal coordinates.
-#[derive(Debug, Clone)]
-pub struct Basis {
-    /// Nodal indices kept as the first working coordinates, in order.
-    pub boundary: Vec<usize>,
-    /// `u_nodal = t q` (nodal × working).
-    pub t: DMatrix<f64>,
-    /// Frequencies of the kept fixed-interface modes [rad/s], ascending.
-    pub modal_rad_s: Vec<f64>,
-}
 
 /// Nodal indices of the lateral displacements of `nodes` (sorted, deduplicated nodes).
 #[must_use]

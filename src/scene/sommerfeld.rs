@@ -14,8 +14,8 @@
 
 use std::f64::consts::PI;
 
-use crate::model::{Case, PadKind};
-use crate::scene::sweep::SweepTable;
+use crate::model::{Case, LoadSpec, PadKind};
+use crate::scene::sweep::{SweepSpec, SweepTable};
 use crate::study::COLUMNS;
 use crate::units::UM;
 
@@ -68,6 +68,30 @@ pub const CHART_COLUMNS: [&str; 8] = [
     "cxx_ns_per_m",
     "cyy_ns_per_m",
 ];
+
+/// The chart's sweep, with the chart (the sweep itself knows nothing of the chart).
+impl SweepSpec {
+    /// The sweep of the Sommerfeld chart for `case`: its load from a fifth to three times its value (S
+    /// from about five times to a third of the case's), or, for a case that prescribes the journal
+    /// position, ε from 0.1 to 0.85; 12 points at preview fidelity.
+    #[must_use]
+    pub fn sommerfeld_chart(case: &Case) -> Self {
+        let (key, from, to) = match case.operating.load {
+            LoadSpec::Force { magnitude_n, .. } => ("operating.load_n", 0.2 * magnitude_n, 3.0 * magnitude_n),
+            LoadSpec::Position { .. } => ("operating.eccentricity_ratio", 0.1, 0.85),
+        };
+        Self {
+            key: key.into(),
+            from,
+            to,
+            count: 12,
+            outputs: CHART_COLUMNS.iter().map(|c| (*c).to_string()).collect(),
+            against_sommerfeld: true,
+            preview: true,
+            chart: true,
+        }
+    }
+}
 
 /// The short-bearing (Ocvirk) Sommerfeld number and attitude angle [deg] of a plain 360° bearing at ε.
 #[must_use]

@@ -31,7 +31,8 @@ pub struct SweepSpec {
     pub against_sommerfeld: bool,
     /// Solve the points at preview fidelity (fast, coarser).
     pub preview: bool,
-    /// Draw the Sommerfeld chart ([`crate::scene::sommerfeld`]) rather than the outputs one by one.
+    /// Draw the Sommerfeld chart ([`crate::scene::sommerfeld`], which also makes its sweep:
+    /// `SweepSpec::sommerfeld_chart`) rather than the outputs one by one.
     pub chart: bool,
 }
 
@@ -46,31 +47,6 @@ impl Default for SweepSpec {
             against_sommerfeld: false,
             preview: false,
             chart: false,
-        }
-    }
-}
-
-impl SweepSpec {
-    /// The sweep of the Sommerfeld chart for `case`: its load from a fifth to three times its value (S
-    /// from about five times to a third of the case's), or, for a case that prescribes the journal
-    /// position, ε from 0.1 to 0.85; 12 points at preview fidelity.
-    #[must_use]
-    pub fn sommerfeld_chart(case: &crate::model::Case) -> Self {
-        let (key, from, to) = match case.operating.load {
-            crate::model::LoadSpec::Force { magnitude_n, .. } => {
-                ("operating.load_n", 0.2 * magnitude_n, 3.0 * magnitude_n)
-            }
-            crate::model::LoadSpec::Position { .. } => ("operating.eccentricity_ratio", 0.1, 0.85),
-        };
-        Self {
-            key: key.into(),
-            from,
-            to,
-            count: 12,
-            outputs: crate::scene::sommerfeld::CHART_COLUMNS.iter().map(|c| (*c).to_string()).collect(),
-            against_sommerfeld: true,
-            preview: true,
-            chart: true,
         }
     }
 }

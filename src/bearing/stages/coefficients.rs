@@ -11,37 +11,76 @@ use crate::bearing::report::error::SolveError;
 use crate::bearing::report::progress::{Cancel, Progress};
 use crate::bearing::solution::Solution;
 use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
-use crate::bearing::stages::films::StructureInputs;
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::Published;
 use crate::bearing::stages::request::Request;
 use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 use crate::bearing::stages::thermal::{ThermalInputs, ThermalStage};
-use crate::model::Case;
+use crate::model::{Bearing, Case, Pad};
 
-/// The inputs of the full coefficients.
+/// The inputs of the full coefficients: the case as they see it ([`super::view`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoefficientsInputs {
-    pub equilibrium: EquilibriumInputs,
-    /// The THD solution's inputs (THD cases).
-    pub thermal: Option<ThermalInputs>,
-    /// Pad density per pad [kg/m³].
-    pub density_kg_per_m3: Vec<f64>,
+    /// The view of the film solution they read (the thermal loop's for a THD case, else the equilibrium's)
+    /// with each pad's density and whether it is massless (the inertia `M`).
+    pub case: Case,
 }
 
 impl CoefficientsInputs {
     #[must_use]
     pub fn of(case: &Case) -> Self {
-        Self {
-            equilibrium: EquilibriumInputs::of(case),
-            thermal: ThermalInputs::of(case),
-            density_kg_per_m3: StructureInputs::of(case).density_kg_per_m3,
-        }
+        let film = match ThermalInputs::of(case) {
+            Some(thermal) => thermal.case,
+            None => EquilibriumInputs::of(case).case,
+        };
+        Self { case: with_inertia(film, case) }
+    }
+
+    /// The film solution they read: the THD solution's inputs for a THD case, else `None`.
+    #[must_use]
+    pub fn thermal(&self) -> Option<ThermalInputs> {
+        ThermalInputs::of(&self.case)
     }
 }
 
-/// The full inertia matrix of a case's pads over the solution's coordinates (journal rows zero); a flexible
-/// pad's modal masses and couplings come with the modes the solution carries.
+/// A stage's view of the case (`view`) with what the pads' inertia reads besides their geometry: whether each
+/// pad is massless and, if not, its density. Exhaustive over the pad (no `..`).
+#[must_use]
+pub(super) fn with_inertia(view: Case, case: &Case) -> Case {
+    let pads = case
+        .bearing
+        .pads
+        .iter()
+        .zip(&view.bearing.pads)
+        .map(|(pad, seen)| {
+            let Pad {
+                kind: _,
+                leading_edge_rad: _,
+                arc_rad: _,
+                pivot_rad: _,
+                offset: _,
+                clearance_m: _,
+                preload: _,
+                thickness_m: _,
+                pivot_stiffness_n_per_m: _,
+                pivot_transverse_stiffness_n_per_m: _,
+                pivot_contact: _,
+                orifices: _, // the geometry and the coordinates: the films' view
+                youngs_modulus_pa: _,
+                poisson_ratio: _, // a flexible pad's modal masses come with the modes of the solution
+                density_kg_per_m3,
+                massless,
+            } = pad;
+            // A massless pad's density is read by nothing.
+            let density_kg_per_m3 = if *massless { seen.density_kg_per_m3 } else { *density_kg_per_m3 };
+            Pad { density_kg_per_m3, massless: *massless, ..seen.clone() }
+        })
+        .collect();
+    Case { bearing: Bearing { pads, ..view.bearing }, ..view }
+}
+
+/// The full inertia matrix of a case's pads (a view with [`with_inertia`]) over the solution's coordinates
+/// (journal rows zero); a flexible pad's modal masses and couplings come with the modes the solution carries.
 pub(super) fn pad_inertia(case: &Case, solution: &Solution) -> Vec<Vec<f64>> {
     let coords = &solution.full.coords;
     let n = coords.len();
@@ -78,8 +117,8 @@ impl Stage for CoefficientsStage {
     }
 
     /// The thermal loop's state for a THD case, the isothermal equilibrium otherwise.
-    fn needs(req: &Request) -> &'static [StageId] {
-        if ThermalInputs::of(&req.case).is_some() {
+    fn needs(inputs: &CoefficientsInputs) -> &'static [StageId] {
+        if inputs.thermal().is_some() {
             &[StageId::Thermal]
         } else {
             &[StageId::Equilibrium]
@@ -92,14 +131,16 @@ impl Stage for CoefficientsStage {
         ctx: &mut Ctx<'_>,
         _cancel: &dyn Cancel,
     ) -> Result<Poll<Arc<Solution>>, SolveError> {
-        let film =
-            if inputs.thermal.is_some() { ctx.output::<ThermalStage>()? } else { ctx.output::<EquilibriumStage>()? };
+        let film = match inputs.thermal() {
+            Some(thermal) => ctx.output::<ThermalStage>(&thermal)?,
+            None => ctx.output::<EquilibriumStage>(&EquilibriumInputs::of(&inputs.case))?,
+        };
         let mut s = Solution::clone(film);
-        s.full.m = pad_inertia(ctx.case(), &s);
+        s.full.m = pad_inertia(&inputs.case, &s);
         Ok(Progress::Done(Arc::new(s)))
     }
 
-    fn publish(&mut self, output: &Arc<Solution>, _req: &Request) -> Option<Published> {
+    fn publish(&mut self, output: &Arc<Solution>) -> Option<Published> {
         let out: Arc<Solution> = output.clone();
         Some(out)
     }

@@ -17,41 +17,25 @@ use crate::bearing::report::SolveReport;
 use crate::bearing::solution::assemble::assemble_solution;
 use crate::bearing::solution::Solution;
 use crate::bearing::stages::cache::Cached;
-use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage, StructureInputs};
+use crate::bearing::stages::films::{install_structure, FilmsInputs, FilmsStage};
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::request::{Request, Start};
 use crate::bearing::stages::stage::{Ctx, Poll, Stage};
-use crate::model::tuning::Tuning;
-use crate::model::{Case, Lubricant, Operating, Physics, ViscosityLaw};
+use crate::bearing::stages::view;
+use crate::model::{Bearing, Case, Feeding, Lubricant, Operating, Pad, Physics, Thermal};
 
 /// Suspensions of one equilibrium before it must run to the end.
 pub const MAX_SUSPENSIONS: usize = 40;
 
-/// The inputs of the isothermal equilibrium.
+/// The inputs of the isothermal equilibrium: the case as it sees it ([`super::view`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct EquilibriumInputs {
-    pub films: FilmsInputs,
-    /// Radial and transverse pivot stiffness per pad (the structure's springs; the density is not read).
-    pub stiffness_n_per_m: Vec<[Option<f64>; 2]>,
-    /// Hertz pivot contacts per pad (their stiffness follows the pad's load).
-    pub contacts: Vec<Option<crate::physics::hertz::PivotContact>>,
-    /// Reported with the solution.
-    pub preloads: Vec<f64>,
-    pub viscosity: ViscosityLaw,
-    /// Oil density: the flow-regime warnings.
-    pub oil_density_kg_per_m3: f64,
-    pub speed_rad_s: f64,
-    pub load: crate::model::LoadSpec,
-    pub film_temperature_c: f64,
-    pub injection_pressure_pa: Vec<f64>,
-    pub injection_temperature_c: f64,
-    /// Starved pads: the bearing's oil supply (the pads' inlet film fractions).
-    pub supply_flow_m3_s: Option<Vec<f64>>,
-    pub physics: Physics,
-    /// Every tuning key (the equilibrium's and those of the stages after it, which key on these inputs).
-    pub tuning: Tuning,
-    /// Scale on the flooded housing's churning loss (reported with the solution; 0 for directed feeding).
-    pub churning_factor: f64,
+    /// The films' view, and per pad its pivot stiffnesses and Hertz contact (their values: the structure's
+    /// springs) and its preload (reported); the oil's viscosity law and density (flow regime, ram pressure,
+    /// churning); the operating point but the supply temperature and the excitation ratio; every physics
+    /// value; every tuning key (the equilibrium's and those of the stages after it, which key on this view);
+    /// the churning factor of the feeding.
+    pub case: Case,
 }
 
 impl EquilibriumInputs {
@@ -60,10 +44,10 @@ impl EquilibriumInputs {
     pub fn of(case: &Case) -> Self {
         let Case {
             title: _,
-            bearing: _,
+            bearing,
             lubricant,
             operating,
-            mesh: _,
+            mesh: _, // the films'
             physics,
             thermal, // its feeding's churning factor (the rest: the thermal stage's)
             hydraulics: _,
@@ -85,7 +69,7 @@ impl EquilibriumInputs {
             injection_pressure_pa,
             injection_temperature_c,
             supply_flow_m3_s,
-            excitation_ratio: _, // the reduction's
+            excitation_ratio: _, // the reduction's (the equilibrium's own reduced coefficients are static)
         } = operating;
         let Physics {
             cavitation: _,
@@ -96,24 +80,71 @@ impl EquilibriumInputs {
             max_film_solves_per_pad: _,
             ram_pressure_coefficient: _, // the leading-edge pressure of every film solve
         } = physics; // kept whole below (pad_modes: the films'; turbulence: every film solve)
-        let structure = StructureInputs::of(case);
-        Self {
-            films: FilmsInputs::of(case),
-            stiffness_n_per_m: structure.stiffness_n_per_m,
-            contacts: structure.contacts,
-            preloads: case.bearing.pads.iter().map(|p| p.preload).collect(),
-            viscosity: *viscosity,
-            oil_density_kg_per_m3: *density_kg_per_m3,
-            speed_rad_s: *speed_rad_s,
-            load: *load,
-            film_temperature_c: *film_temperature_c,
-            injection_pressure_pa: injection_pressure_pa.clone(),
-            injection_temperature_c: *injection_temperature_c,
-            supply_flow_m3_s: supply_flow_m3_s.clone(),
+        let films = FilmsInputs::of(case).case;
+        let blank = view::case();
+        let case = Case {
+            bearing: Bearing {
+                pads: bearing.pads.iter().zip(&films.bearing.pads).map(|(p, f)| structure_pad(p, f)).collect(),
+                ..films.bearing
+            },
+            lubricant: Lubricant { viscosity: *viscosity, density_kg_per_m3: *density_kg_per_m3, ..blank.lubricant },
+            operating: Operating {
+                speed_rad_s: *speed_rad_s,
+                load: *load,
+                film_temperature_c: *film_temperature_c,
+                injection_pressure_pa: injection_pressure_pa.clone(),
+                injection_temperature_c: *injection_temperature_c,
+                supply_flow_m3_s: supply_flow_m3_s.clone(),
+                ..blank.operating
+            },
             physics: *physics,
+            thermal: Thermal {
+                feeding: Feeding::Flooded {
+                    carry_over: view::BLANK,
+                    churning_factor: thermal.feeding.churning_factor(),
+                },
+                ..blank.thermal
+            },
             tuning: *tuning,
-            churning_factor: thermal.feeding.churning_factor(),
-        }
+            ..films
+        };
+        Self { case }
+    }
+
+    /// The films it solves on.
+    #[must_use]
+    pub fn films(&self) -> FilmsInputs {
+        FilmsInputs::of(&self.case)
+    }
+}
+
+/// The films' view of a pad (`films`) with the pivot springs' values, its Hertz contact and its preload.
+/// Exhaustive (no `..`).
+fn structure_pad(pad: &Pad, films: &Pad) -> Pad {
+    let Pad {
+        kind: _,
+        leading_edge_rad: _,
+        arc_rad: _,
+        pivot_rad: _,
+        offset: _,
+        clearance_m: _,
+        thickness_m: _, // the films'
+        preload,
+        pivot_stiffness_n_per_m,
+        pivot_transverse_stiffness_n_per_m,
+        pivot_contact,
+        density_kg_per_m3: _,
+        massless: _, // the inertia: the coefficients' (the equilibrium's own mass matrix is the blank one)
+        youngs_modulus_pa: _,
+        poisson_ratio: _, // the films' when the pads bend; a contact's pivot material is in the contact
+        orifices: _,
+    } = pad;
+    Pad {
+        preload: *preload,
+        pivot_stiffness_n_per_m: *pivot_stiffness_n_per_m,
+        pivot_transverse_stiffness_n_per_m: *pivot_transverse_stiffness_n_per_m,
+        pivot_contact: *pivot_contact,
+        ..films.clone()
     }
 }
 
@@ -174,27 +205,28 @@ impl Stage for EquilibriumStage {
         ctx: &mut Ctx<'_>,
         cancel: &dyn Cancel,
     ) -> Result<Poll<Arc<Solution>>, SolveError> {
-        let case = ctx.case().clone();
-        let cold = ctx.request().start == Start::Cold;
-        let model = ctx.output_mut::<FilmsStage>()?;
-        install_structure(model, &case)?;
-        let op = OperatingPoint::isothermal(&case);
+        let case = &inputs.case;
+        let films = inputs.films();
+        let cold = ctx.start() == Start::Cold;
+        let model = ctx.output_mut::<FilmsStage>(&films)?;
+        install_structure(model, case)?;
+        let op = OperatingPoint::isothermal(case);
         let resumed = self.suspended.take(inputs);
         let may_suspend = resumed.as_ref().is_none_or(|r| r.suspensions < MAX_SUSPENSIONS);
         let no_suspend = NoSuspend(cancel);
         let cancel: &dyn Cancel = if may_suspend { cancel } else { &no_suspend };
-        let warm = if cold { None } else { self.warm.get(&inputs.films).cloned() };
+        let warm = if cold { None } else { self.warm.get(&films).cloned() };
         let start = resumed.as_ref().map(|r| r.coordinates.clone()).or(warm);
         let params = EquilibriumParams {
             placed_pads: resumed.as_ref().map_or(0, |r| r.placed_pads),
-            ..EquilibriumParams::of(&case)
+            ..EquilibriumParams::of(case)
         };
         let run = resumed.as_ref().and_then(|r| r.pivots.clone());
-        let attempt = match solve(model, &case, &op, start.as_deref(), run, params, cancel) {
+        let attempt = match solve(model, case, &op, start.as_deref(), run, params, cancel) {
             // A failed warm start retries cold before giving up.
             Err(e) if start.is_some() && !matches!(e, SolveError::Cancelled) => {
                 self.warm.clear();
-                solve(model, &case, &op, None, None, EquilibriumParams::of(&case), &NoSuspend(cancel))
+                solve(model, case, &op, None, None, EquilibriumParams::of(case), &NoSuspend(cancel))
             }
             r => r,
         };
@@ -216,11 +248,11 @@ impl Stage for EquilibriumStage {
                 return Ok(Progress::Suspended(0.5));
             }
         };
-        let mut sol = assemble_solution(model, &case, &op, &eq, contacts.as_ref());
+        let mut sol = assemble_solution(model, case, &op, &eq, contacts.as_ref());
         if let Some(so_far) = resumed {
             so_far.merge_into(&mut sol.report);
         }
-        self.warm.put(inputs.films.clone(), sol.coordinates.clone());
+        self.warm.put(films, sol.coordinates.clone());
         Ok(Progress::Done(Arc::new(sol)))
     }
 }

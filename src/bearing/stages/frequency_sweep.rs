@@ -15,6 +15,7 @@ use crate::bearing::stages::sweeps::FrequencySweep;
 /// The inputs of the frequency sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrequencySweepInputs {
+    /// The coefficients it reduces.
     pub coefficients: CoefficientsInputs,
     /// The request's ratios ω/Ω.
     pub ratios: Vec<f64>,
@@ -42,12 +43,12 @@ impl Stage for FrequencySweepStage {
         ctx: &mut Ctx<'_>,
         _cancel: &dyn Cancel,
     ) -> Result<Poll<Arc<FrequencySweep>>, SolveError> {
-        let s = ctx.output::<CoefficientsStage>()?;
+        let s = ctx.output::<CoefficientsStage>(&inputs.coefficients)?;
         let w = s.derived.speed_rad_s;
         Ok(Progress::Done(Arc::new(inputs.ratios.iter().map(|&r| (r, reduce(&s.full, r * w))).collect())))
     }
 
-    fn publish(&mut self, output: &Arc<FrequencySweep>, _req: &Request) -> Option<Published> {
+    fn publish(&mut self, output: &Arc<FrequencySweep>) -> Option<Published> {
         Some(output.clone())
     }
 }

@@ -16,21 +16,21 @@ use crate::bearing::film::model::OperatingPoint;
 use crate::bearing::frf::model::FrfModel;
 use crate::bearing::report::error::SolveError;
 use crate::bearing::report::progress::{Cancel, Progress};
-use crate::bearing::stages::coefficients::pad_inertia;
+use crate::bearing::stages::coefficients::{pad_inertia, with_inertia};
 use crate::bearing::stages::equilibrium::{EquilibriumInputs, EquilibriumStage};
-use crate::bearing::stages::films::{FilmsStage, StructureInputs};
+use crate::bearing::stages::films::FilmsStage;
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::Published;
 use crate::bearing::stages::request::Request;
 use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 use crate::model::hydraulics::{Hydraulics, Port};
+use crate::model::Case;
 
-/// The inputs of the linearisation for the ports.
+/// The inputs of the linearisation for the ports: the case as it sees it ([`super::view`]) and the ports.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrfInputs {
-    pub equilibrium: EquilibriumInputs,
-    /// Pad density per pad [kg/m³] (the inertia `M`).
-    pub density_kg_per_m3: Vec<f64>,
+    /// The equilibrium's view with the pads' inertia (their density, whether massless).
+    pub case: Case,
     /// The pads each port feeds.
     pub port_pads: Vec<Vec<usize>>,
 }
@@ -38,7 +38,7 @@ pub struct FrfInputs {
 impl FrfInputs {
     /// `None` without `[hydraulics]`. Exhaustive over the hydraulics (no `..`).
     #[must_use]
-    pub fn of(case: &crate::model::Case) -> Option<Self> {
+    pub fn of(case: &Case) -> Option<Self> {
         let Hydraulics { supply_pressure_pa: _, return_pressure_pa: _, valve: _, ports, rig: _ } =
             case.hydraulics.as_ref()?;
         let port_pads = ports
@@ -57,11 +57,7 @@ impl FrfInputs {
                 pads.clone()
             })
             .collect();
-        Some(Self {
-            equilibrium: EquilibriumInputs::of(case),
-            density_kg_per_m3: StructureInputs::of(case).density_kg_per_m3,
-            port_pads,
-        })
+        Some(Self { case: with_inertia(EquilibriumInputs::of(case).case, case), port_pads })
     }
 }
 
@@ -84,17 +80,18 @@ impl Stage for FrfStage {
         ctx: &mut Ctx<'_>,
         _cancel: &dyn Cancel,
     ) -> Result<Poll<Arc<FrfModel>>, SolveError> {
-        let case = ctx.case().clone();
-        let sol = Arc::clone(ctx.output::<EquilibriumStage>()?);
-        let model = ctx.output_mut::<FilmsStage>()?;
+        let case = &inputs.case;
+        let equilibrium = EquilibriumInputs::of(case);
+        let sol = Arc::clone(ctx.output::<EquilibriumStage>(&equilibrium)?);
+        let model = ctx.output_mut::<FilmsStage>(&equilibrium.films())?;
         let t0 = Instant::now();
-        let op = OperatingPoint::isothermal(&case);
-        let m = pad_inertia(&case, &sol);
-        let frf = FrfModel::linearise(model, &op, &case, &sol, m, &inputs.port_pads)?;
+        let op = OperatingPoint::isothermal(case);
+        let m = pad_inertia(case, &sol);
+        let frf = FrfModel::linearise(model, &op, case, &sol, m, &inputs.port_pads)?;
         Ok(Progress::Done(Arc::new(FrfModel { linearise_seconds: t0.elapsed().as_secs_f64(), ..frf })))
     }
 
-    fn publish(&mut self, output: &Arc<FrfModel>, _req: &Request) -> Option<Published> {
+    fn publish(&mut self, output: &Arc<FrfModel>) -> Option<Published> {
         Some(output.clone())
     }
 }

@@ -1,6 +1,6 @@
 //! The reduction stage: the solution the views show — the full coefficients reduced to the journal's
-//! `K`, `C` at the case's excitation frequency ω = (ω/Ω)·Ω. The title and the case are stamped when the
-//! solution is published (they are read by no stage).
+//! `K`, `C` at the case's excitation frequency ω = (ω/Ω)·Ω. The title and the case are read by no stage:
+//! the registry stamps them on the published solution ([`super::stamp`]).
 
 use std::sync::Arc;
 
@@ -13,20 +13,43 @@ use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::Published;
 use crate::bearing::stages::request::Request;
 use crate::bearing::stages::stage::{Ctx, Poll, Stage};
+use crate::model::{Case, Operating};
 
-/// The inputs of the reduced solution.
+/// The inputs of the reduced solution: the case as it sees it ([`super::view`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ReductionInputs {
-    pub coefficients: CoefficientsInputs,
-    pub excitation_ratio: f64,
+    /// The coefficients' view with the excitation ratio ω/Ω.
+    pub case: Case,
+}
+
+impl ReductionInputs {
+    /// Exhaustive over the operating point (no `..`).
+    #[must_use]
+    pub fn of(case: &Case) -> Self {
+        let Operating {
+            speed_rad_s: _,
+            load: _,
+            supply_temperature_c: _,
+            film_temperature_c: _,
+            injection_pressure_pa: _,
+            injection_temperature_c: _,
+            supply_flow_m3_s: _, // the coefficients' view
+            excitation_ratio,
+        } = &case.operating;
+        let coefficients = CoefficientsInputs::of(case).case;
+        let operating = Operating { excitation_ratio: *excitation_ratio, ..coefficients.operating };
+        Self { case: Case { operating, ..coefficients } }
+    }
+
+    /// The coefficients it reduces.
+    #[must_use]
+    pub fn coefficients(&self) -> CoefficientsInputs {
+        CoefficientsInputs::of(&self.case)
+    }
 }
 
 #[derive(Default)]
-pub struct ReductionStage {
-    /// The last published solution, to hand out again while nothing changes.
-    /// (the case it was stamped with, the output it was made from, the stamped solution).
-    published: Option<(crate::model::Case, Arc<Solution>, Arc<Solution>)>,
-}
+pub struct ReductionStage;
 
 impl Stage for ReductionStage {
     const LABEL: &'static str = "reduced coefficients";
@@ -35,10 +58,7 @@ impl Stage for ReductionStage {
     type Output = Arc<Solution>;
 
     fn inputs(req: &Request) -> Option<ReductionInputs> {
-        Some(ReductionInputs {
-            coefficients: CoefficientsInputs::of(&req.case),
-            excitation_ratio: req.case.operating.excitation_ratio,
-        })
+        Some(ReductionInputs::of(&req.case))
     }
 
     fn poll(
@@ -47,21 +67,13 @@ impl Stage for ReductionStage {
         ctx: &mut Ctx<'_>,
         _cancel: &dyn Cancel,
     ) -> Result<Poll<Arc<Solution>>, SolveError> {
-        let mut s = Solution::clone(ctx.output::<CoefficientsStage>()?);
-        s.reduced = reduce(&s.full, inputs.excitation_ratio * s.derived.speed_rad_s);
+        let mut s = Solution::clone(ctx.output::<CoefficientsStage>(&inputs.coefficients())?);
+        s.reduced = reduce(&s.full, inputs.case.operating.excitation_ratio * s.derived.speed_rad_s);
         Ok(Progress::Done(Arc::new(s)))
     }
 
-    fn publish(&mut self, output: &Arc<Solution>, req: &Request) -> Option<Published> {
-        let fresh =
-            self.published.as_ref().is_none_or(|(case, from, _)| *case != req.case || !Arc::ptr_eq(from, output));
-        if fresh {
-            let mut s = Solution::clone(output);
-            s.title.clone_from(&req.case.title);
-            s.inputs = req.case.clone();
-            self.published = Some((req.case.clone(), output.clone(), Arc::new(s)));
-        }
-        let out: Arc<Solution> = self.published.as_ref()?.2.clone();
+    fn publish(&mut self, output: &Arc<Solution>) -> Option<Published> {
+        let out: Arc<Solution> = output.clone();
         Some(out)
     }
 }

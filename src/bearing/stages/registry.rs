@@ -2,7 +2,8 @@
 //!
 //! ## Adding a stage
 //! 1. One file `stages/my_stage.rs`: `#[derive(Default)] pub struct MyStage` (its resumable state, if any) and
-//!    `impl Stage for MyStage` — `Inputs` with their exhaustive builder, `Output`, `NEEDS`, `poll`, `publish`.
+//!    `impl Stage for MyStage` — `Inputs` (its view of the case, [`super::view`], and what it takes from the
+//!    request) with their exhaustive builder, `Output`, `NEEDS`, `poll`, `publish`.
 //! 2. Its name in [`StageId`] (`stages/id.rs`), after the stages it reads, and one line in the `stages!`
 //!    list below: `MyStage => my_stage::MyStage,`.
 //!
@@ -20,6 +21,7 @@ use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::{Outcome, Step};
 use crate::bearing::stages::request::Request;
 use crate::bearing::stages::stage::{AnySlot, Reader, Registered, Slot, Solver, Stage, Standing};
+use crate::bearing::stages::stamp::Stamp;
 use crate::bearing::stages::{
     coefficients, equilibrium, films, frequency_sweep, frf, reduction, speed_sweep, stage::Ctx, thermal,
 };
@@ -42,9 +44,11 @@ macro_rules! stages {
                 match self { $(Self::$id => <$module::$ty as Stage>::NEEDS,)* }
             }
 
-            /// The stages it reads for this request.
+            /// The stages it reads for this request (none when it does not apply).
             pub(super) fn needs(self, req: &Request) -> &'static [StageId] {
-                match self { $(Self::$id => <$module::$ty as Stage>::needs(req),)* }
+                match self {
+                    $(Self::$id => <$module::$ty as Stage>::inputs(req).map_or(&[], |i| <$module::$ty as Stage>::needs(&i)),)*
+                }
             }
         }
 
@@ -71,6 +75,8 @@ stages! {
 /// inputs it was computed for.
 pub struct Stages {
     pub(super) slots: Vec<Option<Box<dyn AnySlot>>>,
+    /// Per slot: its last published solution with the request's title and case on it.
+    stamps: Vec<Stamp>,
 }
 
 impl Default for Stages {
@@ -90,7 +96,7 @@ impl Stages {
     /// finds them (a rotor analysis probing speeds it solved before).
     #[must_use]
     pub fn keeping(outputs: usize) -> Self {
-        Self { slots: registry(outputs.max(1)) }
+        Self { slots: registry(outputs.max(1)), stamps: StageId::ALL.iter().map(|_| Stamp::default()).collect() }
     }
 
     /// The wanted stages and every stage they read for this request, transitively (by [`StageId`] order).
@@ -118,8 +124,8 @@ impl Stages {
             }
             let Some(mut slot) = self.slots[i].take() else { continue };
             let reader = Reader { label: id.label(), needs: id.declared() };
-            let mut ctx = Ctx { slots: &mut self.slots, req, reader, nested: nested_stages };
-            let result = slot.poll(&mut ctx, cancel);
+            let mut ctx = Ctx { slots: &mut self.slots, reader, start: req.start, nested: nested_stages };
+            let result = slot.poll(req, &mut ctx, cancel);
             self.slots[i] = Some(slot);
             let fraction = match result? {
                 Progress::Done(()) => 1.0,
@@ -130,7 +136,7 @@ impl Stages {
         let mut outputs = Vec::new();
         for &id in &req.wanted {
             if let Some(o) = self.slots[id.index()].as_mut().and_then(|s| s.publish(req)) {
-                outputs.push((id, o));
+                outputs.push((id, self.stamps[id.index()].stamp(o, &req.case)));
             }
         }
         Ok(Step::Done(Outcome { outputs }))

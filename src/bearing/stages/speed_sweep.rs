@@ -1,19 +1,24 @@
 //! The speed sweep: one solution per speed of the request (everything else as in the case), one point per
-//! poll (or the part of it that fits when the caller asks to pause), asked of a nested computation of the stages themselves ([`Ctx::nested`]): its films are built once,
-//! each point starts from the previous one's converged state, an isothermal point may itself be suspended
-//! between frames and resumed, and a THD point runs its thermal loop one outer iteration per step.
+//! poll (or the part of it that fits when the caller asks to pause), asked of a nested computation of the
+//! stages themselves ([`Ctx::nested`]): its films are built once, each point starts from the previous one's
+//! converged state, an isothermal point may itself be suspended between frames and resumed, and a THD point
+//! runs its thermal loop one outer iteration per step. The points' requests are built from the sweep's
+//! inputs — the reduced solution's view of the case with the speed left out — so the nested stages see
+//! nothing the sweep's key does not hold.
 
 use std::sync::Arc;
 
 use crate::bearing::report::error::SolveError;
 use crate::bearing::report::progress::{Cancel, Progress};
 use crate::bearing::stages::cache::Cached;
-use crate::bearing::stages::coefficients::CoefficientsInputs;
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::{Published, Step};
-use crate::bearing::stages::request::Request;
+use crate::bearing::stages::reduction::ReductionInputs;
+use crate::bearing::stages::request::{Request, Start};
 use crate::bearing::stages::stage::{Ctx, Poll, Solver, Stage};
 use crate::bearing::stages::sweeps::{SpeedPoint, SweepValues};
+use crate::bearing::stages::view;
+use crate::model::{Case, Operating};
 
 /// Steps the nested stages towards one point until it is done or the caller asks to pause (`None`: paused).
 fn step_point(stages: &mut dyn Solver, req: &Request, cancel: &dyn Cancel) -> Result<Option<Step>, SolveError> {
@@ -26,24 +31,25 @@ fn step_point(stages: &mut dyn Solver, req: &Request, cancel: &dyn Cancel) -> Re
     }
 }
 
-/// The inputs of the speed sweep: what the coefficients read with the case's speed left out, the
-/// excitation ratio, and the request's speeds.
+/// The inputs of the speed sweep: the case as its points see it ([`super::view`]) and the request's speeds.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SpeedSweepInputs {
-    pub coefficients: CoefficientsInputs,
-    pub excitation_ratio: f64,
+    /// What the reduced solution reads, with the case's speed left out (each point has its own).
+    pub case: Case,
     pub speeds_rad_s: Vec<f64>,
 }
 
 impl SpeedSweepInputs {
     fn of(req: &Request) -> Self {
-        let mut c = req.case.clone();
-        c.operating.speed_rad_s = 0.0;
-        Self {
-            coefficients: CoefficientsInputs::of(&c),
-            excitation_ratio: c.operating.excitation_ratio,
-            speeds_rad_s: req.speeds_rad_s.clone(),
-        }
+        let reduction = ReductionInputs::of(&req.case).case;
+        let operating = Operating { speed_rad_s: view::BLANK, ..reduction.operating };
+        Self { case: Case { operating, ..reduction }, speeds_rad_s: req.speeds_rad_s.clone() }
+    }
+
+    /// The request of the point at `speed_rad_s`.
+    fn point(&self, speed_rad_s: f64, start: Start) -> Request {
+        let operating = Operating { speed_rad_s, ..self.case.operating.clone() };
+        Request::solution(Case { operating, ..self.case.clone() }).starting(start)
     }
 }
 
@@ -80,9 +86,7 @@ impl Stage for SpeedSweepStage {
         };
         let n = inputs.speeds_rad_s.len();
         if let Some(&speed_rad_s) = inputs.speeds_rad_s.get(st.points.len()) {
-            let mut case = ctx.case().clone();
-            case.operating.speed_rad_s = speed_rad_s;
-            let req = Request::solution(case).starting(ctx.request().start);
+            let req = inputs.point(speed_rad_s, ctx.start());
             let result = match step_point(st.stages.as_mut(), &req, cancel) {
                 Ok(None | Some(Step::Pending { .. })) => None,
                 Ok(Some(Step::Done(outcome))) => Some(outcome.solution().map(|s| SweepValues::of(&s)).ok_or(
@@ -106,7 +110,7 @@ impl Stage for SpeedSweepStage {
         Ok(Progress::Suspended(fraction))
     }
 
-    fn publish(&mut self, output: &Arc<Vec<SpeedPoint>>, _req: &Request) -> Option<Published> {
+    fn publish(&mut self, output: &Arc<Vec<SpeedPoint>>) -> Option<Published> {
         Some(output.clone())
     }
 }

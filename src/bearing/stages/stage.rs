@@ -1,19 +1,27 @@
 //! The contract of a stage ([`Stage`]) and what a running stage sees ([`Ctx`]).
 //!
-//! - `Inputs` (`PartialEq + Clone`) holds the values the output depends on, built by `Stage::inputs`, which
-//!   **destructures [`crate::model::Case`] and each of its sub-structs exhaustively, without `..`**: adding a
-//!   field anywhere in the case is a compile error in every stage's builder until someone decides, stage by
-//!   stage, whether it reads it. A stage that reads another's output nests that stage's inputs in its own,
-//!   so its key covers everything upstream too.
-//! - `poll` does one unit of work and returns [`Progress::Done`] with the output or [`Progress::Suspended`]
-//!   with the fraction done (a paused equilibrium, one THD outer iteration, one sweep point): suspension is a
-//!   return value, errors are failures. Resumable state lives in the stage value, keyed by the inputs it is
-//!   for ([`Cached`]).
-//! - Other stages' outputs are read through [`Ctx`], which refuses a stage not listed in `NEEDS` and an
-//!   output that is not current for the request (an error naming both: a bug in the registration order).
-//!   `needs` may narrow `NEEDS` per request (the coefficients read the thermal loop's state for a THD case,
-//!   the isothermal equilibrium otherwise), so a stage nobody reads does not run.
+//! - `Inputs` (`PartialEq + Clone`) holds everything the output depends on: the stage's view of the case
+//!   ([`super::view`]: the fields it reads, every other one blank), built by `Stage::inputs`, which
+//!   **destructures [`crate::model::Case`] and each sub-struct it looks into exhaustively, without `..`**, and
+//!   what the stage takes from the request (the sweeps' grids). Adding a field anywhere in the case is a
+//!   compile error in every builder until someone decides, stage by stage, whether it reads it.
+//! - `poll` receives its inputs and, through [`Ctx`], the outputs of the stages it declared in `NEEDS` — not
+//!   the case, not the request: the compiler, not care, guarantees that the cache key covers everything a
+//!   stage reads. It does one unit of work and returns [`Progress::Done`] with the output or
+//!   [`Progress::Suspended`] with the fraction done (a paused equilibrium, one THD outer iteration, one sweep
+//!   point): suspension is a return value, errors are failures. Resumable state lives in the stage value,
+//!   keyed by the inputs it is for ([`Cached`]).
+//! - Another stage's output is read under that stage's inputs, which the reader derives from its own
+//!   (`ctx.output::<FilmsStage>(&FilmsInputs::of(&inputs.case))`), so its key covers everything upstream.
+//!   [`Ctx`] refuses a stage not listed in `NEEDS` and an output not computed for those inputs (an error
+//!   naming both: a bug in the registration order or in a builder). `needs` may narrow `NEEDS` per input
+//!   (the coefficients read the thermal loop's state for a THD case, the isothermal equilibrium otherwise),
+//!   so a stage nobody reads does not run.
+//! - Where solves start ([`Start`], [`Ctx::start`]) is the one thing of the request a stage sees besides its
+//!   inputs, and by design no part of a key: a cold request reuses an output already cached for the same
+//!   inputs.
 //! - `publish` hands an output to the caller ([`Published`]); internal stages (the films) publish nothing.
+//!   The registry, which knows the request, stamps its title and case on a published solution.
 
 use std::any::Any;
 
@@ -22,8 +30,7 @@ use crate::bearing::report::progress::{Cancel, Progress};
 use crate::bearing::stages::cache::Cached;
 use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::outcome::{Published, Step};
-use crate::bearing::stages::request::Request;
-use crate::model::Case;
+use crate::bearing::stages::request::{Request, Start};
 
 /// One unit of a stage's work: its output, or paused with the fraction of the work done.
 pub type Poll<T> = Progress<T, f64>;
@@ -45,8 +52,8 @@ pub trait Stage: Default + Send + 'static {
     /// case).
     fn inputs(req: &Request) -> Option<Self::Inputs>;
 
-    /// The stages this one reads for the request (a subset of `NEEDS`).
-    fn needs(_req: &Request) -> &'static [StageId] {
+    /// The stages this one reads for these inputs (a subset of `NEEDS`).
+    fn needs(_inputs: &Self::Inputs) -> &'static [StageId] {
         Self::NEEDS
     }
 
@@ -62,7 +69,7 @@ pub trait Stage: Default + Send + 'static {
     ) -> Result<Poll<Self::Output>, SolveError>;
 
     /// The output as the caller sees it (`None`: internal).
-    fn publish(&mut self, _output: &Self::Output, _req: &Request) -> Option<Published> {
+    fn publish(&mut self, _output: &Self::Output) -> Option<Published> {
         None
     }
 }
@@ -107,8 +114,8 @@ pub(super) enum Standing {
 /// A slot, with its stage type erased (the registry holds one per stage).
 pub(super) trait AnySlot: Send {
     fn standing(&self, req: &Request) -> Standing;
-    /// One unit of work; stores the output when the stage finishes.
-    fn poll(&mut self, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<()>, SolveError>;
+    /// One unit of work towards `req`'s output; stores the output when the stage finishes.
+    fn poll(&mut self, req: &Request, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<()>, SolveError>;
     fn publish(&mut self, req: &Request) -> Option<Published>;
     fn runs(&self) -> usize;
     fn as_any(&self) -> &dyn Any;
@@ -124,8 +131,8 @@ impl<S: Registered> AnySlot for Slot<S> {
         }
     }
 
-    fn poll(&mut self, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<()>, SolveError> {
-        let Some(inputs) = S::inputs(ctx.req) else { return Ok(Progress::Done(())) };
+    fn poll(&mut self, req: &Request, ctx: &mut Ctx<'_>, cancel: &dyn Cancel) -> Result<Poll<()>, SolveError> {
+        let Some(inputs) = S::inputs(req) else { return Ok(Progress::Done(())) };
         Ok(match self.stage.poll(&inputs, ctx, cancel)? {
             Progress::Done(out) => {
                 self.output.put(inputs, out);
@@ -139,7 +146,7 @@ impl<S: Registered> AnySlot for Slot<S> {
     fn publish(&mut self, req: &Request) -> Option<Published> {
         let inputs = S::inputs(req)?;
         let Self { stage, output, .. } = self;
-        stage.publish(output.get(&inputs)?, req)
+        stage.publish(output.get(&inputs)?)
     }
 
     fn runs(&self) -> usize {
@@ -162,24 +169,20 @@ pub(super) struct Reader {
     pub needs: &'static [StageId],
 }
 
-/// What a running stage sees: the request, the outputs of the stages it declared in `NEEDS`, and a way to
-/// run nested requests ([`Ctx::nested`]).
+/// What a running stage sees: the outputs of the stages it declared in `NEEDS`, where solves start, and a way
+/// to run nested requests ([`Ctx::nested`]). Not the request: a stage reads the case only through its inputs.
 pub struct Ctx<'a> {
     pub(super) slots: &'a mut [Option<Box<dyn AnySlot>>],
-    pub(super) req: &'a Request,
     pub(super) reader: Reader,
+    pub(super) start: Start,
     pub(super) nested: fn() -> Box<dyn Solver>,
 }
 
 impl Ctx<'_> {
+    /// Where the request's solves start (not part of any key: module documentation).
     #[must_use]
-    pub fn case(&self) -> &Case {
-        &self.req.case
-    }
-
-    #[must_use]
-    pub fn request(&self) -> &Request {
-        self.req
+    pub fn start(&self) -> Start {
+        self.start
     }
 
     /// A fresh computation of its own, to run whole requests on (the speed sweep's points).
@@ -196,33 +199,33 @@ impl Ctx<'_> {
         })
     }
 
-    /// The inputs `S`'s output must have been computed for.
-    fn check<S: Registered>(&self) -> Result<S::Inputs, SolveError> {
-        if !self.reader.needs.contains(&S::ID) {
-            return Err(self.refuse::<S>("not declared in NEEDS"));
+    fn declared<S: Registered>(&self) -> Result<(), SolveError> {
+        if self.reader.needs.contains(&S::ID) {
+            Ok(())
+        } else {
+            Err(self.refuse::<S>("not declared in NEEDS"))
         }
-        S::inputs(self.req).ok_or_else(|| self.refuse::<S>("it does not apply to this request"))
     }
 
-    /// The current output of stage `S`.
+    /// The output of stage `S` computed for `inputs` (derived from the reader's own inputs).
     ///
     /// # Errors
-    /// [`InternalError::StageRead`] when `S` is not declared in the reader's `NEEDS` or its output is not
-    /// current (a bug in the registration order).
-    pub fn output<S: Registered>(&self) -> Result<&S::Output, SolveError> {
-        let inputs = self.check::<S>()?;
+    /// [`InternalError::StageRead`] when `S` is not declared in the reader's `NEEDS` or has no output for
+    /// `inputs` (a bug in the registration order or in a builder).
+    pub fn output<S: Registered>(&self, inputs: &S::Inputs) -> Result<&S::Output, SolveError> {
+        self.declared::<S>()?;
         let slot = self.slots[S::ID.index()].as_ref().and_then(|s| s.as_any().downcast_ref::<Slot<S>>());
-        slot.and_then(|s| s.output.get(&inputs)).ok_or_else(|| self.refuse::<S>("its output is not current"))
+        slot.and_then(|s| s.output.get(inputs)).ok_or_else(|| self.refuse::<S>("its output is not current"))
     }
 
-    /// The current output of stage `S`, to update in place (the films keep their last state).
+    /// The output of stage `S` computed for `inputs`, to update in place (the films keep their last state).
     ///
     /// # Errors
     /// As [`Self::output`].
-    pub fn output_mut<S: Registered>(&mut self) -> Result<&mut S::Output, SolveError> {
-        let inputs = self.check::<S>()?;
+    pub fn output_mut<S: Registered>(&mut self, inputs: &S::Inputs) -> Result<&mut S::Output, SolveError> {
+        self.declared::<S>()?;
         let missing = self.refuse::<S>("its output is not current");
         let slot = self.slots[S::ID.index()].as_mut().and_then(|s| s.as_any_mut().downcast_mut::<Slot<S>>());
-        slot.and_then(|s| s.output.get_mut(&inputs)).ok_or(missing)
+        slot.and_then(|s| s.output.get_mut(inputs)).ok_or(missing)
     }
 }

@@ -444,8 +444,9 @@ fn every_stage_reads_only_stages_registered_before_it() {
         }
     }
     // What a wanted stage pulls in for a request: the reduction of an isothermal case reads the films, the
-    // equilibrium and the coefficients; of a THD case the thermal loop instead of the equilibrium; the speed
-    // sweep runs nested stages and reads none.
+    // equilibrium and the coefficients; of a THD case the thermal loop instead of the equilibrium; the FRF
+    // stage the equilibrium — of a case with `[hydraulics]`: where it does not apply it pulls in nothing; the
+    // speed sweep runs nested stages and reads none.
     let needed = |req: &Request| -> Vec<StageId> {
         Stages::needed(req).iter().zip(StageId::ALL).filter(|(n, _)| **n).map(|(_, s)| *s).collect()
     };
@@ -455,7 +456,13 @@ fn every_stage_reads_only_stages_registered_before_it() {
     assert_eq!(needed(&Request::solution(iso.clone())), vec![Films, Equilibrium, Coefficients, Reduction]);
     assert_eq!(needed(&Request::solution(thd.clone())), vec![Films, Thermal, Coefficients, Reduction]);
     assert_eq!(
-        needed(&Request::of(thd, &[Reduction, Frf])),
+        needed(&Request::of(thd.clone(), &[Reduction, Frf])),
+        vec![Films, Thermal, Coefficients, Reduction, Frf]
+    );
+    let mut rig = load_case(include_str!("../../../cases/test-rig-pub5.toml"), &[]).unwrap().1;
+    rig.thermal = thd.thermal;
+    assert_eq!(
+        needed(&Request::of(rig, &[Reduction, Frf])),
         vec![Films, Equilibrium, Thermal, Coefficients, Reduction, Frf]
     );
     assert_eq!(needed(&Request::of(iso, &[SpeedSweep])), vec![SpeedSweep]);
@@ -467,25 +474,30 @@ fn a_stage_reads_only_what_it_declared_and_only_when_current() {
     let req = Request::solution(case(&[]));
     let reader = |id: StageId| crate::bearing::stages::stage::Reader { label: id.label(), needs: id.declared() };
     let nested = || -> Box<dyn Solver> { Box::new(Stages::new()) };
-    let refusal = |id: StageId, s: &mut Stages| -> String {
-        let ctx = Ctx { slots: &mut s.slots, req: &req, reader: reader(id), nested };
+    let coefficients = |req: &Request| coefficients::CoefficientsInputs::of(&req.case);
+    let refusal = |id: StageId, s: &mut Stages, req: &Request| -> String {
+        let ctx = Ctx { slots: &mut s.slots, reader: reader(id), start: Start::Warm, nested };
         match id {
-            StageId::Films => ctx.output::<equilibrium::EquilibriumStage>().map(|_| ()),
-            StageId::Coefficients => ctx.output::<thermal::ThermalStage>().map(|_| ()),
-            _ => ctx.output::<coefficients::CoefficientsStage>().map(|_| ()),
+            StageId::Films => {
+                ctx.output::<equilibrium::EquilibriumStage>(&equilibrium::EquilibriumInputs::of(&req.case)).map(|_| ())
+            }
+            StageId::Coefficients => {
+                let thd = case(&["thermal.model=\"thd\""]);
+                ctx.output::<thermal::ThermalStage>(&thermal::ThermalInputs::of(&thd).unwrap()).map(|_| ())
+            }
+            _ => ctx.output::<coefficients::CoefficientsStage>(&coefficients(req)).map(|_| ()),
         }
         .map_or_else(|e| e.to_string(), |()| "read".into())
     };
     // The films declare no upstream stage.
-    assert!(refusal(StageId::Films, &mut s).contains("not declared in NEEDS"));
+    assert!(refusal(StageId::Films, &mut s, &req).contains("not declared in NEEDS"));
     // Declared, but not computed yet.
-    assert!(refusal(StageId::Reduction, &mut s).contains("not current"));
+    assert!(refusal(StageId::Reduction, &mut s, &req).contains("not current"));
     s.run(&req, &NoCancel).unwrap();
-    assert_eq!(refusal(StageId::Reduction, &mut s), "read");
-    // The thermal stage does not apply to an isothermal case.
-    assert!(refusal(StageId::Coefficients, &mut s).contains("does not apply"));
+    assert_eq!(refusal(StageId::Reduction, &mut s, &req), "read");
+    // The thermal stage has not run for this isothermal case.
+    assert!(refusal(StageId::Coefficients, &mut s, &req).contains("not current"));
     // An edit that changes the coefficients' inputs makes the old output unreadable.
     let edited = Request::solution(case(&["operating.load_n=8000"]));
-    let ctx = Ctx { slots: &mut s.slots, req: &edited, reader: reader(StageId::Reduction), nested };
-    assert!(ctx.output::<coefficients::CoefficientsStage>().is_err());
+    assert!(refusal(StageId::Reduction, &mut s, &edited).contains("not current"));
 }

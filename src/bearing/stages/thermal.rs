@@ -18,10 +18,19 @@ use crate::bearing::stages::id::StageId;
 use crate::bearing::stages::request::{Request, Start};
 use crate::bearing::stages::stage::{Ctx, Poll, Stage};
 use crate::bearing::thermal::{ThdRun, ThermalModel, ThermalParams};
-use crate::model::{Case, Lubricant, MeshSpec, Operating, PadFilmBc, Thermal, ThermalModelKind};
+use crate::model::{Bearing, Case, Lubricant, MeshSpec, Operating, Pad, PadFilmBc, Thermal, ThermalModelKind};
 
 /// Outer iterations a THD loop typically needs (for the progress fraction only).
 const THERMAL_ITERATIONS_EXPECTED: f64 = 10.0;
+
+/// The inputs of the THD solution: the case as it sees it ([`super::view`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThermalInputs {
+    /// The equilibrium's view, the pad solids' element layers, the oil's c_p and k, the supply temperature
+    /// and every `[thermal]` value; when the pads grow thermally (`thermal.pad_expansion_ppm_per_k ≠ 0`) also
+    /// each pad's E, ν and density and the fidelity (the growth solid's layer step).
+    pub case: Case,
+}
 
 /// What the pad solids and thermal systems are built from.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,20 +39,6 @@ pub struct PadSolidsInputs {
     pub pad_radial_elements: usize,
     /// Whether the film is adiabatic to the pad (BC1: a pad without a solid is allowed).
     pub bc1: bool,
-}
-
-/// The inputs of the THD solution.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ThermalInputs {
-    pub equilibrium: EquilibriumInputs,
-    pub solids: PadSolidsInputs,
-    pub specific_heat_j_per_kg_k: f64,
-    pub conductivity_w_per_m_k: f64,
-    pub supply_temperature_c: f64,
-    /// Every `[thermal]` value.
-    pub thermal: Thermal,
-    /// Per pad E [Pa] and ν, when the pads grow thermally (`thermal.pad_expansion_ppm_per_k > 0`).
-    pub pad_elastic: Option<Vec<[f64; 2]>>,
 }
 
 impl ThermalInputs {
@@ -60,7 +55,7 @@ impl ThermalInputs {
             thermal,
             hydraulics: _,
             limits: _,
-            tuning: _,
+            tuning: _, // the equilibrium's view holds every tuning key
         } = case;
         let Lubricant { name: _, viscosity: _, density_kg_per_m3: _, specific_heat_j_per_kg_k, conductivity_w_per_m_k } =
             lubricant;
@@ -72,10 +67,10 @@ impl ThermalInputs {
             injection_pressure_pa: _,
             injection_temperature_c: _,
             supply_flow_m3_s: _,
-            excitation_ratio: _, // the rest: EquilibriumInputs
+            excitation_ratio: _, // the rest: the equilibrium's
         } = operating;
         let MeshSpec {
-            fidelity: _,
+            fidelity, // the growth solid's layer step
             circumferential_elements: _,
             axial_elements: _,
             orifice_elements: _,
@@ -86,7 +81,7 @@ impl ThermalInputs {
         // Every field is read (kept whole below).
         let Thermal {
             model,
-            pad_film_bc,
+            pad_film_bc: _,
             convection_w_per_m2_k: _,
             ambient_temperature_c: _,
             pad_conductivity_w_per_m_k: _,
@@ -98,24 +93,84 @@ impl ThermalInputs {
             reference_temperature_c: _,
             housing_expansion_per_k: _,
             housing_temperature_c: _,
-            feeding: _, // kept whole below
+            feeding: _,
         } = thermal;
-        // Thermal growth of the pads reads their elasticity (E, ν) besides the pad solids.
-        let pad_elastic = (*pad_expansion_per_k != 0.0)
-            .then(|| bearing.pads.iter().map(|p| [p.youngs_modulus_pa, p.poisson_ratio]).collect());
-        (*model == ThermalModelKind::Thd).then(|| Self {
-            equilibrium: EquilibriumInputs::of(case),
-            solids: PadSolidsInputs {
-                films: FilmsInputs::of(case),
-                pad_radial_elements: *pad_radial_elements,
-                bc1: matches!(pad_film_bc, PadFilmBc::Bc1),
+        if *model != ThermalModelKind::Thd {
+            return None;
+        }
+        // Thermal growth of the pads reads their material and the fidelity besides the pad solids.
+        let growth = *pad_expansion_per_k != 0.0;
+        let equilibrium = EquilibriumInputs::of(case).case;
+        let case = Case {
+            bearing: Bearing {
+                pads: bearing
+                    .pads
+                    .iter()
+                    .zip(&equilibrium.bearing.pads)
+                    .map(|(p, e)| if growth { growing_pad(p, e) } else { e.clone() })
+                    .collect(),
+                ..equilibrium.bearing
             },
-            specific_heat_j_per_kg_k: *specific_heat_j_per_kg_k,
-            conductivity_w_per_m_k: *conductivity_w_per_m_k,
-            supply_temperature_c: *supply_temperature_c,
+            lubricant: Lubricant {
+                specific_heat_j_per_kg_k: *specific_heat_j_per_kg_k,
+                conductivity_w_per_m_k: *conductivity_w_per_m_k,
+                ..equilibrium.lubricant
+            },
+            operating: Operating { supply_temperature_c: *supply_temperature_c, ..equilibrium.operating },
+            mesh: MeshSpec {
+                pad_radial_elements: *pad_radial_elements,
+                fidelity: if growth { *fidelity } else { equilibrium.mesh.fidelity },
+                ..equilibrium.mesh
+            },
             thermal: *thermal,
-            pad_elastic,
-        })
+            ..equilibrium
+        };
+        Some(Self { case })
+    }
+
+    /// The films it solves on.
+    #[must_use]
+    pub fn films(&self) -> FilmsInputs {
+        FilmsInputs::of(&self.case)
+    }
+
+    /// What the pad solids and thermal systems are built from.
+    #[must_use]
+    pub fn solids(&self) -> PadSolidsInputs {
+        PadSolidsInputs {
+            films: self.films(),
+            pad_radial_elements: self.case.mesh.pad_radial_elements,
+            bc1: matches!(self.case.thermal.pad_film_bc, PadFilmBc::Bc1),
+        }
+    }
+}
+
+/// The equilibrium's view of a pad (`equilibrium`) with the material its thermal growth reads. Exhaustive
+/// (no `..`).
+fn growing_pad(pad: &Pad, equilibrium: &Pad) -> Pad {
+    let Pad {
+        kind: _,
+        leading_edge_rad: _,
+        arc_rad: _,
+        pivot_rad: _,
+        offset: _,
+        clearance_m: _,
+        preload: _,
+        thickness_m: _,
+        pivot_stiffness_n_per_m: _,
+        pivot_transverse_stiffness_n_per_m: _,
+        massless: _,
+        pivot_contact: _,
+        orifices: _, // the equilibrium's view
+        density_kg_per_m3,
+        youngs_modulus_pa,
+        poisson_ratio,
+    } = pad;
+    Pad {
+        density_kg_per_m3: *density_kg_per_m3,
+        youngs_modulus_pa: *youngs_modulus_pa,
+        poisson_ratio: *poisson_ratio,
+        ..equilibrium.clone()
     }
 }
 
@@ -150,20 +205,21 @@ impl Stage for ThermalStage {
         ctx: &mut Ctx<'_>,
         cancel: &dyn Cancel,
     ) -> Result<Poll<Arc<Solution>>, SolveError> {
-        let case = ctx.case().clone();
-        let cold = ctx.request().start == Start::Cold;
-        let model = ctx.output_mut::<FilmsStage>()?;
-        install_structure(model, &case)?;
-        let tm = self.solids.get_or_try_insert(&inputs.solids, || ThermalModel::new(&case, model))?;
+        let case = &inputs.case;
+        let solids = inputs.solids();
+        let cold = ctx.start() == Start::Cold;
+        let model = ctx.output_mut::<FilmsStage>(&solids.films)?;
+        install_structure(model, case)?;
+        let tm = self.solids.get_or_try_insert(&solids, || ThermalModel::new(case, model))?;
         let mut running = match self.run.take(inputs) {
             Some(r) => r,
             None => {
-                let start = if cold { None } else { self.warm.get(&inputs.solids.films).cloned() };
+                let start = if cold { None } else { self.warm.get(&solids.films).cloned() };
                 let warm = start.is_some();
-                Running { run: ThdRun::new(model, tm, &case, ThermalParams::of(&case), start.as_deref()), warm }
+                Running { run: ThdRun::new(model, tm, case, ThermalParams::of(case), start.as_deref()), warm }
             }
         };
-        let state = match running.run.step(model, tm, &case, cancel) {
+        let state = match running.run.step(model, tm, case, cancel) {
             Ok(Some(state)) => state,
             Ok(None) => {
                 #[allow(clippy::cast_precision_loss)]
@@ -178,8 +234,8 @@ impl Stage for ThermalStage {
             }
             Err(e) => return Err(e),
         };
-        let solution = assemble_thd_solution(model, &case, &state);
-        self.warm.put(inputs.solids.films.clone(), solution.coordinates.clone());
+        let solution = assemble_thd_solution(model, case, &state);
+        self.warm.put(solids.films, solution.coordinates.clone());
         Ok(Progress::Done(Arc::new(solution)))
     }
 }

@@ -67,7 +67,7 @@ pub use row::{Allowed, Editor, Fallback, Group, KeySpec, Widget};
 
 pub use bearing::MAX_CLEARANCE_RATIO;
 pub use feeding::GROOVE_CARRY_OVER;
-pub use numerics::{MAX_TOUCHDOWN_RATIO, MAX_TRANSITION_REYNOLDS};
+pub use numerics::{DEFAULT_MAX_NODES, MAX_TOUCHDOWN_RATIO, MAX_TRANSITION_REYNOLDS};
 
 /// Temperatures [°C]: from arctic start-up to well above any oil's flash point.
 const TEMPERATURE: Range = Range::closed(-60.0, 400.0);

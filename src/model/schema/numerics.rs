@@ -4,9 +4,15 @@ use super::super::error::Range;
 use super::Group::{Fidelity, Physics};
 use super::Widget::{Choice, Custom, Optional};
 use super::{Fallback, KeySpec};
-use crate::model::budget::DEFAULT_MAX_NODES;
 use crate::model::file::{CaseFile, OneOrMany};
 use crate::units::{COUNT, DEG, NODES, ONE, UM};
+
+/// Default of `mesh.max_nodes` (the node budget, [`crate::model::budget`]): about 1 GB. Measured peaks
+/// (release build, `/usr/bin/time`): the isothermal compressor bearing with 16 k / 51 k / 114 k film nodes uses
+/// 35 / 93 / 204 MB (≈ 1.8 kB per node), Fillon's THD bearing with 175 k nodes (165 k in pad solids) 358 MB
+/// (≈ 2 kB per node); time grows as about N^1.2 (docs/PERFORMANCE.md, cost growth). The reference fidelity of
+/// every shipped case needs less than a quarter of it (tests/suite/node_budget.rs).
+pub const DEFAULT_MAX_NODES: usize = 500_000;
 
 type Key = KeySpec;
 

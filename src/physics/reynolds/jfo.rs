@@ -97,6 +97,15 @@ pub(super) enum ThetaRule {
     Full,
 }
 
+/// The correction of the base factorisation (`jfo_update.rs` makes and applies it): changed columns,
+/// `W = M₀⁻¹ U` (column-major, n × k) and the LU of the capacitance matrix `I + E_Jᵀ W`.
+#[derive(Debug, Clone)]
+pub(super) struct Update {
+    pub(super) nodes: Vec<usize>,
+    pub(super) w: Vec<f64>,
+    pub(super) capacitance: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+}
+
 /// The mass-conserving solver's state: built once per mesh, values refilled per solve.
 #[derive(Debug, Clone)]
 pub(super) struct JfoState {
@@ -131,7 +140,7 @@ pub(super) struct JfoState {
     pub(super) m_base: Vec<f64>,
     pub(super) base_cav: Vec<bool>,
     /// Low-rank correction of the factorisation for the columns changed since (`jfo_update.rs`).
-    pub(super) update: Option<crate::physics::reynolds::jfo_update::Update>,
+    pub(super) update: Option<Update>,
     /// Scale of the θ columns [Pa]: the unknown of a cavitated node is `θ · scale`.
     pub(super) scale: f64,
     /// Inlet film fraction of the last solve.

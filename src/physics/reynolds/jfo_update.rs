@@ -27,7 +27,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::fem::LuSolver;
-use crate::physics::reynolds::jfo::{JfoState, ThetaRule};
+use crate::physics::reynolds::jfo::{JfoState, ThetaRule, Update};
 use crate::physics::reynolds::FilmError;
 
 /// Most changed columns handled by an update before a refactorisation (each costs one back-substitution).
@@ -39,15 +39,6 @@ const RESIDUAL_TOL: f64 = 1e-10;
 
 /// Smallest pivot of the capacitance matrix, relative to its largest entry, accepted for an update.
 const MIN_PIVOT: f64 = 1e-8;
-
-/// The correction of the base factorisation: changed columns, `W = M₀⁻¹ U` (column-major, n × k) and the
-/// LU of the capacitance matrix `I + E_Jᵀ W`.
-#[derive(Debug, Clone)]
-pub(super) struct Update {
-    nodes: Vec<usize>,
-    w: Vec<f64>,
-    capacitance: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
-}
 
 impl JfoState {
     /// Makes the solver represent the mixed matrix in `m` for the cavitated set `cav`: by a low-rank update
