@@ -2,7 +2,7 @@
 //! and one runner per platform behind [`Runner`]:
 //!
 //! - native: a named thread per slot ([`native`]);
-//! - web: a web worker per slot ([`web`], the worker's side in [`remote`] and [`web_worker`]), or, where no
+//! - web: a web worker per slot ([`web`], the worker's side in [`remote`], [`worker_side`] and [`web_worker`]), or, where no
 //!   worker starts, the job stepped inside the page's frames within a time budget ([`stepped`]).
 //!
 //! A **slot** is one [`Runner`]: the edited case's solve, the pins' re-solves, the sweep view's points, the
@@ -32,6 +32,7 @@ mod tests;
 mod web;
 #[cfg(target_arch = "wasm32")]
 pub mod web_worker;
+pub mod worker_side;
 
 pub use job::{Event, Job, JobError, Progress, Step};
 

@@ -4,11 +4,11 @@
 //!
 //! - The page posts an [`Order`]: the job's registry name, its id and the job. The worker reads the header
 //!   first ([`Header`]), finds the job type by name in [`super::registry`] and decodes the whole order as
-//!   that type; a newer order of the same name supersedes the job under way (the slot's [`Job::Keep`] —
-//!   the solver stages' cache — stays).
-//! - The worker steps its jobs a tick at a time ([`WorkerSide::tick`]) and posts [`Report`]s: each output,
-//!   the last progress of the tick, the end. A report that cannot be encoded reaches the page as its job's
-//!   failure (never a silent hang).
+//!   that type into its [`Slot`]; a newer order of the same name supersedes the job under way (the slot's
+//!   [`Job::Keep`] — the solver stages' cache — stays). The worker's state is [`super::worker_side`].
+//! - The worker steps its jobs a tick at a time and posts [`Report`]s: each output, the last progress of the
+//!   tick, the end. A report that cannot be encoded reaches the page as its job's failure (never a silent
+//!   hang).
 
 use serde::{Deserialize, Serialize};
 
@@ -27,9 +27,9 @@ pub struct Order<J> {
 
 /// An order's header: enough to find the job type.
 #[derive(Deserialize)]
-struct Header {
-    kind: String,
-    id: u64,
+pub struct Header {
+    pub kind: String,
+    pub id: u64,
 }
 
 /// What the worker posts back.
@@ -102,52 +102,6 @@ impl<J: Job> RemoteSlot for Slot<J> {
 
     fn busy(&self) -> bool {
         self.stepped.busy()
-    }
-}
-
-/// The worker's state: a slot per job type it has been sent.
-#[derive(Default)]
-pub struct WorkerSide {
-    slots: Vec<Box<dyn RemoteSlot>>,
-}
-
-impl WorkerSide {
-    /// Takes an order; the reports to post at once (an order that cannot be read fails its job).
-    pub fn receive(&mut self, bytes: &[u8]) -> Vec<Vec<u8>> {
-        let header: Header = match from_bytes(bytes) {
-            Ok(h) => h,
-            Err(e) => {
-                log::error!("solver worker: an order does not decode: {e}");
-                return Vec::new();
-            }
-        };
-        let i = match self.slots.iter().position(|s| s.kind() == header.kind) {
-            Some(i) => i,
-            None => match super::registry::slot(&header.kind) {
-                Some(slot) => {
-                    self.slots.push(slot);
-                    self.slots.len() - 1
-                }
-                None => return vec![failure(header.id, format!("the worker knows no job '{}'", header.kind))],
-            },
-        };
-        match self.slots[i].start(bytes) {
-            Ok(_) => Vec::new(),
-            Err(e) => vec![failure(header.id, e)],
-        }
-    }
-
-    /// Steps every busy slot, `budget_s` shared between them; their reports.
-    pub fn tick(&mut self, budget_s: f64) -> Vec<Vec<u8>> {
-        let busy = self.slots.iter().filter(|s| s.busy()).count().max(1);
-        #[allow(clippy::cast_precision_loss)]
-        let share = budget_s / busy as f64;
-        self.slots.iter_mut().filter(|s| s.busy()).flat_map(|s| s.tick(share)).collect()
-    }
-
-    #[must_use]
-    pub fn busy(&self) -> bool {
-        self.slots.iter().any(|s| s.busy())
     }
 }
 

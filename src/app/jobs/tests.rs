@@ -3,8 +3,9 @@
 //! and a job that cannot be read fails by name.
 
 use super::job::{Event, Job};
-use super::remote::{order_bytes, read_report, WorkerSide};
+use super::remote::{order_bytes, read_report};
 use super::solve::{stage_of, SolveJob};
+use super::worker_side::WorkerSide;
 use super::Runner;
 use crate::bearing::stages::{Outcome, Request, StageId};
 use crate::model::load_case;

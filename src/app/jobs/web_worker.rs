@@ -8,7 +8,7 @@ use std::cell::RefCell;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::JsCast as _;
 
-use super::remote::WorkerSide;
+use super::worker_side::WorkerSide;
 
 /// Work between two looks at the message queue [s].
 pub const TICK_S: f64 = 0.1;
