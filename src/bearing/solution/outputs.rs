@@ -832,11 +832,12 @@ mod tests {
         assert!(unique(OUTPUTS.iter().flat_map(|o| o.python.iter().map(|p| p.name())).collect()));
     }
 
-    /// The table's top-level keys are the JSON's scalar keys as `tiltpad solve --json` has always written them.
+    /// The JSON's scalar keys as `tiltpad solve --json` has always written them come from the table (an added
+    /// row may add a key; none may go).
     #[test]
     fn the_table_writes_the_top_level_scalars() {
         let keys: Vec<&str> = OUTPUTS.iter().filter_map(Output::json_key).collect();
-        let expected = [
+        for key in [
             "eccentricity_ratio",
             "attitude_angle_deg",
             "load_magnitude_n",
@@ -849,7 +850,8 @@ mod tests {
             "churning_power_w",
             "total_power_loss_w",
             "friction_torque_nm",
-        ];
-        assert_eq!(keys, expected);
+        ] {
+            assert!(keys.contains(&key), "{key}");
+        }
     }
 }
