@@ -239,7 +239,8 @@ const ROW: Output = Output {
 const K_MEANING: &str = "Reduced stiffness: force along the first axis per displacement along the second.";
 const C_MEANING: &str = "Reduced damping: force along the first axis per velocity along the second.";
 
-/// Every output, in the order of the CSV columns and of the panel within each section.
+/// Every output, in the order of the CSV columns and of the panel within each section. A new row goes at the
+/// end: its section puts it in its place in the panel, and the CSV's columns keep their positions.
 pub const OUTPUTS: &[Output] = &[
     // Operating point.
     Output {
