@@ -167,6 +167,9 @@ class Solution:
     @property
     def h_min_um(self) -> float: ...
     @property
+    def h_min_angle_deg(self) -> float:
+        """Where the film is thinnest: angle from +x, counter-clockwise [deg]."""
+    @property
     def p_max_pa(self) -> float: ...
     @property
     def p_max_mpa(self) -> float: ...

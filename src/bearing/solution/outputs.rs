@@ -753,6 +753,19 @@ pub const OUTPUTS: &[Output] = &[
         value: |s| count(s.derived.film_nodes),
         ..ROW
     },
+    Output {
+        label: "h_min at",
+        meaning: "Where the film is thinnest: the angle of the smallest film thickness on any pad, from +x \
+                  counter-clockwise (the frame of the pivot angles).",
+        unit: DEGREES,
+        digits: Digits::Decimals(1),
+        json: "/h_min_angle_deg",
+        csv: Some("h_min_angle_deg"),
+        python: &[Py::Si("h_min_angle_deg")],
+        compare: Compare::Difference,
+        value: |s| s.pads.iter().min_by(|a, b| a.h_min_m.total_cmp(&b.h_min_m)).map(|p| p.h_min_angle_deg),
+        ..ROW
+    },
 ];
 
 #[cfg(test)]
