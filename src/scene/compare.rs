@@ -6,9 +6,9 @@
 //! cells up with a pin's, column by column, with the difference `live − pinned` and, for a magnitude whose
 //! pinned value is not zero, the relative difference `(live − pinned) / |pinned|`; how each quantity compares,
 //! its label, its unit and its group (whose values share one unit prefix) are the table of outputs'
-//! ([`crate::bearing::solution::outputs`]): an angle or a Celsius temperature compares by its difference. [`pins_csv`] writes the pins
-//! and the live result as one table (one row each, every column); [`pin_name`] keeps the rows' names
-//! unambiguous (no pin named [`LIVE_ROW`], no two pins of one name).
+//! ([`crate::bearing::solution::outputs`]): an angle or a Celsius temperature compares by its difference.
+//! [`pins_csv`] writes the pins and the live result as one table (one row each, every column); [`pin_name`]
+//! keeps the rows' names unambiguous (no pin named [`LIVE_ROW`], no two pins of one name).
 
 use serde::{Deserialize, Serialize};
 

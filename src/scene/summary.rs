@@ -161,11 +161,33 @@ fn structural_rows(section: Section, s: &Solution) -> (Vec<Row>, Vec<Row>) {
                 "How heat passes between film and pad: BC1 adiabatic film, BC2 exchange coefficient, BC3 Knight & \
                  Barrett parabola.",
             )];
+            let viscosity = rep.viscosity_change.last().map_or_else(|| "—".into(), |v| format!("{v:.1e}"));
             let last = vec![
-                row("Inlet T per pad", inlets.join(", "), "°C", "Leading-edge oil temperature of each pad from the groove mixing of hot carried-over oil with fresh supply."),
-                row("Thermal loop", rep.outer_iterations.to_string(), "iterations", "Outer iterations of equilibrium + temperatures until the viscosity field converged."),
-                row("Thermal loop time", format!("{:.0}", MS.from_si(rep.seconds)), MS.symbol, "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing)."),
-                row("Viscosity change", rep.viscosity_change.last().map_or_else(|| "—".into(), |v| format!("{v:.1e}")), "–", "Largest nodal relative viscosity change of the last outer iteration (converged below 1e-4)."),
+                row(
+                    "Inlet T per pad",
+                    inlets.join(", "),
+                    "°C",
+                    "Leading-edge oil temperature of each pad from the groove mixing of hot carried-over oil with \
+                     fresh supply.",
+                ),
+                row(
+                    "Thermal loop",
+                    rep.outer_iterations.to_string(),
+                    "iterations",
+                    "Outer iterations of equilibrium + temperatures until the viscosity field converged.",
+                ),
+                row(
+                    "Thermal loop time",
+                    format!("{:.0}", MS.from_si(rep.seconds)),
+                    MS.symbol,
+                    "Wall time of the thermal loop (equilibria, film energy, pad conduction, mixing).",
+                ),
+                row(
+                    "Viscosity change",
+                    viscosity,
+                    "–",
+                    "Largest nodal relative viscosity change of the last outer iteration (converged below 1e-4).",
+                ),
             ];
             (first, last)
         }

@@ -61,7 +61,8 @@ const QUANTITY_MAX: f32 = 230.0;
 
 /// The comparison table's column widths in a panel `room` points wide with `gap` between columns: the
 /// quantity, live, pinned, Δ (only when it fits beside the others: it is in the export and the hover of
-/// the change) and the change (in per cent for a magnitude, the difference for an angle or a temperature). Fixed from the first frame, so a new pin's table never lays out over itself.
+/// the change) and the change (in per cent for a magnitude, the difference for an angle or a temperature).
+/// Fixed from the first frame, so a new pin's table never lays out over itself.
 #[must_use]
 pub fn column_widths(room: f32, gap: f32) -> Vec<f32> {
     let numbers = |n: usize| n as f32 * (NUMBER_WIDTH + gap) + CHANGE_WIDTH + gap;
