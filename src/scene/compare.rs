@@ -104,37 +104,34 @@ impl CompareRow {
         self.difference.map(|d| if d.abs() <= 1e-9 * size { 0.0 } else { d })
     }
 
-    /// The change as the table reads it, by the quantity's rule: a relative one in per cent (`+24.2 %`), a
-    /// difference in the quantity's unit (`-10.9 °`); `—` without both values.
+    /// The change as the table reads it, by the quantity's rule: a relative one in per cent (`+24.2%`), a
+    /// difference in the quantity's unit (`-10.9°`); `—` without both values. At most [`CHANGE_CHARS`]
+    /// characters (fewer decimals where more would not fit), so the column stays narrow.
     #[must_use]
     pub fn change_text(&self) -> String {
         let Some(d) = self.change() else { return "—".into() };
-        match self.rule {
-            Compare::Difference => {
-                let t = match self.digits {
-                    Digits::Decimals(n) => format!("{:+.n$}", d / self.scale),
-                    _ => signed(d / self.scale),
+        match (self.rule, self.relative) {
+            (Compare::Difference, _) => {
+                let decimals = match self.digits {
+                    Digits::Decimals(n) => n,
+                    _ => 3,
                 };
-                format!("{t} {}", self.unit)
+                fitted(d / self.scale, decimals, &self.unit)
             }
-            _ => match self.relative {
-                Some(_) if d == 0.0 => "+0.0 %".into(),
-                Some(x) if (100.0 * x).abs() < 999.95 => format!("{:+.1} %", 100.0 * x),
-                Some(x) => format!("{:+.0} %", 100.0 * x),
-                None => "—".into(),
-            },
+            (_, Some(x)) => fitted(if d == 0.0 { 0.0 } else { 100.0 * x }, 1, "%"),
+            (_, None) => "—".into(),
         }
     }
 }
 
-/// Four significant digits with a sign (`+1.25`, `-10.9`).
-fn signed(x: f64) -> String {
-    let t = crate::scene::summary::sig4(x);
-    if x > 0.0 {
-        format!("+{t}")
-    } else {
-        t
-    }
+/// Most characters of a change ([`CompareRow::change_text`]).
+pub const CHANGE_CHARS: usize = 6;
+
+/// `x` with a sign, at most `decimals` decimals and `unit` right after it, in [`CHANGE_CHARS`] characters
+/// where fewer decimals make it fit (`-10.9°` rather than `-10.90°`).
+fn fitted(x: f64, decimals: usize, unit: &str) -> String {
+    let text = |n: usize| format!("{x:+.n$}{unit}");
+    (0..=decimals).rev().map(text).find(|t| t.chars().count() <= CHANGE_CHARS).unwrap_or_else(|| text(0))
 }
 
 /// The live solution against a pin, every compared output column (solver bookkeeping left out).
@@ -295,10 +292,13 @@ mod tests {
         let angle = rows.iter().find(|r| r.column == "attitude_angle_deg").unwrap();
         assert_eq!((angle.rule, angle.relative, angle.unit.as_str()), (Compare::Difference, None, "°"));
         assert!((angle.difference.unwrap() + 10.9).abs() < 1e-12, "{angle:?}");
-        assert_eq!(angle.change_text(), "-10.90 °");
+        assert_eq!(angle.change_text(), "-10.9°");
         let eps = rows.iter().find(|r| r.column == "eccentricity_ratio").unwrap();
         let percent = 100.0 * (live.eccentricity_ratio - 0.5) / 0.5;
-        assert_eq!(eps.change_text(), format!("{percent:+.1} %"));
+        assert_eq!(eps.change_text(), format!("{percent:+.1}%"));
+        assert_eq!(fitted(315.52, 1, "%"), "+316%");
+        assert_eq!(fitted(5.23, 1, "°C"), "+5.2°C");
+        assert_eq!(fitted(-12.34, 1, "°C"), "-12°C");
         // Celsius temperatures compare by their difference as well.
         for c in ["t_max_film_c", "t_max_pad_c", "t_journal_c"] {
             assert_eq!(rows.iter().find(|r| r.column == c).unwrap().rule, Compare::Difference, "{c}");

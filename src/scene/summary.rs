@@ -132,9 +132,12 @@ fn table_rows(section: Section, s: &Solution) -> Vec<Row> {
                 meanings.push(p.meaning);
             }
         }
+        let cells: Vec<String> = line.iter().map(|p| cell(p, s, scale)).collect();
+        // A line with no number ("— (isothermal)") has no unit to show.
+        let unit = if cells.iter().all(|c| c.starts_with('—')) { String::new() } else { unit };
         out.push(Row {
             label: line.iter().map(|p| p.label).collect::<Vec<_>>().join(", "),
-            value: line.iter().map(|p| cell(p, s, scale)).collect::<Vec<_>>().join(", "),
+            value: cells.join(", "),
             unit,
             meaning: meanings.join(" "),
         });

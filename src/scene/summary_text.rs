@@ -25,9 +25,7 @@ pub fn summary_text(s: &Solution) -> String {
         let title: String = title.next().map(|c| c.to_lowercase().chain(title).collect()).unwrap_or_default();
         let _ = writeln!(o, "  {title}");
         for r in &g.rows {
-            // A value that says why it is missing ("— (isothermal)") has no unit.
-            let unit = if r.value.starts_with('—') { "" } else { r.unit.as_str() };
-            let line = format!("    {:<LABEL$} {} {unit}", r.label, r.value);
+            let line = format!("    {:<LABEL$} {} {}", r.label, r.value, r.unit);
             let _ = writeln!(o, "{}", line.trim_end());
         }
     }

@@ -48,9 +48,9 @@ const NOT_IN_PIN_MEANING: &str = "Not in this pin: it was made before this outpu
 /// Width of the number columns [points]: four significant digits, a sign and a decimal point fit
 /// (values of SI units carry a prefix, so they stay below 1000).
 const NUMBER_WIDTH: f32 = 58.0;
-/// Width of the change column [points]: a per cent with one decimal (`+315.5 %`) or a difference with its
-/// unit (`-10.90 °`).
-const CHANGE_WIDTH: f32 = 66.0;
+/// Width of the change column [points]: its six characters ([`crate::scene::compare::CHANGE_CHARS`]: `+24.2%`,
+/// `-10.9°`).
+const CHANGE_WIDTH: f32 = 48.0;
 /// Quantity column [points] below which Δ gives way; names longer than their column wrap onto a second
 /// line (never cut: "eccentricity ratio" must read whole).
 const QUANTITY_MIN: f32 = 120.0;
@@ -219,10 +219,9 @@ mod tests {
     /// 1920 (576) it has; the quantity column never falls below its least width nor grows past its most.
     #[test]
     fn the_delta_column_shows_only_where_it_fits() {
-        assert_eq!(column_widths(340.0, 8.0), vec![134.0, 58.0, 58.0, 66.0]);
-        assert_eq!(column_widths(380.0, 8.0), vec![174.0, 58.0, 58.0, 66.0]);
-        assert_eq!(column_widths(400.0, 8.0), vec![128.0, 58.0, 58.0, 58.0, 66.0]);
-        assert_eq!(column_widths(540.0, 8.0), vec![230.0, 58.0, 58.0, 58.0, 66.0]);
-        assert_eq!(column_widths(250.0, 8.0), vec![80.0, 58.0, 58.0, 66.0]);
+        assert_eq!(column_widths(340.0, 8.0), vec![152.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(380.0, 8.0), vec![126.0, 58.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(540.0, 8.0), vec![230.0, 58.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(250.0, 8.0), vec![80.0, 58.0, 58.0, 48.0]);
     }
 }
