@@ -103,6 +103,12 @@ pub const NODES: Unit = unit("nodes", 1.0);
 pub const CELSIUS: Unit = unit("°C", 1.0);
 pub const N: Unit = unit("N", 1.0);
 pub const N_PER_M: Unit = unit("N/m", 1.0);
+/// Newton-metres (a torque).
+pub const N_M: Unit = unit("N·m", 1.0);
+/// Watts (a power, a heat flow).
+pub const W: Unit = unit("W", 1.0);
+/// Radians per second (an angular speed or frequency).
+pub const RAD_PER_S: Unit = unit("rad/s", 1.0);
 pub const NS_PER_M: Unit = unit("N·s/m", 1.0);
 pub const KG: Unit = unit("kg", 1.0);
 pub const KG_M2: Unit = unit("kg·m²", 1.0);

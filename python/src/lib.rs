@@ -13,6 +13,7 @@ mod control;
 mod convert;
 mod dynamics;
 mod errors;
+mod outputs;
 mod rotor;
 mod solution;
 mod solve;
@@ -23,6 +24,7 @@ fn _tiltpad(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<case::Case>()?;
     m.add_class::<control::CancelToken>()?;
     m.add_class::<solution::Solution>()?;
+    outputs::install(m)?;
     m.add_class::<solution::Pad>()?;
     m.add_class::<dynamics::Coefficients>()?;
     m.add_class::<rotor::RotorResult>()?;
@@ -34,6 +36,7 @@ fn _tiltpad(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(dynamics::coefficients, m)?)?;
     m.add_function(wrap_pyfunction!(dynamics::frf, m)?)?;
     m.add_function(wrap_pyfunction!(rotor::rotor, m)?)?;
+    m.add_function(wrap_pyfunction!(outputs::_outputs, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -44,7 +44,8 @@ impl Kept {
 }
 
 /// A bearing solve's result. Scalars are attributes with their unit in the name (SI: `h_min_m`,
-/// `p_max_pa`; engineering twins of the CLI columns: `h_min_um`, `p_max_mpa`, `speed_rpm`); coefficients and
+/// `p_max_pa`; engineering twins of the CLI columns: `h_min_um`, `p_max_mpa`, `speed_rpm`), one for each
+/// Python name of the library's table of outputs, put on the class by [`crate::outputs`]; coefficients and
 /// fields are read-only NumPy arrays. `str(solution)` is the summary `tiltpad solve` prints; `to_dict()` the
 /// JSON of `tiltpad solve --json`.
 #[pyclass(module = "tiltpad", frozen)]
@@ -65,21 +66,6 @@ impl Solution {
     fn title(&self) -> String {
         self.sol.title.clone()
     }
-    /// Eccentricity ratio ε = e / C_b (journal displacement over the assembled clearance) [–].
-    #[getter]
-    fn eccentricity(&self) -> f64 {
-        self.sol.eccentricity_ratio
-    }
-    /// Eccentricity ratio ε = e / C_b [–] (the JSON's name for `eccentricity`).
-    #[getter]
-    fn eccentricity_ratio(&self) -> f64 {
-        self.sol.eccentricity_ratio
-    }
-    /// Angle from the load direction to the journal displacement, positive in the direction of rotation [deg].
-    #[getter]
-    fn attitude_angle_deg(&self) -> f64 {
-        self.sol.attitude_angle_deg
-    }
     /// Journal centre displacement (x horizontal, y vertical up) [m], shape (2,).
     #[getter]
     fn journal_position_m<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -90,101 +76,11 @@ impl Solution {
     fn load_n<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         self.kept.get(py, "load_n", || Ok(vector(py, &self.sol.load_n).into_any()))
     }
-    /// Magnitude of the load [N].
-    #[getter]
-    fn load_magnitude_n(&self) -> f64 {
-        self.sol.load_magnitude_n
-    }
-    /// Sommerfeld number S = µ N L D / W (R/C_b)² [–]; `None` for an unloaded journal.
-    #[getter]
-    fn sommerfeld(&self) -> Option<f64> {
-        self.sol.sommerfeld
-    }
-    /// Minimum film thickness over all pads [m].
-    #[getter]
-    fn h_min_m(&self) -> f64 {
-        self.sol.h_min_m
-    }
-    /// Minimum film thickness over all pads [µm].
-    #[getter]
-    fn h_min_um(&self) -> f64 {
-        UM.from_si(self.sol.h_min_m)
-    }
-    /// Peak film pressure [Pa].
-    #[getter]
-    fn p_max_pa(&self) -> f64 {
-        self.sol.p_max_pa
-    }
-    /// Peak film pressure [MPa].
-    #[getter]
-    fn p_max_mpa(&self) -> f64 {
-        MPA.from_si(self.sol.p_max_pa)
-    }
-    /// Friction power loss of the films [W].
-    #[getter]
-    fn friction_power_w(&self) -> f64 {
-        self.sol.friction_power_w
-    }
-    /// Churning loss of a flooded housing between the pads [W] (0 without churning).
-    #[getter]
-    fn churning_power_w(&self) -> f64 {
-        self.sol.churning_power_w()
-    }
-    /// The bearing's power loss: the films' friction and the housing's churning [W].
-    #[getter]
-    fn total_power_loss_w(&self) -> f64 {
-        self.sol.total_power_loss_w()
-    }
-    /// Friction torque on the journal [N·m].
-    #[getter]
-    fn friction_torque_nm(&self) -> f64 {
-        self.sol.friction_torque_nm
-    }
-    /// Highest film temperature [°C] (`None` for an isothermal solve).
-    #[getter]
-    fn t_max_film_c(&self) -> Option<f64> {
-        self.sol.thermal.as_ref().map(|t| t.t_max_film_c)
-    }
-    /// Highest pad temperature [°C] (`None` without pad solids or for an isothermal solve).
-    #[getter]
-    fn t_max_pad_c(&self) -> Option<f64> {
-        self.sol.thermal.as_ref().and_then(|t| t.t_max_pad_c)
-    }
-    /// Journal temperature [°C] (`None` for an isothermal solve).
-    #[getter]
-    fn t_journal_c(&self) -> Option<f64> {
-        self.sol.thermal.as_ref().map(|t| t.journal_temperature_c)
-    }
-    /// Running speed [rpm].
-    #[getter]
-    fn speed_rpm(&self) -> f64 {
-        self.sol.derived.speed_rpm
-    }
-    /// Running speed [rad/s].
-    #[getter]
-    fn speed_rad_s(&self) -> f64 {
-        self.sol.derived.speed_rad_s
-    }
-    /// Assembled (bearing) clearance C_b [m].
-    #[getter]
-    fn assembled_clearance_m(&self) -> f64 {
-        self.sol.derived.assembled_clearance_m
-    }
-    /// Viscosity of the isothermal film (and of the Sommerfeld number) [Pa·s].
-    #[getter]
-    fn film_viscosity_pa_s(&self) -> f64 {
-        self.sol.derived.film_viscosity_pa_s
-    }
     /// Whole-bearing flows [m³/s]: `leading_edges_in`, `trailing_edges_out`, `sides_out`, `orifices_in`,
     /// `to_cavitation`, and the discrete `mass_balance_error` [–].
     #[getter]
     fn flows_m3_per_s<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         json_to_py(py, &serde_json::to_value(self.sol.flows_m3_per_s).unwrap_or_default())
-    }
-    /// Excitation frequency ω of the reduced coefficients [rad/s] (the case's ω/Ω times the speed).
-    #[getter]
-    fn excitation_rad_s(&self) -> f64 {
-        self.sol.reduced.omega_rad_s
     }
     /// Reduced stiffness at ω (rows, columns x, y) [N/m], shape (2, 2).
     #[getter]
@@ -249,16 +145,6 @@ impl Solution {
         }
         w
     }
-    /// Newton iterations of the equilibrium.
-    #[getter]
-    fn iterations(&self) -> usize {
-        self.sol.report.iterations
-    }
-    /// Computing time of the solve [s].
-    #[getter]
-    fn seconds(&self) -> f64 {
-        self.sol.report.seconds
-    }
     /// The design limits and the check of each (value, limit, exceeded), as in the JSON.
     #[getter]
     fn design_limits<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -290,7 +176,7 @@ impl Solution {
     /// The summary `tiltpad solve` prints.
     #[getter]
     fn summary(&self) -> String {
-        tiltpad::cli::summary_text(&self.sol)
+        tiltpad::scene::summary_text::summary_text(&self.sol)
     }
     fn __str__(&self) -> String {
         self.summary()

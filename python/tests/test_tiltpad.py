@@ -54,6 +54,28 @@ def test_units_in_names_are_consistent(compressor):
     assert "ε" in str(r) or "eccentricity" in str(r).lower()
 
 
+def test_every_scalar_attribute_is_its_number_in_to_dict(compressor):
+    """The library's table of outputs gives ``Solution`` its scalar attributes: each is the number ``to_dict()``
+    holds at the row's JSON pointer (an engineering twin divided by its unit), on an isothermal and a THD
+    solve; a count is an int; a quantity the solve does not have is None."""
+    names = tiltpad._tiltpad._outputs()
+    assert {"h_min_m", "h_min_um", "speed_rpm", "iterations", "t_max_film_c"} <= {n for n, _, _ in names}
+    thd = tiltpad.load_case(str(CASES / "fillon-a.toml"))
+    for r in (tiltpad.solve(compressor, fidelity="preview"), tiltpad.solve(thd, fidelity="preview")):
+        d = r.to_dict()
+        for name, pointer, factor in names:
+            v = d
+            for part in pointer.strip("/").split("/"):
+                v = None if v is None else v[int(part)] if isinstance(v, list) else v[part]
+            got = getattr(r, name)
+            if v is None:
+                assert got is None, name
+            else:
+                assert got == pytest.approx(v / factor, rel=1e-15), name
+        assert isinstance(r.iterations, int) and r.iterations >= 1
+    assert r.t_journal_c is not None and r.t_max_film_c > r.t_journal_c
+
+
 def test_arrays_have_documented_shapes_and_are_read_only(compressor):
     r = tiltpad.solve(compressor, fidelity="preview")
     assert r.k_n_per_m.shape == (2, 2) and r.c_ns_per_m.shape == (2, 2)

@@ -28,6 +28,7 @@ __all__ = [
     "solve",
     "_sweep",
     "_batch",
+    "_outputs",
     "__version__",
 ]
 
@@ -165,6 +166,9 @@ class Solution:
     def h_min_m(self) -> float: ...
     @property
     def h_min_um(self) -> float: ...
+    @property
+    def h_min_angle_deg(self) -> float:
+        """Where the film is thinnest: angle from +x, counter-clockwise [deg]."""
     @property
     def p_max_pa(self) -> float: ...
     @property
@@ -371,3 +375,6 @@ def _batch(
     progress: Optional[_Progress] = None,
     cancel: Optional[CancelToken] = None,
 ) -> Dict[str, Any]: ...
+def _outputs() -> List[Tuple[str, str, float]]:
+    """Every scalar attribute of ``Solution`` (from the library's table of outputs): its name, its JSON pointer
+    in ``to_dict()`` and the factor dividing that value to give the attribute's."""

@@ -33,7 +33,6 @@ mod rotor_map;
 mod rows;
 mod solve;
 mod sommerfeld;
-mod summary;
 mod sweep;
 mod vtu;
 
@@ -44,8 +43,8 @@ use anyhow::{Context, Result};
 use crate::model::{load_case, Case, CaseFile};
 
 pub use crate::bearing::solution::json::solution_json;
+pub use crate::scene::summary_text::summary_text;
 pub use command::{Cli, Command};
-pub use summary::summary_text;
 
 /// Reads and validates a case file with overrides.
 ///

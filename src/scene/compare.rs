@@ -3,16 +3,19 @@
 //! A [`Pin`] keeps what a comparison needs and survives a restart (it is serialisable and small): its
 //! name, the case text it was solved from, and the output cells of [`crate::study::COLUMNS`] (ε, attitude,
 //! load, S, h_min, p_max, temperatures, power loss, flows, K and C terms). [`compare`] lines the live
-//! cells up with a pin's, column by column, with the difference `live − pinned` and, where the pinned
-//! value is not zero, the relative difference `(live − pinned) / |pinned|`. [`pins_csv`] writes the pins
-//! and the live result as one table (one row each, every column); [`pin_name`] keeps the rows' names
-//! unambiguous (no pin named [`LIVE_ROW`], no two pins of one name).
+//! cells up with a pin's, column by column, with the difference `live − pinned` and, for a magnitude whose
+//! pinned value is not zero, the relative difference `(live − pinned) / |pinned|`; how each quantity compares,
+//! its label, its unit and its group (whose values share one unit prefix) are the table of outputs'
+//! ([`crate::bearing::solution::outputs`]): an angle or a Celsius temperature compares by its difference.
+//! [`pins_csv`] writes the pins and the live result as one table (one row each, every column); [`pin_name`]
+//! keeps the rows' names unambiguous (no pin named [`LIVE_ROW`], no two pins of one name).
 
 use serde::{Deserialize, Serialize};
 
+use crate::bearing::solution::outputs::{Compare, Digits};
 use crate::bearing::Solution;
-use crate::scene::sweep::column_label;
-use crate::study::COLUMNS;
+use crate::scene::summary::shared_prefix;
+use crate::study::{Column, COLUMNS};
 
 /// A named reference solution.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -68,39 +71,110 @@ impl Pin {
     }
 }
 
-/// One line of a comparison.
+/// One line of a comparison: values in the column's unit, shown divided by `scale` in `unit`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CompareRow {
     pub column: &'static str,
-    pub label: String,
-    pub unit: &'static str,
+    /// The quantity's label (the table of outputs', as in the results panel).
+    pub label: &'static str,
+    /// The unit as shown: a prefixed SI unit shares the prefix of its group, chosen by the group's largest
+    /// live or pinned magnitude (Kxx and Kyy both in MN/m).
+    pub unit: String,
+    /// What a value is divided by to read in `unit` (1e6 for MN/m).
+    pub scale: f64,
     pub live: Option<f64>,
     pub pinned: Option<f64>,
     /// The pin does not hold this column (made before it existed; see [`Pin::complete_from`]).
     pub not_in_pin: bool,
+    /// How the two compare: relatively (magnitudes) or by their difference (angles, temperatures).
+    pub rule: Compare,
+    /// How a value of the quantity is written (a difference is written so too).
+    pub digits: Digits,
     /// live − pinned.
     pub difference: Option<f64>,
-    /// (live − pinned) / |pinned|, when the pinned value is not zero.
+    /// (live − pinned) / |pinned|, when the pinned value is not zero and the quantity compares relatively.
     pub relative: Option<f64>,
 }
 
-/// Columns a comparison leaves out (solver bookkeeping, not a result).
-const SKIP: [&str; 1] = ["iterations"];
+impl CompareRow {
+    /// The difference, with round-off (the same value given twice, below 1e-9 of the values) as 0.
+    #[must_use]
+    pub fn change(&self) -> Option<f64> {
+        let size = self.live.unwrap_or(0.0).abs().max(self.pinned.unwrap_or(0.0).abs());
+        self.difference.map(|d| if d.abs() <= 1e-9 * size { 0.0 } else { d })
+    }
 
-/// The live solution against a pin, every output column.
+    /// The change as the table reads it, by the quantity's rule: a relative one in per cent (`+24.2%`), a
+    /// difference in the quantity's unit (`-10.9°`); `—` without both values. At most [`CHANGE_CHARS`]
+    /// characters (fewer decimals where more would not fit), so the column stays narrow.
+    #[must_use]
+    pub fn change_text(&self) -> String {
+        let Some(d) = self.change() else { return "—".into() };
+        match (self.rule, self.relative) {
+            (Compare::Difference, _) => {
+                let decimals = match self.digits {
+                    Digits::Decimals(n) => n,
+                    _ => 3,
+                };
+                fitted(d / self.scale, decimals, &self.unit)
+            }
+            (_, Some(x)) => fitted(if d == 0.0 { 0.0 } else { 100.0 * x }, 1, "%"),
+            (_, None) => "—".into(),
+        }
+    }
+}
+
+/// Most characters of a change ([`CompareRow::change_text`]).
+pub const CHANGE_CHARS: usize = 6;
+
+/// `x` with a sign, at most `decimals` decimals and `unit` right after it, in [`CHANGE_CHARS`] characters
+/// where fewer decimals make it fit (`-10.9°` rather than `-10.90°`).
+fn fitted(x: f64, decimals: usize, unit: &str) -> String {
+    let text = |n: usize| format!("{x:+.n$}{unit}");
+    (0..=decimals).rev().map(text).find(|t| t.chars().count() <= CHANGE_CHARS).unwrap_or_else(|| text(0))
+}
+
+/// The live solution against a pin, every compared output column (solver bookkeeping left out).
 #[must_use]
 pub fn compare(live: &Solution, pin: &Pin) -> Vec<CompareRow> {
     let cells = crate::study::columns::outputs(live);
-    COLUMNS
+    let compared: Vec<(&Column, Option<f64>, Option<f64>)> = COLUMNS
         .iter()
         .zip(cells)
-        .filter(|(c, _)| !SKIP.contains(&c.name))
-        .map(|(c, live)| {
-            let (label, unit) = column_label(c.name);
-            let pinned = pin.value(c.name);
+        .filter(|(c, _)| c.output.compare != Compare::Not)
+        .map(|(c, live)| (c, live, pin.value(c.name)))
+        .collect();
+    compared
+        .iter()
+        .map(|&(c, live, pinned)| {
+            let o = c.output;
+            let (scale, unit) = if o.digits == Digits::Prefixed {
+                // The group's values, live and pinned, choose its one prefix.
+                let peers = compared
+                    .iter()
+                    .filter(|(p, ..)| p.name == c.name || (o.group.is_some() && p.output.group == o.group));
+                shared_prefix(peers.flat_map(|(_, a, b)| [*a, *b]).flatten(), o.unit.symbol)
+            } else {
+                (1.0, o.unit.symbol.to_string())
+            };
             let difference = live.zip(pinned).map(|(a, b)| a - b);
-            let relative = difference.zip(pinned).and_then(|(d, b)| (b != 0.0).then(|| d / b.abs()));
-            CompareRow { column: c.name, label, unit, live, pinned, not_in_pin: !pin.has(c.name), difference, relative }
+            let relative = difference
+                .zip(pinned)
+                .filter(|_| o.compare == Compare::Relative)
+                .and_then(|(d, b)| (b != 0.0).then(|| d / b.abs()));
+            CompareRow {
+                column: c.name,
+                label: o.label,
+                unit,
+                scale,
+                live,
+                pinned,
+                not_in_pin: !pin.has(c.name),
+                rule: o.compare,
+                digits: o.digits,
+                difference,
+                relative,
+            }
         })
         .collect()
 }
@@ -200,6 +274,53 @@ mod tests {
         assert!(
             csv.lines().nth(1).unwrap().starts_with("9000 rpm,") && csv.lines().nth(2).unwrap().starts_with("live,")
         );
+    }
+
+    /// The −542.9 % of an attitude angle: pinned at 2°, live at −8.9°, the angle changed by −10.90° and reads
+    /// so (a relative change of an angle, whose zero is a convention, means nothing); a magnitude (ε) keeps
+    /// its per cent.
+    #[test]
+    fn angles_compare_by_their_difference() {
+        let mut live = crate::bearing::stages::registry::compressor_preview(&[]);
+        let mut pin = Pin::new("2°", "", &live);
+        let k = pin.columns.iter().position(|c| c == "attitude_angle_deg").unwrap();
+        pin.cells[k] = Some(2.0);
+        let e = pin.columns.iter().position(|c| c == "eccentricity_ratio").unwrap();
+        pin.cells[e] = Some(0.5);
+        live.attitude_angle_deg = -8.9;
+        let rows = compare(&live, &pin);
+        let angle = rows.iter().find(|r| r.column == "attitude_angle_deg").unwrap();
+        assert_eq!((angle.rule, angle.relative, angle.unit.as_str()), (Compare::Difference, None, "°"));
+        assert!((angle.difference.unwrap() + 10.9).abs() < 1e-12, "{angle:?}");
+        assert_eq!(angle.change_text(), "-10.9°");
+        let eps = rows.iter().find(|r| r.column == "eccentricity_ratio").unwrap();
+        let percent = 100.0 * (live.eccentricity_ratio - 0.5) / 0.5;
+        assert_eq!(eps.change_text(), format!("{percent:+.1}%"));
+        assert_eq!(fitted(315.52, 1, "%"), "+316%");
+        assert_eq!(fitted(5.23, 1, "°C"), "+5.2°C");
+        assert_eq!(fitted(-12.34, 1, "°C"), "-12°C");
+        // Celsius temperatures compare by their difference as well.
+        for c in ["t_max_film_c", "t_max_pad_c", "t_journal_c"] {
+            assert_eq!(rows.iter().find(|r| r.column == c).unwrap().rule, Compare::Difference, "{c}");
+        }
+    }
+
+    /// Kxx live at 46 MN/m, Kyy pinned at 1.95 GN/m: the four terms of the stiffness matrix read in GN/m
+    /// (they read in MN/m and GN/m row by row); the damping terms keep their own prefix.
+    #[test]
+    fn a_matrix_compares_in_one_prefix() {
+        let mut live = crate::bearing::stages::registry::compressor_preview(&[]);
+        live.reduced.k_n_per_m = [[4.636e7, -1.839e6], [2.2e5, 4.0e7]];
+        let mut pin = Pin::new("stiff", "", &live);
+        let k = pin.columns.iter().position(|c| c == "kyy_n_per_m").unwrap();
+        pin.cells[k] = Some(1.95e9);
+        let rows = compare(&live, &pin);
+        for c in ["kxx_n_per_m", "kxy_n_per_m", "kyx_n_per_m", "kyy_n_per_m"] {
+            let r = rows.iter().find(|r| r.column == c).unwrap();
+            assert_eq!((r.unit.as_str(), r.scale), ("GN/m", 1e9), "{c}");
+        }
+        let c = rows.iter().find(|r| r.column == "cxx_ns_per_m").unwrap();
+        assert_eq!(c.unit, "kN·s/m");
     }
 
     /// A pin written before the power-loss columns existed lacks them: the comparison says so, and

@@ -17,7 +17,8 @@
 //! - [`request`]: the stages the open views need, joined into the request the app sends.
 //! - [`sommerfeld`]: the Sommerfeld chart of a load sweep (ε, attitude, h_min/Cb, reduced K and C against S)
 //!   with the short-bearing reference of a plain 360° bearing.
-//! - [`summary`]: the results panel's rows in display units.
+//! - [`summary`]: the results panel's rows in display units (the table of outputs, section by section).
+//! - [`summary_text`]: the same rows as the text `tiltpad solve` prints, with the pad table and the reports.
 //! - [`sweep`]: any case key against any output columns (series, CSV) for the sweep view.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
 //! - [`fidelity`]: the measured time and error of each fidelity level (from `tiltpad bench`).
@@ -42,4 +43,5 @@ pub mod request;
 pub mod rotor;
 pub mod sommerfeld;
 pub mod summary;
+pub mod summary_text;
 pub mod sweep;

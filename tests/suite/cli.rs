@@ -26,7 +26,7 @@ fn solve_writes_self_describing_json() {
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let text = String::from_utf8_lossy(&o.stdout);
-    assert!(text.contains("eccentricity") && text.contains("reduced coefficients"), "{text}");
+    assert!(text.contains("Eccentricity ε") && text.contains("reduced coefficients"), "{text}");
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
     for key in [
         "eccentricity_ratio",

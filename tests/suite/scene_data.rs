@@ -65,15 +65,19 @@ fn compressor_bearing_scene() {
     // Summary and exports.
     let sum = summary::summary(&s);
     assert_eq!(sum.pads.len(), 5);
-    assert_eq!(sum.groups[0].rows[2].value, format!("{:.4}", s.eccentricity_ratio));
-    // Forces, stiffnesses and damping in engineering notation: the load in kN, Kxx and Kxy sharing a prefix.
-    let load = &sum.groups[0].rows[1];
+    let row = |label: &str| sum.groups.iter().flat_map(|g| &g.rows).find(|r| r.label == label).unwrap();
+    assert_eq!(row("Eccentricity ε").value, format!("{:.4}", s.eccentricity_ratio));
+    // Forces, stiffnesses and damping in engineering notation: the load in kN, the stiffness matrix in one
+    // prefix (chosen by its largest term).
+    let load = row("Load");
     assert_eq!((load.value.as_str(), load.unit.as_str()), (summary::sig4(s.load_magnitude_n / 1e3).as_str(), "kN"));
-    let kxx = sum.groups.iter().flat_map(|g| &g.rows).find(|r| r.label == "Kxx, Kxy").unwrap();
-    let k = s.reduced.k_n_per_m[0];
-    let (scale, prefix) = tiltpad::number::eng_prefix(k[0].abs().max(k[1].abs()));
-    assert_eq!(kxx.value, format!("{}, {}", summary::sig4(k[0] / scale), summary::sig4(k[1] / scale)));
-    assert_eq!(kxx.unit, format!("{prefix}N/m"));
+    let (kxx, kyy) = (row("Kxx, Kxy"), row("Kyx, Kyy"));
+    let k = s.reduced.k_n_per_m;
+    let largest = k.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let (scale, prefix) = tiltpad::number::eng_prefix(largest);
+    assert_eq!(kxx.value, format!("{}, {}", summary::sig4(k[0][0] / scale), summary::sig4(k[0][1] / scale)));
+    assert_eq!(kyy.value, format!("{}, {}", summary::sig4(k[1][0] / scale), summary::sig4(k[1][1] / scale)));
+    assert_eq!((kxx.unit.clone(), kyy.unit.clone()), (format!("{prefix}N/m"), format!("{prefix}N/m")));
     let csv = export::fields_csv(&s);
     let nodes: usize = s.pads.iter().map(|p| p.field.pressure_pa.len()).sum();
     assert_eq!(csv.lines().count(), 1 + nodes);

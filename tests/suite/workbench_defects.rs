@@ -152,8 +152,8 @@ fn the_rotor_mass_reads_in_engineering_notation() {
 }
 
 /// The flooded compressor bearing (isothermal, preview mesh): the results panel shows the films' friction,
-/// the housing's churning and their total, each in engineering notation, where it showed the friction alone
-/// as "Power loss".
+/// the housing's churning and their total, in engineering notation with the one prefix of the largest (kW,
+/// the churning's 147.3 W as 0.1473 kW), where it showed the friction alone as "Power loss".
 #[test]
 fn the_results_panel_shows_friction_churning_and_total_power_loss() {
     let text = include_str!("../../cases/compressor-bearing-power-loss.toml")
@@ -170,7 +170,8 @@ fn the_results_panel_shows_friction_churning_and_total_power_loss() {
         [("Film friction", friction), ("Churning", churning), ("Total power loss", s.total_power_loss_w())]
     {
         let row = h.get_by_role_and_label(Role::Label, label).rect();
-        let (value, unit) = tiltpad::number::eng_values(&[watts], "W");
+        let (scale, unit) = tiltpad::number::eng_prefix(s.total_power_loss_w());
+        let (value, unit) = ([tiltpad::number::sig(watts / scale, 4)], format!("{unit}W"));
         let at = |t: &str| {
             h.query_all_by_label(t).find(|n| (n.rect().center().y - row.center().y).abs() < 2.0).map(|n| n.rect())
         };

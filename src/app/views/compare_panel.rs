@@ -1,12 +1,14 @@
 //! The "Compare" part of the results panel: pin the current result under a name (several pins, kept
 //! across restarts with the persisted settings), and for each pin the live and pinned values of every
-//! output column side by side with their differences ([`crate::scene::compare`]).
+//! output column side by side with their change: in per cent for a magnitude, the difference for an angle or
+//! a temperature, every value of a group (the stiffness matrix) in one unit prefix ([`crate::scene::compare`]).
 
 use egui::{Grid, RichText, Ui};
 
+use crate::bearing::solution::outputs::{Digits, OUTPUTS};
 use crate::bearing::Solution;
 use crate::scene::compare::{compare, pin_name, Pin};
-use crate::scene::summary::sig4;
+use crate::scene::summary::{shared_prefix, sig4};
 
 /// What the panel asks the app to do.
 pub enum CompareAction {
@@ -16,27 +18,26 @@ pub enum CompareAction {
     Pinned,
 }
 
-/// Units shown with an engineering prefix (`N/m` → `MN/m`): the SI units of the columns. Units already
-/// chosen for reading (µm, MPa, l/min, °C) and dimensionless ones stay as they are.
-const PREFIXED_UNITS: [&str; 5] = ["N", "N/m", "N·s/m", "W", "N·m"];
-
-/// A row's scale and unit as shown: `kxx` of 3.0e7 N/m in MN/m. The prefix is chosen by the larger of the
-/// live and pinned values, so the row's three numbers share it.
+/// A scale and unit for values of a column's `unit` (the sweep view's plots): an SI unit that the table of
+/// outputs shows with a prefix takes the prefix of the larger of `live` and `pinned` (3.0e7 N/m in MN/m);
+/// units chosen for reading (µm, MPa, L/min, °C) and dimensionless ones stay as they are.
 #[must_use]
 pub fn row_unit(unit: &str, live: Option<f64>, pinned: Option<f64>) -> (f64, String) {
-    if !PREFIXED_UNITS.contains(&unit) {
+    let prefixed = OUTPUTS.iter().any(|o| o.digits == Digits::Prefixed && o.unit.symbol == unit);
+    if !prefixed {
         return (1.0, unit.to_string());
     }
-    let largest = live.unwrap_or(0.0).abs().max(pinned.unwrap_or(0.0).abs());
-    let (scale, prefix) = crate::number::eng_prefix(largest);
-    (scale, format!("{prefix}{unit}"))
+    shared_prefix([live, pinned].into_iter().flatten(), unit)
 }
 
-/// A cell: four significant digits of `v / scale`; a difference below 1e-9 of the values compared
-/// (round-off of the same load given twice) shows as 0.
+/// A cell: four significant digits of `v / scale`.
 fn value(v: Option<f64>, scale: f64) -> String {
     v.map_or_else(|| "—".into(), |x| sig4(x / scale))
 }
+
+/// What the change column holds.
+const CHANGE_MEANING: &str = "Live against pinned: the relative change in per cent for a magnitude; the difference, \
+     in the quantity's unit, for an angle or a temperature (whose zero is a convention, so a ratio means nothing).";
 
 /// The pinned cell of a column the pin does not hold.
 const NOT_IN_PIN: &str = "n/a";
@@ -47,8 +48,9 @@ const NOT_IN_PIN_MEANING: &str = "Not in this pin: it was made before this outpu
 /// Width of the number columns [points]: four significant digits, a sign and a decimal point fit
 /// (values of SI units carry a prefix, so they stay below 1000).
 const NUMBER_WIDTH: f32 = 58.0;
-/// Width of the Δ % column [points].
-const PERCENT_WIDTH: f32 = 48.0;
+/// Width of the change column [points]: its six characters ([`crate::scene::compare::CHANGE_CHARS`]: `+24.2%`,
+/// `-10.9°`).
+const CHANGE_WIDTH: f32 = 48.0;
 /// Quantity column [points] below which Δ gives way; names longer than their column wrap onto a second
 /// line (never cut: "eccentricity ratio" must read whole).
 const QUANTITY_MIN: f32 = 120.0;
@@ -59,16 +61,17 @@ const QUANTITY_MAX: f32 = 230.0;
 
 /// The comparison table's column widths in a panel `room` points wide with `gap` between columns: the
 /// quantity, live, pinned, Δ (only when it fits beside the others: it is in the export and the hover of
-/// Δ %) and Δ %. Fixed from the first frame, so a new pin's table never lays out over itself.
+/// the change) and the change (in per cent for a magnitude, the difference for an angle or a temperature).
+/// Fixed from the first frame, so a new pin's table never lays out over itself.
 #[must_use]
 pub fn column_widths(room: f32, gap: f32) -> Vec<f32> {
-    let numbers = |n: usize| n as f32 * (NUMBER_WIDTH + gap) + PERCENT_WIDTH + gap;
+    let numbers = |n: usize| n as f32 * (NUMBER_WIDTH + gap) + CHANGE_WIDTH + gap;
     let with_delta = room - numbers(3) >= QUANTITY_MIN;
     let n = if with_delta { 3 } else { 2 };
     let quantity = (room - numbers(n)).clamp(QUANTITY_LEAST, QUANTITY_MAX);
     let mut widths = vec![quantity];
     widths.extend(std::iter::repeat_n(NUMBER_WIDTH, n));
-    widths.push(PERCENT_WIDTH);
+    widths.push(CHANGE_WIDTH);
     widths
 }
 
@@ -159,35 +162,32 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
             let with_delta = widths.len() == 5;
             let (right, left) = (egui::Align::Max, egui::Align::Min);
             Grid::new(("compare", k)).num_columns(widths.len()).striped(true).show(ui, |ui| {
-                let headers: &[&str] = if with_delta { &["quantity", "live", "pinned", "Δ", "Δ %"] } else { &["quantity", "live", "pinned", "Δ %"] };
+                let headers: &[&str] = if with_delta { &["quantity", "live", "pinned", "Δ", "change"] } else { &["quantity", "live", "pinned", "change"] };
                 for (h, w) in headers.iter().zip(&widths) {
-                    cell(ui, *w, RichText::new(*h).small(), if *h == "quantity" { left } else { right });
+                    let c = cell(ui, *w, RichText::new(*h).small(), if *h == "quantity" { left } else { right });
+                    if *h == "change" {
+                        c.on_hover_text(CHANGE_MEANING);
+                    }
                 }
                 ui.end_row();
                 for r in compare(live, pin) {
-                    let (scale, unit) = row_unit(r.unit, r.live, r.pinned);
-                    let name = if unit.is_empty() { r.label.clone() } else { format!("{} [{unit}]", r.label) };
+                    let name = if r.unit.is_empty() { r.label.to_string() } else { format!("{} [{}]", r.label, r.unit) };
                     cell(ui, widths[0], RichText::new(name), left);
-                    cell(ui, NUMBER_WIDTH, RichText::new(value(r.live, scale)).monospace(), right);
+                    cell(ui, NUMBER_WIDTH, RichText::new(value(r.live, r.scale)).monospace(), right);
                     if r.not_in_pin {
                         cell(ui, NUMBER_WIDTH, RichText::new(NOT_IN_PIN).monospace().weak(), right)
                             .on_hover_text(NOT_IN_PIN_MEANING);
                     } else {
-                        cell(ui, NUMBER_WIDTH, RichText::new(value(r.pinned, scale)).monospace(), right);
+                        cell(ui, NUMBER_WIDTH, RichText::new(value(r.pinned, r.scale)).monospace(), right);
                     }
-                    // Round-off (the same value given twice) is no difference.
-                    let size = r.live.unwrap_or(0.0).abs().max(r.pinned.unwrap_or(0.0).abs());
-                    let difference = r.difference.map(|d| if d.abs() <= 1e-9 * size { 0.0 } else { d });
-                    let relative = r.relative.map(|x| if difference == Some(0.0) { 0.0 } else { x });
-                    let changed = difference.is_some_and(|d| d != 0.0);
+                    let changed = r.change().is_some_and(|d| d != 0.0);
                     let color = if changed { ui.visuals().warn_fg_color } else { ui.visuals().weak_text_color() };
-                    let delta = value(difference, scale);
+                    let delta = value(r.change(), r.scale);
                     if with_delta {
                         cell(ui, NUMBER_WIDTH, RichText::new(delta.clone()).monospace().color(color), right);
                     }
-                    let percent = relative.map_or_else(|| "—".into(), |x| format!("{:+.1}", 100.0 * x));
-                    cell(ui, PERCENT_WIDTH, RichText::new(percent).monospace().color(color), right)
-                        .on_hover_text(format!("Δ = {delta} {unit}"));
+                    cell(ui, CHANGE_WIDTH, RichText::new(r.change_text()).monospace().color(color), right)
+                        .on_hover_text(format!("Δ = {delta} {}", r.unit));
                     ui.end_row();
                 }
             });
@@ -203,20 +203,9 @@ pub fn compare_ui(ui: &mut Ui, pins: &mut Vec<Pin>, live: &Solution, case_toml: 
 mod tests {
     use super::{column_widths, row_unit};
 
-    /// The results panel at 1280 points (384 wide, about 340 inside) has no room for Δ beside Δ %; at
-    /// 1920 (576) it has; the quantity column never falls below its least width nor grows past its most.
+    /// The sweep view's kxx of 30.17 MN/m reads in MN/m; units chosen for reading stay as they are.
     #[test]
-    fn the_delta_column_shows_only_where_it_fits() {
-        assert_eq!(column_widths(340.0, 8.0), vec![152.0, 58.0, 58.0, 48.0]);
-        assert_eq!(column_widths(380.0, 8.0), vec![126.0, 58.0, 58.0, 58.0, 48.0]);
-        assert_eq!(column_widths(540.0, 8.0), vec![230.0, 58.0, 58.0, 58.0, 48.0]);
-        assert_eq!(column_widths(250.0, 8.0), vec![80.0, 58.0, 58.0, 48.0]);
-    }
-
-    /// The compressor's kxx live 30.17 MN/m against 43.42 MN/m pinned reads in MN/m; units chosen for
-    /// reading stay as they are.
-    #[test]
-    fn rows_of_si_units_take_an_engineering_prefix() {
+    fn columns_of_si_units_take_an_engineering_prefix() {
         assert_eq!(row_unit("N/m", Some(3.017e7), Some(4.342e7)), (1e6, "MN/m".to_string()));
         assert_eq!(row_unit("N·s/m", Some(65_972.0), None), (1e3, "kN·s/m".to_string()));
         assert_eq!(row_unit("W", Some(2516.0), Some(5449.0)), (1e3, "kW".to_string()));
@@ -224,5 +213,15 @@ mod tests {
         assert_eq!(row_unit("µm", Some(47.06), Some(53.95)), (1.0, "µm".to_string()));
         assert_eq!(row_unit("–", Some(0.4179), None), (1.0, "–".to_string()));
         assert_eq!(row_unit("N/m", None, None), (1.0, "N/m".to_string()));
+    }
+
+    /// The results panel at 1280 points (384 wide, about 340 inside) has no room for Δ beside the change; at
+    /// 1920 (576) it has; the quantity column never falls below its least width nor grows past its most.
+    #[test]
+    fn the_delta_column_shows_only_where_it_fits() {
+        assert_eq!(column_widths(340.0, 8.0), vec![152.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(380.0, 8.0), vec![126.0, 58.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(540.0, 8.0), vec![230.0, 58.0, 58.0, 58.0, 48.0]);
+        assert_eq!(column_widths(250.0, 8.0), vec![80.0, 58.0, 58.0, 48.0]);
     }
 }

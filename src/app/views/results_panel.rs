@@ -16,14 +16,15 @@ const VALUE_WIDTH: f32 = 220.0;
 pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
     for group in &summary.groups {
         egui::CollapsingHeader::new(RichText::new(group.title).strong()).default_open(true).show(ui, |ui| {
+            let value_width = value_width(ui, group);
             Grid::new(group.title).num_columns(3).striped(true).show(ui, |ui| {
                 for row in &group.rows {
-                    ui.label(row.label).on_hover_text(row.meaning);
+                    ui.label(&row.label).on_hover_text(&row.meaning);
                     let value = if hide_timings && row.unit == "ms" { "—".to_string() } else { row.value.clone() };
                     // A long value (the method of a Hertz-pivot solve) wraps instead of widening the panel.
                     ui.scope(|ui| {
-                        ui.set_max_width(VALUE_WIDTH);
-                        ui.add(egui::Label::new(RichText::new(value).monospace()).wrap()).on_hover_text(row.meaning);
+                        ui.set_max_width(value_width);
+                        ui.add(egui::Label::new(RichText::new(value).monospace()).wrap()).on_hover_text(&row.meaning);
                     });
                     ui.label(&row.unit);
                     ui.end_row();
@@ -86,6 +87,21 @@ pub fn results_panel_ui(ui: &mut Ui, summary: &Summary, hide_timings: bool) {
             });
         }
     }
+}
+
+/// The width of a group's value column: at most [`VALUE_WIDTH`], and no wider than the room the panel shows
+/// beside the widest label and the widest unit, so a long value wraps and its unit stays in view.
+fn value_width(ui: &Ui, group: &crate::scene::summary::Group) -> f32 {
+    let width = |text: &str, mono: bool| {
+        let font = if mono { egui::TextStyle::Monospace } else { egui::TextStyle::Body }.resolve(ui.style());
+        ui.painter().layout_no_wrap(text.to_string(), font, egui::Color32::WHITE).size().x
+    };
+    let widest = |texts: &mut dyn Iterator<Item = &String>| texts.map(|t| width(t, false)).fold(0.0_f32, f32::max);
+    let label = widest(&mut group.rows.iter().map(|r| &r.label));
+    let unit = widest(&mut group.rows.iter().map(|r| &r.unit));
+    let gaps = 2.0 * ui.spacing().item_spacing.x + ui.spacing().scroll.bar_width + 4.0;
+    let room = ui.clip_rect().right() - ui.cursor().left() - label - unit - gaps;
+    room.clamp(width("0.000", true), VALUE_WIDTH)
 }
 
 /// Values of one SI unit in one column: the engineering prefix of the largest and the decimals that give it

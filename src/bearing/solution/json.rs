@@ -1,11 +1,14 @@
 //! The JSON form of a solution: SI, units in the key names, the resolved inputs included — what `tiltpad
-//! solve --json` writes and the workbench exports. Warnings carry their `kind` and data and, as `message`, the
+//! solve --json` writes and the workbench exports. The scalar outputs at the top level come from the table of
+//! outputs ([`crate::bearing::solution::outputs`]); vectors, matrices, pads and reports are serialised as
+//! their types are. Warnings carry their `kind` and data and, as `message`, the
 //! sentence a reader sees; the report's `method` is named as `method_text` too.
 
 use serde_json::{json, Value};
 
 use crate::bearing::report::SolveReport;
 use crate::bearing::solution::limits::check;
+use crate::bearing::solution::outputs::write_json;
 use crate::bearing::solution::result::{Solution, ThermalResult};
 
 /// The JSON result: SI, units in the key names, resolved inputs included.
@@ -33,20 +36,11 @@ pub fn solution_json(s: &Solution) -> Value {
             })
         })
         .collect();
-    json!({
+    // The scalar outputs of the table's top-level keys are written from the table; the rest is structure.
+    let mut v = json!({
         "title": s.title,
-        "eccentricity_ratio": s.eccentricity_ratio,
-        "attitude_angle_deg": s.attitude_angle_deg,
         "journal_position_m": s.journal_position_m,
         "load_n": s.load_n,
-        "load_magnitude_n": s.load_magnitude_n,
-        "sommerfeld": s.sommerfeld,
-        "h_min_m": s.h_min_m,
-        "p_max_pa": s.p_max_pa,
-        "friction_power_w": s.friction_power_w,
-        "friction_torque_nm": s.friction_torque_nm,
-        "churning_power_w": s.churning_power_w(),
-        "total_power_loss_w": s.total_power_loss_w(),
         "churning_gaps": s.churning,
         "flows_m3_per_s": s.flows_m3_per_s,
         "reduced": s.reduced,
@@ -55,8 +49,6 @@ pub fn solution_json(s: &Solution) -> Value {
         "coordinates": s.coordinates,
         "report": report_json(&s.report),
         "regime": s.regime,
-        "t_max_film_c": s.thermal.as_ref().map(|t| t.t_max_film_c),
-        "t_max_pad_c": s.thermal.as_ref().and_then(|t| t.t_max_pad_c),
         "thermal": s.thermal.as_ref().map(thermal_json),
         "design_limits": {
             "limits": s.inputs.limits,
@@ -72,7 +64,9 @@ pub fn solution_json(s: &Solution) -> Value {
             "film_viscosity_pa_s": s.derived.film_viscosity_pa_s,
             "film_nodes": s.derived.film_nodes,
         },
-    })
+    });
+    write_json(&mut v, s);
+    v
 }
 
 /// A warning list with each warning's sentence added as `message`.

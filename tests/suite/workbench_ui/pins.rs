@@ -121,13 +121,13 @@ fn a_new_pin_lays_out_its_table_inside_the_results_panel_at_once() {
             );
         }
         // The compressor carries 1.918 kN: the load row reads in kN, live and pinned alike.
-        let load = cells.iter().find(|(t, _)| t == "load [kN]").expect("the load row").1;
+        let load = cells.iter().find(|(t, _)| t == "Load [kN]").expect("the load row").1;
         let row: Vec<&str> = cells
             .iter()
             .filter(|(_, r)| (r.center().y - load.center().y).abs() < 1.0)
             .map(|(t, _)| t.as_str())
             .collect();
-        assert_eq!(row[..3], ["load [kN]", "1.918", "1.918"], "{size:?}");
+        assert_eq!(row[..3], ["Load [kN]", "1.918", "1.918"], "{size:?}");
         // Every quantity reads whole (a long name wraps): no cell is cut with "…".
         let view = h.state().view_rect().unwrap();
         let cut: Vec<String> = painted_text::painted_texts(&h.output().shapes)
@@ -136,7 +136,7 @@ fn a_new_pin_lays_out_its_table_inside_the_results_panel_at_once() {
             .map(|t| t.text)
             .collect();
         assert!(cut.is_empty(), "{size:?}: cut names {cut:?}");
-        assert!(cells.iter().any(|(t, _)| t.starts_with("eccentricity ratio")), "{size:?}");
+        assert!(cells.iter().any(|(t, _)| t.starts_with("Eccentricity ε")), "{size:?}");
         let widgets = overlapping_widgets(&h);
         assert!(widgets.is_empty(), "{size:?}: {}", widgets.join("\n"));
         let texts = overlapping_texts(&h);

@@ -1,46 +1,34 @@
-//! Human-readable summary of a solution (its JSON form is [`crate::bearing::solution::json`]).
+//! The summary `tiltpad solve` prints and Python's `str(solution)` returns: the results panel's sections
+//! ([`crate::scene::summary`], so the rows of the table of outputs with their labels, digits and units) as
+//! aligned text, then what only a reader of text gets: the flow regime, the pad table, the thermal loop's
+//! heat balance and growth, the design limits and the warnings. Its JSON form is
+//! [`crate::bearing::solution::json`].
 
-use crate::units::{KNS_PER_M, L_PER_MIN, MN_PER_M, MPA, UM};
 use std::fmt::Write as _;
 
 use crate::bearing::Solution;
+use crate::scene::summary::summary;
+use crate::units::{MPA, UM};
+
+/// Width of the label column [characters].
+const LABEL: usize = 24;
 
 /// A readable summary in engineering units.
 #[must_use]
 pub fn summary_text(s: &Solution) -> String {
     let mut o = String::new();
-    let d = &s.derived;
+    let sum = summary(s);
     let _ = writeln!(o, "{}", if s.title.is_empty() { "tiltpad solution" } else { &s.title });
-    let _ = writeln!(
-        o,
-        "  speed {:.0} rpm, load {:.1} N, film viscosity {:.4} Pa·s, Cb {:.1} µm, {} film nodes",
-        d.speed_rpm,
-        s.load_magnitude_n,
-        d.film_viscosity_pa_s,
-        UM.from_si(d.assembled_clearance_m),
-        d.film_nodes
-    );
-    let _ = writeln!(
-        o,
-        "  eccentricity {:.4}  attitude {:+.2}°  journal ({:+.2}, {:+.2}) µm  Sommerfeld {}",
-        s.eccentricity_ratio,
-        s.attitude_angle_deg,
-        UM.from_si(s.journal_position_m[0]),
-        UM.from_si(s.journal_position_m[1]),
-        s.sommerfeld.map_or_else(|| "—".to_string(), |v| format!("{v:.4}"))
-    );
-    let _ = writeln!(
-        o,
-        "  h_min {:.2} µm  p_max {:.3} MPa  power loss {:.1} W (film friction {:.1} W, housing churning {:.1} W)  flows: LE in {:.3} l/min, orifices {:+.3} l/min, sides {:.3} l/min",
-        UM.from_si(s.h_min_m),
-        MPA.from_si(s.p_max_pa),
-        s.total_power_loss_w(),
-        s.friction_power_w,
-        s.churning_power_w(),
-        L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in),
-        L_PER_MIN.from_si(s.flows_m3_per_s.orifices_in),
-        L_PER_MIN.from_si(s.flows_m3_per_s.sides_out)
-    );
+    for g in &sum.groups {
+        // Headings in the command line's lower case ("reduced coefficients").
+        let mut title = g.title.chars();
+        let title: String = title.next().map(|c| c.to_lowercase().chain(title).collect()).unwrap_or_default();
+        let _ = writeln!(o, "  {title}");
+        for r in &g.rows {
+            let line = format!("    {:<LABEL$} {} {}", r.label, r.value, r.unit);
+            let _ = writeln!(o, "{}", line.trim_end());
+        }
+    }
     let g = &s.regime;
     let _ = writeln!(
         o,
@@ -71,38 +59,11 @@ pub fn summary_text(s: &Solution) -> String {
             if p.unloaded { "  (unloaded)" } else { "" }
         );
     }
-    let r = &s.reduced;
-    let _ = writeln!(o, "  reduced coefficients at ω = {:.1} rad/s (x, y):", r.omega_rad_s);
-    let _ = writeln!(
-        o,
-        "    K [MN/m]   [{:>10.3} {:>10.3}]   C [kN·s/m] [{:>10.3} {:>10.3}]",
-        MN_PER_M.from_si(r.k_n_per_m[0][0]),
-        MN_PER_M.from_si(r.k_n_per_m[0][1]),
-        KNS_PER_M.from_si(r.c_ns_per_m[0][0]),
-        KNS_PER_M.from_si(r.c_ns_per_m[0][1])
-    );
-    let _ = writeln!(
-        o,
-        "               [{:>10.3} {:>10.3}]              [{:>10.3} {:>10.3}]",
-        MN_PER_M.from_si(r.k_n_per_m[1][0]),
-        MN_PER_M.from_si(r.k_n_per_m[1][1]),
-        KNS_PER_M.from_si(r.c_ns_per_m[1][0]),
-        KNS_PER_M.from_si(r.c_ns_per_m[1][1])
-    );
     if let Some(t) = &s.thermal {
         let _ = writeln!(
             o,
-            "  thermal ({:?}): film max {:.1} °C, mean {:.1} °C; pad max {}; journal {:.1} °C; inlets {} °C",
+            "  thermal ({:?}) heat: generated {:.1} W = carried by oil {:.1} W + conducted {:.1} W (closure {:+.2e}; journal power {:.1} W, identity {:+.2e}); pads to surroundings {:.1} W",
             t.pad_film_bc,
-            t.t_max_film_c,
-            t.t_mean_film_c,
-            t.t_max_pad_c.map_or_else(|| "—".to_string(), |v| format!("{v:.1} °C")),
-            t.journal_temperature_c,
-            t.inlet_temperatures_c.iter().map(|v| format!("{v:.1}")).collect::<Vec<_>>().join(", ")
-        );
-        let _ = writeln!(
-            o,
-            "    heat: generated {:.1} W = carried by oil {:.1} W + conducted {:.1} W (closure {:+.2e}; journal power {:.1} W, identity {:+.2e}); pads to surroundings {:.1} W",
             t.heat.heat_generated(),
             t.heat_carried_by_oil_w,
             t.heat_conducted_w,
@@ -132,23 +93,9 @@ pub fn summary_text(s: &Solution) -> String {
                 housing.map_or_else(String::new, |h| format!(", housing at the pivots {:.2} µm", UM.from_si(h)));
             let _ = writeln!(o, "    thermal growth: journal {:.2} µm{pads}{housing}", UM.from_si(j));
         }
-        for w in &r.warnings {
-            let _ = writeln!(o, "  warning: {w}");
-        }
     }
     let _ = writeln!(o, "{}", limits_line(s));
-    let rep = &s.report;
-    let _ = writeln!(
-        o,
-        "  solver: {} — {} iterations ({} pad), {} film solves, residual {:.1e}, {:.1} ms",
-        rep.method_text(),
-        rep.iterations,
-        rep.inner_iterations,
-        rep.film_solves,
-        rep.residual,
-        rep.seconds * 1e3
-    );
-    for w in &rep.warnings {
+    for w in &sum.warnings {
         let _ = writeln!(o, "  warning: {w}");
     }
     o
