@@ -248,18 +248,6 @@ pub enum Command {
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
     },
-    /// Measure time and error per fidelity level; writes docs/PERFORMANCE.md (run in --release).
-    Bench {
-        /// Repeated solves per measurement (the median is reported).
-        #[arg(long, default_value_t = 7)]
-        repeats: usize,
-        /// Project root (where `cases/` and `docs/` are).
-        #[arg(long, default_value = ".")]
-        root: PathBuf,
-        /// Re-measure one section only (`table`: the first table with its targets, thermal-loop cost, cost growth and `assets/fidelity.json`; `frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`, `sommerfeld`, `feeding`, `flows`, `estimates`) and replace it in docs/PERFORMANCE.md, keeping the rest; the section closes with the time of a calibration solve before and after it, against the same solve in the first table (the machine's speed drifts between runs).
-        #[arg(long, value_name = "SECTION")]
-        only: Option<String>,
-    },
     /// Convergence map of the equilibrium: every shipped case and a generated family of 144 bearings, load
     /// direction every `--step-deg` × Sommerfeld number 10 … 0.01; counts converged / physical error /
     /// failure (run in --release; the 30° grid, 7392 points, took 4.4 min on this two-core machine, the 5°

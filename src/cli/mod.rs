@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `sommerfeld`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `sommerfeld`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `fidelity`, `schema`, `convergence-map`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -7,18 +7,6 @@
 //! [`crate::bearing::solution::json`]).
 
 mod batch;
-mod bench;
-mod bench_batch;
-mod bench_cavitation;
-mod bench_control;
-mod bench_estimates;
-mod bench_feeding;
-mod bench_flex;
-mod bench_flows;
-mod bench_frf;
-mod bench_rotor;
-mod bench_sommerfeld;
-mod bench_turb;
 mod coefficients;
 mod command;
 pub mod control;
@@ -52,7 +40,7 @@ pub use summary::summary_text;
 /// # Errors
 /// I/O and every case error, with the file name.
 pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
-    let text = inputs::read_text(path, "case file")?;
+    let text = crate::io::read::read_text(path, "case file")?;
     for note in crate::model::replaced_keys(&text, set).unwrap_or_default() {
         eprintln!("note: {note}");
     }
@@ -248,6 +236,5 @@ pub fn run(command: Command) -> Result<()> {
                 update_doc,
             )
         }
-        Command::Bench { repeats, root, only } => bench::run_only(&root, only.as_deref(), repeats),
     }
 }
