@@ -11,6 +11,7 @@ mod coefficients;
 mod command;
 pub mod control;
 mod convergence_map;
+mod fidelity;
 pub mod frf;
 mod inputs;
 pub mod interrupt;
@@ -67,6 +68,17 @@ pub fn run(command: Command) -> Result<()> {
     interrupt::install(&std::env::args().nth(1).unwrap_or_default());
     match command {
         Command::Solve { case, set, json, vtu } => solve::solve(&case, &set, json.as_ref(), vtu.as_ref()),
+        Command::Fidelity { case, set, repeats, json, csv, max_hours } => {
+            inputs::check_outputs(&[("case file", &case)], &[("--json", json.as_deref()), ("--csv", csv.as_deref())])?;
+            fidelity::run(&fidelity::FidelityArgs {
+                case: &case,
+                set: &set,
+                repeats: usize::from(repeats),
+                json,
+                csv,
+                max_hours,
+            })
+        }
         Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu, max_points, max_hours } => {
             let mut axes = Vec::new();
             if let Some(key) = param {

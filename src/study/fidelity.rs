@@ -155,10 +155,14 @@ pub fn level_overrides(set: &[String], level: Fidelity) -> Vec<String> {
     out
 }
 
-/// `set` and the overrides of the truth's mesh: twice the reference level's element counts.
+/// `set` and the overrides of the truth's mesh for `case` (any level of it): twice the reference level's
+/// element counts. The reference level refines a pad longer than [`crate::model::case::LEVEL_ARC_RAD`]
+/// with its arc, and an explicit count applies to every pad alike, so the truth's circumferential count is
+/// twice the reference level's on the longest pad (the others get more).
 #[must_use]
-pub fn finer_overrides(set: &[String]) -> Vec<String> {
-    let (nx, nz, no) = Fidelity::Reference.elements();
+pub fn finer_overrides(case: &Case, set: &[String]) -> Vec<String> {
+    let (_, nz, no) = Fidelity::Reference.elements();
+    let nx = Fidelity::Reference.circumferential_elements(case.bearing.longest_arc_rad());
     let mut out = level_overrides(set, Fidelity::Reference);
     out.extend([
         format!("mesh.circumferential_elements={}", 2 * nx),
@@ -237,11 +241,11 @@ impl FidelityTrade {
         if let Some((key, Some(value))) = explicit.into_iter().find(|(_, v)| v.is_some()) {
             return Err(FidelityError::ExplicitMesh { key, value });
         }
-        let truth_case = load_case(text, &finer_overrides(set))?.1;
-        let level_cases = LEVELS
+        let level_cases: Vec<(Fidelity, Case)> = LEVELS
             .iter()
             .map(|&l| Ok((l, load_case(text, &level_overrides(set, l))?.1)))
             .collect::<Result<_, CaseError>>()?;
+        let truth_case = load_case(text, &finer_overrides(&level_cases[0].1, set))?.1;
         Ok(Self {
             label: label.to_string(),
             repeats: repeats.max(1),
@@ -409,6 +413,15 @@ mod tests {
             (2 * nx, 2 * nz)
         );
         assert_eq!((trade.solves(), trade.done(), trade.next().map(|n| n.0)), (7, 0, Some(TRUTH)));
+        // A 360° sleeve: the reference level has 4.5 times its 96 elements around; the truth twice that.
+        let sleeve = FidelityTrade::new("s", include_str!("../../cases/plain-360-sommerfeld.toml"), &[], 1).unwrap();
+        let reference = &sleeve.level_cases[2].1;
+        assert_eq!(
+            (reference.mesh.fidelity, sleeve.truth_case.mesh.circumferential_elements),
+            (Fidelity::Reference, 864)
+        );
+        let film = |c: &Case| crate::model::budget::count(c).film();
+        assert!(film(&sleeve.truth_case) > 3 * film(reference), "{} {}", film(&sleeve.truth_case), film(reference));
         let e = trade.estimate();
         assert_eq!((e.what, e.solves), ("fidelity", 7));
         assert!(e.seconds > point_cost(&trade.truth_case).seconds);

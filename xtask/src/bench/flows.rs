@@ -35,14 +35,12 @@ fn created_share(s: &Solution) -> Option<f64> {
 type FlowCells = Result<(Option<(f64, &'static str)>, Option<f64>), (&'static str, String)>;
 
 fn flow_cells(text: &str, extra: &[String], truth: Truth) -> FlowCells {
-    let solve = |set: &[String]| {
-        let case = with_mesh(text, set).map_err(|e| ("refused", first_words(&e.to_string())))?;
-        solve_case(&case).map_err(|e| ("failed", first_words(&e.to_string())))
-    };
+    let case = |set: &[String]| with_mesh(text, set).map_err(|e| ("refused", first_words(&e.to_string())));
+    let solve = |set: &[String]| solve_case(&case(set)?).map_err(|e| ("failed", first_words(&e.to_string())));
     let mut standard = extra.to_vec();
     standard.push("mesh.fidelity=\"standard\"".into());
     let fine = match truth {
-        Truth::ReferenceFine => finer_overrides(extra),
+        Truth::ReferenceFine => finer_overrides(&case(extra)?, extra),
         Truth::Reference => {
             let mut set = extra.to_vec();
             set.push("mesh.fidelity=\"reference\"".into());
