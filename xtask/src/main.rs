@@ -13,7 +13,11 @@ use std::path::PathBuf;
 use clap::{Parser, Subcommand};
 
 #[derive(Debug, Parser)]
-#[command(name = "cargo xtask", about = "Developer tools of tiltpad (not part of the product)")]
+#[command(
+    name = "cargo xtask",
+    bin_name = "cargo xtask",
+    about = "Developer tools of tiltpad (not part of the product)"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

@@ -80,14 +80,15 @@ const MAX_REPEATS: u32 = 25;
 /// The product binary the commands run as: `$TILTPAD_BIN` when set, else `tiltpad` built now in this
 /// program's profile (`cargo build --release --bin tiltpad` under the `xtask` alias: nothing to do when it is
 /// current), beside this program in the workspace's target directory.
-fn tiltpad_binary(root: &Path) -> Result<PathBuf> {
+fn tiltpad_binary() -> Result<PathBuf> {
     if let Some(p) = std::env::var_os("TILTPAD_BIN") {
         return Ok(PathBuf::from(p));
     }
     let me = std::env::current_exe().context("cannot find this program")?;
     let dir = me.parent().context("this program has no directory")?;
     let mut build = std::process::Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    build.current_dir(root).args(["build", "--bin", "tiltpad"]);
+    // the workspace this program was built from, whatever `--root` the bench measures
+    build.current_dir(Path::new(env!("CARGO_MANIFEST_DIR"))).args(["build", "--package", "tiltpad", "--bin", "tiltpad"]);
     if dir.file_name().is_some_and(|n| n == "release") {
         build.arg("--release");
     }
@@ -313,7 +314,7 @@ fn load_average() -> String {
 /// A missing case, or a command that fails.
 pub fn section(root: &Path) -> Result<String> {
     super::say("bench: estimates");
-    let exe = tiltpad_binary(root)?;
+    let exe = tiltpad_binary()?;
     let dir = std::env::temp_dir().join(format!("tiltpad-bench-estimates-{}", std::process::id()));
     std::fs::create_dir_all(&dir)?;
     let load_before = load_average();
