@@ -88,7 +88,13 @@ fn tiltpad_binary() -> Result<PathBuf> {
     let dir = me.parent().context("this program has no directory")?;
     let mut build = std::process::Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
     // the workspace this program was built from, whatever `--root` the bench measures
-    build.current_dir(Path::new(env!("CARGO_MANIFEST_DIR"))).args(["build", "--package", "tiltpad", "--bin", "tiltpad"]);
+    build.current_dir(Path::new(env!("CARGO_MANIFEST_DIR"))).args([
+        "build",
+        "--package",
+        "tiltpad",
+        "--bin",
+        "tiltpad",
+    ]);
     if dir.file_name().is_some_and(|n| n == "release") {
         build.arg("--release");
     }
