@@ -32,7 +32,8 @@
 //! - [`app`] (feature `gui`): the eframe/egui workbench — editor, views, the background solve worker.
 //! - [`number`]: numbers as text at the edges (significant digits, CSV cells, tick labels).
 //! - [`units`]: the engineering units of the edges (rpm, bar, µm, L/min …), each conversion factor defined once.
-//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `schema`, `bench`).
+//! - [`cli`]: the command line (`tiltpad solve`, `sweep`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `fidelity`, `schema`, …).
+//!   The developers' bench that writes docs/PERFORMANCE.md is not here: it is `cargo xtask bench` (xtask/).
 
 // Lints: `[lints]` in Cargo.toml. Library paths that user input reaches never unwrap or expect (test
 // builds may; `[lints]` cannot tell test targets apart, so this one stays here).

@@ -17,7 +17,7 @@ The ratio (Python + arrays) / CLI solve is what the Python package costs against
 to the whole CLI process is what a script saves by not starting a process per solve. Then four solves of the
 first case at four speeds, one after the other and on two threads (the GIL is released while solving).
 
-`--write-doc` replaces the section "## Python package" of docs/PERFORMANCE.md with the table (`tiltpad bench`
+`--write-doc` replaces the section "## Python package" of docs/PERFORMANCE.md with the table (`cargo xtask bench`
 keeps that section as it is).
 """
 
@@ -147,7 +147,7 @@ def replace_section(text: str) -> None:
         end = doc.find("\n## ", start + len(HEADING))
         doc = doc[:start] + text + ("\n" + doc[end + 1:] if end >= 0 else "")
     else:
-        # Where `tiltpad bench` keeps it: after the notes, before the web build's section.
+        # Where `cargo xtask bench` keeps it: after the notes, before the web build's section.
         web = doc.find("\n## Web build")
         doc = doc[:web + 1] + text + "\n" + doc[web + 1:] if web >= 0 else doc.rstrip("\n") + "\n\n" + text
     path.write_text(doc, encoding="utf-8")

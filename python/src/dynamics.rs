@@ -272,7 +272,7 @@ pub fn frf<'py>(
         model.eccentricity_ratio,
         tiltpad::units::BAR.from_si(h.supply_pressure_pa)
     );
-    let mut curves = FrfCurves::new(&sweep, &tiltpad::cli::frf::port_names(&resolved), title);
+    let mut curves = FrfCurves::new(&sweep, &tiltpad::scene::frf::port_names(&resolved), title);
     if let Some(a) = amplitude_v {
         curves.check_signal(a, 0.1 * h.valve.full_scale_v);
     }

@@ -138,12 +138,12 @@ impl RotorResult {
     }
     /// The CSV `tiltpad rotor --csv` writes.
     fn to_csv(&self) -> PyResult<String> {
-        tiltpad::cli::rotor::csv_text(&self.result).map_err(|e| PyValueError::new_err(e.to_string()))
+        tiltpad::io::rotor_text::csv_text(&self.result).map_err(|e| PyValueError::new_err(e.to_string()))
     }
     /// The summary `tiltpad rotor` prints.
     #[getter]
     fn summary(&self) -> String {
-        tiltpad::cli::rotor::summary(&self.rotor, &self.result)
+        tiltpad::io::rotor_text::summary(&self.rotor, &self.result)
     }
     fn __str__(&self) -> String {
         self.summary()
@@ -179,11 +179,9 @@ pub fn rotor(
     progress: Option<Bound<'_, PyAny>>,
     cancel: Option<&Bound<'_, CancelToken>>,
 ) -> PyResult<RotorResult> {
-    let mut rotor = tiltpad::cli::rotor::read_rotor(&path).map_err(|e| {
-        match e.chain().find_map(|c| c.downcast_ref::<tiltpad::model::CaseError>()) {
-            Some(c) => crate::errors::case_error(py, c, None),
-            None => crate::errors::os_error(format!("{e:#}")),
-        }
+    let mut rotor = tiltpad::io::read::read_rotor(&path).map_err(|e| match &e {
+        tiltpad::io::read::ReadError::InvalidRotor { error, .. } => crate::errors::case_error(py, error, None),
+        _ => crate::errors::os_error(e.to_string()),
     })?;
     match coefficients {
         None => {}

@@ -32,12 +32,12 @@ pub struct BatchArgs<'a> {
 /// # Errors
 /// Unreadable inputs, a bad designs table, an output that cannot be written, or every design failed.
 pub fn run(args: &BatchArgs<'_>) -> Result<()> {
-    let table = super::inputs::read_text(args.designs, "designs table")?;
+    let table = crate::io::read::read_text(args.designs, "designs table")?;
     let designs = Designs::parse(&table).with_context(|| format!("in {}", args.designs.display()))?;
     if designs.rows.is_empty() {
         bail!("{} has a header but no design rows: nothing to solve", args.designs.display());
     }
-    let text = super::inputs::read_text(args.case, "case file")?;
+    let text = crate::io::read::read_text(args.case, "case file")?;
     let range = args.shard.range(designs.rows.len());
     super::inputs::check_points("batch", range.len(), args.max_points)?;
     let runner = Runner::new(text, args.set.to_vec(), false);

@@ -180,7 +180,7 @@ fn excitation_table(runner: &mut Runner, ratios: &[f64]) -> Result<CoefficientTa
 pub fn run(args: &CoefficientArgs) -> Result<()> {
     let elements = elements(&args.node, &args.tag)?;
     let analysis = args.analysis_rpm.as_deref().map(range_rpm).transpose()?;
-    let mut runner = band::cold_runner(super::inputs::read_text(&args.case, "case file")?, args.set.clone());
+    let mut runner = band::cold_runner(crate::io::read::read_text(&args.case, "case file")?, args.set.clone());
     // Refinement serves ROSS's spline; a CSV alone keeps exactly the requested speeds.
     let refine = args.ross.is_some() && !args.no_refine;
     let (table, warnings, stop) = match (&args.speed_rpm, &args.excitation_ratio) {

@@ -38,6 +38,28 @@ pub enum Command {
         #[arg(long, value_name = "OUT.vtu")]
         vtu: Option<PathBuf>,
     },
+    /// Time and error of each fidelity level (preview, standard, reference) on this case, against a finer
+    /// solve (twice the reference level's element counts): what each level costs and how accurate it is.
+    Fidelity {
+        /// Case file (TOML); it must not fix the element counts (they override mesh.fidelity).
+        case: PathBuf,
+        /// Override a case value, e.g. `--set thermal.model=thd` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Solves per level; each level's time is their median (1 to 50).
+        #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u16).range(1..=50))]
+        repeats: u16,
+        /// JSON of the levels: film nodes, median time [ms], errors as fractions (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        json: Option<PathBuf>,
+        /// CSV, one row per level and the truth's (`-`: standard output).
+        #[arg(long, value_name = "OUT")]
+        csv: Option<PathBuf>,
+        /// Most estimated hours of work (the finer solve and each level's solves; refused before the first
+        /// solve beyond it).
+        #[arg(long, value_name = "H", default_value_t = DEFAULT_MAX_HOURS, value_parser = inputs::parse_hours)]
+        max_hours: f64,
+    },
     /// Solve a case over a grid of any case keys; one row per point, written as it completes.
     Sweep {
         /// Case file (TOML) the sweep starts from.
@@ -247,18 +269,6 @@ pub enum Command {
         /// Write the table as JSON instead (`-`: standard output).
         #[arg(long, value_name = "OUT")]
         json: Option<PathBuf>,
-    },
-    /// Measure time and error per fidelity level; writes docs/PERFORMANCE.md (run in --release).
-    Bench {
-        /// Repeated solves per measurement (the median is reported).
-        #[arg(long, default_value_t = 7)]
-        repeats: usize,
-        /// Project root (where `cases/` and `docs/` are).
-        #[arg(long, default_value = ".")]
-        root: PathBuf,
-        /// Re-measure one section only (`table`: the first table with its targets, thermal-loop cost, cost growth and `assets/fidelity.json`; `frf`, `flex`, `rotor`, `turbulence`, `cavitation`, `control`, `sommerfeld`, `feeding`, `flows`, `estimates`) and replace it in docs/PERFORMANCE.md, keeping the rest; the section closes with the time of a calibration solve before and after it, against the same solve in the first table (the machine's speed drifts between runs).
-        #[arg(long, value_name = "SECTION")]
-        only: Option<String>,
     },
     /// Convergence map of the equilibrium: every shipped case and a generated family of 144 bearings, load
     /// direction every `--step-deg` × Sommerfeld number 10 … 0.01; counts converged / physical error /

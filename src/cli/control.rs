@@ -11,12 +11,11 @@ use anyhow::{bail, Context, Result};
 
 use crate::control::analysis::{ControlAnalysis, ControlParams, ControlResult, GainOnset};
 use crate::control::rig::{RigLoop, RigSweep};
-use crate::model::control::{parse_control_file, Control, PlantInfo};
-use crate::model::rotor::{parse_rotor_file, Rotor};
-use crate::study::estimate::Estimate;
+use crate::io::read::read_controlled;
+use crate::model::control::{parse_control_file, PlantInfo};
 use crate::units::{BAR, KN, RPM, UM};
 
-use super::rotor::{parse_speeds, read_rotor};
+use super::rotor::parse_speeds;
 use super::rows::announce;
 use super::{is_stdout, write_atomic};
 
@@ -43,40 +42,6 @@ pub struct ControlArgs<'a> {
     pub gain_csv: Option<PathBuf>,
     /// The root locus, one row per gain and pole.
     pub locus_csv: Option<PathBuf>,
-}
-
-/// Reads a rotor file and its controller.
-///
-/// # Errors
-/// I/O and validation errors naming the file and the key; a file without `[control]`.
-pub fn read_controlled(path: &Path) -> Result<(Rotor, Control)> {
-    let rotor = read_rotor(path)?;
-    let text = std::fs::read_to_string(path).with_context(|| format!("cannot read rotor file {}", path.display()))?;
-    let file = parse_rotor_file(&text).with_context(|| format!("invalid rotor file {}", path.display()))?;
-    let Some(table) = file.control else {
-        bail!("{}: {}", path.display(), crate::control::ControlError::NoController);
-    };
-    let control =
-        table.resolve(&PlantInfo::rotor(&rotor)).with_context(|| format!("invalid rotor file {}", path.display()))?;
-    Ok((rotor, control))
-}
-
-/// The work of a control run before it starts: at each speed one bearing solve per bearing and the damped
-/// eigen-solutions open and closed loop, one per actuator for the Nyquist test and one per swept gain (other
-/// than 0 and the controller's); the onsets open, closed and at each swept gain bisect with up to
-/// [`super::rotor::ONSET_PROBES`] probes each (bearing solves and an eigen-solution); the root locus adds one
-/// per gain.
-#[must_use]
-pub fn estimate(rotor: &Rotor, control: &Control, params: &ControlParams) -> Estimate {
-    let probes = (2 + params.gains.len()).saturating_mul(super::rotor::ONSET_PROBES);
-    let swept = params.gains.iter().filter(|&&g| g != 0.0 && g != control.gain).count();
-    let nyquist = if params.nyquist { control.actuators.len() } else { 0 };
-    let locus = match params.root_locus_rad_s {
-        Some(_) if params.gains.is_empty() => 21,
-        Some(_) => params.gains.len(),
-        None => 0,
-    };
-    Estimate::control(rotor, params.speeds_rad_s.len(), probes, 2 + nyquist + swept, probes + locus)
 }
 
 /// Parses `G1,G2,…` or `FROM:TO:N` into gains.
@@ -130,7 +95,7 @@ pub fn run(args: &ControlArgs<'_>) -> Result<()> {
     if args.locus_csv.is_some() && params.root_locus_rad_s.is_none() {
         bail!("--locus-csv needs --root-locus RPM (the speed of the locus)");
     }
-    let estimate = estimate(&rotor, &control, &params);
+    let estimate = params.estimate(&rotor, &control);
     super::inputs::check_work(&estimate, args.max_hours)?;
     let context = || format!("analysing {}", args.rotor.display());
     // One bearing solve per bearing and speed: a bar on standard error shows them go by; Ctrl-C stops after

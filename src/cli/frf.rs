@@ -9,8 +9,7 @@ use serde_json::json;
 use crate::bearing::frf::model::band;
 use crate::bearing::Stages;
 use crate::io::write_file;
-use crate::model::Case;
-use crate::scene::frf::FrfCurves;
+use crate::scene::frf::{port_names, FrfCurves};
 
 use super::read_case;
 use super::rows::announce;
@@ -30,14 +29,6 @@ pub struct FrfArgs<'a> {
     pub control: Option<&'a Path>,
     /// The rig's closed loop as CSV.
     pub loop_csv: Option<PathBuf>,
-}
-
-/// Port names (`A`, `B`) of a case, in its order.
-#[must_use]
-pub fn port_names(case: &Case) -> Vec<&'static str> {
-    case.hydraulics
-        .as_ref()
-        .map_or_else(Vec::new, |h| h.ports.iter().map(|p| if p.sign > 0.0 { "A" } else { "B" }).collect())
 }
 
 /// Computes and writes the curves.

@@ -1,50 +1,14 @@
-//! What every command checks before it starts: input files read under a size cap (a case path of
-//! `/dev/zero` is refused after [`MAX_INPUT_BYTES`], not read until memory runs out), outputs that would
-//! overwrite an input or each other refused, and the work of a command (points to solve) bounded up front
-//! with the setting that raises the bound.
+//! What every command checks before it starts (its input files are read under a size cap by
+//! [`crate::io::read`]): outputs that would overwrite an input or each other refused, and the work of a
+//! command (points to solve) bounded up front with the setting that raises the bound.
 
-use std::io::Read as _;
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context, Result};
-
-/// Largest input file read [bytes]: case, rotor and designs files are kilobytes; a designs table of a
-/// hundred thousand rows is a few megabytes.
-pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
+use anyhow::{bail, Result};
 
 /// Default bound on the points one command solves (sweep points, designs, speeds, frequencies); each
 /// command's `--max-points` raises it.
 pub const DEFAULT_MAX_POINTS: usize = 10_000;
-
-/// Reads a text input (`what`: "case file", "designs table", …) of at most [`MAX_INPUT_BYTES`].
-///
-/// # Errors
-/// A missing or unreadable file, a directory, more than the cap, or text that is not UTF-8.
-pub fn read_text(path: &Path, what: &str) -> Result<String> {
-    let file = std::fs::File::open(path).with_context(|| format!("cannot read {what} {}", path.display()))?;
-    if file.metadata().is_ok_and(|m| m.is_dir()) {
-        bail!("cannot read {what} {}: it is a directory", path.display());
-    }
-    let mut bytes = Vec::new();
-    file.take(MAX_INPUT_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .with_context(|| format!("cannot read {what} {}", path.display()))?;
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
-        bail!(
-            "{what} {} is larger than {} MiB, the most tiltpad reads from an input file (a {what} is a few kilobytes); \
-             is it the right file?",
-            path.display(),
-            MAX_INPUT_BYTES / (1024 * 1024)
-        );
-    }
-    String::from_utf8(bytes).map_err(|e| {
-        anyhow::anyhow!(
-            "{what} {} is not UTF-8 text (invalid byte at offset {})",
-            path.display(),
-            e.utf8_error().valid_up_to()
-        )
-    })
-}
 
 /// A file's identity: the device and inode of what the path names (through symlinks) when it exists, else
 /// its absolute path with the directory resolved.
@@ -185,14 +149,7 @@ mod tests {
     }
 
     #[test]
-    fn inputs_are_read_under_a_size_cap() {
-        #[cfg(unix)]
-        {
-            let e = read_text(Path::new("/dev/zero"), "case file").unwrap_err().to_string();
-            assert!(e.contains("larger than 64 MiB"), "{e}");
-        }
-        let e = read_text(Path::new("/nonexistent/case.toml"), "case file").unwrap_err();
-        assert!(format!("{e:#}").contains("cannot read case file /nonexistent/case.toml"), "{e:#}");
+    fn points_are_bounded_with_the_flag_that_raises_the_bound() {
         assert!(check_points("sweep", 10_001, 10_000).unwrap_err().to_string().contains("--max-points 10001"));
         assert!(check_points("sweep", 10_000, 10_000).is_ok());
     }

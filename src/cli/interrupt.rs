@@ -245,10 +245,10 @@ mod tests {
         // A long single solve: its safe points.
         let line = heartbeat_line("tiltpad solve", "", 7.0, 42, None);
         assert!(line.contains("tiltpad solve, safe point 42 of the solver"), "{line}");
-        // Work that passes no safe point of the solver (a map's cold solves, a bench section): the command and
-        // its time, not "safe point 0".
-        let line = heartbeat_line("tiltpad bench", "", 31.0, 0, None);
-        assert_eq!(line, "working: tiltpad bench; 31 s so far (Ctrl-C stops after the point being solved)");
+        // Work that passes no safe point of the solver (a map's cold solves, a critical-speed map): the command
+        // and its time, not "safe point 0".
+        let line = heartbeat_line("tiltpad convergence-map", "", 31.0, 0, None);
+        assert_eq!(line, "working: tiltpad convergence-map; 31 s so far (Ctrl-C stops after the point being solved)");
         assert!(!line.contains("safe point"), "{line}");
     }
 

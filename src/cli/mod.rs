@@ -1,4 +1,4 @@
-//! Command-line interface: `tiltpad solve`, `sweep`, `sommerfeld`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `schema`, `bench`.
+//! Command-line interface: `tiltpad solve`, `sweep`, `sommerfeld`, `batch`, `coefficients`, `modes`, `frf`, `rotor`, `control`, `fidelity`, `schema`, `convergence-map`.
 //!
 //! Engineering units at this edge only; JSON and CSV outputs are SI or carry their unit in each name.
 //! Every output path may be `-` (standard output); human-readable text then goes to standard error, which
@@ -7,22 +7,11 @@
 //! [`crate::bearing::solution::json`]).
 
 mod batch;
-mod bench;
-mod bench_batch;
-mod bench_cavitation;
-mod bench_control;
-mod bench_estimates;
-mod bench_feeding;
-mod bench_flex;
-mod bench_flows;
-mod bench_frf;
-mod bench_rotor;
-mod bench_sommerfeld;
-mod bench_turb;
 mod coefficients;
 mod command;
 pub mod control;
 mod convergence_map;
+mod fidelity;
 pub mod frf;
 mod inputs;
 pub mod interrupt;
@@ -51,7 +40,7 @@ pub use command::{Cli, Command};
 /// # Errors
 /// I/O and every case error, with the file name.
 pub fn read_case(path: &Path, set: &[String]) -> Result<(CaseFile, Case)> {
-    let text = inputs::read_text(path, "case file")?;
+    let text = crate::io::read::read_text(path, "case file")?;
     for note in crate::model::replaced_keys(&text, set).unwrap_or_default() {
         eprintln!("note: {note}");
     }
@@ -78,6 +67,17 @@ pub fn run(command: Command) -> Result<()> {
     interrupt::install(&std::env::args().nth(1).unwrap_or_default());
     match command {
         Command::Solve { case, set, json, vtu } => solve::solve(&case, &set, json.as_ref(), vtu.as_ref()),
+        Command::Fidelity { case, set, repeats, json, csv, max_hours } => {
+            inputs::check_outputs(&[("case file", &case)], &[("--json", json.as_deref()), ("--csv", csv.as_deref())])?;
+            fidelity::run(&fidelity::FidelityArgs {
+                case: &case,
+                set: &set,
+                repeats: usize::from(repeats),
+                json,
+                csv,
+                max_hours,
+            })
+        }
         Command::Sweep { case, vary, param, from, to, steps, set, csv, jsonl, vtu, max_points, max_hours } => {
             let mut axes = Vec::new();
             if let Some(key) = param {
@@ -247,6 +247,5 @@ pub fn run(command: Command) -> Result<()> {
                 update_doc,
             )
         }
-        Command::Bench { repeats, root, only } => bench::run_only(&root, only.as_deref(), repeats),
     }
 }

@@ -4,15 +4,15 @@
 //! per speed).
 
 use crate::units::RPM;
-use std::fmt::Write as _;
 use std::path::Path;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 
-use crate::model::rotor::{parse_rotor_file, CoefficientModel, Rotor};
-use crate::rotor::analysis::{Analysis, AnalysisParams, AnalysisResult, Step};
-use crate::rotor::eigen::Whirl;
+use crate::io::read::read_rotor;
+use crate::io::rotor_text::{csv_text, summary};
+use crate::model::rotor::CoefficientModel;
+use crate::rotor::analysis::{Analysis, AnalysisParams, Step, ONSET_PROBES};
 use crate::study::estimate::Estimate;
 
 use super::rows::announce;
@@ -23,24 +23,6 @@ const MAX_SPEED_RPM: f64 = match crate::key!("operating.speed_rpm").allowed {
     crate::model::schema::Allowed::Number(range) => range.hi,
     _ => panic!("operating.speed_rpm: a number"),
 };
-
-/// Speeds the onset bisection adds, at most, in the estimate (a relative bracket of 10⁻³ takes ten halvings).
-pub(super) const ONSET_PROBES: usize = 12;
-
-/// Modes written per speed in the CSV and the summary.
-const MODES: usize = 6;
-
-/// Reads a rotor file and the bearing cases it names (relative to it).
-///
-/// # Errors
-/// I/O and validation errors, naming the file and the key.
-pub fn read_rotor(path: &Path) -> Result<Rotor> {
-    let text = super::inputs::read_text(path, "rotor file")?;
-    let file = parse_rotor_file(&text).with_context(|| format!("invalid rotor file {}", path.display()))?;
-    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let read = |name: &str| super::inputs::read_text(&dir.join(name), "bearing case").map_err(|e| format!("{e:#}"));
-    file.resolve(&read).with_context(|| format!("invalid rotor file {}", path.display()))
-}
 
 /// Parses `FROM:TO:N` (rpm) into N speeds [rad/s].
 ///
@@ -63,32 +45,6 @@ pub fn parse_speeds(spec: &str, max_points: usize) -> Result<Vec<f64>> {
     super::inputs::check_points("--speeds", n, max_points)?;
     #[allow(clippy::cast_precision_loss)]
     Ok((0..n).map(|i| RPM.to_si(a + (b - a) * i as f64 / (n - 1) as f64)).collect())
-}
-
-/// A rotor file: a uniform shaft of `elements` elements (four equal sections, `elements` a multiple of 4 up
-/// to the file's 400) with one impeller and its unbalance at mid-span, on two bearings given by the case
-/// `bearing` (an absolute path), analysed on the full shaft (`shaft_modes = 0`): the eigen-solutions are
-/// most of its work (the bench of the estimates and the tests of its progress use it).
-pub fn uniform_rotor(elements: usize, bearing: &Path) -> String {
-    let section = elements / 4;
-    let mut t = format!(
-        "title = \"Uniform shaft, {elements} elements, full shaft (generated)\"\n\n[rotor]\nshaft_modes = 0\n\
-         coefficients = \"full\"\n"
-    );
-    for _ in 0..4 {
-        t.push_str(&format!(
-            "\n[[rotor.section]]\nlength_mm = 300.0\nouter_diameter_mm = 101.6\nelements = {section}\n"
-        ));
-    }
-    let (a, mid, b) = (elements / 20, elements / 2, elements - elements / 20);
-    t.push_str(&format!(
-        "\n[[rotor.disk]]\nnode = {mid}\nmass_kg = 46.0\npolar_inertia_kg_m2 = 0.92\ntransverse_inertia_kg_m2 = 0.47\n\
-         \n[[rotor.unbalance]]\nnode = {mid}\namount_g_mm = 720.0\n"
-    ));
-    for node in [a, b] {
-        t.push_str(&format!("\n[[rotor.bearing]]\nnode = {node}\ncase = {:?}\n", bearing.display().to_string()));
-    }
-    t
 }
 
 /// Arguments of `tiltpad rotor`.
@@ -152,7 +108,7 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     if done == 0 {
         return Err(super::interrupt::Interrupted::new(0, of, "speeds", &[]).into());
     }
-    emit(args, &summary(&rotor, &result), &result, || csv_text(&result))?;
+    emit(args, &summary(&rotor, &result), &result, || Ok(csv_text(&result)?))?;
     stopped(done, of, args)
 }
 
@@ -237,113 +193,4 @@ pub(super) fn emit<T: serde::Serialize>(
         announce(out);
     }
     Ok(())
-}
-
-fn whirl(w: Whirl) -> &'static str {
-    match w {
-        Whirl::Forward => "F",
-        Whirl::Backward => "B",
-    }
-}
-
-/// The human-readable summary.
-#[must_use]
-pub fn summary(rotor: &Rotor, r: &AnalysisResult) -> String {
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        "{}{}",
-        r.title,
-        if r.representative { "  [REPRESENTATIVE rotor: not all data published]" } else { "" }
-    );
-    let _ = writeln!(
-        s,
-        "{} elements, {:.1} kg, {} bearing(s), coefficients {:?}; shaft {}; system {} coordinates",
-        rotor.elements.len(),
-        rotor.mass(),
-        rotor.bearings.len(),
-        rotor.coefficients,
-        if r.report.shaft_modes == 0 {
-            "full".to_string()
-        } else {
-            format!("reduced to {} modes per plane", r.report.shaft_modes)
-        },
-        r.report.system_dofs
-    );
-    let _ = writeln!(
-        s,
-        "{} bearing solves, {} eigen-solutions, {:.2} s",
-        r.report.bearing_solves, r.report.eigen_solutions, r.report.seconds
-    );
-    match r.onset {
-        Some(o) => {
-            let _ = writeln!(
-                s,
-                "instability onset: {:.0} rpm (± {:.0})",
-                RPM.from_si(o.speed_rad_s),
-                RPM.from_si(o.bracket_rad_s) / 2.0
-            );
-        }
-        None => {
-            let _ = writeln!(s, "instability onset: none in the sweep");
-        }
-    }
-    for c in &r.critical_speeds {
-        let _ = writeln!(
-            s,
-            "critical speed (1×, forward mode {}): {:.0} rpm, log dec {:.3}",
-            c.rank + 1,
-            RPM.from_si(c.speed_rad_s),
-            c.log_dec
-        );
-    }
-    for w in &r.report.warnings {
-        let _ = writeln!(s, "warning: {w}");
-    }
-    let _ = writeln!(s, "{:>9}  modes: frequency [Hz] / log dec / whirl", "rpm");
-    for p in &r.speeds {
-        let _ = write!(s, "{:>9.0} ", RPM.from_si(p.point.speed_rad_s));
-        for m in p.point.modes.modes.iter().take(MODES) {
-            let _ = write!(s, " {:>8.2}/{:>7.3}/{}", m.frequency_hz(), m.log_dec, whirl(m.whirl));
-        }
-        let _ = writeln!(s);
-    }
-    s
-}
-
-/// One row per speed: modes, then the response at each response node and the API 617 limit.
-///
-/// # Errors
-/// CSV writer errors.
-pub fn csv_text(r: &AnalysisResult) -> Result<String> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let mut head = vec!["speed_rpm".to_string(), "min_log_dec".to_string()];
-    for i in 1..=MODES {
-        head.extend([format!("mode{i}_hz"), format!("mode{i}_log_dec"), format!("mode{i}_whirl")]);
-    }
-    for n in &r.response_nodes {
-        head.extend([format!("node{n}_pp_um"), format!("node{n}_x_phase_deg")]);
-    }
-    head.push("api617_limit_um".into());
-    w.write_record(&head)?;
-    for p in &r.speeds {
-        let mut row = vec![format!("{}", RPM.from_si(p.point.speed_rad_s)), format!("{}", p.point.min_log_dec())];
-        for i in 0..MODES {
-            match p.point.modes.modes.get(i) {
-                Some(m) => {
-                    row.extend([format!("{}", m.frequency_hz()), format!("{}", m.log_dec), whirl(m.whirl).to_string()])
-                }
-                None => row.extend([String::new(), String::new(), String::new()]),
-            }
-        }
-        for n in &r.response_nodes {
-            match p.orbits.iter().find(|o| o.node == *n) {
-                Some(o) => row.extend([format!("{}", o.major_pp_m * 1e6), format!("{}", o.x_phase_rad.to_degrees())]),
-                None => row.extend([String::new(), String::new()]),
-            }
-        }
-        row.push(if p.api617_limit_um.is_finite() { format!("{}", p.api617_limit_um) } else { String::new() });
-        w.write_record(&row)?;
-    }
-    Ok(String::from_utf8(w.into_inner()?)?)
 }

@@ -10,12 +10,12 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use crate::rotor::critical_map::{CriticalMapRun, CriticalSpeedMap, MapStep};
+use crate::io::read::read_rotor;
+use crate::rotor::critical_map::{CriticalMapRun, CriticalSpeedMap, MapStep, MAP_POINTS};
 
-use super::rotor::{emit, parse_speeds, read_rotor, RotorArgs};
+use super::rotor::{emit, parse_speeds, RotorArgs};
 
-/// Stiffnesses of the map (logarithmic) and modes drawn.
-pub(super) const POINTS: usize = 81;
+/// Modes drawn.
 const MODES: usize = 4;
 
 /// Runs the map and writes the outputs. The bearings' speeds, then the map's eigen-solutions, go by on the
@@ -28,17 +28,17 @@ const MODES: usize = 4;
 pub fn run(args: &RotorArgs<'_>) -> Result<()> {
     let rotor = read_rotor(args.rotor)?;
     let speeds = parse_speeds(args.speeds, args.max_points)?;
-    let estimate = crate::study::estimate::Estimate::critical_map(&rotor, speeds.len(), POINTS);
+    let estimate = crate::study::estimate::Estimate::critical_map(&rotor, speeds.len(), MAP_POINTS);
     super::inputs::check_work(&estimate, args.max_hours)?;
     let each = estimate
         .eigen
         .map_or(String::new(), |e| format!(", {} each", crate::study::estimate::duration_text(e.seconds_each)));
     let of_speeds = speeds.len();
     let context = || format!("critical-speed map of {}", args.rotor.display());
-    let mut run = CriticalMapRun::new(&rotor, speeds, POINTS, MODES);
+    let mut run = CriticalMapRun::new(&rotor, speeds, MAP_POINTS, MODES);
     let mut pb = super::sweep::progress(of_speeds, "speeds");
     super::interrupt::doing(format!(
-        "critical-speed map: bearing stiffness at {of_speeds} speeds, then {POINTS} undamped eigen-solutions of the \
+        "critical-speed map: bearing stiffness at {of_speeds} speeds, then {MAP_POINTS} undamped eigen-solutions of the \
          shaft{each} (about {} in all by the estimate)",
         crate::study::estimate::duration_text(estimate.seconds)
     ));
@@ -65,13 +65,13 @@ pub fn run(args: &RotorArgs<'_>) -> Result<()> {
         return Err(super::interrupt::Interrupted::new(0, of_speeds, "speeds", &[]).into());
     }
     emit(args, &summary(&map), &map, || csv_text(&map))?;
-    if super::interrupt::requested() && stiffnesses < POINTS {
+    if super::interrupt::requested() && stiffnesses < MAP_POINTS {
         let outputs: Vec<&Path> = [args.json.as_deref(), args.csv.as_deref()].into_iter().flatten().collect();
         let outputs = if outputs.is_empty() { vec![Path::new("-")] } else { outputs };
         let stop = if speeds_done < of_speeds {
             super::interrupt::Interrupted::new(speeds_done, of_speeds, "speeds", &outputs)
         } else {
-            super::interrupt::Interrupted::new(stiffnesses, POINTS, "eigen-solutions", &outputs)
+            super::interrupt::Interrupted::new(stiffnesses, MAP_POINTS, "eigen-solutions", &outputs)
         };
         return Err(stop.into());
     }

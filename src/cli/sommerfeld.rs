@@ -32,7 +32,7 @@ pub struct SommerfeldArgs<'a> {
 /// An unreadable or invalid case, a point count outside [2, [`MAX_POINTS`]].
 pub fn sweep(case_path: &Path, set: &[String], points: usize) -> Result<(SweepTable, ChartGeometry, usize)> {
     let (_, case) = super::read_case(case_path, set)?;
-    let text = super::inputs::read_text(case_path, "case file")?;
+    let text = crate::io::read::read_text(case_path, "case file")?;
     let mut spec = SweepSpec::sommerfeld_chart(&case);
     spec.count = points;
     let values = spec.values().with_context(|| format!("--points {points}: allowed 2 to {MAX_POINTS}"))?;

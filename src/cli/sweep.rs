@@ -45,7 +45,7 @@ pub fn run(args: SweepArgs<'_>) -> Result<()> {
     if args.axes.is_empty() {
         bail!("nothing to sweep: give --vary KEY=FROM:TO:STEPS (or --param KEY --from A --to B --steps N)");
     }
-    let text = super::inputs::read_text(args.case, "case file")?;
+    let text = crate::io::read::read_text(args.case, "case file")?;
     for (i, a) in args.axes.iter().enumerate() {
         if let Some(b) = args.axes[..i].iter().find(|b| same_key(&a.key, &b.key)) {
             bail!(

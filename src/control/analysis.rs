@@ -23,11 +23,12 @@ use crate::bearing::film::coordinates::JOURNAL_DOFS;
 use crate::model::control::{ActuatorKind, Axis, Control};
 use crate::model::rotor::{BearingSupport, CoefficientModel, Rotor};
 use crate::physics::hydraulics::servovalve::SMALL_SIGNAL_FRACTION;
-use crate::rotor::analysis::{shaft_model, AnalysisReport};
+use crate::rotor::analysis::{shaft_model, AnalysisReport, ONSET_PROBES};
 use crate::rotor::assembly::{NodeDof, ShaftModel, Weights};
 use crate::rotor::bearings::BearingSet;
 use crate::rotor::coupling::{assemble, BearingCoefficients};
 use crate::rotor::unbalance::{api617_limit_um, forces, Orbit};
+use crate::study::estimate::Estimate;
 
 /// Poles kept on a root locus: up to this frequency [Hz] (the valves' and lines' poles lie far above).
 const LOCUS_MAX_HZ: f64 = 500.0;
@@ -54,6 +55,24 @@ impl ControlParams {
     #[must_use]
     pub fn new(speeds_rad_s: Vec<f64>) -> Self {
         Self { speeds_rad_s, gains: Vec::new(), onset_tol: 1e-3, nyquist: true, root_locus_rad_s: None }
+    }
+
+    /// The work of an analysis of `rotor` under `control` with these settings, before it starts: at each
+    /// speed one bearing solve per bearing and the damped eigen-solutions open and closed loop, one per
+    /// actuator for the Nyquist test and one per swept gain (other than 0 and the controller's); the onsets
+    /// open, closed and at each swept gain bisect with up to [`ONSET_PROBES`] probes each (bearing solves
+    /// and an eigen-solution); the root locus adds one per gain.
+    #[must_use]
+    pub fn estimate(&self, rotor: &Rotor, control: &Control) -> Estimate {
+        let probes = (2 + self.gains.len()).saturating_mul(ONSET_PROBES);
+        let swept = self.gains.iter().filter(|&&g| g != 0.0 && g != control.gain).count();
+        let nyquist = if self.nyquist { control.actuators.len() } else { 0 };
+        let locus = match self.root_locus_rad_s {
+            Some(_) if self.gains.is_empty() => 21,
+            Some(_) => self.gains.len(),
+            None => 0,
+        };
+        Estimate::control(rotor, self.speeds_rad_s.len(), probes, 2 + nyquist + swept, probes + locus)
     }
 }
 

@@ -19,6 +19,10 @@ use super::stability::{onset, Onset, SpeedPoint};
 use super::unbalance::{api617_limit_um, response, Orbit};
 use crate::model::rotor::Rotor;
 
+/// Speeds the onset bisection adds, at most, in a work estimate (the default relative bracket of 10⁻³ takes
+/// ten halvings).
+pub const ONSET_PROBES: usize = 12;
+
 /// Settings of an analysis.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct AnalysisParams {

@@ -19,6 +19,10 @@ use super::coupling::BearingCoefficients;
 use super::error::RotorError;
 use crate::model::rotor::Rotor;
 
+/// Support stiffnesses of the command line's map (`tiltpad rotor --critical-map`; logarithmic), which its
+/// work estimate counts.
+pub const MAP_POINTS: usize = 81;
+
 /// The map: one row of frequencies per support stiffness.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CriticalMap {

@@ -1,58 +1,11 @@
-//! What a fidelity level costs and how accurate it is, as measured by `tiltpad bench` on the compressor
-//! bearing (`assets/fidelity.json`, written with `docs/PERFORMANCE.md`). The editor shows it next to the
-//! fidelity selector.
+//! What a fidelity level costs and how accurate it is, as measured by the developers' bench
+//! (`cargo xtask bench`, [`crate::study::fidelity`]) on the compressor bearing (`assets/fidelity.json`,
+//! written with `docs/PERFORMANCE.md`). The editor shows it next to the fidelity selector; `tiltpad fidelity`
+//! measures the same for a user's own case.
 
 use serde::{Deserialize, Serialize};
 
-use crate::bearing::solution::BearingFlows;
-
-/// One measured level of one run (isothermal or THD): written by the bench, read by the editor.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct LevelCost {
-    pub case: String,
-    pub level: String,
-    pub film_nodes: usize,
-    pub median_ms: f64,
-    pub err_eccentricity: f64,
-    pub err_k: f64,
-    pub err_c: f64,
-    pub err_p_max: f64,
-    /// Relative error of the maximum film temperature rise above supply (THD rows only).
-    #[serde(default)]
-    pub err_t_max: Option<f64>,
-    /// Worst relative error of the bearing's flows ([`flow_error`]; absent in tables measured before it).
-    #[serde(default)]
-    pub err_flows: Option<f64>,
-}
-
-/// Worst relative error over the bearing's flows (leading edges in, trailing edges out, sides out,
-/// orifices in, into cavitation), each against its own truth value, over the flows that carry at least
-/// 1 % of the throughput (smaller ones are round-off of a balance); `None` when no flow does.
-#[must_use]
-pub fn flow_error(flows: &BearingFlows, truth: &BearingFlows) -> Option<f64> {
-    worst_flow(flows, truth).map(|(e, _)| e)
-}
-
-/// [`flow_error`] and the name of the flow it is (`"orifices"`, `"into cavitation"`, …).
-#[must_use]
-pub fn worst_flow(flows: &BearingFlows, truth: &BearingFlows) -> Option<(f64, &'static str)> {
-    let parts = |f: &BearingFlows| {
-        [
-            ("leading edges", f.leading_edges_in),
-            ("trailing edges", f.trailing_edges_out),
-            ("sides", f.sides_out),
-            ("orifices", f.orifices_in),
-            ("into cavitation", f.to_cavitation),
-        ]
-    };
-    let (a, t) = (parts(flows), parts(truth));
-    let throughput: f64 = t.iter().map(|(_, v)| v.abs()).sum();
-    a.iter()
-        .zip(&t)
-        .filter(|(_, (_, t))| throughput > 0.0 && t.abs() >= 0.01 * throughput)
-        .map(|((name, a), (_, t))| (((a - t) / t).abs(), *name))
-        .reduce(|w, x| if x.0 > w.0 { x } else { w })
-}
+use crate::study::fidelity::LevelCost;
 
 /// The measured table.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -110,23 +63,9 @@ mod tests {
         assert_eq!(t.describe("standard").len(), t.rows.iter().filter(|r| r.level == "standard").count());
     }
 
+    /// A row's flow error shows in its line.
     #[test]
-    fn flow_error_is_the_worst_flow_that_matters() {
-        let truth = BearingFlows {
-            leading_edges_in: 10.0,
-            trailing_edges_out: 6.0,
-            sides_out: 3.0,
-            orifices_in: 1.0,
-            to_cavitation: 0.1,
-            mass_balance_error: 0.0,
-        };
-        // The orifice flow 30 % off dominates; the flow into cavitation (0.5 % of the throughput) is left out.
-        let coarse = BearingFlows { leading_edges_in: 10.1, orifices_in: 1.3, to_cavitation: 0.2, ..truth };
-        let e = flow_error(&coarse, &truth).unwrap();
-        assert!((e - 0.3).abs() < 1e-12, "{e}");
-        assert_eq!(worst_flow(&coarse, &truth).map(|(_, name)| name), Some("orifices"));
-        assert_eq!(flow_error(&truth, &truth), Some(0.0));
-        assert_eq!(flow_error(&truth, &BearingFlows::default()), None);
+    fn a_rows_flow_error_is_described() {
         let mut row = shipped().unwrap().rows[0].clone();
         row.err_flows = Some(0.3);
         let table = FidelityTable {

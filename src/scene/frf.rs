@@ -9,6 +9,7 @@ use nalgebra::Complex;
 use serde::Serialize;
 
 use crate::bearing::frf::model::FrfSweep;
+use crate::model::Case;
 use crate::units::{BAR, UM};
 
 type C64 = Complex<f64>;
@@ -68,6 +69,15 @@ fn curve(name: String, unit: &'static str, group: &'static str, scale: f64, valu
 }
 
 const PORTS: [&str; 2] = ["A", "B"];
+
+/// Port names of a case in its order: the servovalve port each nozzle line is fed from (`A` or `B`); none
+/// without `[hydraulics]`.
+#[must_use]
+pub fn port_names(case: &Case) -> Vec<&'static str> {
+    case.hydraulics
+        .as_ref()
+        .map_or_else(Vec::new, |h| h.ports.iter().map(|p| if p.sign > 0.0 { PORTS[0] } else { PORTS[1] }).collect())
+}
 const AXES: [&str; 2] = ["x", "y"];
 
 impl FrfCurves {

@@ -21,7 +21,7 @@
 //! - [`summary_text`]: the same rows as the text `tiltpad solve` prints, with the pad table and the reports.
 //! - [`sweep`]: any case key against any output columns (series, CSV) for the sweep view.
 //! - [`export`]: CSV of the nodal fields, JSON of the results.
-//! - [`fidelity`]: the measured time and error of each fidelity level (from `tiltpad bench`).
+//! - [`fidelity`]: the measured time and error of each fidelity level (from the bench, `cargo xtask bench`).
 //!
 //! Positions are SI (metres, radians) in the solver's bearing frame or a pad's (s, z) frame; a view maps
 //! them to the screen. Display units appear only in values meant to be read (legends, rows, plot series),

@@ -9,7 +9,8 @@
 //! touchdown, a non-converged solve). Rows come out one at a time, in order, so a caller can write each
 //! as it completes. No I/O and no GUI here: the command line (`tiltpad sweep`, `tiltpad batch`) drives
 //! it, and the workbench's "any input against any output" sweep can reuse it. [`convergence`] is the
-//! equilibrium's convergence map over load direction and magnitude.
+//! equilibrium's convergence map over load direction and magnitude; [`fidelity`] the time and error of each
+//! fidelity level of a case against a finer solve.
 //!
 //! Determinism: with warm starts off (batches), a row depends only on the base case and its own
 //! overrides, so a batch split into shards gives the same rows as one run; only the `seconds` column (wall
@@ -21,6 +22,7 @@ pub mod convergence;
 pub mod designs;
 pub mod equilibrium_work;
 pub mod estimate;
+pub mod fidelity;
 pub mod grid;
 pub mod rotor_cost;
 pub mod run;

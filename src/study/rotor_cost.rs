@@ -1,6 +1,8 @@
 //! The rotor's share of a command's work estimate ([`super::estimate`]): the dense eigen-solutions per speed
 //! (damped, over the shaft's and the appended pad coordinates) and of the critical-speed map (undamped, one
 //! plane of the shaft), each costing the cube of its size at a measured rate, and the shaft model built once.
+//! The rates were measured on a generated uniform shaft ([`uniform_rotor`]), which the bench of the
+//! estimates and the tests of the rotor's progress generate again.
 
 use crate::model::rotor::{BearingSupport, CoefficientModel, Rotor};
 use crate::model::PadKind;
@@ -87,4 +89,31 @@ pub(super) fn appended_coordinates(rotor: &Rotor) -> usize {
             })
             .sum(),
     }
+}
+
+/// A rotor file: a uniform shaft of `elements` elements (four equal sections, `elements` a multiple of 4 up
+/// to the file's 400) with one impeller and its unbalance at mid-span, on two bearings given by the case
+/// `bearing` (an absolute path), analysed on the full shaft (`shaft_modes = 0`): the eigen-solutions are
+/// most of its work.
+#[must_use]
+pub fn uniform_rotor(elements: usize, bearing: &std::path::Path) -> String {
+    let section = elements / 4;
+    let mut t = format!(
+        "title = \"Uniform shaft, {elements} elements, full shaft (generated)\"\n\n[rotor]\nshaft_modes = 0\n\
+         coefficients = \"full\"\n"
+    );
+    for _ in 0..4 {
+        t.push_str(&format!(
+            "\n[[rotor.section]]\nlength_mm = 300.0\nouter_diameter_mm = 101.6\nelements = {section}\n"
+        ));
+    }
+    let (a, mid, b) = (elements / 20, elements / 2, elements - elements / 20);
+    t.push_str(&format!(
+        "\n[[rotor.disk]]\nnode = {mid}\nmass_kg = 46.0\npolar_inertia_kg_m2 = 0.92\ntransverse_inertia_kg_m2 = 0.47\n\
+         \n[[rotor.unbalance]]\nnode = {mid}\namount_g_mm = 720.0\n"
+    ));
+    for node in [a, b] {
+        t.push_str(&format!("\n[[rotor.bearing]]\nnode = {node}\ncase = {:?}\n", bearing.display().to_string()));
+    }
+    t
 }

@@ -306,7 +306,7 @@ fn help_names_the_workbench_and_describes_the_sweep_options() {
     // Every argument and option of every command has a description: clap separates it from the option by
     // two or more spaces, so a line with none is only the option (and its value name).
     for command in
-        ["solve", "sweep", "batch", "coefficients", "modes", "frf", "rotor", "schema", "bench", "convergence-map"]
+        ["solve", "fidelity", "sweep", "batch", "coefficients", "modes", "frf", "rotor", "schema", "convergence-map"]
     {
         let o = tiltpad().args([command, "--help"]).output().unwrap();
         assert!(o.status.success(), "{command}");
@@ -361,4 +361,44 @@ fn rotor_critical_map_writes_the_map_the_bearing_curves_and_their_crossings() {
     assert_eq!(text.lines().filter(|l| l.starts_with("crossing,")).count(), crossings.len());
     assert_eq!(text.lines().filter(|l| l.starts_with("mode1,")).count(), 81);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The product ships what users run: `tiltpad --help` lists no bench (the developers' bench is `cargo xtask
+/// bench`, in xtask/), no source file of the binary or the Python package is a bench, and no code there
+/// names the xtask (comments may: they say where the bench went).
+#[test]
+fn the_product_and_the_python_package_do_not_contain_the_bench() {
+    let o = tiltpad().arg("--help").output().unwrap();
+    let text = String::from_utf8_lossy(&o.stdout);
+    let commands: Vec<&str> = text
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert!(commands.contains(&"solve") && commands.contains(&"fidelity"), "{text}");
+    assert!(!commands.iter().any(|c| c.contains("bench")), "{commands:?}");
+    assert!(!tiltpad().args(["bench", "--help"]).output().unwrap().status.success());
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut stack = vec![root.join("src"), root.join("python/src")];
+    let mut files = 0;
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+                continue;
+            }
+            files += 1;
+            let name = path.strip_prefix(root).unwrap().display().to_string();
+            assert!(!name.contains("bench"), "{name}: a bench in the product");
+            let source = std::fs::read_to_string(&path).unwrap_or_default();
+            for (i, line) in source.lines().enumerate() {
+                let code = line.split("//").next().unwrap_or("");
+                assert!(!code.contains("xtask"), "{name}:{}: names the xtask: {line}", i + 1);
+            }
+        }
+    }
+    assert!(files > 100, "{files} files read");
 }

@@ -291,11 +291,11 @@ fn control_never_writes_over_its_rotor_file() {
     }
 }
 
-/// A generated rotor of `elements` elements on the full shaft (`tiltpad::cli::rotor::uniform_rotor`) in `dir`.
+/// A generated rotor of `elements` elements on the full shaft (`tiltpad::study::rotor_cost::uniform_rotor`) in `dir`.
 fn uniform_rotor(dir: &Path, elements: usize) -> PathBuf {
     let path = dir.join(format!("uniform-{elements}.toml"));
     let bearing = common::case_path("compressor-bearing.toml");
-    std::fs::write(&path, tiltpad::cli::rotor::uniform_rotor(elements, &bearing)).unwrap();
+    std::fs::write(&path, tiltpad::study::rotor_cost::uniform_rotor(elements, &bearing)).unwrap();
     path
 }
 
@@ -351,7 +351,7 @@ fn the_critical_speed_map_counts_its_undamped_eigen_solutions() {
     use tiltpad::study::estimate::Estimate;
     let dir = temp_dir("critical-map");
     for (elements, measured) in [(200, 4.6), (400, 36.2)] {
-        let rotor = tiltpad::cli::rotor::read_rotor(&uniform_rotor(&dir, elements)).unwrap();
+        let rotor = tiltpad::io::read::read_rotor(&uniform_rotor(&dir, elements)).unwrap();
         let e = Estimate::critical_map(&rotor, 2, 81);
         let eigen = e.eigen.unwrap();
         assert!(eigen.undamped);
@@ -374,10 +374,10 @@ fn the_critical_speed_map_counts_its_undamped_eigen_solutions() {
 #[test]
 fn the_control_estimate_counts_the_eigen_solutions_the_analysis_makes() {
     use tiltpad::control::analysis::{ControlAnalysis, ControlParams};
-    let (rotor, control) = tiltpad::cli::control::read_controlled(&rotor_path("compressor-rotor-active.toml")).unwrap();
+    let (rotor, control) = tiltpad::io::read::read_controlled(&rotor_path("compressor-rotor-active.toml")).unwrap();
     let speeds: Vec<f64> = (0..13).map(|i| tiltpad::units::RPM.to_si(6000.0 + 500.0 * f64::from(i))).collect();
     let params = ControlParams::new(speeds);
-    let e = tiltpad::cli::control::estimate(&rotor, &control, &params);
+    let e = params.estimate(&rotor, &control);
     let mut a = ControlAnalysis::new(&rotor, &control, params).unwrap();
     while !a.step().unwrap() {}
     let made = a.finish().unwrap().eigen_solutions;

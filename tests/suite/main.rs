@@ -5,6 +5,7 @@ mod architecture;
 mod bad_inputs;
 mod case_validation;
 mod cli;
+mod cli_fidelity;
 mod cli_study;
 mod closed_form_short_bearing;
 mod common;

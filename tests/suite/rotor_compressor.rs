@@ -7,7 +7,8 @@
 
 use std::path::Path;
 
-use tiltpad::cli::rotor::{parse_speeds, read_rotor};
+use tiltpad::cli::rotor::parse_speeds;
+use tiltpad::io::read::read_rotor;
 use tiltpad::model::rotor::{parse_rotor_file, CoefficientModel};
 use tiltpad::rotor::analysis::{run, AnalysisParams};
 

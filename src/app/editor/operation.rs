@@ -179,7 +179,8 @@ pub fn half_model_ui(ui: &mut Ui, doc: &mut Document, row: &'static KeySpec) -> 
     )
 }
 
-/// What the chosen level costs and how accurate it is (measured by `tiltpad bench`).
+/// What the chosen level costs and how accurate it is (measured on the compressor bearing by the developers'
+/// bench; `tiltpad fidelity` measures it on any case).
 pub fn fidelity_note_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
     let fid = doc.file().mesh.fidelity.unwrap_or_default();
     if let Some(table) = crate::scene::fidelity::shipped() {
@@ -188,7 +189,7 @@ pub fn fidelity_note_ui(ui: &mut Ui, doc: &mut Document) -> EditOutput {
         if !lines.is_empty() {
             ui.label("");
             ui.label(egui::RichText::new(format!("Expected ({}):\n{}", "compressor bearing", lines.join("\n"))).weak().small())
-                .on_hover_text(format!("Measured by `tiltpad bench` on {} ({}): median wall time of a complete solve and the error against a reference-fine mesh. Other bearings scale with their number of film nodes.", table.machine, table.generated));
+                .on_hover_text(format!("Measured on {} ({}): median wall time of a complete solve and the error against a reference-fine mesh. Other bearings scale with their number of film nodes; `tiltpad fidelity CASE` measures your case.", table.machine, table.generated));
             ui.end_row();
         }
     }

@@ -29,7 +29,7 @@
 //! layers load it, and the displacement of the skipped node layers is interpolated linearly in r (the
 //! trilinear elements' own interpolation). Its factorisation then has 3/5 of the unknowns. Measured on the
 //! compressor bearing's TEHD at the standard film mesh against 8 pad layers with every layer in the solid
-//! (`tiltpad bench --only flex`, docs/PERFORMANCE.md): 4 layers with the merged growth solid err by 0.05 % in
+//! (`cargo xtask bench --only flex`, docs/PERFORMANCE.md): 4 layers with the merged growth solid err by 0.05 % in
 //! ε and h_min and 0.12 % in C, 4 layers with all by 0.04 %, 0.03 % and 0.11 % — a thirtieth of the standard
 //! film mesh's own error (ε 1.56 %), for 0.25 s less (growth set-up and steps). Fillon's bearing A (TEHD,
 //! 4000 rpm, standard): h_min 23.580 µm merged, 23.576 µm with all 4 layers, 23.575 µm with 8; pad T_max

@@ -12,10 +12,10 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use crate::cli::rotor::{parse_speeds, read_rotor};
-use crate::model::load_case;
-use crate::model::rotor::{BearingSupport, Rotor, DEFAULT_SHAFT_MODES};
-use crate::rotor::analysis::{run, AnalysisParams, AnalysisResult};
+use tiltpad::io::read::read_rotor;
+use tiltpad::model::load_case;
+use tiltpad::model::rotor::{BearingSupport, Rotor, DEFAULT_SHAFT_MODES};
+use tiltpad::rotor::analysis::{run, AnalysisParams, AnalysisResult};
 
 /// The target: 50 speeds, bearings included, at preview fidelity.
 const TARGET_S: f64 = 2.0;
@@ -97,7 +97,7 @@ fn at_level(base: &Rotor, bearing_text: &str, level: &str) -> Result<Rotor> {
 }
 
 fn rpm(r: &AnalysisResult) -> String {
-    r.onset.map_or("—".to_string(), |o| format!("{:.0} rpm", crate::units::RPM.from_si(o.speed_rad_s)))
+    r.onset.map_or("—".to_string(), |o| format!("{:.0} rpm", tiltpad::units::RPM.from_si(o.speed_rad_s)))
 }
 
 /// The markdown section.
@@ -105,10 +105,10 @@ fn rpm(r: &AnalysisResult) -> String {
 /// # Errors
 /// Missing files, an invalid rotor or case, a failed analysis.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
-    super::interrupt::say("bench: rotor");
+    super::say("bench: rotor");
     let base = read_rotor(&root.join("cases").join("rotors").join("compressor-rotor.toml"))?;
     let bearing_text = std::fs::read_to_string(root.join("cases").join("compressor-bearing.toml"))?;
-    let speeds = parse_speeds(SPEEDS, usize::MAX)?;
+    let speeds = super::speeds(SPEEDS)?;
     let preview = at_level(&base, &bearing_text, "preview")?;
     let mut rows = Vec::new();
     for m in REDUCTIONS {

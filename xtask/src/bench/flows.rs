@@ -1,7 +1,7 @@
 //! Bench section: flows against the mesh on every shipped case. Each case as shipped (its own cavitation
 //! condition and thermal model) and with the mass-conserving film (`physics.cavitation = "jfo"`), at the
 //! standard level against twice the reference level's element counts: the worst relative flow error (as in
-//! the first table, [`crate::scene::fidelity::worst_flow`]), which flow it is, and the oil the Reynolds
+//! the first table, [`tiltpad::study::fidelity::worst_flow`]), which flow it is, and the oil the Reynolds
 //! condition creates in cavitated zones (the report's warning) as a share of the leading-edge inflow.
 //! A thermal case whose film and pads are solved as one coupled system (BC3) is measured against the
 //! reference level itself: twice its mesh took more than 35 min and 9 GB here (88 s at reference).
@@ -11,12 +11,12 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use crate::bearing::report::warning::Warning;
-use crate::bearing::{solve_case, Solution};
-use crate::model::case::{Case, PadFilmBc, ThermalModelKind};
-use crate::scene::fidelity::worst_flow;
+use tiltpad::bearing::report::warning::Warning;
+use tiltpad::bearing::{solve_case, Solution};
+use tiltpad::model::case::{Case, PadFilmBc, ThermalModelKind};
+use tiltpad::study::fidelity::{finer_overrides, worst_flow};
 
-use super::bench::{pct, reference_fine, with_mesh};
+use super::{pct, with_mesh};
 
 pub const HEADING: &str = "## Flows against the mesh, every shipped case";
 
@@ -35,14 +35,12 @@ fn created_share(s: &Solution) -> Option<f64> {
 type FlowCells = Result<(Option<(f64, &'static str)>, Option<f64>), (&'static str, String)>;
 
 fn flow_cells(text: &str, extra: &[String], truth: Truth) -> FlowCells {
-    let solve = |set: &[String]| {
-        let case = with_mesh(text, set).map_err(|e| ("refused", first_words(&e.to_string())))?;
-        solve_case(&case).map_err(|e| ("failed", first_words(&e.to_string())))
-    };
+    let case = |set: &[String]| with_mesh(text, set).map_err(|e| ("refused", first_words(&e.to_string())));
+    let solve = |set: &[String]| solve_case(&case(set)?).map_err(|e| ("failed", first_words(&e.to_string())));
     let mut standard = extra.to_vec();
     standard.push("mesh.fidelity=\"standard\"".into());
     let fine = match truth {
-        Truth::ReferenceFine => reference_fine(extra),
+        Truth::ReferenceFine => finer_overrides(&case(extra)?, extra),
         Truth::Reference => {
             let mut set = extra.to_vec();
             set.push("mesh.fidelity=\"reference\"".into());
@@ -124,9 +122,9 @@ pub fn section(root: &Path) -> Result<String> {
     let mut worst_jfo: Option<(f64, String)> = None;
     let mut refused_jfo = Vec::new();
     for name in &names {
-        super::interrupt::say(format!("bench: flows: {name}"));
+        super::say(format!("bench: flows: {name}"));
         let text = std::fs::read_to_string(root.join("cases").join(name))?;
-        let (shipped, truth) = match crate::model::load_case(&text, &[]) {
+        let (shipped, truth) = match tiltpad::model::load_case(&text, &[]) {
             Ok((_, c)) => (format!("{:?}", c.physics.cavitation).to_lowercase(), Truth::of(&c)),
             Err(e) => {
                 let _ = writeln!(md, "| `{name}` | | {} | | | | | |", first_words(&e.to_string()));

@@ -10,8 +10,8 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use super::bench::{level_cells, levels, timed, with_mesh};
-use crate::units::L_PER_MIN;
+use super::{level_cells, levels, timed, with_mesh};
+use tiltpad::units::L_PER_MIN;
 
 pub const HEADING: &str = "## Oil feeding";
 
@@ -25,7 +25,7 @@ type Group<'a> = (&'a str, &'a String, Vec<(&'a str, Vec<String>)>);
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let read = |name: &str| std::fs::read_to_string(root.join("cases").join(format!("{name}.toml")));
     let compressor = read("compressor-bearing")?;
-    super::interrupt::say("bench: feeding");
+    super::say("bench: feeding");
     let thd = ["thermal.model=\"thd\"".to_string(), "thermal.pad_film_bc=\"bc1\"".to_string()];
     let groove = [
         "feeding.kind=\"leading_edge_groove\"".to_string(),

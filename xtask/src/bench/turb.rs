@@ -9,7 +9,7 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use super::bench::{level_cells, levels, timed, with_mesh};
+use super::{level_cells, levels, timed, with_mesh};
 
 const CASE: &str = "large-5pad-transition";
 
@@ -19,7 +19,7 @@ const CASE: &str = "large-5pad-transition";
 /// A missing case file or a failed solve.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let text = std::fs::read_to_string(root.join("cases").join(format!("{CASE}.toml")))?;
-    super::interrupt::say("bench: turbulence");
+    super::say("bench: turbulence");
     // Per level isothermal: the THD solve on twice the reference mesh (the truth) exceeds the thermal loop's
     // time budget on this machine; the option's cost under THD is in the second table.
     let rows =

@@ -9,7 +9,7 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use web_time::Instant;
 
-use crate::study::{Designs, Row, Runner};
+use tiltpad::study::{Designs, Row, Runner};
 
 /// Solves every design at a fidelity level: (mean wall time per design [ms], rows).
 fn run_level(text: &str, designs: &Designs, level: &str) -> (f64, Vec<Row>) {
@@ -22,7 +22,7 @@ fn run_level(text: &str, designs: &Designs, level: &str) -> (f64, Vec<Row>) {
 }
 
 fn cell(row: &Row, name: &str) -> Option<f64> {
-    let k = crate::study::COLUMNS.iter().position(|c| c.name == name)?;
+    let k = tiltpad::study::COLUMNS.iter().position(|c| c.name == name)?;
     row.result.as_ref().ok()?.get(k).copied().flatten()
 }
 
@@ -47,7 +47,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         std::fs::read_to_string(&designs_path).with_context(|| format!("cannot read {}", designs_path.display()))?;
     let designs = Designs::parse(&table)?;
     let text = std::fs::read_to_string(root.join("cases").join("compressor-bearing.toml"))?;
-    super::interrupt::say("bench: batch cost per design");
+    super::say("bench: batch cost per design");
     let (_, truth) = run_level(&text, &designs, "reference");
     let mut md = String::new();
     let _ = writeln!(

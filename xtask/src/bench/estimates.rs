@@ -1,7 +1,7 @@
 //! Bench section: the work estimates every command prints (and refuses on) before its first solve, against
-//! the work it then does. Each command runs as a user runs it (this binary, a child process, outputs to a
+//! the work it then does. Each command runs as a user runs it (the `tiltpad` binary, a child process, outputs to a
 //! temporary directory) on the shipped cases; the estimate is computed by the same functions the command
-//! calls ([`crate::study::estimate`]). Measured: the wall time of the whole command (reading, solving,
+//! calls ([`tiltpad::study::estimate`]). Measured: the wall time of the whole command (reading, solving,
 //! writing), the bearing solves it made (from its JSON output where it reports them) and, for `solve`, the
 //! film solves. The estimate is a property of the input at the reference rate, so on a loaded machine the
 //! measured times run high by the load; the section states the load average it saw.
@@ -11,8 +11,13 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::model::load_case;
-use crate::study::estimate::{duration_text, point_cost, Estimate};
+use tiltpad::control::analysis::ControlParams;
+use tiltpad::io::read::{read_controlled, read_rotor};
+use tiltpad::model::load_case;
+use tiltpad::rotor::analysis::ONSET_PROBES;
+use tiltpad::rotor::critical_map::MAP_POINTS;
+use tiltpad::study::estimate::{duration_text, point_cost, Estimate};
+use tiltpad::study::rotor_cost::uniform_rotor;
 
 /// Heading of the section in docs/PERFORMANCE.md.
 pub const HEADING: &str = "## Work estimates";
@@ -37,7 +42,7 @@ struct Measured {
     film_solves: Option<u64>,
 }
 
-fn case_of(path: &Path) -> Result<crate::model::Case> {
+fn case_of(path: &Path) -> Result<tiltpad::model::Case> {
     let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
     Ok(load_case(&text, &[]).with_context(|| format!("invalid case {}", path.display()))?.1)
 }
@@ -72,14 +77,42 @@ const MIN_CPU_SECONDS: f64 = 0.5;
 /// See [`MIN_CPU_SECONDS`].
 const MAX_REPEATS: u32 = 25;
 
-fn measure(run: &Run, out: &Path) -> Result<Measured> {
-    let exe = std::env::current_exe().context("cannot find this program to run the commands")?;
+/// The product binary the commands run as: `$TILTPAD_BIN` when set, else `tiltpad` built now in this
+/// program's profile (`cargo build --release --bin tiltpad` under the `xtask` alias: nothing to do when it is
+/// current), beside this program in the workspace's target directory.
+fn tiltpad_binary() -> Result<PathBuf> {
+    if let Some(p) = std::env::var_os("TILTPAD_BIN") {
+        return Ok(PathBuf::from(p));
+    }
+    let me = std::env::current_exe().context("cannot find this program")?;
+    let dir = me.parent().context("this program has no directory")?;
+    let mut build = std::process::Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    // the workspace this program was built from, whatever `--root` the bench measures
+    build.current_dir(Path::new(env!("CARGO_MANIFEST_DIR"))).args([
+        "build",
+        "--package",
+        "tiltpad",
+        "--bin",
+        "tiltpad",
+    ]);
+    if dir.file_name().is_some_and(|n| n == "release") {
+        build.arg("--release");
+    }
+    super::say("bench: estimates: building the tiltpad binary");
+    let status = build.status().context("cannot run cargo to build the tiltpad binary")?;
+    if !status.success() {
+        bail!("bench estimates: building the tiltpad binary failed ({status})");
+    }
+    Ok(dir.join(format!("tiltpad{}", std::env::consts::EXE_SUFFIX)))
+}
+
+fn measure(exe: &Path, run: &Run, out: &Path) -> Result<Measured> {
     let args: Vec<String> = run.args.iter().map(|a| a.replace("{OUT}", &out.display().to_string())).collect();
     let (mut seconds, mut cpu_seconds, mut runs) = (0.0, Some(0.0), 0_u32);
     loop {
         let cpu_before = children_cpu_seconds();
         let t = web_time::Instant::now();
-        let status = std::process::Command::new(&exe)
+        let status = std::process::Command::new(exe)
             .args(&args)
             .stdout(std::process::Stdio::null())
             .stderr(std::process::Stdio::null())
@@ -123,7 +156,7 @@ fn measure(run: &Run, out: &Path) -> Result<Measured> {
 fn runs(root: &Path, dir: &Path) -> Result<Vec<Run>> {
     let cases = root.join("cases");
     let mut out = Vec::new();
-    for n in &super::convergence_map::shipped_names(root)? {
+    for n in &super::shipped_names(root)? {
         let path = cases.join(n);
         let estimate = Estimate::points("solve", 1, point_cost(&case_of(&path)?));
         out.push(Run {
@@ -201,9 +234,9 @@ fn runs(root: &Path, dir: &Path) -> Result<Vec<Run>> {
     // the rotor file is in a temporary directory: its bearing case by an absolute path
     let bearing =
         std::fs::canonicalize(&compressor).with_context(|| format!("cannot find {}", compressor.display()))?;
-    std::fs::write(&uniform, super::rotor::uniform_rotor(400, &bearing))?;
+    std::fs::write(&uniform, uniform_rotor(400, &bearing))?;
     let uniform_200 = dir.join("uniform-200.toml");
-    std::fs::write(&uniform_200, super::rotor::uniform_rotor(200, &bearing))?;
+    std::fs::write(&uniform_200, uniform_rotor(200, &bearing))?;
     for (command, file, speeds, shaft) in [
         ("rotor", cases.join("rotors/compressor-rotor.toml"), "1000:13000:25", None),
         ("rotor", cases.join("rotors/compressor-rotor.toml"), "1000:13000:25", Some(0)),
@@ -212,7 +245,7 @@ fn runs(root: &Path, dir: &Path) -> Result<Vec<Run>> {
         ("control", cases.join("rotors/compressor-rotor-active.toml"), "6000:12000:13", None),
     ] {
         let path = file;
-        let mut rotor = super::rotor::read_rotor(&path)?;
+        let mut rotor = read_rotor(&path)?;
         let mut extra = Vec::new();
         if let Some(m) = shaft {
             rotor.shaft_modes = m;
@@ -220,18 +253,18 @@ fn runs(root: &Path, dir: &Path) -> Result<Vec<Run>> {
         }
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let file = if path.starts_with(&cases) { format!("rotors/{name}") } else { format!("{name} (generated)") };
-        let speeds_rad_s = super::rotor::parse_speeds(speeds, usize::MAX)?;
+        let speeds_rad_s = super::speeds(speeds)?;
         let n = speeds_rad_s.len();
         // as the commands estimate
         let estimate = match command {
-            "rotor" => Estimate::rotor(command, &rotor, n, super::rotor::ONSET_PROBES),
+            "rotor" => Estimate::rotor(command, &rotor, n, ONSET_PROBES),
             "rotor --critical-map" => {
                 extra.push("--critical-map".into());
-                Estimate::critical_map(&rotor, n, super::rotor_map::POINTS)
+                Estimate::critical_map(&rotor, n, MAP_POINTS)
             }
             _ => {
-                let (_, control) = super::control::read_controlled(&path)?;
-                super::control::estimate(&rotor, &control, &crate::control::analysis::ControlParams::new(speeds_rad_s))
+                let (_, control) = read_controlled(&path)?;
+                ControlParams::new(speeds_rad_s).estimate(&rotor, &control)
             }
         };
         let full = if rotor.shaft_modes == 0 { ", full shaft" } else { "" };
@@ -286,15 +319,16 @@ fn load_average() -> String {
 /// # Errors
 /// A missing case, or a command that fails.
 pub fn section(root: &Path) -> Result<String> {
-    super::interrupt::say("bench: estimates");
+    super::say("bench: estimates");
+    let exe = tiltpad_binary()?;
     let dir = std::env::temp_dir().join(format!("tiltpad-bench-estimates-{}", std::process::id()));
     std::fs::create_dir_all(&dir)?;
     let load_before = load_average();
     let mut table = String::new();
     let mut ratios = Vec::new();
     for run in runs(root, &dir)? {
-        super::interrupt::say(format!("bench: estimates: {} {}", run.command, run.label));
-        let m = measure(&run, &dir)?;
+        super::say(format!("bench: estimates: {} {}", run.command, run.label));
+        let m = measure(&exe, &run, &dir)?;
         let made = made_estimate(&run.estimate, &m);
         let ratio = m.cpu_seconds.unwrap_or(m.seconds) / made;
         ratios.push(ratio);
@@ -331,7 +365,7 @@ pub fn section(root: &Path) -> Result<String> {
     let (lo, hi) = (ratios.first().copied().unwrap_or(0.0), ratios.last().copied().unwrap_or(0.0));
     let median = ratios.get(ratios.len() / 2).copied().unwrap_or(0.0);
     let mut md = format!(
-        "\n{HEADING} (`bench --only estimates`)\n\nEvery command estimates its work from its inputs before the first \
+        "\n{HEADING} (`cargo xtask bench --only estimates`)\n\nEvery command estimates its work from its inputs before the first \
          solve (bearing solves, and seconds at the reference rate of the cost-growth table: `src/study/estimate.rs`) \
          and refuses what is over `--max-hours` or 8 GB; a rotor's estimate adds its dense eigen-solutions \
          (the cube of the state size, once per speed and bisection probe) and a flexible pad's its modal \

@@ -10,9 +10,9 @@ use std::path::Path;
 use anyhow::Result;
 use web_time::Instant;
 
-use crate::bearing::frf::model::band;
-use crate::bearing::{NoCancel, Stages};
-use crate::model::load_case;
+use tiltpad::bearing::frf::model::band;
+use tiltpad::bearing::{NoCancel, Stages};
+use tiltpad::model::load_case;
 
 /// The target: 400 frequencies of all FRFs after the equilibrium.
 const TARGET_MS: f64 = 20.0;
@@ -28,7 +28,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 /// Missing case file, an invalid case or a failed solve.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let text = std::fs::read_to_string(root.join("cases").join("test-rig-pub5.toml"))?;
-    super::interrupt::say("bench: FRFs");
+    super::say("bench: FRFs");
     let freqs = band(1.0, 1000.0, 400);
     let probe = [20.0, 200.0];
     let mut rows = Vec::new();
@@ -50,7 +50,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
         }
         let Some(m) = model else { continue };
         let g: Vec<_> = m.sweep(&case, &probe)?.points.iter().map(|p| p.g[1]).collect();
-        let nodes = crate::bearing::BearingModel::new(&case)?.film_nodes();
+        let nodes = tiltpad::bearing::BearingModel::new(&case)?.film_nodes();
         rows.push((level, nodes, median(eq), median(lin), median(sweep), g));
     }
     let Some(truth) = rows.last().map(|r| r.5.clone()) else { return Ok(String::new()) };

@@ -15,10 +15,10 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use web_time::Instant;
 
-use crate::bearing::{solve_case, Solution};
-use crate::model::load_case;
+use tiltpad::bearing::{solve_case, Solution};
+use tiltpad::model::load_case;
 
-use super::bench::{frob_rel, rel, t_rise};
+use tiltpad::study::fidelity::{matrix_relative, relative, temperature_rise};
 
 /// The TEHD variant of the flexible compressor bearing: THD (BC1, as the case's thermal data) with steel
 /// pads (12 × 10⁻⁶/K) and journal (11 × 10⁻⁶/K) assembled at 20 °C (the values of `cases/fillon-a-tehd.toml`).
@@ -52,10 +52,10 @@ fn solve_set(text: &str, set: &[String], repeats: usize) -> Result<(f64, Solutio
 
 fn errors(s: &Solution, truth: &Solution) -> [f64; 4] {
     [
-        rel(s.eccentricity_ratio, truth.eccentricity_ratio),
-        rel(s.h_min_m, truth.h_min_m),
-        rel(s.reduced.k_n_per_m[1][1], truth.reduced.k_n_per_m[1][1]),
-        rel(s.reduced.c_ns_per_m[1][1], truth.reduced.c_ns_per_m[1][1]),
+        relative(s.eccentricity_ratio, truth.eccentricity_ratio),
+        relative(s.h_min_m, truth.h_min_m),
+        relative(s.reduced.k_n_per_m[1][1], truth.reduced.k_n_per_m[1][1]),
+        relative(s.reduced.c_ns_per_m[1][1], truth.reduced.c_ns_per_m[1][1]),
     ]
 }
 
@@ -65,7 +65,7 @@ fn errors(s: &Solution, truth: &Solution) -> [f64; 4] {
 /// A missing case file or a failed solve.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
     let text = std::fs::read_to_string(root.join("cases").join("compressor-bearing-flexible.toml"))?;
-    super::interrupt::say("bench: flexible pads");
+    super::say("bench: flexible pads");
     let (_, truth) = solve_level(&text, 3, 8, 1)?;
     let mut md = String::from(
         "\n## Flexible pads (`physics.pad_modes`)\n\n`cases/compressor-bearing-flexible.toml` at standard fidelity (isothermal); each solve builds \
@@ -90,7 +90,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
 
 /// The TEHD rows: each fidelity level (1 mode) against the reference mesh with 3 modes.
 fn tehd_table(text: &str, repeats: usize) -> Result<String> {
-    super::interrupt::say("bench: flexible pads, TEHD");
+    super::say("bench: flexible pads, TEHD");
     let with = |extra: &[&str]| -> Vec<String> { TEHD.iter().chain(extra).map(|s| (*s).to_string()).collect() };
     // The reference film mesh with 4 pad layers: 8 layers (the reference default) with 3 modes spent the thermal
     // loop's 120 s budget in its first outer iteration on this machine.
@@ -132,7 +132,7 @@ fn tehd_table(text: &str, repeats: usize) -> Result<String> {
 
 /// The pad layers' share of the TEHD error: the standard film mesh with 2, 4 (the growth solid on every second
 /// layer, the standard default, and on all) and 8 pad layers (the truth). The explicit film mesh with the
-/// reference fidelity keeps every layer in the growth solid ([`crate::bearing::thermal::growth::growth_layer_step`]).
+/// reference fidelity keeps every layer in the growth solid ([`tiltpad::bearing::thermal::growth::growth_layer_step`]).
 fn layers_table(text: &str, repeats: usize) -> Result<String> {
     let with = |extra: &[String]| -> Vec<String> {
         TEHD.iter().map(|s| (*s).to_string()).chain(extra.iter().cloned()).collect()
@@ -174,7 +174,7 @@ fn layers_table(text: &str, repeats: usize) -> Result<String> {
 }
 
 /// The growth's model set-up and steps of a TEHD solve [ms].
-fn growth_ms(r: &crate::bearing::thermal::ThermalReport) -> (f64, f64) {
+fn growth_ms(r: &tiltpad::bearing::thermal::ThermalReport) -> (f64, f64) {
     let setup = r.growth_setup_seconds.unwrap_or(0.0);
     (1e3 * setup, 1e3 * (r.growth_seconds.unwrap_or(0.0) - setup))
 }
@@ -182,13 +182,13 @@ fn growth_ms(r: &crate::bearing::thermal::ThermalReport) -> (f64, f64) {
 /// Errors of a TEHD solution against the truth [%]: ε, K and C (Frobenius, synchronously reduced), the film
 /// temperature rise and h_min.
 fn tehd_errors_pct(s: &Solution, truth: &Solution) -> [f64; 5] {
-    let t_err = t_rise(s).zip(t_rise(truth)).map_or(f64::NAN, |(a, b)| rel(a, b));
+    let t_err = temperature_rise(s).zip(temperature_rise(truth)).map_or(f64::NAN, |(a, b)| relative(a, b));
     [
-        rel(s.eccentricity_ratio, truth.eccentricity_ratio),
-        frob_rel(s.reduced.k_n_per_m, truth.reduced.k_n_per_m),
-        frob_rel(s.reduced.c_ns_per_m, truth.reduced.c_ns_per_m),
+        relative(s.eccentricity_ratio, truth.eccentricity_ratio),
+        matrix_relative(s.reduced.k_n_per_m, truth.reduced.k_n_per_m),
+        matrix_relative(s.reduced.c_ns_per_m, truth.reduced.c_ns_per_m),
         t_err,
-        rel(s.h_min_m, truth.h_min_m),
+        relative(s.h_min_m, truth.h_min_m),
     ]
     .map(|e| 100.0 * e)
 }

@@ -11,12 +11,11 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use crate::cli::control::read_controlled;
-use crate::cli::rotor::parse_speeds;
-use crate::control::analysis::{ControlAnalysis, ControlParams, ControlResult};
-use crate::model::load_case;
-use crate::model::rotor::BearingSupport;
-use crate::units::RPM;
+use tiltpad::control::analysis::{ControlAnalysis, ControlParams, ControlResult};
+use tiltpad::io::read::read_controlled;
+use tiltpad::model::load_case;
+use tiltpad::model::rotor::BearingSupport;
+use tiltpad::units::RPM;
 
 /// The target: 50 speeds at preview fidelity.
 const TARGET_S: f64 = 2.0;
@@ -32,8 +31,8 @@ fn cpu_seconds() -> Option<f64> {
 /// One whole analysis, and the time to close the loop again at another gain on its plants (what a slider of
 /// the Control view costs) [s].
 fn analyse(
-    rotor: &crate::model::rotor::Rotor,
-    control: &crate::model::control::Control,
+    rotor: &tiltpad::model::rotor::Rotor,
+    control: &tiltpad::model::control::Control,
     speeds: &[f64],
 ) -> Result<(ControlResult, Option<f64>, f64)> {
     let cpu = cpu_seconds();
@@ -59,10 +58,10 @@ fn onset(r: &ControlResult, closed: bool) -> Option<f64> {
 /// # Errors
 /// Missing files, an invalid rotor or case, a failed analysis.
 pub fn section(root: &Path, repeats: usize) -> Result<String> {
-    super::interrupt::say("bench: control");
+    super::say("bench: control");
     let (base, control) = read_controlled(&root.join("cases").join("rotors").join("compressor-rotor-active.toml"))?;
     let bearing_text = std::fs::read_to_string(root.join("cases").join("compressor-bearing-active.toml"))?;
-    let speeds = parse_speeds(SPEEDS, usize::MAX)?;
+    let speeds = super::speeds(SPEEDS)?;
     let mut md = String::new();
     let _ = writeln!(
         md,
@@ -148,7 +147,7 @@ fn lqr_rows(root: &Path, bearing_text: &str, repeats: usize) -> Result<String> {
             **case = load_case(bearing_text, &["mesh.fidelity=\"preview\"".to_string()])?.1;
         }
     }
-    let speeds = parse_speeds(LQR_SPEEDS, usize::MAX)?;
+    let speeds = super::speeds(LQR_SPEEDS)?;
     let mut runs = Vec::new();
     let mut last = None;
     for _ in 0..repeats.max(1) {

@@ -13,11 +13,11 @@ use std::path::Path;
 
 use anyhow::Result;
 
-use crate::bearing::solve_case;
-use crate::model::{load_case, Case, Fidelity};
-use crate::units::L_PER_MIN;
+use tiltpad::bearing::solve_case;
+use tiltpad::model::{load_case, Case, Fidelity};
+use tiltpad::units::L_PER_MIN;
 
-use super::bench::{levels, pct, with_mesh};
+use super::{levels, pct, with_mesh};
 
 /// Process CPU time and work of one option at one level: the least CPU time of `repeats` solves [ms], the
 /// sparse factorisations, those of them the pivoting LU did (a pivot the factorisation without row
@@ -101,7 +101,7 @@ pub fn section(root: &Path, repeats: usize) -> Result<String> {
 
 /// The line under the first table of docs/PERFORMANCE.md: the compressor bearing's flow error per level
 /// with the mass-conserving option.
-fn flow_note(jfo: &[crate::scene::fidelity::LevelCost]) -> String {
+fn flow_note(jfo: &[tiltpad::study::fidelity::LevelCost]) -> String {
     let cells: Vec<String> = jfo
         .iter()
         .filter(|r| r.err_flows.is_some_and(|e| e > 0.0))
@@ -115,7 +115,7 @@ fn flow_note(jfo: &[crate::scene::fidelity::LevelCost]) -> String {
     )
 }
 
-/// The flow note for the first table alone (`bench --only table`): the compressor bearing's levels with
+/// The flow note for the first table alone (`cargo xtask bench --only table`): the compressor bearing's levels with
 /// the mass-conserving option.
 ///
 /// # Errors
@@ -135,16 +135,16 @@ pub fn measured(root: &Path, repeats: usize) -> Result<(String, String)> {
     let compressor = read("compressor-bearing.toml")?;
     let starved = read("compressor-bearing-starved.toml")?;
     let iso = "thermal.model=\"isothermal\"".to_string();
-    super::interrupt::say("bench: cavitation (Reynolds)");
+    super::say("bench: cavitation (Reynolds)");
     let reynolds = levels("compressor-bearing, reynolds", &compressor, std::slice::from_ref(&iso), repeats)?;
-    super::interrupt::say("bench: cavitation (JFO)");
+    super::say("bench: cavitation (JFO)");
     let jfo_set = [iso.clone(), "physics.cavitation=\"jfo\"".to_string()];
     let jfo = levels("compressor-bearing, jfo", &compressor, &jfo_set, repeats)?;
-    super::interrupt::say("bench: cavitation (CPU time and work per option)");
+    super::say("bench: cavitation (CPU time and work per option)");
     let cpu_repeats = repeats.max(3);
     let reynolds_cpu = cpu_levels(&compressor, std::slice::from_ref(&iso), cpu_repeats)?;
     let jfo_cpu = cpu_levels(&compressor, &jfo_set, cpu_repeats)?;
-    super::interrupt::say("bench: cavitation (starved)");
+    super::say("bench: cavitation (starved)");
     // The starved case's equilibrium can fail at a level (a touchdown on the way); the section says so.
     let (starved_rows, starved_failure) = match levels("compressor-bearing-starved", &starved, &[iso], repeats) {
         Ok(rows) => (rows, None),
@@ -216,7 +216,7 @@ pub fn measured(root: &Path, repeats: usize) -> Result<(String, String)> {
                     "| {label} | {:.0} W | {:.4} | {:.2} µm | {:.2} l/min | {loaded} of {} | {} |",
                     s.friction_power_w,
                     s.eccentricity_ratio,
-                    crate::units::UM.from_si(s.h_min_m),
+                    tiltpad::units::UM.from_si(s.h_min_m),
                     L_PER_MIN.from_si(s.flows_m3_per_s.leading_edges_in),
                     s.pads.len(),
                     s.report.film_solves
